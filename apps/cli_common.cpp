@@ -1,0 +1,82 @@
+#include "apps/cli_common.h"
+
+#include <cmath>
+#include <fmt/core.h>
+#include <fstream>
+#include <iostream>
+
+#include "lib/common/input_error.h"
+#include "lib/units/quantity.h"
+#include "lib/units/units.h"
+#include "montecarlo/write/atomic_file.h"
+
+namespace insmc::app {
+
+OutputFormat parse_output_format(const std::string& text) {
+  if (text == "markdown" || text == "md") return OutputFormat::kMarkdown;
+  if (text == "csv") return OutputFormat::kCsv;
+  if (text == "json") return OutputFormat::kJson;
+  throw InputError("--format", text, "must be markdown, csv or json");
+}
+
+std::optional<po::variables_map> parse_args(const Args& args, const std::string& subcommand,
+                                            const std::string& synopsis,
+                                            const po::options_description& options) {
+  po::options_description generic("General");
+  generic.add_options()("help,h", "print this help and exit")(
+      "config", po::value<std::string>(),
+      "INI file with any of these options as key = value (command line wins)");
+  po::options_description all;
+  all.add(options).add(generic);
+  po::variables_map vm;
+  po::store(po::command_line_parser(args).options(all).run(), vm);
+  if (vm.count("help")) {
+    fmt::print("usage: insmc {} {}\n\n", subcommand, synopsis);
+    std::cout << all << std::flush;
+    return std::nullopt;
+  }
+  if (vm.count("config")) {
+    const std::string path = vm["config"].as<std::string>();
+    std::ifstream in(path);
+    if (!in) throw InputError("--config", path, "cannot open the file");
+    po::store(po::parse_config_file(in, all, /*allow_unregistered=*/false), vm);
+  }
+  po::notify(vm);
+  return vm;
+}
+
+po::options_description model_options_description() {
+  po::options_description d("Model");
+  d.add_options()("latitude", po::value<std::string>()->default_value("45deg"),
+                  "latitude L0 of the stationary vehicle (e.g. 45deg, 0.7854rad)")(
+      "leveling-gain", po::value<double>()->default_value(500.0),
+      "system-1 leveling-loop DC gain F(0) in units of earth rate (§2.1), > 0");
+  return d;
+}
+
+ModelOptions read_model_options(const po::variables_map& vm, bool system2_used) {
+  ModelOptions o;
+  const std::string lat = vm["latitude"].as<std::string>();
+  o.latitude_rad = parse_quantity(lat, Dimension::kAngle, "--latitude");
+  const double abs_lat = std::abs(o.latitude_rad);
+  if (system2_used && !(abs_lat < 90.0 * kDegToRad - 1e-9)) {
+    throw InputError("--latitude", lat,
+                     "must lie strictly between -90deg and 90deg for system 2: gyrocompassing "
+                     "divides by cos L0 (2.16)");
+  }
+  if (!(abs_lat <= 90.0 * kDegToRad)) throw InputError("--latitude", lat, "must lie within ±90deg");
+  o.leveling_gain_ratio = vm["leveling-gain"].as<double>();
+  if (!(o.leveling_gain_ratio > 0) || !std::isfinite(o.leveling_gain_ratio))
+    throw InputError("--leveling-gain", fmt::format("{}", o.leveling_gain_ratio), "must be a finite number > 0");
+  return o;
+}
+
+void write_output_files(const std::filesystem::path& dir, const OutputFiles& files) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw InputError("--out", dir.string(), "cannot create the folder: " + ec.message());
+  for (const auto& [name, contents] : files) mc::write_file_atomically(dir / name, contents);
+}
+
+}  // namespace insmc::app

@@ -1,0 +1,40 @@
+#pragma once
+/// What every subcommand shares: option parsing (command line, then an INI
+/// file given by --config; the command line wins), --help, the output
+/// format, --out DIR, and writing all output files only after everything
+/// has been computed (so a failure leaves no partial output).
+#include <boost/program_options.hpp>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "apps/subcommands.h"
+#include "lib/common/model_options.h"
+
+namespace insmc::app {
+
+namespace po = boost::program_options;
+
+enum class OutputFormat { kMarkdown, kCsv, kJson };
+OutputFormat parse_output_format(const std::string& text);
+
+/// Parses `args` with `options` (plus --help and --config FILE). Prints the
+/// help text and returns nullopt when --help is given.
+std::optional<po::variables_map> parse_args(const Args& args, const std::string& subcommand,
+                                            const std::string& synopsis,
+                                            const po::options_description& options);
+
+/// --latitude and the loop gains: the ModelOptions every model command takes.
+po::options_description model_options_description();
+/// Reads them; `system2_used` enables the |L0| < 90° check of (2.16).
+ModelOptions read_model_options(const po::variables_map& vm, bool system2_used);
+
+/// Files to write into an output folder: (file name, contents).
+using OutputFiles = std::vector<std::pair<std::string, std::string>>;
+
+/// Creates `dir` if needed and writes each file atomically.
+void write_output_files(const std::filesystem::path& dir, const OutputFiles& files);
+
+}  // namespace insmc::app

@@ -1,0 +1,43 @@
+// insmc covariance: the exact linear-covariance RMS of every output
+// (S(t) P S(t)ᵀ plus the squared mean) and the error budget.
+#include <fmt/format.h>
+
+#include "apps/cli_common.h"
+#include "apps/study_options.h"
+#include "montecarlo/study/study_map.h"
+
+namespace insmc::app {
+
+int run_covariance(const Args& args) {
+  po::options_description opts("Options");
+  opts.add_options()("out", po::value<std::string>(), "folder for covariance.csv, covariance_grid.csv, budget.csv, "
+                                                      "covariance.md (created if needed)")(
+      "format", po::value<std::string>()->default_value("markdown"),
+      "stdout: markdown, csv (covariance.csv alone) or json");
+  opts.add(study_options_description(false));
+  const auto vm = parse_args(args, "covariance", "[options]", opts);
+  if (!vm) return 0;
+  const mc::StudyConfig config = read_study_config(*vm, false);
+  const OutputFormat format = parse_output_format((*vm)["format"].as<std::string>());
+  const mc::LengthUnit unit = read_length_unit(*vm);
+  const mc::StudyLayout layout = mc::make_layout(config);
+  const mc::StudyMap map(config, layout);
+  const mc::CovarianceFiles files = mc::render_covariance(config, layout, map, unit);
+  mc::Json json = mc::Json::object();
+  json["settings"] = mc::settings_json(config);
+  json["covariance"] = files.covariance_json;
+  if (vm->count("out")) {
+    write_output_files((*vm)["out"].as<std::string>(), {{"covariance.csv", files.covariance_csv},
+                                                        {"covariance_grid.csv", files.covariance_grid_csv},
+                                                        {"budget.csv", files.budget_csv},
+                                                        {"covariance.md", files.covariance_md}});
+  }
+  switch (format) {
+    case OutputFormat::kCsv: fmt::print("{}", files.covariance_csv); break;
+    case OutputFormat::kJson: fmt::print("{}", json.dump()); break;
+    case OutputFormat::kMarkdown: fmt::print("{}", files.covariance_md); break;
+  }
+  return 0;
+}
+
+}  // namespace insmc::app

@@ -1,0 +1,72 @@
+// insmc tables: the report's Tables 3.1, 4.1, 4.2, 4.3, 5.1, 5.2 and the data
+// of Figure 3.2, every cell computed from the model beside the printed value.
+#include <fmt/format.h>
+
+#include "apps/cli_common.h"
+#include "lib/common/input_error.h"
+#include "montecarlo/write/csv.h"
+#include "montecarlo/write/markdown.h"
+#include "tables/generate.h"
+
+namespace insmc::app {
+namespace {
+
+std::string optional_number(const std::optional<double>& v) { return v ? mc::format_number(*v) : ""; }
+
+mc::Table cells_table(const std::vector<tables::TableCell>& cells, bool with_table_column) {
+  std::vector<std::string> header = {"row", "column", "unit", "printed", "computed", "deviation_pct", "note"};
+  if (with_table_column) header.insert(header.begin(), "table");
+  mc::Table t(header);
+  for (const auto& c : cells) {
+    std::vector<std::string> row = {c.row, c.column, c.unit, optional_number(c.printed),
+                                    mc::format_number(c.computed), optional_number(c.deviation_pct), c.note};
+    if (with_table_column) row.insert(row.begin(), c.table);
+    t.add_row(row);
+  }
+  return t;
+}
+
+std::string render_markdown_report(const std::vector<tables::TableCell>& cells, tables::TableConvention conv) {
+  std::string out = fmt::format(
+      "# The report's tables reproduced by insmc ({} convention)\n\n"
+      "`printed` is the report's value as printed; `computed` is insmc's, in the printed unit; "
+      "`deviation_pct` = 100·(computed − printed)/printed. Every deviation above 3% carries a note "
+      "(tables/notes/tables.md has the reasoning).\n",
+      to_string(conv));
+  for (std::string_view id : tables::kTableIds) {
+    std::vector<tables::TableCell> part;
+    for (const auto& c : cells)
+      if (c.table == id) part.push_back(c);
+    if (part.empty()) continue;
+    out += fmt::format("\n## {}\n\n{}", id == "fig3.2" ? "Figure 3.2 (data)" : fmt::format("Table {}", id),
+                       mc::render_markdown(cells_table(part, false)));
+  }
+  return out;
+}
+
+}  // namespace
+
+int run_tables(const Args& args) {
+  po::options_description opts("Options");
+  opts.add_options()("format", po::value<std::string>()->default_value("markdown"),
+                     "stdout: markdown (one table per printed table) or csv (one long table)")(
+      "convention", po::value<std::string>()->default_value("paper"),
+      "paper (the report's formulas as printed) or corrected (errors of the original fixed)")(
+      "out", po::value<std::string>(), "folder for tables.md and tables.csv (created if needed)");
+  opts.add(model_options_description());
+  const auto vm = parse_args(args, "tables", "[--format markdown|csv] [--convention paper|corrected] [--out DIR]", opts);
+  if (!vm) return 0;
+  const OutputFormat format = parse_output_format((*vm)["format"].as<std::string>());
+  if (format == OutputFormat::kJson) throw InputError("--format", "json", "tables offers markdown or csv");
+  const tables::TableConvention conv =
+      tables::parse_table_convention((*vm)["convention"].as<std::string>(), "--convention");
+  const ModelOptions model = read_model_options(*vm, true);
+  const std::vector<tables::TableCell> cells = tables::compute_tables(model, conv);
+  const std::string csv = mc::render_csv(cells_table(cells, true));
+  const std::string md = render_markdown_report(cells, conv);
+  if (vm->count("out")) write_output_files((*vm)["out"].as<std::string>(), {{"tables.md", md}, {"tables.csv", csv}});
+  fmt::print("{}", format == OutputFormat::kCsv ? csv : md);
+  return 0;
+}
+
+}  // namespace insmc::app

@@ -1,0 +1,34 @@
+#pragma once
+/// The uncertainty options shared by params, run, covariance and check:
+/// repeated --bound NAME=VALUE and --dist NAME=SPEC, applied in order.
+#include "apps/cli_common.h"
+#include "lib/uncertainty/uncertainty_model.h"
+
+namespace insmc::app {
+
+po::options_description uncertainty_options_description();
+
+/// The model of Table 3.1 with every --bound and --dist applied in the order
+/// given (bounds first in command-line order, then distributions).
+UncertaintyModel read_uncertainty_model(const po::variables_map& vm);
+
+}  // namespace insmc::app
+
+#include "montecarlo/study/study_config.h"
+#include "montecarlo/write/study_writer.h"
+
+namespace insmc::app {
+
+/// Options of run, covariance and check: the study definition.
+po::options_description study_options_description(bool monte_carlo);
+
+/// Builds and validates the StudyConfig (throws InputError).
+mc::StudyConfig read_study_config(const po::variables_map& vm, bool monte_carlo);
+
+/// --units si|paper.
+mc::LengthUnit read_length_unit(const po::variables_map& vm);
+
+/// Splits a comma list ("1,2", "none,5.2").
+std::vector<std::string> split_commas(const std::string& text);
+
+}  // namespace insmc::app

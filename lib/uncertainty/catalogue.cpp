@@ -1,0 +1,104 @@
+#include "lib/uncertainty/catalogue.h"
+
+#include <vector>
+
+#include "lib/units/units.h"
+
+namespace insmc {
+namespace {
+
+using D = Dimension;
+constexpr Applies kBoth = Applies::kBoth;
+
+// Table 3.1, with the DESIGN.md §1 defaults where the paper leaves a choice:
+// ζ = ζ_c + ζ_r and ∂f = ∂f_c + ∂f_r are each split half and half, each part
+// bounded by half the Table 3.1 bound.
+constexpr double kMg = kMgToMps2;
+constexpr double kMeru = kMeruToRadps;
+constexpr double kMrad = kMradToRad;
+
+constexpr std::array<UncertaintySpec, ux::kDim> kCatalogue = {{
+    {"accel_bias_x", "accel_bias", "δf_x", ux::kAccelBias + 0, D::kAcceleration, 1 * kMg, "mg", kBoth, false, "Table 3.1 (<1 mg)"},
+    {"accel_bias_y", "accel_bias", "δf_y", ux::kAccelBias + 1, D::kAcceleration, 1 * kMg, "mg", kBoth, false, "Table 3.1 (<1 mg)"},
+    {"accel_bias_z", "accel_bias", "δf_z", ux::kAccelBias + 2, D::kAcceleration, 1 * kMg, "mg", kBoth, false, "Table 3.1 (<1 mg)"},
+    {"accel_scale_x", "accel_scale", "a_x", ux::kAccelScale + 0, D::kDimensionless, 1e-4, "ppm", kBoth, false, "Table 3.1 (<1e-4)"},
+    {"accel_scale_y", "accel_scale", "a_y", ux::kAccelScale + 1, D::kDimensionless, 1e-4, "ppm", kBoth, false, "Table 3.1 (<1e-4)"},
+    {"accel_scale_z", "accel_scale", "a_z", ux::kAccelScale + 2, D::kDimensionless, 1e-4, "ppm", kBoth, false, "Table 3.1 (<1e-4)"},
+    {"bias_change_const_x", "bias_change_const", "∂f_cx", ux::kBiasChangeConst + 0, D::kAcceleration, 0.05 * kMg, "mg", kBoth, false, "Table 3.1 ∂f (<0.1 mg), half constant"},
+    {"bias_change_const_y", "bias_change_const", "∂f_cy", ux::kBiasChangeConst + 1, D::kAcceleration, 0.05 * kMg, "mg", kBoth, false, "Table 3.1 ∂f (<0.1 mg), half constant"},
+    {"bias_change_align_x", "bias_change_align", "∂f_rx", ux::kBiasChangeAlign + 0, D::kAcceleration, 0.05 * kMg, "mg", kBoth, true, "Table 3.1 ∂f (<0.1 mg), half per alignment"},
+    {"bias_change_align_y", "bias_change_align", "∂f_ry", ux::kBiasChangeAlign + 1, D::kAcceleration, 0.05 * kMg, "mg", kBoth, true, "Table 3.1 ∂f (<0.1 mg), half per alignment"},
+    {"gyro_drift_x", "gyro_drift", "ω_dox", ux::kGyroDrift + 0, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
+    {"gyro_drift_y", "gyro_drift", "ω_doy", ux::kGyroDrift + 1, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
+    {"gyro_drift_z", "gyro_drift", "ω_doz", ux::kGyroDrift + 2, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
+    {"gyro_mu_drift_x", "gyro_mu_drift", "ω_MUx", ux::kGyroMuDrift + 0, D::kAngularRate, 5 * kMeru, "meru", kBoth, false, "Table 3.1 (<5 meru), (3.13a)"},
+    {"gyro_mu_drift_y", "gyro_mu_drift", "ω_MUy", ux::kGyroMuDrift + 1, D::kAngularRate, 5 * kMeru, "meru", kBoth, false, "Table 3.1 (<5 meru), (3.13a)"},
+    {"gyro_mu_drift_z", "gyro_mu_drift", "ω_MUz", ux::kGyroMuDrift + 2, D::kAngularRate, 5 * kMeru, "meru", kBoth, false, "Table 3.1 (<5 meru), (3.13a)"},
+    {"gyro_muy_drift_x", "gyro_muy_drift", "g·MUY_x", ux::kGyroMuyDrift + 0, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
+    {"gyro_muy_drift_y", "gyro_muy_drift", "g·MUY_y", ux::kGyroMuyDrift + 1, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
+    {"gyro_muy_drift_z", "gyro_muy_drift", "g·MUY_z", ux::kGyroMuyDrift + 2, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
+    {"misalign_const_x", "misalign_const", "ζ_cx", ux::kMisalignConst + 0, D::kAngle, 0.5 * kMrad, "mrad", kBoth, false, "Table 3.1 ζ (<1 mrad), half constant"},
+    {"misalign_const_y", "misalign_const", "ζ_cy", ux::kMisalignConst + 1, D::kAngle, 0.5 * kMrad, "mrad", kBoth, false, "Table 3.1 ζ (<1 mrad), half constant"},
+    {"misalign_const_z", "misalign_const", "ζ_cz", ux::kMisalignConst + 2, D::kAngle, 0.5 * kMrad, "mrad", kBoth, false, "Table 3.1 ζ (<1 mrad), half constant"},
+    {"misalign_align_x", "misalign_align", "ζ_rx", ux::kMisalignAlign + 0, D::kAngle, 0.5 * kMrad, "mrad", kBoth, true, "Table 3.1 ζ (<1 mrad), half per alignment"},
+    {"misalign_align_y", "misalign_align", "ζ_ry", ux::kMisalignAlign + 1, D::kAngle, 0.5 * kMrad, "mrad", kBoth, true, "Table 3.1 ζ (<1 mrad), half per alignment"},
+    {"misalign_align_z", "misalign_align", "ζ_rz", ux::kMisalignAlign + 2, D::kAngle, 0.5 * kMrad, "mrad", kBoth, true, "Table 3.1 ζ (<1 mrad), half per alignment"},
+    {"theodolite_azimuth", "theodolite_azimuth", "(u)ψ", ux::kTheodolite, D::kAngle, 1 * kMrad, "mrad", Applies::kSystem1Only, false, "Table 3.1 (<1 mrad), system 1"},
+    {"deflection_xi", "deflection", "ξ", ux::kDeflection + 0, D::kAngle, 0.1 * kMrad, "mrad", kBoth, false, "Table 3.1 (<0.1 mrad)"},
+    {"deflection_eta", "deflection", "η", ux::kDeflection + 1, D::kAngle, 0.1 * kMrad, "mrad", kBoth, false, "Table 3.1 (<0.1 mrad)"},
+    {"initial_velocity_x", "initial_velocity", "(u)V_x", ux::kInitialVelocity + 0, D::kVelocity, 0.3, "mps", kBoth, true, "Table 3.1 δV(0) (<0.3 m/s)"},
+    {"initial_velocity_y", "initial_velocity", "(u)V_y", ux::kInitialVelocity + 1, D::kVelocity, 0.3, "mps", kBoth, true, "Table 3.1 δV(0) (<0.3 m/s)"},
+    {"initial_velocity_z", "initial_velocity", "(u)V_z", ux::kInitialVelocity + 2, D::kVelocity, 0.3, "mps", kBoth, true, "Table 3.1 δV(0) (<0.3 m/s)"},
+    {"latitude_error", "latitude_error", "δL_0", ux::kLatitudeError, D::kAngle, 0.1 * kMrad, "mrad", kBoth, false, "Table 3.1 (<0.1 mrad)"},
+    {"altitude_error", "altitude_error", "δh", ux::kAltitudeError, D::kLength, 100.0, "m", kBoth, false, "Table 3.1 (<100 m)"},
+}};
+
+constexpr bool indices_match_positions() {
+  for (int i = 0; i < ux::kDim; ++i)
+    if (kCatalogue[i].index != i) return false;
+  return true;
+}
+static_assert(indices_match_positions(), "catalogue order must equal UncertaintyVector order");
+
+}  // namespace
+
+std::span<const UncertaintySpec> catalogue() { return kCatalogue; }
+
+std::optional<UncertaintySpec> find_uncertainty(std::string_view name) {
+  for (const auto& spec : kCatalogue)
+    if (spec.name == name) return spec;
+  return std::nullopt;
+}
+
+std::vector<int> select_uncertainties(std::string_view name_or_group) {
+  std::vector<int> out;
+  for (const auto& spec : kCatalogue) {
+    if (name_or_group == "all" || spec.name == name_or_group || spec.group == name_or_group)
+      out.push_back(spec.index);
+  }
+  return out;
+}
+
+std::vector<std::string> uncertainty_groups() {
+  std::vector<std::string> out;
+  for (const auto& spec : kCatalogue)
+    if (out.empty() || out.back() != spec.group) out.emplace_back(spec.group);
+  return out;
+}
+
+UncertaintyVector default_bounds() {
+  UncertaintyVector b;
+  for (const auto& spec : kCatalogue) b[spec.index] = spec.default_bound_si;
+  return b;
+}
+
+double paper_unit_to_si(const UncertaintySpec& spec) {
+  const std::string_view u = spec.paper_unit;
+  if (u == "mg") return kMgToMps2;
+  if (u == "ppm") return kPpmToUnit;
+  if (u == "meru") return kMeruToRadps;
+  if (u == "mrad") return kMradToRad;
+  return 1.0;  // m, mps: SI already
+}
+
+}  // namespace insmc

@@ -1,0 +1,55 @@
+#pragma once
+/// The uncertainty catalogue: every parameter of Table 3.1 and chapter 2, one
+/// entry per scalar, with its name (DESIGN.md §1), the paper's symbol, its
+/// dimension (SI inside), its default bound, the systems it applies to and
+/// whether it is drawn anew at each alignment. The single source of truth for
+/// the sampler, the --bound/--dist options, `insmc params`, the error budget
+/// and the Table 3.1 printout.
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "lib/units/quantity.h"
+#include "lib/uncertainty/uncertainty_vector.h"
+
+namespace insmc {
+
+/// Which alignment concepts a parameter acts in.
+enum class Applies { kBoth, kSystem1Only };
+
+struct UncertaintySpec {
+  std::string_view name;         ///< catalogue name, e.g. "gyro_drift_x"
+  std::string_view group;        ///< group prefix, e.g. "gyro_drift"
+  std::string_view symbol;       ///< the paper's symbol, e.g. "ω_dox"
+  int index;                     ///< slot in UncertaintyVector (ux::)
+  Dimension dimension;           ///< SI unit family
+  double default_bound_si;       ///< Table 3.1 bound (or DESIGN.md §1 split)
+  std::string_view paper_unit;   ///< unit the paper states the bound in
+  Applies applies;               ///< system(s) it acts in
+  bool per_alignment;            ///< drawn anew at every alignment (ζ_r, ∂f_r)
+  std::string_view source;       ///< where the bound comes from
+};
+
+/// All 33 entries, in UncertaintyVector order.
+std::span<const UncertaintySpec> catalogue();
+
+/// The entry named `name`, or nullopt.
+std::optional<UncertaintySpec> find_uncertainty(std::string_view name);
+
+/// Indices selected by a catalogue name, a group prefix (e.g. "gyro_drift"
+/// for its x, y, z) or "all". Empty when nothing matches.
+std::vector<int> select_uncertainties(std::string_view name_or_group);
+
+/// Distinct group names in catalogue order.
+std::vector<std::string> uncertainty_groups();
+
+/// Default bound vector (SI), from the catalogue.
+UncertaintyVector default_bounds();
+
+/// The paper-unit conversion factor of an entry (SI per paper unit), used
+/// only at the edges (printouts).
+double paper_unit_to_si(const UncertaintySpec& spec);
+
+}  // namespace insmc

@@ -1,0 +1,110 @@
+#include "lib/units/quantity.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <span>
+#include <string>
+
+#include "lib/common/input_error.h"
+#include "lib/units/units.h"
+
+namespace insmc {
+namespace {
+
+struct UnitFactor {
+  const char* name;
+  double to_si;
+};
+
+// The first entry of each table is the unit format_quantity prefers.
+constexpr UnitFactor kLengthUnits[] = {{"m", 1.0}, {"ft", kFtToM}, {"km", 1e3}, {"nmi", kNmiToM}};
+constexpr UnitFactor kTimeUnits[] = {{"s", 1.0}, {"min", kMinToS}, {"h", kHourToS}, {"ms", 1e-3}};
+constexpr UnitFactor kAngleUnits[] = {{"rad", 1.0},         {"mrad", kMradToRad},
+                                      {"urad", kUradToRad}, {"deg", kDegToRad},
+                                      {"arcmin", kArcminToRad}, {"arcsec", kArcsecToRad}};
+constexpr UnitFactor kRateUnits[] = {{"radps", 1.0},
+                                     {"meru", kMeruToRadps},
+                                     {"degph", kDegphToRadps},
+                                     {"degps", kDegToRad},
+                                     {"mradps", 1e-3}};
+constexpr UnitFactor kVelocityUnits[] = {{"mps", 1.0}, {"ftps", kFtpsToMps}, {"mmps", 1e-3}};
+constexpr UnitFactor kAccelerationUnits[] = {
+    {"mps2", 1.0}, {"mg", kMgToMps2}, {"ug", kUgToMps2}, {"g", kGravityMps2}, {"ftps2", kFtToM}};
+constexpr UnitFactor kDimensionlessUnits[] = {{"", 1.0}, {"ppm", kPpmToUnit}};
+
+std::span<const UnitFactor> units_of(Dimension d) {
+  switch (d) {
+    case Dimension::kLength: return kLengthUnits;
+    case Dimension::kTime: return kTimeUnits;
+    case Dimension::kAngle: return kAngleUnits;
+    case Dimension::kAngularRate: return kRateUnits;
+    case Dimension::kVelocity: return kVelocityUnits;
+    case Dimension::kAcceleration: return kAccelerationUnits;
+    case Dimension::kDimensionless: return kDimensionlessUnits;
+  }
+  return kDimensionlessUnits;
+}
+
+std::string accepted_list(Dimension d) {
+  if (d == Dimension::kDimensionless) return "a bare number (or NUMBERppm)";
+  std::vector<std::string> names = accepted_units(d);
+  return fmt::format("a number with one of the units {}", fmt::join(names, ", "));
+}
+
+}  // namespace
+
+std::string_view si_suffix(Dimension d) {
+  switch (d) {
+    case Dimension::kLength: return "m";
+    case Dimension::kTime: return "s";
+    case Dimension::kAngle: return "rad";
+    case Dimension::kAngularRate: return "radps";
+    case Dimension::kVelocity: return "mps";
+    case Dimension::kAcceleration: return "mps2";
+    case Dimension::kDimensionless: return "";
+  }
+  return "";
+}
+
+std::vector<std::string> accepted_units(Dimension d) {
+  std::vector<std::string> out;
+  for (const auto& u : units_of(d)) out.emplace_back(u.name);
+  return out;
+}
+
+double parse_quantity(std::string_view text, Dimension dimension, std::string_view field) {
+  const std::string s(text);
+  const std::string allowed = accepted_list(dimension);
+  if (s.empty()) throw InputError(std::string(field), "''", "expected " + allowed);
+  const char* begin = s.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double number = std::strtod(begin, &end);
+  if (end == begin) throw InputError(std::string(field), s, "not a number; expected " + allowed);
+  if (errno == ERANGE || !std::isfinite(number))
+    throw InputError(std::string(field), s, "must be finite; expected " + allowed);
+  std::string unit(end);
+  while (!unit.empty() && unit.front() == ' ') unit.erase(unit.begin());
+  for (const auto& u : units_of(dimension)) {
+    if (unit == u.name) return number * u.to_si;
+  }
+  if (unit.empty())
+    throw InputError(std::string(field), s, "a unit is required; expected " + allowed);
+  throw InputError(std::string(field), s, "unknown unit '" + unit + "'; expected " + allowed);
+}
+
+std::string format_quantity(double value_si, Dimension dimension) {
+  // Prefer the paper's unit where one is natural for the quantity.
+  const UnitFactor* chosen = &units_of(dimension)[0];
+  for (const auto& u : units_of(dimension)) {
+    const std::string_view name = u.name;
+    if (name == "meru" || name == "mg" || name == "mrad" || name == "ppm") chosen = &u;
+  }
+  if (dimension == Dimension::kDimensionless) chosen = &units_of(dimension)[0];
+  return fmt::format("{:.12g}{}", value_si / chosen->to_si, chosen->name);
+}
+
+}  // namespace insmc

@@ -1,0 +1,38 @@
+#pragma once
+/// Values with units on the command line and in INI files ("15min", "10meru",
+/// "1mg", "0.3mps", "100m", "1mrad", "20arcsec", "45deg", "50ppm"), parsed by
+/// one function into SI. A dimensional value without a unit is refused with
+/// the list of accepted units; dimensionless values are bare (or "ppm").
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace insmc {
+
+enum class Dimension {
+  kDimensionless,   ///< bare number, or ppm
+  kLength,          ///< m
+  kTime,            ///< s
+  kAngle,           ///< rad
+  kAngularRate,     ///< rad/s
+  kVelocity,        ///< m/s
+  kAcceleration,    ///< m/s²
+};
+
+/// Name of the SI unit used in file columns and JSON keys ("m", "s", "rad",
+/// "radps", "mps", "mps2", "" for dimensionless).
+std::string_view si_suffix(Dimension d);
+
+/// The unit spellings accepted for a dimension, e.g. {"m","ft","km","nmi"}.
+std::vector<std::string> accepted_units(Dimension d);
+
+/// Parses `text` as a number followed by a unit of `dimension`; returns SI.
+/// Throws InputError naming `field` on a missing or wrong unit, a malformed
+/// number, or a non-finite value.
+double parse_quantity(std::string_view text, Dimension dimension, std::string_view field);
+
+/// Formats an SI value in the most natural accepted unit for messages,
+/// INI round trips and run.json (e.g. "10meru", "1mg", "900s").
+std::string format_quantity(double value_si, Dimension dimension);
+
+}  // namespace insmc

@@ -1,0 +1,163 @@
+#include "montecarlo/aggregate/output_stats.h"
+
+#include <algorithm>
+#include <boost/math/distributions/chi_squared.hpp>
+#include <boost/math/distributions/normal.hpp>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+#include "lib/common/assert.h"
+
+namespace insmc::mc {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+void put_u64(std::string& out, std::uint64_t v) {
+  for (int b = 0; b < 8; ++b) out.push_back(static_cast<char>((v >> (8 * b)) & 0xff));
+}
+void put_f64(std::string& out, double d) {
+  std::uint64_t v;
+  std::memcpy(&v, &d, 8);
+  put_u64(out, v);
+}
+std::uint64_t get_u64(std::string_view in, std::size_t& pos) {
+  if (in.size() < pos + 8) throw std::runtime_error("OutputStats: truncated state");
+  std::uint64_t v = 0;
+  for (int b = 0; b < 8; ++b) v |= static_cast<std::uint64_t>(static_cast<unsigned char>(in[pos++])) << (8 * b);
+  return v;
+}
+double get_f64(std::string_view in, std::size_t& pos) {
+  const std::uint64_t v = get_u64(in, pos);
+  double d;
+  std::memcpy(&d, &v, 8);
+  return d;
+}
+
+}  // namespace
+
+RmsBounds rms_confidence_interval(std::uint64_t n, double sum_r2, double sum_r4, double confidence,
+                                  bool gaussian) {
+  INSMC_ASSERT(confidence > 0 && confidence < 1, "confidence = {}", confidence);
+  if (n < 2) return {kNaN, kNaN};
+  const double nd = static_cast<double>(n), m2 = sum_r2 / nd, alpha = 1 - confidence;
+  if (gaussian) {
+    // n·RMS²/σ² ~ χ²(n) for zero-mean normal r.
+    const boost::math::chi_squared chi(nd);
+    const double lo2 = nd * m2 / boost::math::quantile(chi, 1 - alpha / 2);
+    const double hi2 = nd * m2 / boost::math::quantile(chi, alpha / 2);
+    return {std::sqrt(lo2), std::sqrt(hi2)};
+  }
+  // Delta method: Var(mean r²) = (m4 − m2²)/n; interval for RMS² then √.
+  const double m4 = sum_r4 / nd;
+  const double z = boost::math::quantile(boost::math::normal(), 1 - alpha / 2);
+  const double half = z * std::sqrt(std::max(0.0, m4 - m2 * m2) / nd);
+  return {std::sqrt(std::max(0.0, m2 - half)), std::sqrt(m2 + half)};
+}
+
+OutputStats::OutputStats(double shift, double scale)
+    : shift_(shift),
+      scale_(scale > 0 && std::isfinite(scale) ? scale : 1.0),
+      inv_bin_width_(AbsHistogramLayout::kBins / (AbsHistogramLayout::kRange * scale_)),
+      min_(std::numeric_limits<double>::infinity()),
+      max_(-std::numeric_limits<double>::infinity()),
+      hist_(AbsHistogramLayout::kBins + 1, 0) {}
+
+void OutputStats::add_block(const double* v, std::size_t n) {
+  double sd = 0, sd2 = 0, s2 = 0, s4 = 0, lo = min_, hi = max_;
+  constexpr auto kOverflow = static_cast<std::size_t>(AbsHistogramLayout::kBins);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = v[i], d = r - shift_, r2 = r * r;
+    sd += d;
+    sd2 += d * d;
+    s2 += r2;
+    s4 += r2 * r2;
+    lo = std::min(lo, r);
+    hi = std::max(hi, r);
+    const double pos = std::abs(r) * inv_bin_width_;
+    ++hist_[pos < static_cast<double>(kOverflow) ? static_cast<std::size_t>(pos) : kOverflow];
+  }
+  n_ += n;
+  sum_d_.add(sd);
+  sum_d2_.add(sd2);
+  sum_r2_.add(s2);
+  sum_r4_.add(s4);
+  min_ = lo;
+  max_ = hi;
+}
+
+void OutputStats::merge(const OutputStats& o) {
+  INSMC_ASSERT(o.shift_ == shift_ && o.scale_ == scale_, "merging stats of different outputs");
+  n_ += o.n_;
+  sum_d_.merge(o.sum_d_);
+  sum_d2_.merge(o.sum_d2_);
+  sum_r2_.merge(o.sum_r2_);
+  sum_r4_.merge(o.sum_r4_);
+  min_ = std::min(min_, o.min_);
+  max_ = std::max(max_, o.max_);
+  for (std::size_t i = 0; i < hist_.size(); ++i) hist_[i] += o.hist_[i];
+}
+
+OutputSummary OutputStats::summarize(double confidence, bool gaussian) const {
+  OutputSummary s;
+  s.n = n_;
+  if (n_ == 0) {
+    s.mean = s.std = s.rms = s.rms_lo = s.rms_hi = s.min = s.max = s.p95_abs = kNaN;
+    return s;
+  }
+  const double nd = static_cast<double>(n_);
+  const double d1 = sum_d_.value() / nd;
+  s.mean = shift_ + d1;
+  s.std = n_ > 1 ? std::sqrt(std::max(0.0, (sum_d2_.value() - nd * d1 * d1) / (nd - 1))) : kNaN;
+  s.rms = std::sqrt(sum_r2_.value() / nd);
+  const RmsBounds b = rms_confidence_interval(n_, sum_r2_.value(), sum_r4_.value(), confidence, gaussian);
+  s.rms_lo = b.lo;
+  s.rms_hi = b.hi;
+  s.min = min_;
+  s.max = max_;
+  // p95 of |r|: the bin holding rank ceil(0.95 n), read at its upper edge.
+  const std::uint64_t rank = static_cast<std::uint64_t>(std::ceil(0.95 * nd));
+  std::uint64_t cum = 0;
+  s.p95_is_upper_bound = true;
+  s.p95_abs = std::max(std::abs(min_), std::abs(max_));
+  for (int i = 0; i < AbsHistogramLayout::kBins; ++i) {
+    cum += hist_[i];
+    if (cum >= rank) {
+      s.p95_abs = std::min((i + 1) / inv_bin_width_, s.p95_abs);
+      s.p95_is_upper_bound = false;
+      break;
+    }
+  }
+  return s;
+}
+
+void OutputStats::append_to(std::string& out) const {
+  put_f64(out, shift_);
+  put_f64(out, scale_);
+  put_u64(out, n_);
+  sum_d_.append_to(out);
+  sum_d2_.append_to(out);
+  sum_r2_.append_to(out);
+  sum_r4_.append_to(out);
+  put_f64(out, min_);
+  put_f64(out, max_);
+  for (std::uint64_t c : hist_) put_u64(out, c);
+}
+
+OutputStats OutputStats::read_from(std::string_view in, std::size_t& pos) {
+  const double shift = get_f64(in, pos), scale = get_f64(in, pos);
+  OutputStats s(shift, scale);
+  s.n_ = get_u64(in, pos);
+  s.sum_d_ = ExactSum::read_from(in, pos);
+  s.sum_d2_ = ExactSum::read_from(in, pos);
+  s.sum_r2_ = ExactSum::read_from(in, pos);
+  s.sum_r4_ = ExactSum::read_from(in, pos);
+  s.min_ = get_f64(in, pos);
+  s.max_ = get_f64(in, pos);
+  for (auto& c : s.hist_) c = get_u64(in, pos);
+  return s;
+}
+
+}  // namespace insmc::mc

@@ -1,0 +1,49 @@
+#pragma once
+/// The parallel Monte Carlo engine: samples are cut into fixed blocks of
+/// kBlockSize indices; oneTBB runs blocks on any number of threads; each
+/// block is drawn in bulk from the counter-based stream, pushed through the
+/// study map as one matrix product and summed in index order; block sums
+/// go into exactly associative totals. The result is the same bits for any
+/// thread count or split of the block range.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "montecarlo/aggregate/output_stats.h"
+#include "montecarlo/study/study_map.h"
+
+namespace insmc::mc {
+
+/// Statistics of every output of a study (layout order).
+class StudyAccumulator {
+ public:
+  StudyAccumulator() = default;
+  explicit StudyAccumulator(const StudyMap& map);
+  void merge(const StudyAccumulator& other);
+  std::vector<OutputStats>& outputs() { return outputs_; }
+  const std::vector<OutputStats>& outputs() const { return outputs_; }
+  std::string serialize() const;
+  static StudyAccumulator deserialize(std::string_view bytes);
+  friend bool operator==(const StudyAccumulator&, const StudyAccumulator&) = default;
+
+ private:
+  std::vector<OutputStats> outputs_;
+};
+
+/// Called from worker threads with the number of samples finished so far.
+using ProgressCallback = std::function<void(std::uint64_t samples_done)>;
+
+/// Runs blocks [first_block, end_block) of the study (all blocks by default).
+StudyAccumulator run_blocks(const StudyConfig& config, const StudyMap& map, std::uint64_t first_block,
+                            std::uint64_t end_block, const ProgressCallback& progress = {});
+
+inline std::uint64_t block_count(std::uint64_t samples) { return (samples + kBlockSize - 1) / kBlockSize; }
+
+/// The outputs of one sample, layout order (for --replay and tests).
+std::vector<double> evaluate_sample(const StudyConfig& config, const StudyMap& map, const StudyLayout& layout,
+                                    const UncertaintyVector& x);
+
+}  // namespace insmc::mc

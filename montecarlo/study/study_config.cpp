@@ -1,0 +1,37 @@
+#include "montecarlo/study/study_config.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "lib/common/input_error.h"
+
+namespace insmc::mc {
+
+void validate(const StudyConfig& c) {
+  if (c.systems.empty()) throw InputError("--system", "(none)", "select system 1, 2 or 1,2");
+  if (c.schemes.empty()) throw InputError("--scheme", "(none)", "select at least one scheme");
+  if (c.samples < 2) throw InputError("--samples", fmt::format("{}", c.samples), "must be >= 2");
+  if (!(c.confidence > 0 && c.confidence < 1))
+    throw InputError("--confidence", fmt::format("{}", c.confidence), "must lie strictly between 0 and 1");
+  if (c.threads < 0) throw InputError("--threads", fmt::format("{}", c.threads), "must be >= 0 (0 = all cores)");
+  if (!(c.grid_step_s > 0) || !std::isfinite(c.grid_step_s))
+    throw InputError("--grid-step", fmt::format("{}s", c.grid_step_s), "must be > 0");
+  if (!(c.grid_end_s > 0) || !std::isfinite(c.grid_end_s) || c.grid_end_s > 6 * 3600.0)
+    throw InputError("--grid-end", fmt::format("{}s", c.grid_end_s), "must lie in (0, 6h]");
+  if (c.grid_end_s / c.grid_step_s > 10000)
+    throw InputError("--grid-step", fmt::format("{}s", c.grid_step_s), "gives more than 10000 grid points");
+  bool uses_system2 = false;
+  for (System s : c.systems) uses_system2 |= s == System::kGyrocompass;
+  if (uses_system2 && !(std::abs(c.model.latitude_rad) < M_PI / 2 - 1e-9))
+    throw InputError("--latitude", fmt::format("{}rad", c.model.latitude_rad),
+                     "must lie strictly between -90deg and 90deg for system 2 (2.16 divides by cos L0)");
+  if (c.fidelity == Fidelity::kTruth)
+    throw InputError("--fidelity", "truth", "the truth level is not available in `run` yet; use paper or linear");
+  for (int i = 0; i < ux::kDim; ++i) {
+    const auto& p = c.uncertainties.at(i);
+    if (!std::isfinite(p.bound_si) || p.bound_si < 0)
+      throw InputError(fmt::format("--bound {}", catalogue()[i].name), fmt::format("{}", p.bound_si), "must be finite and >= 0");
+  }
+}
+
+}  // namespace insmc::mc

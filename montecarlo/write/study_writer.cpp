@@ -1,0 +1,180 @@
+#include "montecarlo/write/study_writer.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "lib/common/version.h"
+#include "lib/uncertainty/catalogue.h"
+#include "lib/units/quantity.h"
+#include "lib/units/units.h"
+#include "montecarlo/write/csv.h"
+#include "montecarlo/write/markdown.h"
+#include "montecarlo/write/svg_plot.h"
+
+namespace insmc::mc {
+namespace {
+
+double length_factor(LengthUnit u) { return u == LengthUnit::kFoot ? 1.0 / kFtToM : 1.0; }
+std::string length_suffix(LengthUnit u) { return u == LengthUnit::kFoot ? "ft" : "m"; }
+std::string fmt_minutes(double t_s) { return format_number(t_s / 60.0); }
+
+std::vector<std::string> envelope_header(LengthUnit u) {
+  // fmt, not string operator+: GCC 12 -O3 raises a false -Wrestrict on the latter.
+  const std::string u_ = length_suffix(u);
+  std::vector<std::string> header = {"scheme", "system", "clock", "axis", "t_min", "n"};
+  for (const char* q : {"rms", "rms_lo", "rms_hi", "mean", "std", "min", "max", "p95"})
+    header.push_back(fmt::format("{}_{}", q, u_));
+  return header;
+}
+
+}  // namespace
+
+EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const StudyAccumulator& acc,
+                              LengthUnit unit) {
+  const double k = length_factor(unit);
+  Table report(envelope_header(unit)), grid(envelope_header(unit));
+  Table summary({"scheme", "system", "axis", "t_min", fmt::format("RMS [{}] ± half-width ({}% CI)", length_suffix(unit),
+                                                                    format_number(100 * c.confidence)),
+                 "n"});
+  EnvelopeFiles f;
+  f.envelope_json = Json::array();
+  std::vector<PlotSeries> plot;
+  for (size_t o = 0; o < l.outputs.size(); ++o) {
+    const OutputSpec& spec = l.outputs[o];
+    const OutputSummary s = acc.outputs()[o].summarize(c.confidence);
+    const double t = l.times_s[spec.time_index];
+    std::vector<std::string> row = {std::string(to_string(spec.scheme)), std::to_string(system_number(spec.system)),
+                                    std::string(clock_of(spec.scheme)), std::string(to_string(spec.axis)),
+                                    fmt_minutes(t), std::to_string(s.n), format_number(k * s.rms),
+                                    format_number(k * s.rms_lo), format_number(k * s.rms_hi),
+                                    format_number(k * s.mean), format_number(k * s.std), format_number(k * s.min),
+                                    format_number(k * s.max), format_number(k * s.p95_abs)};
+    if (l.is_grid_time[spec.time_index]) grid.add_row(row);
+    if (l.is_report_time[spec.time_index]) {
+      report.add_row(row);
+      const double half = 0.5 * (s.rms_hi - s.rms_lo);
+      summary.add_row({row[0], row[1], row[3], row[4],
+                       fmt::format("{:.6g} ± {:.2g}", k * s.rms, k * half), std::to_string(s.n)});
+      Json j = Json::object();
+      j["scheme"] = row[0];
+      j["system"] = system_number(spec.system);
+      j["clock"] = row[2];
+      j["axis"] = row[3];
+      j["t_min"] = t / 60.0;
+      j["n"] = static_cast<double>(s.n);
+      j["rms_m"] = s.rms;
+      j["rms_lo_m"] = s.rms_lo;
+      j["rms_hi_m"] = s.rms_hi;
+      j["mean_m"] = s.mean;
+      j["std_m"] = s.std;
+      j["p95_m"] = s.p95_abs;
+      f.envelope_json.push_back(j);
+    }
+    if (spec.axis == Axis::kHorizontal && l.is_grid_time[spec.time_index]) {
+      const std::string name = fmt::format("{} sys {}", to_string(spec.scheme), system_number(spec.system));
+      if (plot.empty() || plot.back().name != name) plot.push_back({name, {}, {}, {}, {}});
+      plot.back().x.push_back(t / 60.0);
+      plot.back().y.push_back(k * s.rms);
+      plot.back().lo.push_back(k * s.rms_lo);
+      plot.back().hi.push_back(k * s.rms_hi);
+    }
+  }
+  f.envelope_csv = render_csv(report);
+  f.envelope_grid_csv = render_csv(grid);
+  f.envelope_md = fmt::format(
+      "# insmc run: RMS position error\n\n{} samples, seed {}, fidelity {}, latitude {} deg; "
+      "confidence intervals {}% (delta method, fourth moment).\n\n{}",
+      c.samples, c.seed, to_string(c.fidelity), format_number(c.model.latitude_rad / kDegToRad),
+      format_number(100 * c.confidence), render_markdown(report));
+  f.summary_text = render_markdown(summary);
+  f.envelope_svg = svg_line_plot("Horizontal RMS position error (shaded: confidence interval)",
+                                 "time on the scheme's clock [min]",
+                                 fmt::format("RMS horizontal error [{}]", length_suffix(unit)), plot);
+  return f;
+}
+
+CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, const StudyMap& map, LengthUnit unit) {
+  const double k = length_factor(unit);
+  const std::string rms_col = fmt::format("rms_{}", length_suffix(unit));
+  Table cov({"scheme", "system", "axis", "t_min", rms_col}), cov_grid({"scheme", "system", "axis", "t_min", rms_col});
+  Table budget({"scheme", "system", "axis", "t_min", "parameter", "variance_share"});
+  const auto shares = map.variance_shares();
+  const auto mean_shares = map.mean_shares();
+  CovarianceFiles f;
+  f.covariance_json = Json::array();
+  for (size_t o = 0; o < l.outputs.size(); ++o) {
+    const OutputSpec& spec = l.outputs[o];
+    const double t = l.times_s[spec.time_index];
+    const std::vector<std::string> key = {std::string(to_string(spec.scheme)),
+                                          std::to_string(system_number(spec.system)),
+                                          std::string(to_string(spec.axis)), fmt_minutes(t)};
+    std::vector<std::string> row = key;
+    row.push_back(format_number(k * map.predicted_rms()[o]));
+    if (l.is_grid_time[spec.time_index]) cov_grid.add_row(row);
+    if (!l.is_report_time[spec.time_index]) continue;
+    cov.add_row(row);
+    Json j = Json::object();
+    j["scheme"] = key[0];
+    j["system"] = system_number(spec.system);
+    j["axis"] = key[2];
+    j["t_min"] = t / 60.0;
+    j["rms_m"] = map.predicted_rms()[o];
+    f.covariance_json.push_back(j);
+    for (int p = 0; p < ux::kDim; ++p) {
+      if (shares[o][p] <= 0) continue;
+      std::vector<std::string> b = key;
+      b.push_back(std::string(catalogue()[p].name));
+      b.push_back(format_number(shares[o][p]));
+      budget.add_row(b);
+    }
+    if (mean_shares[o] > 0) {
+      std::vector<std::string> b = key;
+      b.push_back("mean");  // the squared mean of fixed-value parameters
+      b.push_back(format_number(mean_shares[o]));
+      budget.add_row(b);
+    }
+  }
+  f.covariance_csv = render_csv(cov);
+  f.covariance_grid_csv = render_csv(cov_grid);
+  f.budget_csv = render_csv(budget);
+  f.covariance_md = fmt::format("# insmc covariance: exact linear RMS\n\nfidelity {}, latitude {} deg.\n\n{}",
+                                to_string(c.fidelity), format_number(c.model.latitude_rad / kDegToRad),
+                                render_markdown(cov));
+  return f;
+}
+
+Json settings_json(const StudyConfig& c) {
+  Json s = Json::object();
+  s["program"] = "insmc";
+  s["version"] = kVersion;
+  s["seed"] = static_cast<double>(c.seed);
+  s["samples"] = static_cast<double>(c.samples);
+  s["threads"] = c.threads;
+  s["fidelity"] = std::string(to_string(c.fidelity));
+  Json systems = Json::array(), schemes = Json::array();
+  for (System sy : c.systems) systems.push_back(system_number(sy));
+  for (Scheme sc : c.schemes) schemes.push_back(std::string(to_string(sc)));
+  s["systems"] = systems;
+  s["schemes"] = schemes;
+  s["latitude_rad"] = c.model.latitude_rad;
+  s["leveling_gain_ratio"] = c.model.leveling_gain_ratio;
+  s["confidence"] = c.confidence;
+  s["grid_step_s"] = c.grid_step_s;
+  s["grid_end_s"] = c.grid_end_s;
+  Json report = Json::array();
+  for (double t : c.report_times_s) report.push_back(t);
+  s["report_times_s"] = report;
+  Json params = Json::object();
+  for (const auto& spec : catalogue()) {
+    const ParameterDistribution& p = c.uncertainties.at(spec.index);
+    Json j = Json::object();
+    j["distribution"] = p.describe();
+    j["bound_si"] = p.bound_si;
+    if (p.kind == DistributionKind::kFixed) j["fixed_si"] = p.fixed_si;
+    params[std::string(spec.name)] = j;
+  }
+  s["uncertainties"] = params;
+  return s;
+}
+
+}  // namespace insmc::mc

@@ -1,0 +1,36 @@
+#pragma once
+/// The output contract of `insmc run` and `insmc covariance` (README,
+/// "Output files"): envelope.csv, envelope_grid.csv, envelope.md,
+/// envelope.svg, covariance.csv, budget.csv. Rendered to strings first, so
+/// that nothing is written unless everything was computed.
+#include <string>
+
+#include "montecarlo/engine/engine.h"
+#include "montecarlo/write/json.h"
+
+namespace insmc::mc {
+
+/// SI columns (_m) or the paper's feet (_ft), chosen with --units.
+enum class LengthUnit { kMetre, kFoot };
+
+struct EnvelopeFiles {
+  std::string envelope_csv, envelope_grid_csv, envelope_md, envelope_svg;
+  std::string summary_text;  ///< the readable table printed on stdout
+  Json envelope_json;        ///< the report-time envelope for run.json
+};
+
+EnvelopeFiles render_envelope(const StudyConfig& config, const StudyLayout& layout,
+                              const StudyAccumulator& acc, LengthUnit unit);
+
+struct CovarianceFiles {
+  std::string covariance_csv, covariance_grid_csv, budget_csv, covariance_md;
+  Json covariance_json;
+};
+
+CovarianceFiles render_covariance(const StudyConfig& config, const StudyLayout& layout, const StudyMap& map,
+                                  LengthUnit unit);
+
+/// Every setting that reproduces the study (without the results).
+Json settings_json(const StudyConfig& config);
+
+}  // namespace insmc::mc

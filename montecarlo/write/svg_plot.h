@@ -1,0 +1,18 @@
+#pragma once
+/// A small, dependency-free SVG line plot (envelopes against time, sweeps):
+/// one polyline per series with an optional shaded confidence band.
+#include <string>
+#include <vector>
+
+namespace insmc::mc {
+
+struct PlotSeries {
+  std::string name;
+  std::vector<double> x, y;
+  std::vector<double> lo, hi;  ///< optional band (same length as y, or empty)
+};
+
+std::string svg_line_plot(const std::string& title, const std::string& x_label, const std::string& y_label,
+                          const std::vector<PlotSeries>& series);
+
+}  // namespace insmc::mc

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs what insmc needs from Debian 12's archive, only what is missing.
+# Idempotent and quiet on success; run as root (no sudo needed or used).
+#   scripts/install-deps.sh          build + run dependencies
+#   scripts/install-deps.sh --test   also GoogleTest, Random123 (test oracle)
+set -euo pipefail
+
+packages=(g++ cmake make libeigen3-dev libtbb-dev libboost-program-options-dev libboost-dev libfmt-dev)
+if [[ "${1:-}" == "--test" ]]; then
+  packages+=(libgtest-dev librandom123-dev)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+if [[ $(id -u) -ne 0 ]]; then
+  echo "install-deps: missing Debian packages: ${missing[*]}; run this script as root to install them" >&2
+  exit 1
+fi
+log=$(mktemp)
+export DEBIAN_FRONTEND=noninteractive
+if ! { apt-get update -q && apt-get install -y -q --no-install-recommends "${missing[@]}"; } >"$log" 2>&1; then
+  cat "$log" >&2
+  echo "install-deps: apt-get failed installing: ${missing[*]}" >&2
+  exit 1
+fi
+rm -f "$log"

@@ -1,0 +1,149 @@
+// End-to-end tests of the insmc command line: help, good runs, the output
+// contract, determinism across thread counts, and every kind of bad input
+// (exit 2, one line naming the field, no output file).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include "tests/cli/run_program.h"
+
+namespace insmc::testing {
+namespace {
+
+int line_count(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+
+TEST(Cli, HelpAndVersion) {
+  const auto help = run_insmc("--help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("subcommands"), std::string::npos);
+  const auto version = run_insmc("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_EQ(version.out.rfind("insmc ", 0), 0u);
+  for (const char* sub : {"run", "covariance", "check", "tables", "params", "bench"}) {
+    const auto r = run_insmc(std::string(sub) + " --help");
+    EXPECT_EQ(r.exit_code, 0) << sub;
+    EXPECT_NE(r.out.find("usage: insmc " + std::string(sub)), std::string::npos) << sub;
+  }
+}
+
+TEST(Cli, UnknownSubcommandAndOptionAreRefused) {
+  const auto a = run_insmc("frobnicate");
+  EXPECT_EQ(a.exit_code, 2);
+  EXPECT_EQ(line_count(a.err), 1) << a.err;
+  const auto b = run_insmc("tables --no-such-option");
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_EQ(line_count(b.err), 1) << b.err;
+  EXPECT_NE(b.err.find("no-such-option"), std::string::npos) << b.err;
+}
+
+TEST(Cli, TablesPrintsEveryTableAndWritesFiles) {
+  const auto md = run_insmc("tables");
+  ASSERT_EQ(md.exit_code, 0) << md.err;
+  for (const char* t : {"Table 3.1", "Table 4.1", "Table 4.2", "Table 4.3", "Table 5.1", "Table 5.2", "Figure 3.2"})
+    EXPECT_NE(md.out.find(t), std::string::npos) << t;
+  TempDir dir;
+  const auto csv = run_insmc("tables --format csv --out " + dir.str() + "/tables");
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  EXPECT_EQ(csv.out.substr(0, csv.out.find('\n')), "table,row,column,unit,printed,computed,deviation_pct,note");
+  EXPECT_EQ(read_file(dir.path() / "tables" / "tables.csv"), csv.out);
+}
+
+TEST(Cli, ParamsListsTheCatalogue) {
+  const auto r = run_insmc("params --format csv --bound gyro_drift=3meru --dist accel_bias_x=zero");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(line_count(r.out), 34);  // header + 33 parameters
+  EXPECT_NE(r.out.find("gyro_drift_y,ω_doy,radps,"), std::string::npos);
+  EXPECT_NE(r.out.find("3 meru"), std::string::npos);
+}
+
+TEST(Cli, RunWritesTheOutputContractAndIsIdenticalForAnyThreadCount) {
+  TempDir dir;
+  const std::string common = " --samples 5000 --seed 7 --grid-step 10min";
+  const auto one = run_insmc("run" + common + " --threads 1 --out " + dir.str() + "/t1");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  const auto two = run_insmc("run" + common + " --threads 2 --out " + dir.str() + "/t2");
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  for (const char* f : {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.svg", "run.json"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "t1" / f)) << f;
+  const std::string csv = read_file(dir.path() / "t1" / "envelope.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "scheme,system,clock,axis,t_min,n,rms_m,rms_lo_m,rms_hi_m,mean_m,std_m,min_m,max_m,p95_m");
+  EXPECT_NE(csv.find("none,2,switchover,horizontal,84,5000,"), std::string::npos);
+  EXPECT_EQ(line_count(csv), 1 + 2 * 3 * 4);  // systems × times × axes
+  for (const char* f : {"envelope.csv", "envelope_grid.csv"})
+    EXPECT_EQ(read_file(dir.path() / "t1" / f), read_file(dir.path() / "t2" / f)) << f;
+  const auto paper = run_insmc("run --samples 3000 --units paper --format csv --system 1");
+  ASSERT_EQ(paper.exit_code, 0) << paper.err;
+  EXPECT_NE(paper.out.find("rms_ft,rms_lo_ft"), std::string::npos);
+}
+
+TEST(Cli, ReplayPrintsOneSample) {
+  const auto r = run_insmc("run --samples 100 --replay 42");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("# sample 42"), std::string::npos);
+  EXPECT_NE(r.out.find("gyro_drift_z,"), std::string::npos);
+}
+
+TEST(Cli, CovarianceWritesRmsAndABudgetSummingToOne) {
+  TempDir dir;
+  const auto r = run_insmc("covariance --out " + dir.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string cov = read_file(dir.path() / "covariance.csv");
+  EXPECT_EQ(cov.substr(0, cov.find('\n')), "scheme,system,axis,t_min,rms_m");
+  const std::string budget = read_file(dir.path() / "budget.csv");
+  EXPECT_EQ(budget.substr(0, budget.find('\n')), "scheme,system,axis,t_min,parameter,variance_share");
+}
+
+struct BadInput {
+  const char* args;
+  const char* names;  // text the one-line message must contain
+};
+
+TEST(Cli, BadInputGivesOneLineExitTwoAndNoOutput) {
+  const BadInput cases[] = {
+      {"run --bound no_such_param=1mg", "no_such_param"},
+      {"run --bound gyro_drift=-1meru", "gyro_drift"},
+      {"run --bound gyro_drift=nanmeru", "gyro_drift"},
+      {"run --bound gyro_drift=10", "unit"},
+      {"run --dist accel_bias=weird", "accel_bias"},
+      {"run --samples 0", "--samples"},
+      {"run --samples -3", "--samples"},
+      {"run --latitude 90deg --system 2", "--latitude"},
+      {"run --confidence 1.5", "--confidence"},
+      {"run --system 3", "--system"},
+      {"run --fidelity exact", "--fidelity"},
+      {"run --scheme 9.9", "--scheme"},
+      {"covariance --latitude 45", "--latitude"},
+      {"tables --format yaml", "--format"},
+  };
+  for (const BadInput& c : cases) {
+    TempDir dir;
+    const auto r = run_insmc(std::string(c.args) + " --out " + dir.str() + "/out");
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.names), std::string::npos) << c.args << "\n" << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out")) << c.args;
+  }
+}
+
+TEST(Cli, CheckExitsByTheBoundsVerdict) {
+  TempDir dir;
+  const auto write = [&](const char* name, const char* text) {
+    std::ofstream(dir.path() / name) << text;
+    return (dir.path() / name).string();
+  };
+  const std::string loose = write("loose.txt", "# generous\nscheme=none system=2 axis=horizontal t_min=84 rms_m<=1e9\n");
+  const std::string tight = write("tight.txt", "scheme=none system=1 axis=x t_min=42 rms_ft<=1 confidence=0.99\n");
+  const std::string bad = write("bad.txt", "scheme=none system=1 axis=sideways t_min=42 rms_m<=1\n");
+  EXPECT_EQ(run_insmc("check --samples 3000 --bounds " + loose).exit_code, 0);
+  const auto violated = run_insmc("check --samples 3000 --bounds " + tight);
+  EXPECT_EQ(violated.exit_code, 1);
+  EXPECT_NE(violated.out.find("VIOLATED line 1"), std::string::npos) << violated.out;
+  const auto malformed = run_insmc("check --samples 3000 --bounds " + bad);
+  EXPECT_EQ(malformed.exit_code, 2);
+  EXPECT_NE(malformed.err.find("bad.txt:1:"), std::string::npos) << malformed.err;
+}
+
+}  // namespace
+}  // namespace insmc::testing

@@ -1,0 +1,87 @@
+#include "lib/units/quantity.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "lib/common/input_error.h"
+#include "lib/units/units.h"
+
+namespace insmc {
+namespace {
+
+struct Case {
+  const char* text;
+  Dimension dimension;
+  double expected_si;
+};
+
+TEST(ParseQuantity, AcceptsEveryDocumentedUnit) {
+  const Case cases[] = {
+      {"15min", Dimension::kTime, 900.0},
+      {"900s", Dimension::kTime, 900.0},
+      {"1.5h", Dimension::kTime, 5400.0},
+      {"10meru", Dimension::kAngularRate, 10e-3 * kEarthRateRadps},
+      {"1mg", Dimension::kAcceleration, 1e-3 * 9.80665},
+      {"0.3mps", Dimension::kVelocity, 0.3},
+      {"0.1ftps", Dimension::kVelocity, 0.03048},
+      {"100m", Dimension::kLength, 100.0},
+      {"3ft", Dimension::kLength, 0.9144},
+      {"1mrad", Dimension::kAngle, 1e-3},
+      {"20arcsec", Dimension::kAngle, 20.0 / 3600.0 * kDegToRad},
+      {"45deg", Dimension::kAngle, 45.0 * kDegToRad},
+      {"100ppm", Dimension::kDimensionless, 1e-4},
+      {"1e-4", Dimension::kDimensionless, 1e-4},
+      {"-2.5mg", Dimension::kAcceleration, -2.5e-3 * 9.80665},
+  };
+  for (const Case& c : cases) {
+    EXPECT_DOUBLE_EQ(parse_quantity(c.text, c.dimension, "f"), c.expected_si) << c.text;
+  }
+}
+
+TEST(ParseQuantity, RefusesMissingWrongOrNonFiniteValues) {
+  const Case bad[] = {
+      {"10", Dimension::kAngularRate, 0},     // unit required
+      {"10mg", Dimension::kAngularRate, 0},   // wrong dimension
+      {"abc", Dimension::kTime, 0},           // not a number
+      {"nanmin", Dimension::kTime, 0},        // NaN
+      {"infs", Dimension::kTime, 0},          // infinite
+      {"", Dimension::kLength, 0},            // empty
+      {"5furlong", Dimension::kLength, 0},    // unknown unit
+  };
+  for (const Case& c : bad) {
+    EXPECT_THROW(parse_quantity(c.text, c.dimension, "field"), InputError) << c.text;
+  }
+}
+
+TEST(ParseQuantity, ErrorNamesFieldValueAndAcceptedUnits) {
+  try {
+    parse_quantity("10", Dimension::kAngularRate, "gyro_drift_x");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("gyro_drift_x = 10"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("meru"), std::string::npos) << msg;
+  }
+}
+
+TEST(FormatQuantity, RoundTripsThroughParse) {
+  const double values[] = {0.0, 1e-12, 7.292115e-8, 1.0, -3.5};
+  const Dimension dims[] = {Dimension::kAngularRate, Dimension::kAcceleration, Dimension::kAngle,
+                            Dimension::kTime, Dimension::kDimensionless};
+  for (Dimension d : dims) {
+    for (double v : values) {
+      const std::string text = format_quantity(v, d);
+      EXPECT_NEAR(parse_quantity(text, d, "f"), v, 1e-11 * std::abs(v) + 1e-300) << text;
+    }
+  }
+}
+
+TEST(Constants, SchulerPeriodIs84Point4Minutes) {
+  const double period_min = 2 * std::numbers::pi / schuler_frequency_radps() / 60.0;
+  EXPECT_NEAR(period_min, 84.4, 0.05);
+  EXPECT_DOUBLE_EQ(kEarthRadiusM, 20.9e6 * 0.3048);
+}
+
+}  // namespace
+}  // namespace insmc
