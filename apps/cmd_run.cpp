@@ -9,24 +9,44 @@
 #include "lib/common/input_error.h"
 #include "lib/uncertainty/catalogue.h"
 #include "montecarlo/engine/engine.h"
+#include "lib/compensation/extended_vector.h"
 #include "montecarlo/sampler/sampler.h"
 #include "montecarlo/write/csv.h"
 
 namespace insmc::app {
 namespace {
 
-/// --replay: one sample alone, its uncertainties and its outputs at the report times.
+/// --replay: one sample alone: its uncertainties, what its test run and
+/// alignment produced (the extended vector z per system) and its errors.
 int replay(const mc::StudyConfig& c, const mc::StudyLayout& l, const mc::StudyMap& map, std::uint64_t index) {
   const UncertaintyVector x = mc::Sampler(c.uncertainties).draw(c.seed, index);
-  fmt::print("# sample {} (seed {})\n\nuncertainty,value_si\n", index, c.seed);
+  fmt::print("# sample {} (seed {}, fidelity {})\n\nuncertainty,value_si\n", index, c.seed, to_string(c.fidelity));
   for (const auto& spec : catalogue()) fmt::print("{},{}\n", spec.name, mc::format_number(x[spec.index]));
-  const std::vector<double> out = mc::evaluate_sample(c, map, l, x);
-  fmt::print("\nscheme,system,axis,t_min,error_m\n");
+  static const char* const kSlots[][2] = {
+      {"realignment zeta_r", "rad"}, {"realignment bias change", "mps2"}, {"realignment velocity", "mps"},
+      {"U2 hat (position fit)", ""}, {"U3 hat (position fit)", ""},      {"U3 hat (accelerometer fit)", ""},
+      {"filtered delta f(T)", "mps2"}, {"alignment torquer commands", "radps"},
+      {"alignment accelerometer outputs", "mps2"}, {"velocity wiggle at T", "mps"}};
+  const int starts[] = {ez::kRealignZeta, ez::kRealignBias, ez::kRealignVelocity, ez::kU2, ez::kU3, ez::kU3Accel,
+                        ez::kDfT, ez::kTorquerCommands, ez::kAlignAccel, ez::kWiggleAtT, ez::kDim};
+  Eigen::MatrixXd xm = x, z(ez::kDim, 1);
+  for (std::size_t j = 0; j < c.systems.size(); ++j) {
+    map.pipeline(static_cast<int>(j)).extended_vectors(index, 1, xm, z);
+    fmt::print("\nsystem {}: estimates and measurements (fitted {})\nquantity,x,y,z\n", system_number(c.systems[j]),
+               map.fitted_terms(static_cast<int>(j)));
+    for (int q = 0; q < 10; ++q) {
+      std::string row = fmt::format("{}{}", kSlots[q][0], *kSlots[q][1] ? fmt::format(" [{}]", kSlots[q][1]) : "");
+      for (int i = starts[q]; i < starts[q + 1]; ++i) row += fmt::format(",{}", mc::format_number(z(i, 0)));
+      fmt::print("{}\n", row);
+    }
+  }
+  const std::vector<double> out = mc::evaluate_sample(c, map, l, index, x);
+  fmt::print("\nscheme,system,clock,axis,t_min,error_m\n");
   for (size_t o = 0; o < l.outputs.size(); ++o) {
     const auto& s = l.outputs[o];
     if (!l.is_report_time[s.time_index]) continue;
-    fmt::print("{},{},{},{},{}\n", to_string(s.scheme), system_number(s.system), to_string(s.axis),
-               mc::format_number(l.times_s[s.time_index] / 60), mc::format_number(out[o]));
+    fmt::print("{},{},{},{},{},{}\n", to_string(s.scheme), system_number(s.system), clock_of(s.scheme),
+               to_string(s.axis), mc::format_number(l.times_s[s.time_index] / 60), mc::format_number(out[o]));
   }
   return 0;
 }
@@ -70,7 +90,7 @@ int run_run(const Args& args) {
                                                   [&](std::uint64_t done) { progress.update(done); });
   const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const mc::EnvelopeFiles files = mc::render_envelope(config, layout, acc, unit);
+  const mc::EnvelopeFiles files = mc::render_envelope(config, layout, map, acc, unit);
   mc::Json run = mc::Json::object();
   run["settings"] = mc::settings_json(config);
   run["elapsed_s"] = elapsed_s;

@@ -560,9 +560,17 @@ double minutes_of(const std::string& column) {
 
 std::string format_value(double v) { return fmt::format("{:.4g}", v); }
 
-}  // namespace
+constexpr std::string_view kNoteKinds[] = {"rounding",   "ocr",        "paper_slip",       "paper_approximation",
+                                           "time_shift", "paper_error", "model_difference", "label",
+                                           "zero"};
 
-std::vector<TableCell> compute_tables(const ModelOptions& options, TableConvention convention) {
+bool scope_matches(const CellNote& n, TableConvention c) {
+  return n.scope == NoteScope::kBoth || (n.scope == NoteScope::kPaper && c == TableConvention::kPaper) ||
+         (n.scope == NoteScope::kCorrected && c == TableConvention::kCorrected);
+}
+
+std::vector<TableCell> run(const ModelOptions& options, TableConvention convention,
+                           std::vector<NoteCheck>* checks) {
   const auto& printed = printed_cells();
   const auto& notes = cell_notes();
   // Every time the Schuler ODE must reach: the printed columns and the
@@ -579,6 +587,7 @@ std::vector<TableCell> compute_tables(const ModelOptions& options, TableConventi
 
   Evaluator ev(options, convention, times);
   const auto specs = row_specs(options);
+  std::vector<bool> note_used(notes.size(), false);
 
   std::vector<TableCell> out;
   for (const auto& p : printed) {
@@ -608,16 +617,38 @@ std::vector<TableCell> compute_tables(const ModelOptions& options, TableConventi
       cell.computed = std::abs(m.value(t_min * kMinToS) * out_factor);
       if (p.printed != 0.0) cell.deviation_pct = 100.0 * (cell.computed - p.printed) / p.printed;
       std::string text;
-      for (const CellNote& n : notes) {
+      for (std::size_t k = 0; k < notes.size(); ++k) {
+        const CellNote& n = notes[k];
         if (!note_applies(n, cell.table, cell.row, cell.column, convention)) continue;
+        note_used[k] = true;
+        auto check = [&](bool holds, std::string detail) {
+          if (checks) checks->push_back({cell.table, cell.row, cell.column, n.kind, holds, std::move(detail)});
+        };
+        check(std::find(std::begin(kNoteKinds), std::end(kNoteKinds), n.kind) != std::end(kNoteKinds),
+              "kind " + n.kind);
         std::string part = n.text;
-        if (n.meant)
-          part += fmt::format(" [meant {}; computed {:+.1f}% from it]", format_value(*n.meant),
-                              100.0 * (cell.computed - *n.meant) / *n.meant);
+        if (n.kind == "rounding") {
+          const double half = half_unit_in_last_place(p.printed_text);
+          const double diff = std::abs(cell.computed - p.printed);
+          check(diff <= half * (1.0 + 1e-9),
+                fmt::format("|{} − {}| = {} vs half a unit in the last place {}", format_value(cell.computed),
+                            p.printed_text, format_value(diff), format_value(half)));
+        }
+        if (n.meant) {
+          const double dev = 100.0 * (cell.computed - *n.meant) / *n.meant;
+          part += fmt::format(" [meant {}; computed {:+.1f}% from it]", format_value(*n.meant), dev);
+          check(std::abs(dev) <= kNoteThresholdPct,
+                fmt::format("computed {} vs meant {}: {:+.2f}%", format_value(cell.computed),
+                            format_value(*n.meant), dev));
+        }
         if (n.alt_time_min) {
           const double alt = std::abs(m.value(*n.alt_time_min * kMinToS) * out_factor);
+          const double dev = 100.0 * (alt - p.printed) / p.printed;
           part += fmt::format(" [computed at {} min: {}, {:+.1f}% from printed]", format_value(*n.alt_time_min),
-                              format_value(alt), 100.0 * (alt - p.printed) / p.printed);
+                              format_value(alt), dev);
+          check(std::abs(dev) <= kNoteThresholdPct,
+                fmt::format("computed at {} min {} vs printed {}: {:+.2f}%", format_value(*n.alt_time_min),
+                            format_value(alt), p.printed_text, dev));
         }
         if (!text.empty()) text += " | ";
         text += n.kind + ": " + part;
@@ -652,7 +683,25 @@ std::vector<TableCell> compute_tables(const ModelOptions& options, TableConventi
       out.push_back(std::move(cell));
     }
   }
+  if (checks) {
+    for (std::size_t k = 0; k < notes.size(); ++k)
+      if (scope_matches(notes[k], convention) && !note_used[k])
+        checks->push_back({notes[k].table, notes[k].row, notes[k].column, notes[k].kind, false,
+                           "the note matches no cell"});
+  }
   return out;
+}
+
+}  // namespace
+
+std::vector<TableCell> compute_tables(const ModelOptions& options, TableConvention convention) {
+  return run(options, convention, nullptr);
+}
+
+std::vector<NoteCheck> check_note_claims(const ModelOptions& options, TableConvention convention) {
+  std::vector<NoteCheck> checks;
+  run(options, convention, &checks);
+  return checks;
 }
 
 }  // namespace insmc::tables

@@ -43,6 +43,10 @@ inline constexpr double kFigureEndMin = 90.0;
 /// ΔV pulse weight of Table 4.3 and the thresholds after it: 0.1 ft/s (§4.3).
 inline constexpr double kTable43PulseWeightFtps = 0.1;
 
+/// A cell deviating from its printed value by more than this needs a note
+/// (tables/notes/cell_notes.csv); the same bound checks the notes' claims.
+inline constexpr double kNoteThresholdPct = 3.0;
+
 /// All cells: for each printed cell one TableCell per listed uncertainty and
 /// system (rows such as "1&2 | ζ_x, ζ_y | A1" expand to members, named in
 /// TableCell::row), in the order of tables/data/*.csv; then the Figure 3.2
@@ -51,5 +55,22 @@ inline constexpr double kTable43PulseWeightFtps = 0.1;
 /// Deterministic for given options. `options.latitude_rad` etc. apply; the
 /// printed values are for the report's 45°.
 std::vector<TableCell> compute_tables(const ModelOptions& options, TableConvention convention);
+
+/// One checked claim of a note (tables/notes/cell_notes.csv) on one cell:
+///  * kind "rounding": |computed − printed| ≤ half a unit in the last printed place;
+///  * `meant` given: computed within kNoteThresholdPct of it;
+///  * `alt_time_min` given: the cell computed at that time within
+///    kNoteThresholdPct of the printed value;
+///  * the kind is one of those documented in tables/notes/tables.md;
+///  * a note applying to the convention matches at least one cell
+///    (then row and column name the note, `holds` is false).
+struct NoteCheck {
+  std::string table, row, column, kind;
+  bool holds = true;
+  std::string detail;  ///< the numbers compared
+};
+
+/// The checks of every note that applies to `convention`, on every cell it matches.
+std::vector<NoteCheck> check_note_claims(const ModelOptions& options, TableConvention convention);
 
 }  // namespace insmc::tables

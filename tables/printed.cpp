@@ -100,6 +100,10 @@ std::vector<std::pair<std::size_t, std::vector<std::string>>> records_after_head
 
 }  // namespace
 
+std::vector<std::vector<std::string>> parse_csv(std::string_view text, std::string_view file) {
+  return split_csv(text, file);
+}
+
 std::vector<PrintedCell> parse_printed_csv(std::string_view text, std::string_view file) {
   std::vector<PrintedCell> out;
   for (auto& [line, f] : records_after_header(

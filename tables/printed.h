@@ -43,7 +43,12 @@ struct CellNote {
 
 const std::vector<CellNote>& cell_notes();
 
-/// CSV parsing (RFC 4180 quoting), exposed for tests. Throws
+/// Records of CSV text (RFC 4180 quoting: quoted fields may hold commas,
+/// quotes doubled, line breaks), header included. Throws std::runtime_error
+/// naming the file on an unterminated quote.
+std::vector<std::vector<std::string>> parse_csv(std::string_view text, std::string_view file_name);
+
+/// CSV parsing of the two embedded formats, exposed for tests. Throws
 /// std::runtime_error naming the file and line on malformed data.
 std::vector<PrintedCell> parse_printed_csv(std::string_view text, std::string_view file_name);
 std::vector<CellNote> parse_cell_notes_csv(std::string_view text, std::string_view file_name);

@@ -9,6 +9,7 @@
 ///       vehicle's meridian at t = 0 (λ_0 = 0).
 /// A direction-cosine matrix is C_<to>_<from>, so C_ap_n * v_n is in a'.
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
 #include <cmath>
 
 namespace insmc {

@@ -60,15 +60,16 @@ class LinearErrorModel {
   Sensitivity3 nav_bias_, deflection_accel_, latitude_angle_;
 };
 
-/// Position maps δr(t) at the requested times (ascending, ≥ 0) from the
-/// Schuler-loop ODE δr̈ + ω_s² δr = forcing(t), δr(0) = r0_map, δṙ(0) = v0_map,
-/// integrated by classical Runge–Kutta with a step of at most `max_step_s`
-/// that lands on every requested time.
+/// Position maps δr(t) at the requested times (ascending, ≥ t_start_s) from
+/// the Schuler-loop ODE δr̈ + ω_s² δr = forcing(t), δr(t_start) = r0_map,
+/// δṙ(t_start) = v0_map, integrated by classical Runge–Kutta with a step of
+/// at most `max_step_s` that lands on every requested time.
 template <class Forcing>
 std::vector<Sensitivity3> integrate_schuler_ode(const Forcing& forcing, const Sensitivity3& r0_map,
                                                 const Sensitivity3& v0_map,
                                                 const std::vector<double>& times_s,
-                                                double schuler_radps, double max_step_s = 2.0);
+                                                double schuler_radps, double max_step_s = 2.0,
+                                                double t_start_s = 0.0);
 
 /// Convenience: S(t) of the linear model at the given times.
 std::vector<Sensitivity3> linear_position_maps(const LinearErrorModel& model,

@@ -12,13 +12,14 @@ template <class Forcing>
 std::vector<Sensitivity3> integrate_schuler_ode(const Forcing& forcing, const Sensitivity3& r0_map,
                                                 const Sensitivity3& v0_map,
                                                 const std::vector<double>& times_s,
-                                                double schuler_radps, double max_step_s) {
+                                                double schuler_radps, double max_step_s,
+                                                double t_start_s) {
   INSMC_ASSERT(max_step_s > 0, "max_step_s = {}", max_step_s);
   const double w2 = schuler_radps * schuler_radps;
   std::vector<Sensitivity3> out;
   out.reserve(times_s.size());
   Sensitivity3 r = r0_map, v = v0_map;
-  double t = 0.0;
+  double t = t_start_s;
   for (double target : times_s) {
     INSMC_ASSERT(target >= t, "times must ascend: {} after {}", target, t);
     const double span = target - t;

@@ -1,5 +1,6 @@
 #pragma once
-/// Little-endian byte encoding for aggregator serialize()/deserialize().
+/// Little-endian byte encoding for aggregator serialize()/deserialize()
+/// (ExactSum, OutputStats).
 /// Doubles are written as their IEEE-754 binary64 bit patterns, so a round
 /// trip reproduces every bit (including -0 and NaN payloads). Byte order is
 /// fixed by shifting, independent of the host's endianness.
@@ -21,10 +22,14 @@ inline void put_u64(std::string& out, std::uint64_t v) {
 
 inline void put_f64(std::string& out, double v) { put_u64(out, std::bit_cast<std::uint64_t>(v)); }
 
-/// Sequential reader; every read checks the remaining length.
+/// Sequential reader; every read checks the remaining length. `what` names
+/// the type being read in error messages; reading starts at byte `start`.
 class Reader {
  public:
-  Reader(std::string_view bytes, const char* what) : bytes_(bytes), what_(what) {}
+  Reader(std::string_view bytes, const char* what, std::size_t start = 0)
+      : bytes_(bytes), what_(what), pos_(start) {
+    if (start > bytes_.size()) fail("start beyond the end");
+  }
 
   std::uint32_t u32() {
     need(4);
@@ -55,6 +60,8 @@ class Reader {
   }
 
   std::size_t remaining() const { return bytes_.size() - pos_; }
+  /// Index of the next byte to be read.
+  std::size_t position() const { return pos_; }
 
  private:
   void need(std::size_t n) const {

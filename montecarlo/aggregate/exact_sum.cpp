@@ -1,9 +1,9 @@
 #include "montecarlo/aggregate/exact_sum.h"
 
 #include <cmath>
-#include <stdexcept>
 
 #include "lib/common/assert.h"
+#include "montecarlo/aggregate/byte_io.h"
 
 namespace insmc::mc {
 namespace {
@@ -76,17 +76,14 @@ double ExactSum::value() const {
 }
 
 void ExactSum::append_to(std::string& out) const {
-  for (std::uint64_t l : limbs_)
-    for (int b = 0; b < 8; ++b) out.push_back(static_cast<char>((l >> (8 * b)) & 0xff));
+  for (std::uint64_t l : limbs_) byte_io::put_u64(out, l);
 }
 
 ExactSum ExactSum::read_from(std::string_view bytes, std::size_t& pos) {
-  if (bytes.size() < pos + 8 * kLimbs) throw std::runtime_error("ExactSum: truncated state");
+  byte_io::Reader in(bytes, "ExactSum", pos);
   ExactSum s;
-  for (auto& l : s.limbs_) {
-    l = 0;
-    for (int b = 0; b < 8; ++b) l |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[pos++])) << (8 * b);
-  }
+  for (auto& l : s.limbs_) l = in.u64();
+  pos = in.position();
   return s;
 }
 

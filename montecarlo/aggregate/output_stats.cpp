@@ -4,37 +4,15 @@
 #include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/distributions/normal.hpp>
 #include <cmath>
-#include <cstring>
 #include <limits>
-#include <stdexcept>
 
 #include "lib/common/assert.h"
+#include "montecarlo/aggregate/byte_io.h"
 
 namespace insmc::mc {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-void put_u64(std::string& out, std::uint64_t v) {
-  for (int b = 0; b < 8; ++b) out.push_back(static_cast<char>((v >> (8 * b)) & 0xff));
-}
-void put_f64(std::string& out, double d) {
-  std::uint64_t v;
-  std::memcpy(&v, &d, 8);
-  put_u64(out, v);
-}
-std::uint64_t get_u64(std::string_view in, std::size_t& pos) {
-  if (in.size() < pos + 8) throw std::runtime_error("OutputStats: truncated state");
-  std::uint64_t v = 0;
-  for (int b = 0; b < 8; ++b) v |= static_cast<std::uint64_t>(static_cast<unsigned char>(in[pos++])) << (8 * b);
-  return v;
-}
-double get_f64(std::string_view in, std::size_t& pos) {
-  const std::uint64_t v = get_u64(in, pos);
-  double d;
-  std::memcpy(&d, &v, 8);
-  return d;
-}
 
 }  // namespace
 
@@ -134,6 +112,7 @@ OutputSummary OutputStats::summarize(double confidence, bool gaussian) const {
 }
 
 void OutputStats::append_to(std::string& out) const {
+  using byte_io::put_f64, byte_io::put_u64;
   put_f64(out, shift_);
   put_f64(out, scale_);
   put_u64(out, n_);
@@ -146,17 +125,21 @@ void OutputStats::append_to(std::string& out) const {
   for (std::uint64_t c : hist_) put_u64(out, c);
 }
 
-OutputStats OutputStats::read_from(std::string_view in, std::size_t& pos) {
-  const double shift = get_f64(in, pos), scale = get_f64(in, pos);
+OutputStats OutputStats::read_from(std::string_view bytes, std::size_t& pos) {
+  byte_io::Reader in(bytes, "OutputStats", pos);
+  const double shift = in.f64(), scale = in.f64();
   OutputStats s(shift, scale);
-  s.n_ = get_u64(in, pos);
-  s.sum_d_ = ExactSum::read_from(in, pos);
-  s.sum_d2_ = ExactSum::read_from(in, pos);
-  s.sum_r2_ = ExactSum::read_from(in, pos);
-  s.sum_r4_ = ExactSum::read_from(in, pos);
-  s.min_ = get_f64(in, pos);
-  s.max_ = get_f64(in, pos);
-  for (auto& c : s.hist_) c = get_u64(in, pos);
+  s.n_ = in.u64();
+  pos = in.position();
+  s.sum_d_ = ExactSum::read_from(bytes, pos);
+  s.sum_d2_ = ExactSum::read_from(bytes, pos);
+  s.sum_r2_ = ExactSum::read_from(bytes, pos);
+  s.sum_r4_ = ExactSum::read_from(bytes, pos);
+  byte_io::Reader tail(bytes, "OutputStats", pos);
+  s.min_ = tail.f64();
+  s.max_ = tail.f64();
+  for (auto& c : s.hist_) c = tail.u64();
+  pos = tail.position();
   return s;
 }
 

@@ -28,6 +28,7 @@ StudyConfig benchmark_study(std::uint64_t samples, int threads) {
   c.samples = samples;
   c.threads = threads;
   c.with_grid = false;
+  c.schemes = {Scheme::kNone};
   return c;
 }
 
@@ -55,7 +56,11 @@ ThroughputResult measure_throughput(const StudyConfig& c) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                             static_cast<std::size_t>(c.threads > 0 ? c.threads : 2));
   {  // floor: generator + map + sums, no aggregator, no layout, no framework
-    const Eigen::MatrixXd& mt = map.transposed();
+    // Uncompensated: z = [x; 0], so the map acting on x is the top of each system's.
+    Eigen::MatrixXd mt(ux::kDim, map.transposed(0).cols() * static_cast<Eigen::Index>(c.systems.size()));
+    for (size_t j = 0; j < c.systems.size(); ++j)
+      mt.middleCols(static_cast<Eigen::Index>(j) * map.transposed(0).cols(), map.transposed(0).cols()) =
+          map.transposed(static_cast<int>(j)).topRows<ux::kDim>();
     const UncertaintyVector bounds = [&] {
       UncertaintyVector b;
       for (int j = 0; j < ux::kDim; ++j) b[j] = c.uncertainties.at(j).bound_si;

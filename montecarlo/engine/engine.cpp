@@ -9,21 +9,23 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include "lib/common/assert.h"
 #include "montecarlo/random/philox.h"
 #include "montecarlo/sampler/sampler.h"
 
 namespace insmc::mc {
 namespace {
 
-constexpr int kRowsPerMap = 5;
-
 /// Per-thread buffers, sized once: nothing is allocated per sample.
 struct Workspace {
-  explicit Workspace(int rows)
-      : uniforms(kBlockSize * ux::kDim), x(ux::kDim, kBlockSize), y(kBlockSize, rows), h(kBlockSize) {}
+  Workspace(const StudyMap& map, int n_systems)
+      : uniforms(kBlockSize * ux::kDim), x(ux::kDim, kBlockSize), z(ez::kDim, kBlockSize), h(kBlockSize) {
+    for (int j = 0; j < n_systems; ++j) y.emplace_back(kBlockSize, map.transposed(j).cols());
+  }
   std::vector<double> uniforms;
-  Eigen::MatrixXd x;  // kDim × block, one column per sample
-  Eigen::MatrixXd y;  // block × rows, one column per map row
+  Eigen::MatrixXd x;               // kDim × block, one column per sample
+  Eigen::MatrixXd z;               // ez::kDim × block
+  std::vector<Eigen::MatrixXd> y;  // per system: block × rows
   std::vector<double> h;
 };
 
@@ -35,16 +37,20 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
                  std::span<double>(ws.uniforms.data(), n * ux::kDim));
   sampler.transform(ws.uniforms.data(), n, ws.x.data());
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
-  ws.y.topRows(ni).noalias() = ws.x.leftCols(ni).transpose() * map.transposed();
+  for (std::size_t j = 0; j < ws.y.size(); ++j) {
+    map.pipeline(static_cast<int>(j)).extended_vectors(first, n, ws.x, ws.z);
+    ws.y[j].topRows(ni).noalias() = ws.z.leftCols(ni).transpose() * map.transposed(static_cast<int>(j));
+  }
   auto& outs = acc.outputs();
   for (std::size_t o = 0; o < outs.size(); ++o) {
-    const int base = kRowsPerMap * static_cast<int>(o / 4);
+    const Eigen::MatrixXd& y = ws.y[static_cast<std::size_t>(map.system_index(o))];
+    const int base = map.row_base(o);
     const int axis = static_cast<int>(o % 4);
     if (axis < 3) {
-      outs[o].add_block(ws.y.col(base + axis).data(), n);
+      outs[o].add_block(y.col(base + axis).data(), n);
     } else {
-      const double* north = ws.y.col(base + 3).data();
-      const double* east = ws.y.col(base + 4).data();
+      const double* north = y.col(base + 3).data();
+      const double* east = y.col(base + 4).data();
       for (std::size_t s = 0; s < n; ++s) ws.h[s] = std::sqrt(north[s] * north[s] + east[s] * east[s]);
       outs[o].add_block(ws.h.data(), n);
     }
@@ -61,10 +67,13 @@ StudyAccumulator::StudyAccumulator(const StudyMap& map) {
 }
 
 void StudyAccumulator::merge(const StudyAccumulator& other) {
+  if (other.outputs_.empty()) return;  // a default-constructed accumulator is the identity
   if (outputs_.empty()) {
     *this = other;
     return;
   }
+  INSMC_ASSERT(other.outputs_.size() == outputs_.size(), "merging accumulators of {} and {} outputs",
+               outputs_.size(), other.outputs_.size());
   for (size_t o = 0; o < outputs_.size(); ++o) outputs_[o].merge(other.outputs_[o]);
 }
 
@@ -96,7 +105,7 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
   const Sampler sampler(c.uncertainties);
   const StudyAccumulator empty(map);
   tbb::enumerable_thread_specific<StudyAccumulator> partial(empty);
-  tbb::enumerable_thread_specific<Workspace> workspaces(map.rows());
+  tbb::enumerable_thread_specific<Workspace> workspaces(map, static_cast<int>(c.systems.size()));
   std::atomic<std::uint64_t> done{0};
   tbb::parallel_for(tbb::blocked_range<std::uint64_t>(first_block, end_block, 1),
                     [&](const tbb::blocked_range<std::uint64_t>& range) {
@@ -115,12 +124,19 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
   return total;
 }
 
-std::vector<double> evaluate_sample(const StudyConfig&, const StudyMap& map, const StudyLayout& layout,
-                                    const UncertaintyVector& x) {
-  const Eigen::VectorXd rows = map.transposed().transpose() * x;
+std::vector<double> evaluate_sample(const StudyConfig& c, const StudyMap& map, const StudyLayout& layout,
+                                    std::uint64_t index, const UncertaintyVector& x) {
+  Eigen::MatrixXd xm = x;
+  Eigen::MatrixXd z(ez::kDim, 1);
+  std::vector<Eigen::VectorXd> rows;
+  for (std::size_t j = 0; j < c.systems.size(); ++j) {
+    map.pipeline(static_cast<int>(j)).extended_vectors(index, 1, xm, z);
+    rows.push_back(map.transposed(static_cast<int>(j)).transpose() * z.col(0));
+  }
   std::vector<double> out;
   for (size_t o = 0; o < layout.outputs.size(); ++o)
-    out.push_back(StudyMap::output_value(rows.data() + kRowsPerMap * static_cast<int>(o / 4), layout.outputs[o].axis));
+    out.push_back(StudyMap::output_value(rows[static_cast<std::size_t>(map.system_index(o))].data() + map.row_base(o),
+                                         layout.outputs[o].axis));
   return out;
 }
 

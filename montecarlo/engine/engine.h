@@ -42,8 +42,9 @@ StudyAccumulator run_blocks(const StudyConfig& config, const StudyMap& map, std:
 
 inline std::uint64_t block_count(std::uint64_t samples) { return (samples + kBlockSize - 1) / kBlockSize; }
 
-/// The outputs of one sample, layout order (for --replay and tests).
+/// The outputs of sample `index` with uncertainties x, layout order (for
+/// --replay and tests): the same arithmetic as the engine's block path.
 std::vector<double> evaluate_sample(const StudyConfig& config, const StudyMap& map, const StudyLayout& layout,
-                                    const UncertaintyVector& x);
+                                    std::uint64_t index, const UncertaintyVector& x);
 
 }  // namespace insmc::mc

@@ -23,8 +23,11 @@ class Sampler {
   /// The uncertainty vector of sample `index` alone (for --replay).
   UncertaintyVector draw(std::uint64_t seed, std::uint64_t index) const;
 
- private:
+  /// Catalogue parameter j's draw from one uniform u in [0, 1) (also used
+  /// for the per-alignment redraws of a realignment).
   double transform_one(int j, double u) const;
+
+ private:
   std::array<DistributionKind, ux::kDim> kind_;
   std::array<double, ux::kDim> bound_, fixed_;
   std::array<std::optional<TruncatedNormalTransform>, ux::kDim> normal_;

@@ -27,6 +27,7 @@ void validate(const StudyConfig& c) {
                      "must lie strictly between -90deg and 90deg for system 2 (2.16 divides by cos L0)");
   if (c.fidelity == Fidelity::kTruth)
     throw InputError("--fidelity", "truth", "the truth level is not available in `run` yet; use paper or linear");
+  validate(c.test);
   for (int i = 0; i < ux::kDim; ++i) {
     const auto& p = c.uncertainties.at(i);
     if (!std::isfinite(p.bound_si) || p.bound_si < 0)

@@ -7,17 +7,20 @@
 #include "lib/common/model_options.h"
 #include "lib/common/system.h"
 #include "lib/compensation/scheme.h"
+#include "lib/preflight/test_run.h"
 #include "lib/uncertainty/uncertainty_model.h"
 
 namespace insmc::mc {
 
 struct StudyConfig {
   std::vector<System> systems = {System::kTheodolite, System::kGyrocompass};
-  std::vector<Scheme> schemes = {Scheme::kNone};
+  std::vector<Scheme> schemes = all_schemes();
   /// paper (the report's closed forms) or linear (the corrected linear model).
   Fidelity fidelity = Fidelity::kLinear;
   ModelOptions model;
   UncertaintyModel uncertainties;
+  /// The preflight test run, its measurements and the realignment (chapter 4, 5).
+  TestRunOptions test;
   /// Number of Monte Carlo samples, ≥ 2.
   std::uint64_t samples = 100000;
   /// Seed of the counter-based streams; any 64-bit value.

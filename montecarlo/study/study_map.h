@@ -1,43 +1,58 @@
 #pragma once
-/// The study as one linear map: every output row (x, y, z, north, east per
-/// scheme × system × time) as a row of a matrix acting on the uncertainty
-/// vector, so a block of samples is one matrix product. Also the exact
-/// linear-covariance prediction of every output (mean, RMS, Var(r²)).
+/// The study as linear maps: per alignment system, every output row (x, y,
+/// z, north, east per scheme × time) as a row acting on the extended vector
+/// z of that system's pipeline (lib/compensation/extended_vector.h), so a
+/// block of samples is one matrix product per system. Also the exact
+/// linear-covariance prediction of every output (mean, RMS, Var(r²)) from
+/// z = G w (system_pipeline.h), and the error budget.
 #include <Eigen/Core>
+#include <memory>
+#include <string>
 #include <vector>
 
+#include "montecarlo/pipeline/system_pipeline.h"
 #include "montecarlo/study/output_layout.h"
 
 namespace insmc::mc {
+
+inline constexpr int kRowsPerMap = 5;  // x, y, z, north, east
 
 class StudyMap {
  public:
   StudyMap(const StudyConfig& config, const StudyLayout& layout);
 
-  /// Transposed map, kDim × rows: column 5·m + c is row c ∈ {x, y, z, N, E}
-  /// of map m = (scheme, system, time) in layout order.
-  const Eigen::MatrixXd& transposed() const { return map_t_; }
-  int rows() const { return static_cast<int>(map_t_.cols()); }
+  const SystemPipeline& pipeline(int system_j) const { return *pipelines_[system_j]; }
+  /// ez::kDim × rows of system j; column 5·(scheme_i · n_times + k) + c.
+  const Eigen::MatrixXd& transposed(int system_j) const { return map_t_[system_j]; }
+  /// First row (in transposed(j)) of output o's five rows, and its system.
+  int row_base(std::size_t output) const;
+  int system_index(std::size_t output) const;
 
-  /// Output value for one sample from its row values (5 per map).
+  /// Output value from its five row values (sqrt(N² + E²) for horizontal).
   static double output_value(const double* five_rows, Axis axis);
 
-  /// Exact predictions per output (layout order) under the study's
-  /// uncertainty model: E[r], sqrt(E[r²]) and Var(r²) (for statistical tests).
+  /// Exact predictions per output (layout order): E[r], sqrt(E[r²]), Var(r²).
   const std::vector<double>& predicted_mean() const { return mean_; }
   const std::vector<double>& predicted_rms() const { return rms_; }
   const std::vector<double>& predicted_var_r2() const { return var_r2_; }
 
-  /// Per output, each uncertainty's share of E[r²] (zero-mean part), and the
-  /// share of the squared mean; they sum to 1 where E[r²] > 0.
-  std::vector<std::vector<double>> variance_shares() const;
-  std::vector<double> mean_shares() const;
+  /// Error budget per output: named sources and their shares of E[r²]
+  /// (catalogue parameters, realignment draws, measurement noises, and
+  /// `mean` for the squared mean); shares sum to 1 where E[r²] > 0.
+  std::vector<std::string> budget_sources() const;
+  std::vector<std::vector<double>> budget_shares() const;
+
+  /// Per scheme (config order): time from the first switch-over to flight.
+  double ready_time_s(int scheme_i) const { return ready_time_s_[scheme_i]; }
+  const std::string& fitted_terms(int system_j) const { return pipelines_[system_j]->estimators().fitted_terms; }
 
  private:
   const StudyConfig* config_;
   const StudyLayout* layout_;
-  Eigen::MatrixXd map_t_;
-  std::vector<double> mean_, rms_, var_r2_;
+  std::vector<std::shared_ptr<const SystemPipeline>> pipelines_;
+  std::vector<Eigen::MatrixXd> map_t_;
+  std::vector<Eigen::MatrixXd> input_map_t_;  // W × rows: (G^T M^T) per system
+  std::vector<double> mean_, rms_, var_r2_, ready_time_s_;
 };
 
 }  // namespace insmc::mc

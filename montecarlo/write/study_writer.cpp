@@ -18,19 +18,26 @@ double length_factor(LengthUnit u) { return u == LengthUnit::kFoot ? 1.0 / kFtTo
 std::string length_suffix(LengthUnit u) { return u == LengthUnit::kFoot ? "ft" : "m"; }
 std::string fmt_minutes(double t_s) { return format_number(t_s / 60.0); }
 
+int scheme_index(const StudyConfig& c, Scheme s) {
+  for (size_t i = 0; i < c.schemes.size(); ++i)
+    if (c.schemes[i] == s) return static_cast<int>(i);
+  return 0;
+}
+
 std::vector<std::string> envelope_header(LengthUnit u) {
   // fmt, not string operator+: GCC 12 -O3 raises a false -Wrestrict on the latter.
   const std::string u_ = length_suffix(u);
   std::vector<std::string> header = {"scheme", "system", "clock", "axis", "t_min", "n"};
   for (const char* q : {"rms", "rms_lo", "rms_hi", "mean", "std", "min", "max", "p95"})
     header.push_back(fmt::format("{}_{}", q, u_));
+  header.push_back("ready_time_min");
   return header;
 }
 
 }  // namespace
 
-EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const StudyAccumulator& acc,
-                              LengthUnit unit) {
+EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const StudyMap& map,
+                              const StudyAccumulator& acc, LengthUnit unit) {
   const double k = length_factor(unit);
   Table report(envelope_header(unit)), grid(envelope_header(unit));
   Table summary({"scheme", "system", "axis", "t_min", fmt::format("RMS [{}] ± half-width ({}% CI)", length_suffix(unit),
@@ -48,7 +55,8 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
                                     fmt_minutes(t), std::to_string(s.n), format_number(k * s.rms),
                                     format_number(k * s.rms_lo), format_number(k * s.rms_hi),
                                     format_number(k * s.mean), format_number(k * s.std), format_number(k * s.min),
-                                    format_number(k * s.max), format_number(k * s.p95_abs)};
+                                    format_number(k * s.max), format_number(k * s.p95_abs),
+                                    format_number(map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0)};
     if (l.is_grid_time[spec.time_index]) grid.add_row(row);
     if (l.is_report_time[spec.time_index]) {
       report.add_row(row);
@@ -98,8 +106,8 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
   const std::string rms_col = fmt::format("rms_{}", length_suffix(unit));
   Table cov({"scheme", "system", "axis", "t_min", rms_col}), cov_grid({"scheme", "system", "axis", "t_min", rms_col});
   Table budget({"scheme", "system", "axis", "t_min", "parameter", "variance_share"});
-  const auto shares = map.variance_shares();
-  const auto mean_shares = map.mean_shares();
+  const std::vector<std::string> sources = map.budget_sources();
+  const std::vector<std::vector<double>> shares = map.budget_shares();
   CovarianceFiles f;
   f.covariance_json = Json::array();
   for (size_t o = 0; o < l.outputs.size(); ++o) {
@@ -120,17 +128,11 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
     j["t_min"] = t / 60.0;
     j["rms_m"] = map.predicted_rms()[o];
     f.covariance_json.push_back(j);
-    for (int p = 0; p < ux::kDim; ++p) {
+    for (std::size_t p = 0; p < sources.size(); ++p) {
       if (shares[o][p] <= 0) continue;
       std::vector<std::string> b = key;
-      b.push_back(std::string(catalogue()[p].name));
+      b.push_back(sources[p]);
       b.push_back(format_number(shares[o][p]));
-      budget.add_row(b);
-    }
-    if (mean_shares[o] > 0) {
-      std::vector<std::string> b = key;
-      b.push_back("mean");  // the squared mean of fixed-value parameters
-      b.push_back(format_number(mean_shares[o]));
       budget.add_row(b);
     }
   }

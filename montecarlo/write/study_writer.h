@@ -19,7 +19,7 @@ struct EnvelopeFiles {
   Json envelope_json;        ///< the report-time envelope for run.json
 };
 
-EnvelopeFiles render_envelope(const StudyConfig& config, const StudyLayout& layout,
+EnvelopeFiles render_envelope(const StudyConfig& config, const StudyLayout& layout, const StudyMap& map,
                               const StudyAccumulator& acc, LengthUnit unit);
 
 struct CovarianceFiles {

@@ -59,7 +59,7 @@ TEST(Cli, ParamsListsTheCatalogue) {
 
 TEST(Cli, RunWritesTheOutputContractAndIsIdenticalForAnyThreadCount) {
   TempDir dir;
-  const std::string common = " --samples 5000 --seed 7 --grid-step 10min";
+  const std::string common = " --samples 5000 --seed 7 --grid-step 10min --scheme none,5.2";
   const auto one = run_insmc("run" + common + " --threads 1 --out " + dir.str() + "/t1");
   ASSERT_EQ(one.exit_code, 0) << one.err;
   const auto two = run_insmc("run" + common + " --threads 2 --out " + dir.str() + "/t2");
@@ -68,9 +68,10 @@ TEST(Cli, RunWritesTheOutputContractAndIsIdenticalForAnyThreadCount) {
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "t1" / f)) << f;
   const std::string csv = read_file(dir.path() / "t1" / "envelope.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "scheme,system,clock,axis,t_min,n,rms_m,rms_lo_m,rms_hi_m,mean_m,std_m,min_m,max_m,p95_m");
+            "scheme,system,clock,axis,t_min,n,rms_m,rms_lo_m,rms_hi_m,mean_m,std_m,min_m,max_m,p95_m,ready_time_min");
   EXPECT_NE(csv.find("none,2,switchover,horizontal,84,5000,"), std::string::npos);
-  EXPECT_EQ(line_count(csv), 1 + 2 * 3 * 4);  // systems × times × axes
+  EXPECT_NE(csv.find("5.2,1,test_end,x,42,5000,"), std::string::npos);
+  EXPECT_EQ(line_count(csv), 1 + 2 * 2 * 3 * 4);  // schemes × systems × times × axes
   for (const char* f : {"envelope.csv", "envelope_grid.csv"})
     EXPECT_EQ(read_file(dir.path() / "t1" / f), read_file(dir.path() / "t2" / f)) << f;
   const auto paper = run_insmc("run --samples 3000 --units paper --format csv --system 1");

@@ -1,0 +1,106 @@
+#pragma once
+/// The preflight test run on a stationary base (chapter 4): its settings,
+/// the observation maps of the chosen fidelity (the accelerometer output
+/// error integrated over each filter interval, fig. 5.2, and the position
+/// error change Δr^{a'}), and the least-squares estimators of (4.7)/(4.8)
+/// and (4.4) as precomputed linear maps.
+#include <string>
+#include <vector>
+
+#include "lib/common/model_options.h"
+#include "lib/common/system.h"
+#include "lib/frames/frames.h"
+#include "lib/uncertainty/row_map.h"
+#include "lib/uncertainty/uncertainty_model.h"
+#include "lib/units/units.h"
+
+namespace insmc {
+
+/// Vehicle sway (parked aircraft in wind): the velocity wiggle v_s(t) is a
+/// first-order Gauss–Markov process per axis (stationary RMS
+/// `velocity_rms_mps`, correlation time `correlation_time_s`); the
+/// accelerometers sense its derivative (u)r̈, which the filter box averages
+/// to (v_s(t_k) − v_s(t_{k−1}))/τ. The navigation position is not affected
+/// (the motion is real); the velocity resets of 5.2/5.3 see v_s(T).
+struct SwayOptions {
+  double velocity_rms_mps = 0.0;     ///< 0 = off (default)
+  double correlation_time_s = 6.0;   ///< > 0
+  bool enabled() const { return velocity_rms_mps > 0; }
+};
+
+/// Which coefficient of (4.4)/(4.7) the estimators fit.
+enum class FitU4 { kAuto, kYes, kNo };
+
+struct TestRunOptions {
+  double duration_s = 900.0;                 ///< T, the test run (15 min)
+  double filter_interval_s = 10.0;           ///< τ of the filter box (fig. 5.2); T must be a multiple
+  double dv_pulse_mps = 0.1 * kFtpsToMps;    ///< ΔV pulse weight (§4.3); 0 = continuous output
+  double position_resolution_m = 3 * kFtToM; ///< position computer resolution ("a few feet"); 0 = exact
+  FitU4 fit_u4 = FitU4::kAuto;               ///< U4: fit when resolvable (auto), demand it, or never
+  SwayOptions sway;
+  /// Scheme 5.4: the torquer commands and accelerometer outputs are averaged
+  /// over the last `alignment_average_s` of the alignment; the torquer
+  /// commands are counted in angle pulses of `torquer_pulse_rad` and the
+  /// accelerometer outputs in ΔV pulses, each with its remainder carried.
+  double alignment_average_s = 600.0;
+  double torquer_pulse_rad = 1.0 * kArcsecToRad;
+  /// Duration of the realignment of 5.1.1, 5.1.2 and combined (5-15 min practical, §5.1.2).
+  double realignment_duration_s = 600.0;
+
+  int intervals() const;  ///< K = T/τ
+};
+
+/// Throws InputError naming the first field out of range.
+void validate(const TestRunOptions& options);
+
+/// Observation maps at t_k = kτ, k = 0..K, per unit of each uncertainty.
+struct TestRunMaps {
+  std::vector<double> t_s;
+  std::vector<Sensitivity3> velocity_increment;  ///< ∫₀^{t_k} Δf^a dt [m/s], the pulse counters' signal
+  std::vector<Sensitivity3> position_change;     ///< Δr^{a'}(t_k) = δr(t_k) − δr(0) [m]
+};
+
+/// Maps of the `paper` level ((4.4) integrated, (3.29) − δr(0)) or of the
+/// `linear` level (the forcing of (3.24) integrated, the ODE solution).
+TestRunMaps test_run_maps(System system, Fidelity fidelity, const ModelOptions& model,
+                          const TestRunOptions& options);
+
+/// The nominal velocity increment ∫₀^t f̂^{a'} dt of a stationary vehicle
+/// (f̂^{a'} = −C_n^{a'}(t) g_e) [m/s]: what the pulse counters count besides
+/// the errors, which sets the phase of their quantization.
+Vec3 nominal_velocity_increment(double t_s, const ModelOptions& model);
+
+/// The true position of the vehicle in a' [m] at t (for the position
+/// computer's quantization phase).
+Vec3 true_position_ap(double t_s, const ModelOptions& model);
+
+/// The least-squares estimators (QR on column-scaled design matrices).
+struct TestRunEstimators {
+  bool fit_u3 = true, fit_u4 = false;
+  /// Position data Δr_k, k = 1..K, per axis → (Û1, Û2, Û3, Û4) of (4.7):
+  /// rows 0..3 (rows of unfitted terms are zero).
+  Eigen::Matrix<double, 4, Eigen::Dynamic> position;
+  /// Interval-averaged Δf_k, k = 1..K, per axis → (Â1, Û3, Û4) of (4.4).
+  Eigen::Matrix<double, 3, Eigen::Dynamic> accel;
+  /// "U1,U2,U3" etc.: what was fitted.
+  std::string fitted_terms;
+};
+
+/// Builds the estimators. `u4_resolvable`/`u3_resolvable` follow
+/// resolvable_terms(); with FitU4::kYes and U4 not resolvable this throws
+/// InputError (the report's Table 4.3: e.g. U4 needs more than 15–20 min).
+TestRunEstimators make_estimators(const TestRunOptions& options, const ModelOptions& model,
+                                  bool u3_resolvable, bool u4_resolvable);
+
+/// (4.6) applied to the study: a term is resolvable when its resolution
+/// limit is below the prior RMS of its coefficient (largest axis), the prior
+/// RMS from the printed U3/U4 maps and the uncertainty model. With
+/// continuous outputs (ΔV = 0) every term is resolvable.
+struct Resolvability {
+  bool u3, u4;
+  double u3_limit, u4_limit, u3_prior_rms, u4_prior_rms;
+};
+Resolvability resolvable_terms(System system, const ModelOptions& model, const TestRunOptions& options,
+                               const UncertaintyModel& uncertainties);
+
+}  // namespace insmc

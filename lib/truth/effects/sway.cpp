@@ -1,0 +1,57 @@
+// sway: the vehicle moves on its gear (wind, loading): a band-limited
+// displacement, whose acceleration (u)r̈ the accelerometers see and whose
+// velocity at switch-over is the velocity wiggle the computer does not know.
+#include <cmath>
+#include <numbers>
+
+#include "lib/truth/effects/effects.h"
+
+namespace insmc::effects {
+namespace {
+
+constexpr EffectParameter kParameters[] = {
+    {"accel_rms", Dimension::kAcceleration, 0.05,
+     "RMS of the horizontal sway acceleration per axis", ParameterRange::kNonNegative},
+    {"period_min", Dimension::kTime, 2.0, "shortest sway period", ParameterRange::kPositive},
+    {"period_max", Dimension::kTime, 20.0, "longest sway period", ParameterRange::kPositive},
+    {"vertical_ratio", Dimension::kDimensionless, 0.3,
+     "vertical sway amplitude relative to the horizontal", ParameterRange::kNonNegative},
+    {"components", Dimension::kDimensionless, 4.0,
+     "sinusoids per axis (periods log-uniform in [period_min, period_max], random phases)",
+     ParameterRange::kPositive},
+};
+
+void realize(const EffectSpec& spec, const EffectContext&, NormalDraws& draws, Perturbations& p) {
+  const double rms = spec.value("accel_rms");
+  const double p_min = spec.value("period_min"), p_max = spec.value("period_max");
+  const int count = static_cast<int>(std::lround(spec.value("components")));
+  const double ratio[3] = {1.0, 1.0, spec.value("vertical_ratio")};
+  // K sinusoids of equal acceleration amplitude a: K a²/2 = rms².
+  const double accel_amplitude = rms * std::sqrt(2.0 / count);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int k = 0; k < count; ++k) {
+      const double period = p_min * std::pow(p_max / p_min, draws.next_uniform());
+      const double phase = 2.0 * std::numbers::pi * draws.next_uniform();
+      const double omega = 2.0 * std::numbers::pi / period;
+      SwayComponent c;
+      c.amplitude_n_m[axis] = ratio[axis] * accel_amplitude / (omega * omega);
+      c.period_s = period;
+      c.phase_rad = phase;
+      p.sway.push_back(c);
+    }
+  }
+}
+
+}  // namespace
+
+const EffectDefinition& sway() {
+  static const EffectDefinition d{
+      {EffectKind::kSway, "sway",
+       "band-limited motion of the vehicle on its gear: disturbance acceleration in the "
+       "accelerometer data and an initial velocity error (velocity wiggle)",
+       kParameters, true},
+      &realize};
+  return d;
+}
+
+}  // namespace insmc::effects

@@ -1,0 +1,64 @@
+#pragma once
+/// What one sample goes through for one alignment system (DESIGN.md §1):
+/// the fresh per-alignment draws of a realignment, the preflight test run
+/// (ΔV pulse counts through the filter box, the position computer at its
+/// resolution, optional sway), the least-squares fits, and the
+/// alignment-phase measurements of 5.4 — producing the extended vector z of
+/// lib/compensation/extended_vector.h, from which every scheme's position
+/// error is a linear map. Quantization is simulated (floor of the counted
+/// signal with its carried remainder), never drawn from an assumed
+/// distribution.
+///
+/// The same data path also gives z as an exact linear map G of independent
+/// inputs w (x, the fresh draws, and the measurement noises modelled as
+/// additive: uniform rounding of one pulse per count, dithered position
+/// rounding, the Gauss–Markov sway) for the linear-covariance prediction.
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "lib/compensation/extended_vector.h"
+#include "lib/preflight/test_run.h"
+#include "montecarlo/sampler/sampler.h"
+#include "montecarlo/study/study_config.h"
+
+namespace insmc::mc {
+
+class SystemPipeline {
+ public:
+  SystemPipeline(const StudyConfig& config, System system);
+
+  System system() const { return system_; }
+  const TestRunEstimators& estimators() const { return est_; }
+
+  /// Fills z (kDim × n, one column per sample) for samples first..first+n−1
+  /// whose uncertainties are the columns of x (ux::kDim × n).
+  void extended_vectors(std::uint64_t first, std::size_t n, const Eigen::MatrixXd& x, Eigen::MatrixXd& z) const;
+
+  /// z = G w + m for the additive-noise model: G (ez::kDim × W) and each
+  /// input's mean, variance and fourth central moment.
+  const Eigen::MatrixXd& covariance_map() const { return g_; }
+  const Eigen::VectorXd& input_mean() const { return w_mean_; }
+  const Eigen::VectorXd& input_variance() const { return w_var_; }
+  const Eigen::VectorXd& input_fourth_moment() const { return w_m4_; }
+
+ private:
+  void build_covariance_map(const StudyConfig& c, const TestRunMaps& maps);
+
+  const StudyConfig* config_;
+  System system_;
+  Sampler sampler_;
+  TestRunOptions test_;
+  bool needs_test_ = false, needs_alignment_data_ = false, needs_realignment_ = false;
+  int k_ = 0;  // filter intervals
+  Eigen::MatrixXd velocity_map_, position_map_;  // 3K × kDim (k = 1..K, axis-minor)
+  Eigen::MatrixXd nominal_velocity_, true_position_;  // 3 × (K+1)
+  Sensitivity3 initial_position_;
+  TestRunEstimators est_;
+  Sensitivity3 torquer_map_, align_accel_map_;
+  Vec3 earth_rate_command_;  // ω_in^n: the torquer command besides ω_c
+  Eigen::MatrixXd g_;
+  Eigen::VectorXd w_mean_, w_var_, w_m4_;
+};
+
+}  // namespace insmc::mc

@@ -1,0 +1,247 @@
+// Tests for montecarlo/engine/engine.h: determinism (the same serialized
+// state for 1, 2, 3 and 8 threads, and for a 3-way "rank" split of the
+// block range merged in any order), a partial last block, the merge
+// identity, serialisation, and replay (evaluate_sample of Sampler::draw
+// against what the engine aggregated for the same sample index).
+#include "montecarlo/engine/engine.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "lib/compensation/extended_vector.h"
+#include "lib/compensation/scheme.h"
+#include "montecarlo/sampler/sampler.h"
+
+namespace insmc::mc {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// A study small enough for Debug + sanitizers: every scheme (so the test
+// run's quantized measurements, the realignment draws and sway are on the
+// block path), both systems, the three report times, no grid; a partial
+// last block (7 full blocks + 300).
+StudyConfig small_study(Fidelity fidelity = Fidelity::kLinear) {
+  StudyConfig c;
+  c.schemes = all_schemes();
+  c.fidelity = fidelity;
+  c.with_grid = false;
+  c.test.sway.velocity_rms_mps = 0.01;
+  c.samples = 7 * kBlockSize + 300;
+  c.seed = 0x5eed'0000'1234ULL;
+  c.threads = 1;
+  return c;
+}
+
+// Layout and map built once per config (StudyMap keeps pointers to both).
+struct Study {
+  explicit Study(const StudyConfig& config) : c(config), layout(make_layout(c)), map(c, layout) {}
+  StudyConfig c;
+  StudyLayout layout;
+  StudyMap map;
+  StudyAccumulator run(std::uint64_t first, std::uint64_t end) const { return run_blocks(c, map, first, end); }
+  StudyAccumulator run_all() const { return run(0, block_count(c.samples)); }
+};
+
+// ---------------------------------------------------------------- determinism
+
+TEST(EngineDeterminism, ThreadCountDoesNotChangeTheBytes) {
+  struct Case {
+    const char* name;
+    StudyConfig config;
+  };
+  StudyConfig with_grid = small_study(Fidelity::kPaper);
+  with_grid.with_grid = true;  // envelope grid too: 47 times
+  with_grid.schemes = {Scheme::kNone, Scheme::k5_3};
+  with_grid.samples = 2 * kBlockSize + 5;
+  const std::vector<Case> cases{{"linear, report times", small_study()}, {"paper, with grid", with_grid}};
+  for (const Case& c : cases) {
+    Study study(c.config);
+    study.c.threads = 1;
+    const std::string expected = study.run_all().serialize();
+    for (const int threads : {2, 3, 8}) {
+      study.c.threads = threads;
+      EXPECT_EQ(study.run_all().serialize(), expected) << c.name << ", " << threads << " threads";
+    }
+  }
+}
+
+TEST(EngineDeterminism, RankSplitMergedInAnyOrderEqualsTheSingleRun) {
+  Study study(small_study());
+  study.c.threads = 2;
+  const std::uint64_t n_blocks = block_count(study.c.samples);
+  ASSERT_EQ(n_blocks, 8u);
+  const std::string expected = study.run_all().serialize();
+  // Three "ranks" with unequal contiguous block ranges; the last holds the
+  // partial block.
+  const std::array<StudyAccumulator, 3> parts{study.run(0, 3), study.run(3, 5), study.run(5, n_blocks)};
+  std::array<int, 3> order{0, 1, 2};
+  do {
+    StudyAccumulator total;  // default-constructed: the merge identity
+    for (const int p : order) total.merge(parts[static_cast<std::size_t>(p)]);
+    EXPECT_EQ(total.serialize(), expected) << "order " << order[0] << order[1] << order[2];
+  } while (std::next_permutation(order.begin(), order.end()));
+  // A tree: p0 + (p2 + p1).
+  StudyAccumulator right = parts[2];
+  right.merge(parts[1]);
+  StudyAccumulator tree = parts[0];
+  tree.merge(right);
+  EXPECT_EQ(tree.serialize(), expected);
+  // Through serialisation, as ranks would exchange states.
+  StudyAccumulator via_bytes = StudyAccumulator::deserialize(parts[1].serialize());
+  via_bytes.merge(StudyAccumulator::deserialize(parts[0].serialize()));
+  via_bytes.merge(StudyAccumulator::deserialize(parts[2].serialize()));
+  EXPECT_EQ(via_bytes.serialize(), expected);
+}
+
+TEST(EngineDeterminism, MergeWithAnEmptyAccumulatorIsTheIdentity) {
+  Study study(small_study());
+  const StudyAccumulator acc = study.run(0, 2);
+  StudyAccumulator left;
+  left.merge(acc);
+  StudyAccumulator right = acc;
+  right.merge(StudyAccumulator{});
+  StudyAccumulator zero_samples = acc;
+  zero_samples.merge(study.run(2, 2));  // an empty block range
+  EXPECT_EQ(left.serialize(), acc.serialize());
+  EXPECT_EQ(right.serialize(), acc.serialize());
+  EXPECT_EQ(zero_samples.serialize(), acc.serialize());
+}
+
+// ---------------------------------------------------------------- blocks
+
+TEST(Engine, PartialLastBlockCountsEverySampleOnce) {
+  Study study(small_study());
+  const std::uint64_t n_blocks = block_count(study.c.samples);
+  const StudyAccumulator all = study.run_all();
+  const StudyAccumulator last = study.run(n_blocks - 1, n_blocks);
+  ASSERT_EQ(all.outputs().size(), study.layout.outputs.size());
+  for (std::size_t o = 0; o < all.outputs().size(); ++o) {
+    EXPECT_EQ(all.outputs()[o].count(), study.c.samples) << "output " << o;
+    EXPECT_EQ(last.outputs()[o].count(), 300u) << "output " << o;
+  }
+  // A study of fewer samples than one block.
+  Study tiny(small_study());
+  tiny.c.samples = 5;
+  const StudyAccumulator t = tiny.run_all();
+  for (const OutputStats& s : t.outputs()) EXPECT_EQ(s.count(), 5u);
+}
+
+TEST(Engine, SerializeRoundTrip) {
+  Study study(small_study());
+  const StudyAccumulator acc = study.run(0, 2);
+  const std::string bytes = acc.serialize();
+  const StudyAccumulator back = StudyAccumulator::deserialize(bytes);
+  EXPECT_TRUE(back == acc);
+  EXPECT_EQ(back.serialize(), bytes);
+  EXPECT_THROW(StudyAccumulator::deserialize(bytes.substr(0, bytes.size() - 1)), std::runtime_error);
+  EXPECT_THROW(StudyAccumulator::deserialize(bytes + "x"), std::runtime_error);
+  EXPECT_THROW(StudyAccumulator::deserialize("not a state"), std::runtime_error);
+  EXPECT_THROW(StudyAccumulator::deserialize(""), std::runtime_error);
+}
+
+// ---------------------------------------------------------------- replay
+
+// How far evaluate_sample may differ from the engine's value for the same
+// extended vector z: each output row r = s·z is a sum of ez::kDim products,
+// computed as one matrix-vector product here and as part of a block matrix
+// product in the engine (summed in another order), so both are within
+// gamma_kDim sum_i |s_i z_i| of the exact value (Higham 3.1); the horizontal
+// output adds the two rows' bounds and a rounding of the sqrt.
+std::vector<double> replay_tolerances(const Study& study, std::uint64_t index, const UncertaintyVector& x) {
+  constexpr double kGamma = ez::kDim * kEps / (1 - ez::kDim * kEps);
+  const Eigen::MatrixXd xm = x;
+  Eigen::MatrixXd z(ez::kDim, 1);
+  std::vector<Eigen::VectorXd> row_bound;
+  for (std::size_t j = 0; j < study.c.systems.size(); ++j) {
+    const int sj = static_cast<int>(j);
+    study.map.pipeline(sj).extended_vectors(index, 1, xm, z);
+    row_bound.push_back(study.map.transposed(sj).cwiseAbs().transpose() * z.col(0).cwiseAbs());
+  }
+  std::vector<double> tol;
+  for (std::size_t o = 0; o < study.layout.outputs.size(); ++o) {
+    const Eigen::VectorXd& rb = row_bound[static_cast<std::size_t>(study.map.system_index(o))];
+    const int base = study.map.row_base(o);
+    const Axis axis = study.layout.outputs[o].axis;
+    const double b = axis == Axis::kHorizontal ? rb[base + 3] + rb[base + 4] : rb[base + static_cast<int>(axis)];
+    tol.push_back(2 * kGamma * b * (1 + 4 * kEps) + 4 * kEps * b);
+  }
+  return tol;
+}
+
+TEST(EngineReplay, OneSampleBlockMatchesEvaluateSample) {
+  // samples = 1024 k + 1 makes block k hold sample 1024 k alone: the
+  // engine's min and max of every output are then that sample's value. The
+  // engine builds z with the same call as evaluate_sample (one sample), so
+  // every scheme, quantized measurements included, is comparable.
+  Study study(small_study());
+  const Sampler sampler(study.c.uncertainties);
+  for (const std::uint64_t k : {0u, 1u, 6u, 1000u}) {
+    study.c.samples = k * kBlockSize + 1;
+    const StudyAccumulator acc = study.run(k, k + 1);
+    const std::uint64_t index = k * kBlockSize;
+    const UncertaintyVector x = sampler.draw(study.c.seed, index);
+    const std::vector<double> replay = evaluate_sample(study.c, study.map, study.layout, index, x);
+    const std::vector<double> tol = replay_tolerances(study, index, x);
+    ASSERT_EQ(replay.size(), acc.outputs().size());
+    for (std::size_t o = 0; o < replay.size(); ++o) {
+      const OutputSummary s = acc.outputs()[o].summarize(study.c.confidence);
+      ASSERT_EQ(s.n, 1u);
+      EXPECT_EQ(s.min, s.max) << "output " << o;
+      EXPECT_NEAR(s.min, replay[o], tol[o]) << "block " << k << " output " << o;
+    }
+  }
+}
+
+TEST(EngineReplay, FullBlockMinMaxAndSumOfSquaresMatchEvaluateSample) {
+  // Schemes none and 5.4 only: their z is built sample by sample, so it is
+  // the same bits in a block as alone. The test-run schemes compute the
+  // pulse counters' input for the whole block as one matrix product; a
+  // rounding difference there can (rarely) move a floor() by a whole pulse,
+  // which no rounding tolerance covers.
+  StudyConfig c = small_study();
+  c.schemes = {Scheme::kNone, Scheme::k5_4};
+  Study study(c);
+  const Sampler sampler(study.c.uncertainties);
+  constexpr std::uint64_t kBlockIndex = 4;
+  const StudyAccumulator acc = study.run(kBlockIndex, kBlockIndex + 1);
+  const std::size_t n_out = study.layout.outputs.size();
+  std::vector<double> lo(n_out, std::numeric_limits<double>::infinity());
+  std::vector<double> hi(n_out, -std::numeric_limits<double>::infinity());
+  std::vector<double> tol(n_out, 0.0), sum_sq(n_out, 0.0), sum_sq_tol(n_out, 0.0);
+  for (std::uint64_t i = kBlockIndex * kBlockSize; i < (kBlockIndex + 1) * kBlockSize; ++i) {
+    const UncertaintyVector x = sampler.draw(study.c.seed, i);
+    const std::vector<double> r = evaluate_sample(study.c, study.map, study.layout, i, x);
+    const std::vector<double> t = replay_tolerances(study, i, x);
+    for (std::size_t o = 0; o < n_out; ++o) {
+      lo[o] = std::min(lo[o], r[o]);
+      hi[o] = std::max(hi[o], r[o]);
+      tol[o] = std::max(tol[o], t[o]);
+      sum_sq[o] += r[o] * r[o];
+      sum_sq_tol[o] += 2 * std::fabs(r[o]) * t[o] + t[o] * t[o];
+    }
+  }
+  // The min (max) of values each within tol moves by at most tol. The sum of
+  // squares: per-sample bounds above, plus two recursive summations of 1024
+  // positive terms (1024 eps relative each).
+  constexpr double kSumTol = 2 * (kBlockSize + 4) * kEps;
+  for (std::size_t o = 0; o < n_out; ++o) {
+    const OutputStats& s = acc.outputs()[o];
+    const OutputSummary sum = s.summarize(study.c.confidence);
+    EXPECT_EQ(sum.n, kBlockSize);
+    EXPECT_NEAR(sum.min, lo[o], tol[o]) << "output " << o;
+    EXPECT_NEAR(sum.max, hi[o], tol[o]) << "output " << o;
+    EXPECT_NEAR(s.sum_squares(), sum_sq[o], sum_sq_tol[o] + kSumTol * sum_sq[o]) << "output " << o;
+  }
+}
+
+}  // namespace
+}  // namespace insmc::mc
