@@ -56,7 +56,8 @@ po::options_description model_options_description() {
 
 ModelOptions read_model_options(const po::variables_map& vm, bool system2_used) {
   ModelOptions o;
-  const std::string lat = vm["latitude"].as<std::string>();
+  const std::string lat_option = vm["latitude"].as<std::string>();
+  const std::string lat = lat_option.substr(0, lat_option.find(','));  // a comma list is a sweep
   o.latitude_rad = parse_quantity(lat, Dimension::kAngle, "--latitude");
   const double abs_lat = std::abs(o.latitude_rad);
   if (system2_used && !(abs_lat < 90.0 * kDegToRad - 1e-9)) {

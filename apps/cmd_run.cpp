@@ -6,6 +6,7 @@
 #include "apps/cli_common.h"
 #include "apps/progress.h"
 #include "apps/study_options.h"
+#include "apps/sweep.h"
 #include "lib/common/input_error.h"
 #include "lib/uncertainty/catalogue.h"
 #include "montecarlo/engine/engine.h"
@@ -66,6 +67,16 @@ int run_run(const Args& args) {
   const mc::StudyConfig config = read_study_config(*vm, true);
   const OutputFormat format = parse_output_format((*vm)["format"].as<std::string>());
   const mc::LengthUnit unit = read_length_unit(*vm);
+  const std::vector<SweepAxis> sweeps = find_sweeps(*vm);
+  if (!sweeps.empty()) {
+    if (vm->count("replay")) throw InputError("--replay", (*vm)["replay"].as<std::string>(), "cannot be combined with a sweep");
+    const SweepFiles files = run_sweep(config, sweeps, unit == mc::LengthUnit::kFoot);
+    if (vm->count("out"))
+      write_output_files((*vm)["out"].as<std::string>(), {{"sweep.csv", files.sweep_csv}, {"sweep.md", files.summary_md},
+                                                          {"sweep.svg", files.plot_svg}});
+    fmt::print("{}", format == OutputFormat::kCsv ? files.sweep_csv : files.summary_md);
+    return 0;
+  }
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
 

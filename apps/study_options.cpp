@@ -75,8 +75,60 @@ po::options_description study_options_description(bool monte_carlo) {
         "threads", po::value<int>()->default_value(0), "worker threads (0 = all cores); never changes results");
   }
   d.add(model_options_description());
+  d.add(test_run_options_description());
   d.add(uncertainty_options_description());
   return d;
+}
+
+po::options_description test_run_options_description() {
+  po::options_description d("Preflight test run, measurements and realignment (chapters 4, 5)");
+  d.add_options()("test-duration", po::value<std::string>()->default_value("15min"),
+                  "test-run length T on the stationary base (a whole number of filter intervals)")(
+      "filter-interval", po::value<std::string>()->default_value("10s"), "filter-box counting interval tau (fig. 5.2)")(
+      "dv-pulse", po::value<std::string>()->default_value("0.1ftps"),
+      "accelerometer pulse weight (velocity increment); 0mps = continuous output")(
+      "position-resolution", po::value<std::string>()->default_value("3ft"),
+      "resolution of the position computer; 0m = exact")(
+      "fit-u4", po::value<std::string>()->default_value("auto"),
+      "fit the U4 (t^2) term: auto (when resolvable by (4.6)), yes (error if not), no")(
+      "sway", po::value<std::string>()->default_value("off"),
+      "vehicle sway as VELOCITY_RMS,CORRELATION_TIME (e.g. 5mmps,6s: a parked aircraft in light wind) or off")(
+      "realignment-duration", po::value<std::string>()->default_value("10min"),
+      "realignment time of 5.1.1, 5.1.2, combined (adds to ready_time_min)")(
+      "alignment-average", po::value<std::string>()->default_value("10min"),
+      "5.4: averaging time of the alignment-phase torquer commands and accelerometer outputs")(
+      "torquer-pulse", po::value<std::string>()->default_value("1arcsec"),
+      "5.4: angle per gyro torquer pulse (resolution of the command measurement); 0rad = exact");
+  return d;
+}
+
+TestRunOptions read_test_run_options(const po::variables_map& vm) {
+  TestRunOptions t;
+  // A comma list is a sweep (apps/sweep.h): the study itself starts from its first value.
+  auto q = [&](const char* name, Dimension d) {
+    return parse_quantity(split_commas(vm[name].as<std::string>()).front(), d, std::string("--") + name);
+  };
+  t.duration_s = q("test-duration", Dimension::kTime);
+  t.filter_interval_s = q("filter-interval", Dimension::kTime);
+  t.dv_pulse_mps = q("dv-pulse", Dimension::kVelocity);
+  t.position_resolution_m = q("position-resolution", Dimension::kLength);
+  t.realignment_duration_s = q("realignment-duration", Dimension::kTime);
+  t.alignment_average_s = q("alignment-average", Dimension::kTime);
+  t.torquer_pulse_rad = q("torquer-pulse", Dimension::kAngle);
+  const std::string fit = vm["fit-u4"].as<std::string>();
+  if (fit == "auto") t.fit_u4 = FitU4::kAuto;
+  else if (fit == "yes") t.fit_u4 = FitU4::kYes;
+  else if (fit == "no") t.fit_u4 = FitU4::kNo;
+  else throw InputError("--fit-u4", fit, "must be auto, yes or no");
+  const std::string sway = vm["sway"].as<std::string>();
+  if (sway != "off") {
+    const auto parts = split_commas(sway);
+    if (parts.size() != 2) throw InputError("--sway", sway, "expected VELOCITY_RMS,CORRELATION_TIME (e.g. 5mmps,6s) or off");
+    t.sway.velocity_rms_mps = parse_quantity(parts[0], Dimension::kVelocity, "--sway velocity");
+    t.sway.correlation_time_s = parse_quantity(parts[1], Dimension::kTime, "--sway time");
+  }
+  validate(t);
+  return t;
 }
 
 mc::StudyConfig read_study_config(const po::variables_map& vm, bool monte_carlo) {
@@ -103,6 +155,7 @@ mc::StudyConfig read_study_config(const po::variables_map& vm, bool monte_carlo)
   for (System s : c.systems) uses_system2 |= s == System::kGyrocompass;
   c.model = read_model_options(vm, uses_system2);
   c.uncertainties = read_uncertainty_model(vm);
+  c.test = read_test_run_options(vm);
   if (monte_carlo) {
     c.samples = parse_count(vm["samples"].as<std::string>(), "--samples");
     c.seed = parse_count(vm["seed"].as<std::string>(), "--seed");

@@ -25,6 +25,11 @@ po::options_description study_options_description(bool monte_carlo);
 /// Builds and validates the StudyConfig (throws InputError).
 mc::StudyConfig read_study_config(const po::variables_map& vm, bool monte_carlo);
 
+/// The test-run, measurement and realignment options (shared by run,
+/// covariance, check).
+po::options_description test_run_options_description();
+TestRunOptions read_test_run_options(const po::variables_map& vm);
+
 /// --units si|paper.
 mc::LengthUnit read_length_unit(const po::variables_map& vm);
 

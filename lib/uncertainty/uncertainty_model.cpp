@@ -84,7 +84,8 @@ std::pair<std::vector<int>, std::string> split_assignment(std::string_view a, st
 }
 
 void UncertaintyModel::apply_bound(std::string_view assignment) {
-  const auto [indices, value] = split_assignment(assignment, "--bound");
+  const auto [indices, list] = split_assignment(assignment, "--bound");
+  const std::string value = list.substr(0, list.find(','));  // a comma list is a sweep: its first value
   for (int i : indices) {
     const UncertaintySpec& spec = catalogue()[i];
     const double b = parse_quantity(value, spec.dimension, fmt::format("--bound {}", spec.name));

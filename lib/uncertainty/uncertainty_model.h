@@ -30,8 +30,8 @@ class UncertaintyModel {
   /// Table 3.1 bounds, uniform everywhere.
   UncertaintyModel();
 
-  /// "NAME=VALUE": NAME a catalogue name, group or `all`; VALUE with its unit
-  /// (a comma list is refused here: sweeps are expanded before).
+  /// "NAME=VALUE": NAME a catalogue name, group or `all`; VALUE with its unit.
+  /// Of a comma list (a sweep, expanded by the caller) the first value applies.
   void apply_bound(std::string_view assignment);
   /// "NAME=uniform|normal:K|fixed:VALUE|zero".
   void apply_dist(std::string_view assignment);

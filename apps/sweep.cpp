@@ -1,0 +1,161 @@
+#include "apps/sweep.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+#include "apps/study_options.h"
+#include "lib/common/input_error.h"
+#include "lib/units/quantity.h"
+#include "lib/units/units.h"
+#include "montecarlo/engine/engine.h"
+#include "montecarlo/write/csv.h"
+#include "montecarlo/write/markdown.h"
+#include "montecarlo/write/svg_plot.h"
+
+namespace insmc::app {
+namespace {
+
+struct QuantityOption {
+  const char* option;
+  const char* column;
+  Dimension dimension;
+  double TestRunOptions::*field;  // null: latitude
+};
+
+constexpr QuantityOption kSweepable[] = {
+    {"test-duration", "test_duration_s", Dimension::kTime, &TestRunOptions::duration_s},
+    {"filter-interval", "filter_interval_s", Dimension::kTime, &TestRunOptions::filter_interval_s},
+    {"dv-pulse", "dv_pulse_mps", Dimension::kVelocity, &TestRunOptions::dv_pulse_mps},
+    {"position-resolution", "position_resolution_m", Dimension::kLength, &TestRunOptions::position_resolution_m},
+    {"realignment-duration", "realignment_duration_s", Dimension::kTime, &TestRunOptions::realignment_duration_s},
+    {"alignment-average", "alignment_average_s", Dimension::kTime, &TestRunOptions::alignment_average_s},
+    {"torquer-pulse", "torquer_pulse_rad", Dimension::kAngle, &TestRunOptions::torquer_pulse_rad},
+    {"latitude", "latitude_rad", Dimension::kAngle, nullptr},
+};
+
+SweepAxis axis_of(const std::string& column, const std::string& option, const std::vector<std::string>& texts,
+                  Dimension d) {
+  SweepAxis a;
+  a.column = column;
+  a.texts = texts;
+  for (const auto& t : texts) a.values_si.push_back(parse_quantity(t, d, fmt::format("--{}", option)));
+  return a;
+}
+
+}  // namespace
+
+std::vector<SweepAxis> find_sweeps(const po::variables_map& vm) {
+  std::vector<SweepAxis> axes;
+  for (const QuantityOption& q : kSweepable) {
+    if (!vm.count(q.option)) continue;
+    const std::vector<std::string> texts = split_commas(vm[q.option].as<std::string>());
+    if (texts.size() < 2) continue;
+    SweepAxis a = axis_of(q.column, q.option, texts, q.dimension);
+    const auto values = a.values_si;
+    const auto field = q.field;
+    a.apply = [values, field](mc::StudyConfig& c, std::size_t i) {
+      if (field) c.test.*field = values[i];
+      else c.model.latitude_rad = values[i];
+    };
+    axes.push_back(std::move(a));
+  }
+  if (vm.count("bound")) {
+    for (const auto& assignment : vm["bound"].as<std::vector<std::string>>()) {
+      const auto [indices, list] = split_assignment(assignment, "--bound");
+      const std::vector<std::string> texts = split_commas(list);
+      if (texts.size() < 2) continue;
+      const std::string name = assignment.substr(0, assignment.find('='));
+      const UncertaintySpec& spec = catalogue()[indices.front()];
+      SweepAxis a = axis_of(fmt::format("{}.bound_{}", name, si_suffix(spec.dimension)), fmt::format("bound {}", name), texts,
+                            spec.dimension);
+      a.apply = [name, texts](mc::StudyConfig& c, std::size_t i) { c.uncertainties.apply_bound(fmt::format("{}={}", name, texts[i])); };
+      axes.push_back(std::move(a));
+    }
+  }
+  return axes;
+}
+
+SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, bool paper_units) {
+  const double k = paper_units ? 1.0 / kFtToM : 1.0;
+  const std::string u = paper_units ? "ft" : "m";
+  std::vector<std::string> header;
+  for (const auto& a : axes) header.push_back(a.column);
+  for (const char* c : {"scheme", "system", "clock", "axis", "t_min", "n"}) header.emplace_back(c);
+  for (const char* q : {"rms", "rms_lo", "rms_hi", "mean", "std", "min", "max", "p95"})
+    header.push_back(fmt::format("{}_{}", q, u));
+  header.emplace_back("ready_time_min");
+  header.emplace_back("fitted_terms");
+  mc::Table table(header);
+  mc::Table summary({"point", "scheme", "system", fmt::format("horizontal RMS [{}] at {} min", u,
+                                                              mc::format_number(base.report_times_s.back() / 60)),
+                     "fitted"});
+  std::vector<mc::PlotSeries> plot;
+  std::size_t points = 1;
+  for (const auto& a : axes) points *= a.texts.size();
+  for (std::size_t p = 0; p < points; ++p) {
+    mc::StudyConfig c = base;
+    c.with_grid = false;
+    if (c.test.fit_u4 == FitU4::kYes) c.test.fit_u4 = FitU4::kAuto;  // each point fits what it can resolve
+    std::vector<std::size_t> idx(axes.size());
+    std::size_t rest = p;
+    for (std::size_t i = axes.size(); i-- > 0;) {
+      idx[i] = rest % axes[i].texts.size();
+      rest /= axes[i].texts.size();
+      axes[i].apply(c, idx[i]);
+    }
+    mc::validate(c);
+    const mc::StudyLayout layout = mc::make_layout(c);
+    const mc::StudyMap map(c, layout);
+    const mc::StudyAccumulator acc = mc::run_blocks(c, map, 0, mc::block_count(c.samples));
+    std::string point_name;
+    for (std::size_t i = 0; i < axes.size(); ++i)
+      point_name += fmt::format("{}{}={}", i ? " " : "", axes[i].column, axes[i].texts[idx[i]]);
+    for (std::size_t o = 0; o < layout.outputs.size(); ++o) {
+      const auto& spec = layout.outputs[o];
+      if (!layout.is_report_time[spec.time_index]) continue;
+      const mc::OutputSummary s = acc.outputs()[o].summarize(c.confidence);
+      int scheme_i = 0;
+      while (c.schemes[static_cast<std::size_t>(scheme_i)] != spec.scheme) ++scheme_i;
+      std::vector<std::string> row;
+      for (std::size_t i = 0; i < axes.size(); ++i) row.push_back(mc::format_number(axes[i].values_si[idx[i]]));
+      const double t = layout.times_s[spec.time_index];
+      const std::string& fitted = map.fitted_terms(map.system_index(o));
+      for (const std::string& cell :
+           {std::string(to_string(spec.scheme)), std::to_string(system_number(spec.system)),
+            std::string(clock_of(spec.scheme)), std::string(to_string(spec.axis)), mc::format_number(t / 60),
+            std::to_string(s.n), mc::format_number(k * s.rms), mc::format_number(k * s.rms_lo),
+            mc::format_number(k * s.rms_hi), mc::format_number(k * s.mean), mc::format_number(k * s.std),
+            mc::format_number(k * s.min), mc::format_number(k * s.max), mc::format_number(k * s.p95_abs),
+            mc::format_number(map.ready_time_s(scheme_i) / 60), fitted})
+        row.push_back(cell);
+      table.add_row(row);
+      if (spec.axis == mc::Axis::kHorizontal && std::abs(t - c.report_times_s.back()) < 1e-6) {
+        summary.add_row({point_name, row[axes.size()], row[axes.size() + 1],
+                         fmt::format("{:.6g} ± {:.2g}", k * s.rms, k * (s.rms_hi - s.rms_lo) / 2), fitted});
+        const std::string name = fmt::format("{} sys {}", to_string(spec.scheme), system_number(spec.system));
+        mc::PlotSeries* series = nullptr;
+        for (auto& ps : plot)
+          if (ps.name == name) series = &ps;
+        if (!series) {
+          plot.push_back({name, {}, {}, {}, {}});
+          series = &plot.back();
+        }
+        if (idx.size() > 1 && std::any_of(idx.begin() + 1, idx.end(), [](std::size_t v) { return v != 0; }))
+          continue;  // the plot varies the first swept quantity, the others at their first value
+        series->x.push_back(axes[0].values_si[idx[0]]);
+        series->y.push_back(k * s.rms);
+        series->lo.push_back(k * s.rms_lo);
+        series->hi.push_back(k * s.rms_hi);
+      }
+    }
+  }
+  SweepFiles f;
+  f.sweep_csv = mc::render_csv(table);
+  f.summary_md = mc::render_markdown(summary);
+  f.plot_svg = mc::svg_line_plot(fmt::format("Horizontal RMS at {} min against {}", mc::format_number(base.report_times_s.back() / 60),
+                                             axes[0].column),
+                                 axes[0].column, fmt::format("RMS horizontal error [{}]", u), plot);
+  return f;
+}
+
+}  // namespace insmc::app

@@ -1,0 +1,33 @@
+#pragma once
+/// Trade-study sweeps: any option given a comma list (--test-duration
+/// 5min,10min,15min, --bound gyro_drift=1meru,3meru,10meru,
+/// --realignment-duration 5min,15min, ...) is a swept quantity; several
+/// sweep over their Cartesian product. Each point is a full study.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "apps/cli_common.h"
+#include "montecarlo/study/study_config.h"
+
+namespace insmc::app {
+
+struct SweepAxis {
+  std::string column;                 ///< sweep.csv column, SI unit in the name (test_duration_s)
+  std::vector<std::string> texts;     ///< the values as given
+  std::vector<double> values_si;
+  std::function<void(mc::StudyConfig&, std::size_t)> apply;  ///< sets value i
+};
+
+/// The swept quantities of the command line (empty: no sweep).
+std::vector<SweepAxis> find_sweeps(const po::variables_map& vm);
+
+/// Runs every point of the sweep and returns sweep.csv, a Markdown summary
+/// and the SVG plot of the horizontal RMS at the last report time against
+/// the first swept quantity.
+struct SweepFiles {
+  std::string sweep_csv, summary_md, plot_svg;
+};
+SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, bool paper_units);
+
+}  // namespace insmc::app

@@ -1,0 +1,182 @@
+#include "lib/truth/effect.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "lib/common/assert.h"
+#include "lib/common/input_error.h"
+#include "lib/truth/effects/effects.h"
+
+namespace insmc {
+namespace {
+
+using effects::EffectDefinition;
+
+const std::array<const EffectDefinition*, kEffectKindCount>& definitions() {
+  static const std::array<const EffectDefinition*, kEffectKindCount> d = {
+      &effects::quantization(),          &effects::sway(),
+      &effects::accel_bias_instability(), &effects::gyro_drift_instability(),
+      &effects::angle_random_walk(),     &effects::velocity_random_walk(),
+      &effects::thermal_transient(),     &effects::anisoelastic_drift(),
+      &effects::scale_factor_nonlinearity(), &effects::gravity_model(),
+      &effects::deflection_of_vertical(), &effects::alignment_transient(),
+      &effects::switch_transient(),
+  };
+  return d;
+}
+
+std::string effect_names() {
+  std::string out;
+  for (const EffectInfo& e : effect_registry()) out += (out.empty() ? "" : ", ") + std::string(e.name);
+  return out;
+}
+
+std::string parameter_names(const EffectInfo& e) {
+  std::string out;
+  for (const auto& p : e.parameters) out += (out.empty() ? "" : ", ") + std::string(p.name);
+  return out.empty() ? "none" : out;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+  while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
+  return s;
+}
+
+}  // namespace
+
+std::span<const EffectInfo> effect_registry() {
+  static const std::array<EffectInfo, kEffectKindCount> infos = [] {
+    std::array<EffectInfo, kEffectKindCount> a{};
+    for (int k = 0; k < kEffectKindCount; ++k) {
+      a[k] = definitions()[k]->info;
+      INSMC_ASSERT(static_cast<int>(a[k].kind) == k, "registry order: {} at {}", a[k].name, k);
+      INSMC_ASSERT(a[k].parameters.size() <= kMaxEffectParameters, "{} has {} parameters",
+                   a[k].name, a[k].parameters.size());
+    }
+    return a;
+  }();
+  return infos;
+}
+
+const EffectInfo& effect_info(EffectKind kind) { return effect_registry()[static_cast<int>(kind)]; }
+
+std::string_view to_string(EffectKind kind) { return effect_info(kind).name; }
+
+EffectKind parse_effect_kind(std::string_view text, std::string_view field) {
+  for (const EffectInfo& e : effect_registry())
+    if (e.name == text) return e.kind;
+  throw InputError(std::string(field), std::string(text), "unknown effect; expected one of " + effect_names());
+}
+
+double EffectSpec::value(std::string_view name) const {
+  const EffectInfo& info = effect_info(kind);
+  for (std::size_t i = 0; i < info.parameters.size(); ++i)
+    if (info.parameters[i].name == name) return values_si[i];
+  INSMC_ASSERT(false, "effect {} has no parameter {}", info.name, name);
+  return 0.0;
+}
+
+EffectSpec default_effect(EffectKind kind) {
+  EffectSpec spec;
+  spec.kind = kind;
+  const EffectInfo& info = effect_info(kind);
+  for (std::size_t i = 0; i < info.parameters.size(); ++i) spec.values_si[i] = info.parameters[i].default_si;
+  return spec;
+}
+
+void validate_effect(const EffectSpec& spec, std::string_view field) {
+  const EffectInfo& info = effect_info(spec.kind);
+  for (std::size_t i = 0; i < info.parameters.size(); ++i) {
+    const EffectParameter& p = info.parameters[i];
+    const double v = spec.values_si[i];
+    const std::string name = fmt::format("{} {}.{}", field, info.name, p.name);
+    if (!std::isfinite(v)) throw InputError(name, format_quantity(v, p.dimension), "must be finite");
+    if (p.range == ParameterRange::kNonNegative && v < 0)
+      throw InputError(name, format_quantity(v, p.dimension), "must be >= 0");
+    if (p.range == ParameterRange::kPositive && !(v > 0))
+      throw InputError(name, format_quantity(v, p.dimension), "must be > 0");
+  }
+  if (spec.kind == EffectKind::kSway) {
+    if (spec.value("period_min") > spec.value("period_max"))
+      throw InputError(fmt::format("{} sway.period_min", field),
+                       format_quantity(spec.value("period_min"), Dimension::kTime),
+                       "must be <= period_max");
+    const double n = spec.value("components");
+    if (n != std::round(n) || n > 64)
+      throw InputError(fmt::format("{} sway.components", field), fmt::format("{}", n),
+                       "must be a whole number from 1 to 64");
+  }
+}
+
+EffectSpec parse_effect(std::string_view text, std::string_view field) {
+  text = trim(text);
+  const std::size_t colon = text.find(':');
+  const std::string_view name = trim(text.substr(0, colon));
+  const EffectKind kind = parse_effect_kind(name, field);
+  EffectSpec spec = default_effect(kind);
+  const EffectInfo& info = effect_info(kind);
+  if (colon != std::string_view::npos) {
+    std::string_view rest = text.substr(colon + 1);
+    std::array<bool, kMaxEffectParameters> seen{};
+    while (true) {
+      const std::size_t comma = rest.find(',');
+      const std::string_view item = trim(rest.substr(0, comma));
+      const std::size_t eq = item.find('=');
+      if (item.empty() || eq == std::string_view::npos)
+        throw InputError(fmt::format("{} {}", field, info.name), std::string(item),
+                         "expected param=value; parameters: " + parameter_names(info));
+      const std::string_view key = trim(item.substr(0, eq));
+      const std::string_view value = trim(item.substr(eq + 1));
+      std::size_t index = info.parameters.size();
+      for (std::size_t i = 0; i < info.parameters.size(); ++i)
+        if (info.parameters[i].name == key) index = i;
+      const std::string param_field = fmt::format("{} {}.{}", field, info.name, key);
+      if (index == info.parameters.size())
+        throw InputError(param_field, std::string(value),
+                         "unknown parameter; expected one of " + parameter_names(info));
+      if (seen[index]) throw InputError(param_field, std::string(value), "given twice");
+      seen[index] = true;
+      spec.values_si[index] = parse_quantity(value, info.parameters[index].dimension, param_field);
+      if (comma == std::string_view::npos) break;
+      rest = rest.substr(comma + 1);
+    }
+  }
+  validate_effect(spec, field);
+  return spec;
+}
+
+std::string format_effect(const EffectSpec& spec) {
+  const EffectInfo& info = effect_info(spec.kind);
+  std::string out(info.name);
+  for (std::size_t i = 0; i < info.parameters.size(); ++i) {
+    out += (i == 0 ? ":" : ",");
+    out += fmt::format("{}={}", info.parameters[i].name,
+                       format_quantity(spec.values_si[i], info.parameters[i].dimension));
+  }
+  return out;
+}
+
+std::uint64_t effect_stream(EffectKind kind, int occurrence) {
+  return (static_cast<std::uint64_t>(kind) + 1) << 16 | static_cast<std::uint64_t>(occurrence);
+}
+
+Perturbations realize_effects(std::span<const EffectSpec> effects, const EffectContext& context) {
+  Perturbations p;
+  std::array<int, kEffectKindCount> occurrences{};
+  static const NormalSource kNoNoise;
+  for (const EffectSpec& spec : effects) {
+    const int k = static_cast<int>(spec.kind);
+    const EffectDefinition& def = *definitions()[k];
+    INSMC_ASSERT(!def.info.random || context.noise != nullptr,
+                 "effect {} is random but no NormalSource was given", def.info.name);
+    NormalDraws draws(context.noise ? *context.noise : kNoNoise, effect_stream(spec.kind, occurrences[k]++));
+    def.realize(spec, context, draws, p);
+  }
+  return p;
+}
+
+}  // namespace insmc

@@ -1,0 +1,459 @@
+#include "lib/truth/simulator.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "lib/alignment/alignment.h"
+#include "lib/common/assert.h"
+#include "lib/truth/earth_model.h"
+
+namespace insmc {
+namespace {
+
+using State = Eigen::Matrix<double, 16, 1>;
+// State layout: platform quaternion q = C_a^i (w, x, y, z); velocity and
+// double-integral increments of the accelerometer outputs since the step
+// began (a frame); navigation error δr, δv (i frame, continuous-output part).
+constexpr int kQ = 0, kDV = 4, kDW = 7, kDR = 10, kDVel = 13;
+
+Mat3 quaternion_matrix(const Eigen::Vector4d& q) {
+  const double w = q[0], x = q[1], y = q[2], z = q[3];
+  Mat3 m;
+  m << 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),  //
+      2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),    //
+      2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y);
+  return m;
+}
+
+/// Unit quaternion of a rotation matrix (Shepperd via Eigen).
+Eigen::Vector4d matrix_quaternion(const Mat3& m) {
+  const Eigen::Quaterniond q(m);
+  return Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
+}
+
+/// exp([θ×]): the rotation by the rotation vector θ (Rodrigues, exact).
+Mat3 rotation(const Vec3& theta) {
+  const double a = theta.norm();
+  Mat3 k;
+  k << 0.0, -theta.z(), theta.y(), theta.z(), 0.0, -theta.x(), -theta.y(), theta.x(), 0.0;
+  if (a < 1e-8) return Mat3::Identity() + k + 0.5 * k * k;  // series to O(a³)
+  return Mat3::Identity() + std::sin(a) / a * k + (1.0 - std::cos(a)) / (a * a) * k * k;
+}
+
+/// The smallest rotation R with R u = v (unit vectors, u·v > −1).
+Mat3 minimal_rotation(const Vec3& u, const Vec3& v) {
+  const Vec3 k = u.cross(v);
+  Mat3 kx;
+  kx << 0.0, -k.z(), k.y(), k.z(), 0.0, -k.x(), -k.y(), k.x(), 0.0;
+  return Mat3::Identity() + kx + kx * kx / (1.0 + u.dot(v));
+}
+
+/// C_a^{a'} at switch-over for the misalignment C' (2.18), as the alignment
+/// loops leave it: the azimuth loop turns the platform by C'_z about the
+/// vertical, the leveling loops tilt it until the horizontal specific force in
+/// the platform is what they null to, f^a_h = (f^{a'} − C' × f^{a'})_h (the
+/// first-order relation of (3.16), now met exactly). A plain exp([C'×]) would
+/// add spurious second-order horizontal forces g C'_z C'_{x,y}/2.
+Mat3 switchover_attitude(const Vec3& c_prime, const Vec3& f_ap) {
+  const double g = f_ap.norm();
+  const Vec3 target_h = f_ap - c_prime.cross(f_ap);
+  Vec3 f_a(target_h.x(), target_h.y(), 0.0);
+  f_a.z() = -std::sqrt(g * g - f_a.x() * f_a.x() - f_a.y() * f_a.y());
+  const Mat3 azimuth = Eigen::AngleAxisd(c_prime.z(), Vec3::UnitZ()).toRotationMatrix();
+  const Vec3 f_a1 = azimuth.transpose() * f_ap;
+  return azimuth * minimal_rotation(f_a / g, f_a1 / g);
+}
+
+/// R_z(angle) v with (c, s) = (cos, sin) of the angle.
+Vec3 rotate_z(double c, double s, const Vec3& v) {
+  return Vec3(c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z());
+}
+
+/// The rounding quantizer's remainder a − w round(a/w) ∈ [−w/2, w/2).
+double remainder_of(double a, double w) { return a - w * std::floor(a / w + 0.5); }
+
+/// ∫_{t0}^{t0+h} ρ(a(s)) ds for the accumulator a(s) linear from a0 to a1:
+/// ρ has the antiderivative ρ²/2 in a (continuous across the jumps).
+double integral_of_remainder_linear(double a0, double a1, double w, double h) {
+  if (std::abs(a1 - a0) < 1e-9 * w) return h * remainder_of(0.5 * (a0 + a1), w);
+  const double r0 = remainder_of(a0, w), r1 = remainder_of(a1, w);
+  return h * 0.5 * (r1 * r1 - r0 * r0) / (a1 - a0);
+}
+
+/// Everything constant during a run, and the right-hand side of the ODE.
+struct Dynamics {
+  // earth and truth
+  double earth_rate = 0.0;
+  Vec3 site_position_e = Vec3::Zero();
+  Vec3 site_gravitation_e = Vec3::Zero();  ///< incl. the deflection anomaly
+  Vec3 site_specific_force_e = Vec3::Zero();
+  // platform and instruments
+  Mat3 mass_unbalance = Mat3::Zero();  ///< MU (3.10)
+  Vec3 drift_ai = Vec3::Zero();        ///< ω_AI (3.8)
+  Vec3 scale = Vec3::Ones();           ///< 1 + a_k
+  Vec3 nav_bias = Vec3::Zero();        ///< δf + ∂f (3.18) + steps
+  Vec3 quadratic = Vec3::Zero();
+  double anisoelastic = 0.0;
+  const std::vector<ExponentialTerm>* bias_transients = nullptr;
+  const std::vector<ExponentialTerm>* drift_transients = nullptr;
+  const GridProcess* drift_process = nullptr;
+  const GridProcess* angle_walk = nullptr;
+  const std::function<Vec3(double)>* torquer = nullptr;
+  // computer
+  Mat3 c_hat = Mat3::Identity();   ///< Ĉ_a^i (3.20)
+  GravityField computer_field;
+  double computer_radius = 0.0;    ///< r0 + δh (external altitude)
+  double computer_mu_over_r3 = 0.0;
+  Vec3 quantization_offset_i = Vec3::Zero();  ///< Ĉ P, held over a step
+
+  Vec3 computer_gravitation(const Vec3& r_c) const {
+    if (computer_field.j2 == 0.0) return -computer_mu_over_r3 * r_c;
+    const double n = r_c.norm();
+    return n / computer_radius * computer_field.gravitation(computer_radius / n * r_c);
+  }
+
+  Mat3 platform(const Eigen::Vector4d& q, double t) const {
+    Mat3 c = quaternion_matrix(q);
+    if (angle_walk && !angle_walk->empty()) c = c * rotation(angle_walk->at(t));
+    return c;
+  }
+
+  void derivative(double t, double c, double s, const State& y, State& dy) const {
+    const Eigen::Vector4d q = y.segment<4>(kQ);
+    const Mat3 c_i_a_t = platform(q, t).transpose();
+    const Vec3 f_i = rotate_z(c, s, site_specific_force_e);
+    const Vec3 f_a = c_i_a_t * f_i;
+    Vec3 f_m = scale.cwiseProduct(f_a) + nav_bias + quadratic.cwiseProduct(f_a.cwiseAbs2());
+    Vec3 omega = drift_ai + mass_unbalance * f_a;
+    if (anisoelastic != 0.0)
+      omega += anisoelastic * Vec3(f_a.y() * f_a.z(), f_a.z() * f_a.x(), f_a.x() * f_a.y());
+    for (const ExponentialTerm& e : *bias_transients) f_m += std::exp(-t / e.time_constant_s) * e.amplitude;
+    for (const ExponentialTerm& e : *drift_transients) omega += std::exp(-t / e.time_constant_s) * e.amplitude;
+    if (!drift_process->empty()) omega += drift_process->at(t);
+    if (*torquer) omega += (*torquer)(t);
+    // q̇ = ½ q ⊗ (0, ω): the platform turns at ω_ia^a (3.6)–(3.7).
+    const double qw = q[0];
+    const Vec3 qv = q.segment<3>(1);
+    dy[kQ] = -0.5 * qv.dot(omega);
+    dy.segment<3>(kQ + 1) = 0.5 * (qw * omega + qv.cross(omega));
+    dy.segment<3>(kDV) = f_m;
+    dy.segment<3>(kDW) = y.segment<3>(kDV);
+    // δv̇ = G_c(r_c) − G(r) + Ĉ f_m − f^i: the computer's r̈_c minus the true r̈.
+    const Vec3 r_true = rotate_z(c, s, site_position_e);
+    const Vec3 r_c = r_true + y.segment<3>(kDR) - quantization_offset_i;
+    dy.segment<3>(kDVel) = computer_gravitation(r_c) - rotate_z(c, s, site_gravitation_e) +
+                           c_hat * f_m - f_i;
+    dy.segment<3>(kDR) = y.segment<3>(kDVel);
+  }
+};
+
+struct SwayState {
+  Vec3 position_n = Vec3::Zero(), velocity_n = Vec3::Zero();
+};
+
+SwayState sway_at(const std::vector<SwayComponent>& sway, double t) {
+  SwayState s;
+  for (const SwayComponent& c : sway) {
+    const double w = 2.0 * std::numbers::pi / c.period_s, arg = w * t + c.phase_rad;
+    s.position_n += std::sin(arg) * c.amplitude_n_m;
+    s.velocity_n += w * std::cos(arg) * c.amplitude_n_m;
+  }
+  return s;
+}
+
+/// Times at which the integration stops: the outputs and the starts of their
+/// filter intervals, merged within 1e-9 s.
+std::vector<double> stop_times(const std::vector<double>& outputs, double tau) {
+  std::vector<double> stops;
+  stops.reserve(2 * outputs.size() + 1);
+  stops.push_back(0.0);
+  for (double t : outputs) {
+    stops.push_back(t);
+    if (t - tau >= -1e-9) stops.push_back(std::max(0.0, t - tau));
+  }
+  std::sort(stops.begin(), stops.end());
+  std::vector<double> unique;
+  unique.reserve(stops.size());
+  for (double t : stops)
+    if (unique.empty() || t - unique.back() > 1e-9) unique.push_back(t);
+  return unique;
+}
+
+std::size_t find_stop(const std::vector<double>& stops, double t) {
+  const auto it = std::lower_bound(stops.begin(), stops.end(), t - 1e-9);
+  INSMC_ASSERT(it != stops.end() && std::abs(*it - t) <= 1e-9, "stop {} missing", t);
+  return static_cast<std::size_t>(it - stops.begin());
+}
+
+}  // namespace
+
+std::optional<InputError> validate(const TruthOptions& o) {
+  const auto bad = [](std::string field, double v, std::string allowed) {
+    return InputError(std::move(field), fmt::format("{}", v), std::move(allowed));
+  };
+  if (!(std::abs(o.model.latitude_rad) < 0.5 * std::numbers::pi))
+    return bad("latitude_rad", o.model.latitude_rad, "must be within (-90°, 90°)");
+  if (!(o.dv_pulse_mps >= 0) || !std::isfinite(o.dv_pulse_mps))
+    return bad("dv_pulse_mps", o.dv_pulse_mps, "must be >= 0 (0 = continuous)");
+  if (!(o.filter_interval_s > 0) || !std::isfinite(o.filter_interval_s))
+    return bad("filter_interval_s", o.filter_interval_s, "must be > 0");
+  if (!(o.step_s > 0 && o.step_s <= 60)) return bad("step_s", o.step_s, "must be in (0, 60]");
+  if (!(o.noise_grid_s > 0) || !std::isfinite(o.noise_grid_s))
+    return bad("noise_grid_s", o.noise_grid_s, "must be > 0");
+  for (int k = 0; k < 3; ++k)
+    if (!(o.pulse_phase[k] >= -0.5 && o.pulse_phase[k] < 0.5))
+      return bad(fmt::format("pulse_phase[{}]", k), o.pulse_phase[k], "must be in [-0.5, 0.5)");
+  try {
+    for (const EffectSpec& e : o.effects) validate_effect(e);
+  } catch (const InputError& e) {
+    return e;
+  }
+  return std::nullopt;
+}
+
+std::vector<double> uniform_times(double end_s, double interval_s, bool include_zero) {
+  INSMC_ASSERT(interval_s > 0 && end_s >= 0, "end {} interval {}", end_s, interval_s);
+  std::vector<double> t;
+  if (include_zero) t.push_back(0.0);
+  for (long k = 1;; ++k) {
+    const double tk = static_cast<double>(k) * interval_s;
+    if (tk > end_s + 1e-9) break;
+    t.push_back(tk);
+  }
+  if (t.empty() || end_s - t.back() > 1e-9) t.push_back(end_s);
+  return t;
+}
+
+TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
+                        const std::vector<double>& output_times_s, const NormalSource& noise) {
+  if (auto err = validate(o)) INSMC_ASSERT(false, "invalid TruthOptions: {}", err->what());
+  for (std::size_t k = 0; k < output_times_s.size(); ++k)
+    INSMC_ASSERT(output_times_s[k] >= 0 && (k == 0 || output_times_s[k] >= output_times_s[k - 1]),
+                 "output times must ascend from 0: {} at {}", output_times_s[k], k);
+  const ModelOptions& m = o.model;
+  const double w_ie = m.earth_rate_radps, r0 = m.radius_m, L0 = m.latitude_rad;
+  const double tau = o.filter_interval_s;
+  const std::vector<double> stops = stop_times(output_times_s, tau);
+
+  // ---- effects ---------------------------------------------------------------
+  const double j2_computer = o.j2_gravity ? kEarthJ2 : 0.0;
+  const GravityField computer_field = model_gravity_field(m.gravity_mps2, r0, j2_computer);
+  GravityField true_field = computer_field;
+  // Site gravity before the effects (for their normalizations); the J2 effect
+  // changes it by ~1e-3, which no effect's size depends on.
+  const Vec3 probe = position_for_plumb_latitude(true_field, w_ie, r0, L0);
+  EffectContext context;
+  context.duration_s = stops.back();
+  context.noise_grid_s = o.noise_grid_s;
+  context.site_gravity_mps2 =
+      (true_field.gravitation(probe) + w_ie * w_ie * Vec3(probe.x(), probe.y(), 0.0)).norm();
+  context.latitude_rad = L0;
+  context.earth_rate_radps = w_ie;
+  context.noise = noise ? &noise : nullptr;
+  const Perturbations p = realize_effects(o.effects, context);
+  true_field.j2 += p.extra_j2;
+
+  // ---- the site (truth) ------------------------------------------------------
+  Dynamics d;
+  d.earth_rate = w_ie;
+  d.site_position_e = position_for_plumb_latitude(true_field, w_ie, r0, L0);
+  const Vec3 reference_gravitation = true_field.gravitation(d.site_position_e);
+  const Vec3 centripetal = -w_ie * w_ie * Vec3(d.site_position_e.x(), d.site_position_e.y(), 0.0);
+  const double g_s = (reference_gravitation - centripetal).norm();
+  // Deflection of the vertical: true gravity (0, 0, g) + α^n, α^n = (ξ g, −η g, 0) (2.8b).
+  const double xi = x[ux::kDeflection + 0] + p.deflection_rad[0];
+  const double eta = x[ux::kDeflection + 1] + p.deflection_rad[1];
+  const Mat3 c_e_n = C_i_n(L0, 0.0);
+  d.site_gravitation_e = reference_gravitation + c_e_n * Vec3(xi * g_s, -eta * g_s, 0.0);
+  d.site_specific_force_e = centripetal - d.site_gravitation_e;
+
+  // ---- alignment: misalignment at switch-over ----------------------------------
+  ModelOptions site_options = m;
+  site_options.gravity_mps2 = g_s;  // the leveling loops null the measured force
+  UncertaintyVector x_align = x;
+  x_align.segment<3>(ux::kAccelBias) += p.alignment_bias_mps2;
+  x_align.segment<3>(ux::kGyroDrift) += p.alignment_drift_radps;
+  x_align.segment<2>(ux::kDeflection) += p.deflection_rad;
+  const Vec3 c_prime =
+      full_switchover_misalignment(o.system, site_options) * x_align + p.misalignment_step_rad;  // (2.18a)
+  const Mat3 c_i_ap = C_ap_i(L0);
+  const Mat3 c_ap_i = c_i_ap.transpose();
+  // C_{a'}^{a0} = I + ψ, ψ = paper_skew(C') = −[C'×] (2.17), (2.18): to first
+  // order C_a^{a'} = I + [C'×].
+  const Vec3 f_ap0 = c_i_ap * d.site_specific_force_e;
+  const Eigen::Vector4d q0 = matrix_quaternion(c_ap_i * switchover_attitude(c_prime, f_ap0));
+
+  // ---- instruments -------------------------------------------------------------
+  const double cosL = std::cos(L0);
+  for (int k = 0; k < 3; ++k) {
+    // (3.10) with MUX = 0: (3.13a) gives ω_MU = g MUZ cos² L0; the g·MUY drift
+    // angle is g·MUY cos L0 (1 − cos ω_ie t)/ω_ie (errata.md#3-13).
+    d.mass_unbalance(k, 1) = x[ux::kGyroMuyDrift + k] / g_s;
+    const double w_mu = x[ux::kGyroMuDrift + k];
+    if (w_mu != 0.0) {
+      INSMC_ASSERT(cosL * cosL > 1e-12, "ω_MU needs cos L0 != 0 (L0 = {} rad)", L0);
+      d.mass_unbalance(k, 2) = w_mu / (g_s * cosL * cosL);
+    }
+  }
+  // ω_AI = ω_do − MU f_level, f_level = (0, 0, −g_s) (3.11), (3.12).
+  d.drift_ai = x.segment<3>(ux::kGyroDrift) + g_s * d.mass_unbalance.col(2);
+  d.scale = Vec3::Ones() + x.segment<3>(ux::kAccelScale);
+  d.nav_bias = x.segment<3>(ux::kAccelBias) + p.nav_bias_step_mps2;
+  for (int k = 0; k < 2; ++k)
+    d.nav_bias[k] += x[ux::kBiasChangeConst + k] + x[ux::kBiasChangeAlign + k];  // (3.18)
+  d.quadratic = p.accel_quadratic_per_mps2;
+  d.anisoelastic = p.anisoelastic_radps_per_mps2sq;
+  d.bias_transients = &p.bias_transients;
+  d.drift_transients = &p.drift_transients;
+  d.drift_process = &p.drift_process;
+  d.angle_walk = &p.angle_walk;
+  d.torquer = &o.torquer_command_radps;
+
+  // ---- navigation computer -----------------------------------------------------
+  const double latitude_hat = L0 + x[ux::kLatitudeError];
+  const Mat3 c_i_ap_hat = C_ap_i(latitude_hat);
+  d.c_hat = c_i_ap_hat.transpose();  // (3.20)
+  d.computer_field = computer_field;
+  d.computer_radius = r0 + x[ux::kAltitudeError];
+  d.computer_mu_over_r3 = computer_field.mu_m3ps2 / std::pow(d.computer_radius, 3);
+  // (3.22)–(3.23): position from L̂0 and the external altitude with the
+  // computer's own field; velocity of that point on the turning earth.
+  const Vec3 earth_axis(0.0, 0.0, w_ie);
+  const Vec3 r_c0 = position_for_plumb_latitude(computer_field, w_ie, d.computer_radius, latitude_hat);
+  const Vec3 v_c0 = earth_axis.cross(r_c0) + c_ap_i * x.segment<3>(ux::kInitialVelocity);
+  const SwayState sway0 = sway_at(p.sway, 0.0);
+  const Vec3 sway_r0 = c_e_n * sway0.position_n;
+  const Vec3 sway_v0 = c_e_n * sway0.velocity_n + earth_axis.cross(sway_r0);
+
+  State y = State::Zero();
+  y.segment<4>(kQ) = q0;
+  y.segment<3>(kDR) = r_c0 - d.site_position_e - sway_r0;
+  y.segment<3>(kDVel) = v_c0 - earth_axis.cross(d.site_position_e) - sway_v0;
+
+  // ---- pulses ------------------------------------------------------------------
+  const double w = p.dv_pulse_mps.value_or(o.dv_pulse_mps);
+  const Vec3 rho0 = w * o.pulse_phase;
+  Vec3 rho = rho0;               // accumulator remainder
+  Vec3 remainder_integral = Vec3::Zero();  // P = ∫ (ρ − ρ0) dt
+  PulseCount3 pulses = PulseCount3::Zero();
+  Vec3 velocity_sum = Vec3::Zero();  // ∫ f_m (continuous)
+
+  // ---- records at the stops ------------------------------------------------------
+  std::vector<Vec3> stop_velocity(stops.size()), stop_error(stops.size());
+  std::vector<PulseCount3> stop_pulses(stops.size());
+  const auto record = [&](std::size_t k) {
+    stop_velocity[k] = w > 0 ? Vec3(w * pulses.cast<double>()) : velocity_sum;
+    stop_pulses[k] = pulses;
+    stop_error[k] = c_i_ap * (y.segment<3>(kDR) - d.c_hat * remainder_integral);
+  };
+  record(0);
+
+  const bool has_bias_process = !p.bias_process.empty(), has_vrw = !p.velocity_walk.empty();
+  const bool has_sway = !p.sway.empty();
+  double t = 0.0, c0 = 1.0, s0 = 0.0;
+  State k1, k2, k3, k4;
+  for (std::size_t stop = 1; stop < stops.size(); ++stop) {
+    const double span = stops[stop] - t;
+    const int steps = std::max(1, static_cast<int>(std::ceil(span / o.step_s - 1e-9)));
+    const double h = span / steps;
+    for (int i = 0; i < steps; ++i) {
+      const double tm = t + 0.5 * h, t1 = (i + 1 == steps) ? stops[stop] : t + h;
+      const double cm = std::cos(w_ie * tm), sm = std::sin(w_ie * tm);
+      const double c1 = std::cos(w_ie * t1), s1 = std::sin(w_ie * t1);
+      d.quantization_offset_i = d.c_hat * remainder_integral;
+      y.segment<6>(kDV).setZero();
+      d.derivative(t, c0, s0, y, k1);
+      d.derivative(tm, cm, sm, y + 0.5 * h * k1, k2);
+      d.derivative(tm, cm, sm, y + 0.5 * h * k2, k3);
+      d.derivative(t1, c1, s1, y + h * k3, k4);
+      y += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+      y.segment<4>(kQ).normalize();
+      // Terms faster than the step, by their exact integrals (split).
+      if (has_bias_process || has_vrw) {
+        Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
+        if (has_bias_process) {
+          const GridProcess::Integrals b = p.bias_process.integrals(t, t1);
+          dv += b.first;
+          dw += b.second;
+        }
+        if (has_vrw) {
+          const Vec3 v0 = p.velocity_walk.at(t);
+          dv += p.velocity_walk.at(t1) - v0;
+          dw += p.velocity_walk.integrals(t, t1).first - (t1 - t) * v0;
+        }
+        y.segment<3>(kDV) += dv;
+        y.segment<3>(kDW) += dw;
+        y.segment<3>(kDVel) += d.c_hat * dv;
+        y.segment<3>(kDR) += d.c_hat * dw;
+      }
+      if (has_sway) {
+        // The sway acceleration in the platform; the computer follows the
+        // true motion, so δr keeps only the initial offsets (set above).
+        const SwayState a = sway_at(p.sway, t), b = sway_at(p.sway, t1);
+        const Mat3 to_platform = d.scale.asDiagonal() * d.platform(y.segment<4>(kQ), tm).transpose() *
+                                 earth_rotation(w_ie * tm) * c_e_n;
+        y.segment<3>(kDV) += to_platform * (b.velocity_n - a.velocity_n);
+        y.segment<3>(kDW) += to_platform * (b.position_n - a.position_n - (t1 - t) * a.velocity_n);
+      }
+      // Pulses: accumulator a(s) = ρ + ΔV(s); ∫ρ ds over the step exact when
+      // no pulse falls in it, else with a(s) taken linear for the crossings.
+      const Vec3 dv_step = y.segment<3>(kDV), dw_step = y.segment<3>(kDW);
+      velocity_sum += dv_step;
+      if (w > 0) {
+        for (int k = 0; k < 3; ++k) {
+          const double a0 = rho[k], a1 = rho[k] + dv_step[k];
+          const double n = std::floor(a1 / w + 0.5);
+          const double exact_minus_linear = (t1 - t) * a0 + dw_step[k] - 0.5 * (t1 - t) * (a0 + a1);
+          const double integral =
+              exact_minus_linear + integral_of_remainder_linear(a0, a1, w, t1 - t);
+          remainder_integral[k] += integral - (t1 - t) * rho0[k];
+          pulses[k] += static_cast<std::int64_t>(n);
+          rho[k] = a1 - n * w;
+        }
+      }
+      t = t1;
+      c0 = c1;
+      s0 = s1;
+    }
+    record(stop);
+  }
+
+  // ---- outputs ---------------------------------------------------------------------
+  TruthRun run;
+  run.dv_pulse_mps = w;
+  run.site_gravity_mps2 = g_s;
+  run.switchover_misalignment_rad = c_prime;
+  const std::size_t n = output_times_s.size();
+  run.t_s = output_times_s;
+  run.position_error_ap_m.resize(n);
+  run.accel_error_ap_mps2.resize(n);
+  run.pulse_counts.resize(n);
+  // (4.1): f̂^{a'} = Ĉ_i^{a'} C_n^i(t) (0, 0, −ĝ), C_n^i(t) e_z = −(cL cos ω_ie t, cL sin ω_ie t, sL).
+  const double g_hat = g_s * (1.0 - 3.0 * x[ux::kAltitudeError] / r0);
+  const double sinL = std::sin(L0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = 0; k < n; ++k) {
+    const double tk = output_times_s[k];
+    const std::size_t end = find_stop(stops, tk);
+    run.position_error_ap_m[k] = stop_error[end];
+    if (tk < tau - 1e-9) {
+      run.accel_error_ap_mps2[k] = Vec3::Constant(nan);
+      run.pulse_counts[k] = PulseCount3::Zero();
+      continue;
+    }
+    const std::size_t begin = find_stop(stops, std::max(0.0, tk - tau));
+    const double ta = stops[begin], tb = stops[end], span = tb - ta;
+    const Vec3 mean_up(cosL * (std::sin(w_ie * tb) - std::sin(w_ie * ta)) / (w_ie * span),
+                       cosL * (std::cos(w_ie * ta) - std::cos(w_ie * tb)) / (w_ie * span), sinL);
+    const Vec3 f_hat = g_hat * (c_i_ap_hat * mean_up);
+    run.accel_error_ap_mps2[k] = (stop_velocity[end] - stop_velocity[begin]) / span - f_hat;
+    run.pulse_counts[k] = stop_pulses[end] - stop_pulses[begin];
+  }
+  return run;
+}
+
+}  // namespace insmc
