@@ -84,6 +84,67 @@ double integral_of_remainder_linear(double a0, double a1, double w, double h) {
   return h * 0.5 * (r1 * r1 - r0 * r0) / (a1 - a0);
 }
 
+/// Pulses crossed per step above which the dense-pulse formula is used.
+constexpr int kMaxExactCrossings = 1000000;
+
+/// ∫_0^h ρ(a(s)) ds over one step, ρ the quantizer remainder of the
+/// accumulator a(s) = a0 + ΔV(s), given ΔV(h) = dv and ∫_0^h ΔV = dw (both
+/// exact from the integrator). ∫ρ = ∫a − w ∫Q(a) with ∫a exact; ∫Q(a) from the
+/// crossing times of the quadratic ΔV(s) that matches dv and dw when few
+/// pulses fall in the step (error O(f̈ h⁴) per crossing). With many pulses the
+/// remainder is equidistributed and the linear-path formula is used, whose
+/// error then averages out: ∫ρ = [∫a − ∫a_lin] + ∫ρ(a_lin).
+double integral_of_remainder(double a0, double dv, double dw, double h, double w) {
+  const double exact_integral = h * a0 + dw;
+  const double a1 = a0 + dv;
+  const auto q = [w](double a) { return std::floor(a / w + 0.5); };
+  // ΔV(s) = α s + β s²: α h + β h² = dv, α h²/2 + β h³/3 = dw.
+  const double beta = (3.0 * dv * h - 6.0 * dw) / (h * h * h);
+  const double alpha = dv / h - beta * h;
+  double pieces[3] = {0.0, h, h};
+  int n_pieces = 1;
+  if (beta != 0.0) {
+    const double s_ext = -alpha / (2.0 * beta);
+    if (s_ext > 0.0 && s_ext < h) {
+      pieces[1] = s_ext;
+      n_pieces = 2;
+    }
+  }
+  const auto a_at = [&](double s) { return a0 + (alpha + beta * s) * s; };
+  int crossings = 0;
+  for (int k = 0; k < n_pieces; ++k)
+    crossings += static_cast<int>(std::abs(q(a_at(pieces[k + 1])) - q(a_at(pieces[k]))));
+  if (crossings > kMaxExactCrossings)
+    return exact_integral - 0.5 * h * (a0 + a1) + integral_of_remainder_linear(a0, a1, w, h);
+  double integral_q = 0.0;
+  for (int k = 0; k < n_pieces; ++k) {
+    const double sa = pieces[k], sb = pieces[k + 1];
+    const double qa = q(a_at(sa)), qb = q(a_at(sb));
+    integral_q += qa * (sb - sa);
+    const double direction = qb > qa ? 1.0 : -1.0;
+    for (double level_q = qa; level_q != qb; level_q += direction) {
+      // Crossing of the level between level_q and level_q + direction.
+      const double level = (level_q + 0.5 * direction) * w;
+      // β s² + α s + (a0 − level) = 0, the root in [sa, sb].
+      const double c = a0 - level;
+      double root;
+      if (std::abs(beta) * h < 1e-12 * std::abs(alpha)) {
+        root = -c / alpha;
+      } else {
+        const double disc = std::max(0.0, alpha * alpha - 4.0 * beta * c);
+        const double sq = std::sqrt(disc);
+        const double qq = -0.5 * (alpha + (alpha >= 0 ? sq : -sq));
+        const double r1 = qq / beta, r2 = (qq != 0.0) ? c / qq : r1;
+        const double mid = 0.5 * (sa + sb);
+        root = std::abs(r1 - mid) <= std::abs(r2 - mid) ? r1 : r2;
+      }
+      root = std::clamp(root, sa, sb);
+      integral_q += direction * (sb - root);
+    }
+  }
+  return exact_integral - w * integral_q;
+}
+
 /// Everything constant during a run, and the right-hand side of the ODE.
 struct Dynamics {
   // earth and truth
@@ -399,17 +460,15 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
         y.segment<3>(kDV) += to_platform * (b.velocity_n - a.velocity_n);
         y.segment<3>(kDW) += to_platform * (b.position_n - a.position_n - (t1 - t) * a.velocity_n);
       }
-      // Pulses: accumulator a(s) = ρ + ΔV(s); ∫ρ ds over the step exact when
-      // no pulse falls in it, else with a(s) taken linear for the crossings.
+      // Pulses: accumulator a(s) = ρ + ΔV(s); the computer's velocity lags the
+      // continuous one by Ĉ(ρ − ρ0), its position by Ĉ ∫(ρ − ρ0) dt.
       const Vec3 dv_step = y.segment<3>(kDV), dw_step = y.segment<3>(kDW);
       velocity_sum += dv_step;
       if (w > 0) {
         for (int k = 0; k < 3; ++k) {
-          const double a0 = rho[k], a1 = rho[k] + dv_step[k];
+          const double a1 = rho[k] + dv_step[k];
           const double n = std::floor(a1 / w + 0.5);
-          const double exact_minus_linear = (t1 - t) * a0 + dw_step[k] - 0.5 * (t1 - t) * (a0 + a1);
-          const double integral =
-              exact_minus_linear + integral_of_remainder_linear(a0, a1, w, t1 - t);
+          const double integral = integral_of_remainder(rho[k], dv_step[k], dw_step[k], t1 - t, w);
           remainder_integral[k] += integral - (t1 - t) * rho0[k];
           pulses[k] += static_cast<std::int64_t>(n);
           rho[k] = a1 - n * w;
