@@ -137,7 +137,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
         for (auto& ps : plot)
           if (ps.name == name) series = &ps;
         if (!series) {
-          plot.push_back({name, {}, {}, {}, {}});
+          plot.push_back({name, {}, {}, {}, {}, scheme_i, spec.system == System::kGyrocompass});
           series = &plot.back();
         }
         if (idx.size() > 1 && std::any_of(idx.begin() + 1, idx.end(), [](std::size_t v) { return v != 0; }))

@@ -52,22 +52,6 @@ Mat3 minimal_rotation(const Vec3& u, const Vec3& v) {
   return Mat3::Identity() + kx + kx * kx / (1.0 + u.dot(v));
 }
 
-/// C_a^{a'} at switch-over for the misalignment C' (2.18), as the alignment
-/// loops leave it: the azimuth loop turns the platform by C'_z about the
-/// vertical, the leveling loops tilt it until the horizontal specific force in
-/// the platform is what they null to, f^a_h = (f^{a'} − C' × f^{a'})_h (the
-/// first-order relation of (3.16), now met exactly). A plain exp([C'×]) would
-/// add spurious second-order horizontal forces g C'_z C'_{x,y}/2.
-Mat3 switchover_attitude(const Vec3& c_prime, const Vec3& f_ap) {
-  const double g = f_ap.norm();
-  const Vec3 target_h = f_ap - c_prime.cross(f_ap);
-  Vec3 f_a(target_h.x(), target_h.y(), 0.0);
-  f_a.z() = -std::sqrt(g * g - f_a.x() * f_a.x() - f_a.y() * f_a.y());
-  const Mat3 azimuth = Eigen::AngleAxisd(c_prime.z(), Vec3::UnitZ()).toRotationMatrix();
-  const Vec3 f_a1 = azimuth.transpose() * f_ap;
-  return azimuth * minimal_rotation(f_a / g, f_a1 / g);
-}
-
 /// R_z(angle) v with (c, s) = (cos, sin) of the angle.
 Vec3 rotate_z(double c, double s, const Vec3& v) {
   return Vec3(c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z());
@@ -85,15 +69,15 @@ double integral_of_remainder_linear(double a0, double a1, double w, double h) {
 }
 
 /// Pulses crossed per step above which the dense-pulse formula is used.
-constexpr int kMaxExactCrossings = 1000000;
+constexpr int kMaxExactCrossings = 24;
 
 /// ∫_0^h ρ(a(s)) ds over one step, ρ the quantizer remainder of the
 /// accumulator a(s) = a0 + ΔV(s), given ΔV(h) = dv and ∫_0^h ΔV = dw (both
 /// exact from the integrator). ∫ρ = ∫a − w ∫Q(a) with ∫a exact; ∫Q(a) from the
 /// crossing times of the quadratic ΔV(s) that matches dv and dw when few
 /// pulses fall in the step (error O(f̈ h⁴) per crossing). With many pulses the
-/// remainder is equidistributed and the linear-path formula is used, whose
-/// error then averages out: ∫ρ = [∫a − ∫a_lin] + ∫ρ(a_lin).
+/// crossings are dense and ρ(a(s)) is insensitive to the path between the
+/// end points: ∫ρ(a_lin) of the linear path, whose error averages out.
 double integral_of_remainder(double a0, double dv, double dw, double h, double w) {
   const double exact_integral = h * a0 + dw;
   const double a1 = a0 + dv;
@@ -114,8 +98,7 @@ double integral_of_remainder(double a0, double dv, double dw, double h, double w
   int crossings = 0;
   for (int k = 0; k < n_pieces; ++k)
     crossings += static_cast<int>(std::abs(q(a_at(pieces[k + 1])) - q(a_at(pieces[k]))));
-  if (crossings > kMaxExactCrossings)
-    return exact_integral - 0.5 * h * (a0 + a1) + integral_of_remainder_linear(a0, a1, w, h);
+  if (crossings > kMaxExactCrossings) return integral_of_remainder_linear(a0, a1, w, h);
   double integral_q = 0.0;
   for (int k = 0; k < n_pieces; ++k) {
     const double sa = pieces[k], sb = pieces[k + 1];
@@ -251,6 +234,16 @@ std::size_t find_stop(const std::vector<double>& stops, double t) {
 }
 
 }  // namespace
+
+Mat3 switchover_attitude(const Vec3& c_prime, const Vec3& f_ap) {
+  const double g = f_ap.norm();
+  const Vec3 target_h = f_ap - c_prime.cross(f_ap);
+  Vec3 f_a(target_h.x(), target_h.y(), 0.0);
+  f_a.z() = -std::sqrt(g * g - f_a.x() * f_a.x() - f_a.y() * f_a.y());
+  const Mat3 azimuth = Eigen::AngleAxisd(c_prime.z(), Vec3::UnitZ()).toRotationMatrix();
+  const Vec3 f_a1 = azimuth.transpose() * f_ap;
+  return azimuth * minimal_rotation(f_a / g, f_a1 / g);
+}
 
 std::optional<InputError> validate(const TruthOptions& o) {
   const auto bad = [](std::string field, double v, std::string allowed) {

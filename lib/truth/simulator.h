@@ -76,8 +76,9 @@ struct TruthOptions {
   /// τ, the filter-box interval of the accelerometer data (fig. 5.2) [s]; > 0.
   double filter_interval_s = 10.0;
   /// Largest integration step [s]; (0, 60]. RK4 error scales as step⁴:
-  /// 2.5 s keeps the navigation error within millimetres of the converged value.
-  double step_s = 2.5;
+  /// 5 s keeps the navigation error within millimetres of the converged value
+  /// (halving it changes δr by < 1 cm over 2 h; tests/unit/lib/truth).
+  double step_s = 5.0;
   /// Spherical gravitation (false) or with the earth's J2 (true), in both the
   /// truth and the computer (the gravity_model effect makes them differ).
   bool j2_gravity = false;
@@ -120,6 +121,16 @@ struct TruthRun {
 /// inputs give bit-identical results.
 TruthRun simulate_truth(const TruthOptions& options, const UncertaintyVector& x,
                         const std::vector<double>& output_times_s, const NormalSource& noise = {});
+
+/// C_a^{a'} at switch-over for the misalignment C' (2.18) and the true
+/// specific force f^{a'} at the site, as the alignment loops leave the
+/// platform: the azimuth loop turns it by C'_z about the vertical, the leveling
+/// loops tilt it until the horizontal specific force in the platform is the
+/// value they null to, f^a_h = (f^{a'} − C' × f^{a'})_h — the first-order
+/// relation of (2.17), (3.16), now met exactly. (A plain rotation vector
+/// exp([C'×]) would add spurious horizontal forces g C'_z C'_{x,y}/2.)
+/// Precondition: |f^a_h| < |f^{a'}|.
+Mat3 switchover_attitude(const Vec3& c_prime, const Vec3& f_ap);
 
 /// t = interval, 2 interval, … up to `end` (and `end` itself) [s]; with
 /// include_zero also t = 0.

@@ -80,7 +80,8 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
     }
     if (spec.axis == Axis::kHorizontal && l.is_grid_time[spec.time_index]) {
       const std::string name = fmt::format("{} sys {}", to_string(spec.scheme), system_number(spec.system));
-      if (plot.empty() || plot.back().name != name) plot.push_back({name, {}, {}, {}, {}});
+      if (plot.empty() || plot.back().name != name)
+        plot.push_back({name, {}, {}, {}, {}, scheme_index(c, spec.scheme), spec.system == System::kGyrocompass});
       plot.back().x.push_back(t / 60.0);
       plot.back().y.push_back(k * s.rms);
       plot.back().lo.push_back(k * s.rms_lo);

@@ -72,7 +72,8 @@ std::string svg_line_plot(const std::string& title, const std::string& x_label, 
                      kTop + ph / 2, escape(y_label));
   for (size_t i = 0; i < series.size(); ++i) {
     const auto& s = series[i];
-    const char* colour = kColours[i % std::size(kColours)];
+    const char* colour = kColours[static_cast<std::size_t>(s.colour >= 0 ? s.colour : static_cast<int>(i)) % std::size(kColours)];
+    const char* dash = s.dashed ? " stroke-dasharray=\"7,4\"" : "";
     if (s.lo.size() == s.x.size() && s.hi.size() == s.x.size() && !s.x.empty()) {
       std::string pts;
       for (size_t k = 0; k < s.x.size(); ++k) pts += fmt::format("{:.1f},{:.1f} ", px(s.x[k]), py(s.hi[k]));
@@ -82,10 +83,10 @@ std::string svg_line_plot(const std::string& title, const std::string& x_label, 
     std::string pts;
     for (size_t k = 0; k < s.x.size(); ++k)
       if (std::isfinite(s.y[k])) pts += fmt::format("{:.1f},{:.1f} ", px(s.x[k]), py(s.y[k]));
-    svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"2\"/>\n", pts, colour);
-    svg += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"3\"/>"
+    svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"2\"{}/>\n", pts, colour, dash);
+    svg += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"3\"{}/>"
                        "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
-                       kLeft + pw + 12, kTop + 10 + 20.0 * i, kLeft + pw + 36, kTop + 10 + 20.0 * i, colour,
+                       kLeft + pw + 12, kTop + 10 + 20.0 * i, kLeft + pw + 36, kTop + 10 + 20.0 * i, colour, dash,
                        kLeft + pw + 42, kTop + 14 + 20.0 * i, escape(s.name));
   }
   svg += "</svg>\n";

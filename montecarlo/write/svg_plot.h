@@ -10,6 +10,8 @@ struct PlotSeries {
   std::string name;
   std::vector<double> x, y;
   std::vector<double> lo, hi;  ///< optional band (same length as y, or empty)
+  int colour = -1;             ///< palette index; -1: the series' position
+  bool dashed = false;
 };
 
 std::string svg_line_plot(const std::string& title, const std::string& x_label, const std::string& y_label,

@@ -1,0 +1,145 @@
+#include "lib/records/record.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <string>
+
+#include "lib/common/input_error.h"
+#include "lib/records/number_text.h"
+
+namespace insmc {
+namespace {
+
+using records_detail::NumberStatus;
+using records_detail::parse_double;
+
+bool is_truth_key(std::string_view key) { return key.starts_with(kTruthKeyPrefix); }
+
+std::string scheme_names() {
+  std::string names;
+  for (Scheme s : all_schemes()) {
+    names = names.empty() ? std::string(to_string(s)) : fmt::format("{}, {}", names, to_string(s));
+  }
+  return names;
+}
+
+/// Parses a numeric header value already known to be valid, or throws.
+double header_number(const RecordHeader& h, std::string_view key) {
+  const std::string* text = h.find(key);
+  if (text == nullptr) throw InputError(std::string(key), "(missing)", "required header key");
+  if (auto problem = header_value_problem(key, *text)) throw InputError(std::string(key), *text, *problem);
+  double v = 0.0;
+  parse_double(*text, v);
+  return v;
+}
+
+std::optional<double> optional_header_number(const RecordHeader& h, std::string_view key) {
+  if (h.find(key) == nullptr) return std::nullopt;
+  return header_number(h, key);
+}
+
+}  // namespace
+
+std::string_view to_string(Phase p) {
+  switch (p) {
+    case Phase::kAlign: return "align";
+    case Phase::kTest: return "test";
+    case Phase::kNav: return "nav";
+  }
+  return "?";
+}
+
+Phase parse_phase(std::string_view text, std::string_view field) {
+  for (Phase p : {Phase::kAlign, Phase::kTest, Phase::kNav}) {
+    if (to_string(p) == text) return p;
+  }
+  throw InputError(std::string(field), std::string(text), "must be one of: align, test, nav");
+}
+
+std::optional<std::string> header_value_problem(std::string_view key, std::string_view value) {
+  const bool known = key == kKeyLatitudeDeg || key == kKeySystem || key == kKeyTestDurationS ||
+                     key == kKeyDvPulseMps || key == kKeyPositionResolutionM || key == kKeyNavStartS;
+  if (key == kKeyScheme) {
+    for (Scheme s : all_schemes()) {
+      if (to_string(s) == value) return std::nullopt;
+    }
+    return fmt::format("must be one of: {}", scheme_names());
+  }
+  if (!known) return std::nullopt;
+  double v = 0.0;
+  const NumberStatus status = parse_double(value, v);
+  if (status != NumberStatus::kOk) return fmt::format("must be a finite number ({})", describe(status));
+  if (key == kKeyLatitudeDeg && !(v >= -90.0 && v <= 90.0)) return "must be in [-90, 90] (degrees)";
+  if (key == kKeySystem && v != 1.0 && v != 2.0) return "must be 1 (theodolite azimuth) or 2 (gyrocompassing)";
+  if (key == kKeyTestDurationS && !(v > 0.0)) return "must be > 0 (seconds)";
+  if (key == kKeyDvPulseMps && !(v >= 0.0)) return "must be >= 0 (m/s; 0 means a continuous output)";
+  if (key == kKeyPositionResolutionM && !(v >= 0.0)) return "must be >= 0 (m)";
+  if (key == kKeyNavStartS && !(v >= 0.0)) return "must be >= 0 (seconds since the first switch-over)";
+  return std::nullopt;
+}
+
+RecordHeader RecordHeader::make(double latitude_deg, System system, double test_duration_s, Scheme scheme) {
+  RecordHeader h;
+  h.set(kKeyLatitudeDeg, latitude_deg);
+  h.set(kKeySystem, fmt::format("{}", system_number(system)));
+  h.set(kKeyTestDurationS, test_duration_s);
+  h.set(kKeyScheme, std::string(to_string(scheme)));
+  return h;
+}
+
+const std::string* RecordHeader::find(std::string_view key) const {
+  const auto& list = is_truth_key(key) ? truth_entries : entries;
+  const auto it = std::find_if(list.begin(), list.end(), [&](const HeaderEntry& e) { return e.key == key; });
+  return it == list.end() ? nullptr : &it->value;
+}
+
+void RecordHeader::set(std::string_view key, std::string value) {
+  auto& list = is_truth_key(key) ? truth_entries : entries;
+  const auto it = std::find_if(list.begin(), list.end(), [&](const HeaderEntry& e) { return e.key == key; });
+  if (it != list.end()) {
+    it->value = std::move(value);
+  } else {
+    list.push_back(HeaderEntry{std::string(key), std::move(value)});
+  }
+}
+
+void RecordHeader::set(std::string_view key, double value) { set(key, fmt::format("{}", value)); }
+
+double RecordHeader::latitude_deg() const { return header_number(*this, kKeyLatitudeDeg); }
+
+System RecordHeader::system() const {
+  return header_number(*this, kKeySystem) == 1.0 ? System::kTheodolite : System::kGyrocompass;
+}
+
+double RecordHeader::test_duration_s() const { return header_number(*this, kKeyTestDurationS); }
+
+Scheme RecordHeader::scheme() const {
+  const std::string* text = find(kKeyScheme);
+  if (text == nullptr) throw InputError(std::string(kKeyScheme), "(missing)", "required header key");
+  for (Scheme s : all_schemes()) {
+    if (to_string(s) == *text) return s;
+  }
+  throw InputError(std::string(kKeyScheme), *text, fmt::format("must be one of: {}", scheme_names()));
+}
+
+std::optional<double> RecordHeader::dv_pulse_mps() const { return optional_header_number(*this, kKeyDvPulseMps); }
+
+std::optional<double> RecordHeader::position_resolution_m() const {
+  return optional_header_number(*this, kKeyPositionResolutionM);
+}
+
+std::optional<double> RecordHeader::nav_start_s() const { return optional_header_number(*this, kKeyNavStartS); }
+
+RecordHeader RecordHeader::without_truth() const {
+  RecordHeader copy;
+  copy.entries = entries;
+  return copy;
+}
+
+RecordFile without_truth(RecordFile file) {
+  file.header.truth_entries.clear();
+  return file;
+}
+
+}  // namespace insmc
