@@ -29,14 +29,18 @@ int run_bench(const Args& args) {
   if (threads < 0) throw InputError("--threads", std::to_string(threads), "must be >= 0");
   if (threads == 0) threads = static_cast<int>(std::thread::hardware_concurrency());
   std::vector<mc::ThroughputResult> results;
-  std::vector<double> ratios;
+  std::vector<double> ratios, scaling;
   for (int i = 0; i < rounds; ++i) {
     results.push_back(mc::measure_throughput(mc::benchmark_study(samples, threads)));
     ratios.push_back(results.back().engine_samples_per_s / results.back().floor_samples_per_s);
+    scaling.push_back(results.back().engine_samples_per_s / results.back().engine_one_thread_samples_per_s);
   }
   std::vector<double> sorted = ratios;
   std::sort(sorted.begin(), sorted.end());
   const double median = sorted[sorted.size() / 2];
+  std::vector<double> sorted_scaling = scaling;
+  std::sort(sorted_scaling.begin(), sorted_scaling.end());
+  const double median_scaling = sorted_scaling[sorted_scaling.size() / 2];
   const mc::ThroughputResult& last = results.back();
   mc::Json j = mc::Json::object();
   j["version"] = kVersion;
@@ -51,22 +55,27 @@ int run_bench(const Args& args) {
     x["floor_samples_per_s"] = r.floor_samples_per_s;
     x["engine_samples_per_s"] = r.engine_samples_per_s;
     x["engine_over_floor"] = r.engine_samples_per_s / r.floor_samples_per_s;
+    x["engine_one_thread_samples_per_s"] = r.engine_one_thread_samples_per_s;
     rs.push_back(x);
   }
   j["rounds"] = rs;
   j["median_engine_over_floor"] = median;
+  j["median_thread_scaling"] = median_scaling;
   if ((*vm)["json"].as<bool>()) {
     fmt::print("{}", j.dump());
     return 0;
   }
   fmt::print("insmc bench: {} samples, {} threads, {} outputs per sample (paper level, report times)\n\n",
              samples, threads, last.outputs);
-  fmt::print("| round | generator [variates/s, 1 thread] | floor [samples/s] | engine [samples/s] | engine/floor |\n");
-  fmt::print("|---:|---:|---:|---:|---:|\n");
+  fmt::print("| round | generator [variates/s, 1 thread] | floor [samples/s] | engine [samples/s] | engine/floor "
+             "| engine, 1 thread [samples/s] | scaling |\n");
+  fmt::print("|---:|---:|---:|---:|---:|---:|---:|\n");
   for (size_t i = 0; i < results.size(); ++i)
-    fmt::print("| {} | {:.3g} | {:.3g} | {:.3g} | {:.2f} |\n", i + 1, results[i].generator_variates_per_s,
-               results[i].floor_samples_per_s, results[i].engine_samples_per_s, ratios[i]);
-  fmt::print("\nmedian engine/floor: {:.2f}\n", median);
+    fmt::print("| {} | {:.3g} | {:.3g} | {:.3g} | {:.2f} | {:.3g} | {:.2f} |\n", i + 1,
+               results[i].generator_variates_per_s, results[i].floor_samples_per_s, results[i].engine_samples_per_s,
+               ratios[i], results[i].engine_one_thread_samples_per_s, scaling[i]);
+  fmt::print("\nmedian engine/floor: {:.2f}; median {}-thread/1-thread scaling: {:.2f}\n", median, threads,
+             median_scaling);
   return 0;
 }
 

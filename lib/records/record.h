@@ -107,8 +107,8 @@ struct RecordRow {
   /// (x north, y east, z down at t = 0). Present on every test and nav row;
   /// may be missing on align rows.
   std::optional<Eigen::Vector3d> r_ap_m;
-  /// Gyro torquer command rates w_k (rad/s); recorded on align rows only,
-  /// each component may be missing on its own.
+  /// Gyro torquer command rates w_k (rad/s), recorded during alignment
+  /// (phase align; accepted on any row); each component may be missing.
   std::array<std::optional<double>, 3> w_radps{};
 
   bool has_f() const { return f_mps2[0] || f_mps2[1] || f_mps2[2]; }

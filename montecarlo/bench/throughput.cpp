@@ -91,6 +91,14 @@ ThroughputResult measure_throughput(const StudyConfig& c) {
     r.engine_samples_per_s = static_cast<double>(c.samples) / seconds_since(t0);
     g_sink = acc.outputs()[0].sum_squares();
   }
+  {  // the same study on one thread, measured right after: a paired scaling ratio
+    StudyConfig one = c;
+    one.threads = 1;
+    const auto t0 = std::chrono::steady_clock::now();
+    const StudyAccumulator acc = run_blocks(one, map, 0, block_count(c.samples));
+    r.engine_one_thread_samples_per_s = static_cast<double>(c.samples) / seconds_since(t0);
+    g_sink = acc.outputs()[0].sum_squares();
+  }
   return r;
 }
 

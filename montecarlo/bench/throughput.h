@@ -13,6 +13,7 @@ struct ThroughputResult {
   double generator_variates_per_s;  ///< uniform variates per second, one thread
   double floor_samples_per_s;       ///< hand-written loop, `threads` threads
   double engine_samples_per_s;      ///< run_blocks on the study, `threads` threads
+  double engine_one_thread_samples_per_s;  ///< the same on one thread (for the scaling ratio)
   std::uint64_t samples;
   int threads;
   int outputs;                      ///< outputs per sample of the study

@@ -1,46 +1,455 @@
+// The truth simulator against the linear level, against an independent
+// exact-kinematics reference for its second-order part, and its numerics
+// (step halving, pulse bookkeeping, determinism, cost).
+//
+// Agreement measure: for each uncertainty at its Table 3.1 bound, over
+// t = 1..90 min, |truth − linear| ≤ 1% |linear| + 1 m (issue 6). The truth is
+// split into its odd part (x and −x: (r(x) − r(−x))/2, first order plus cubes)
+// and its even part ((r(x) + r(−x))/2, the products of uncertainties the
+// linear model drops by construction). The odd part must meet the bound for
+// every uncertainty; the even part is measured and attributed.
 #include "lib/truth/simulator.h"
 
 #include <gtest/gtest.h>
-#include <chrono>
-#include <iostream>
 
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <map>
+#include <string>
+
+#include "lib/propagation/linear_model.h"
 #include "lib/propagation/position_maps.h"
 #include "lib/uncertainty/catalogue.h"
 
 namespace insmc {
 namespace {
 
-TEST(Explore, OddEven) {
+constexpr double kRelativeTol = 0.01;  // issue 6: 1% of the error …
+constexpr double kAbsoluteTolM = 1.0;  // … plus 1 m
+
+std::vector<double> minutes_1_to_90() {
+  std::vector<double> t;
+  for (int m = 1; m <= 90; ++m) t.push_back(60.0 * m);
+  return t;
+}
+
+TruthOptions continuous_options(System s) {
+  TruthOptions o;
+  o.system = s;
+  o.dv_pulse_mps = 0.0;  // the linear model has no quantization
+  return o;
+}
+
+std::string system_name(System s) { return "system " + std::to_string(system_number(s)); }
+
+UncertaintyVector single(int i, double scale = 1.0) {
+  UncertaintyVector x = UncertaintyVector::Zero();
+  x[i] = scale * default_bounds()[i];
+  return x;
+}
+
+/// Worst-case measures of a − b over the times (b the reference).
+struct Gap {
+  double abs_m = 0.0;     ///< max |a − b|
+  double rel = 0.0;       ///< max |a − b| / max(|b|, 1 m)
+  double excess_m = -1e300;  ///< max (|a − b| − 1% |b| − 1 m): ≤ 0 passes
+  void add(const Vec3& a, const Vec3& b) {
+    const double d = (a - b).norm();
+    abs_m = std::max(abs_m, d);
+    rel = std::max(rel, d / std::max(b.norm(), 1.0));
+    excess_m = std::max(excess_m, d - kRelativeTol * b.norm() - kAbsoluteTolM);
+  }
+};
+
+/// Linear-level position errors S(t) x.
+std::vector<Vec3> linear_errors(System s, const ModelOptions& m, const UncertaintyVector& x,
+                                const std::vector<double>& times) {
+  const auto maps = position_maps(s, Fidelity::kLinear, m, times);
+  std::vector<Vec3> out;
+  for (const auto& map : maps) out.push_back(map * x);
+  return out;
+}
+
+/// Second-order vertical error of a level misalignment θ_h at switch-over: the
+/// z accelerometer reads −g cos θ, so the computer sees g θ²/2 less upward
+/// force: δr_z = r0 (θ_h²/2)(1 − cos ω_s t) (down positive).
+double vertical_tilt_term_m(const Vec3& c_prime, double t, const ModelOptions& m) {
+  const double theta2 = c_prime.x() * c_prime.x() + c_prime.y() * c_prime.y();
+  return m.radius_m * 0.5 * theta2 * (1.0 - std::cos(m.schuler_radps() * t));
+}
+
+TEST(TruthSimulator, EveryUncertaintyZeroStaysBelowOneMetreOverTwoHours) {
+  const std::vector<double> times = uniform_times(7200.0, 10.0);
+  for (System s : {System::kTheodolite, System::kGyrocompass}) {
+    for (double dv : {0.0, 0.1 * kFtpsToMps}) {
+      for (bool j2 : {false, true}) {
+        TruthOptions o;
+        o.system = s;
+        o.dv_pulse_mps = dv;
+        o.j2_gravity = j2;
+        const TruthRun run = simulate_truth(o, UncertaintyVector::Zero(), times);
+        double worst = 0.0;
+        for (const Vec3& e : run.position_error_ap_m) worst = std::max(worst, e.norm());
+        // Continuous: round-off only. Pulses of 0.1 ft/s: the computer's
+        // velocity lags by the remainder (< half a pulse), ~0.5 m.
+        EXPECT_LT(worst, dv > 0 ? 1.0 : 1e-6)
+            << system_name(s) << " dv_pulse " << dv << " j2 " << j2;
+        if (dv == 0.0 && !j2) {
+          for (const Vec3& f : run.accel_error_ap_mps2)
+            if (!std::isnan(f.x())) {
+              EXPECT_LT(f.norm(), 1e-9);
+            }
+        }
+      }
+    }
+  }
+}
+
+TEST(TruthSimulator, ZeroErrorAtOtherLatitudes) {
+  const std::vector<double> times = uniform_times(7200.0, 600.0);
+  for (double deg : {0.0, 30.0, -45.0, 60.0, 80.0}) {
+    TruthOptions o = continuous_options(System::kGyrocompass);
+    o.model.latitude_rad = deg * kDegToRad;
+    const TruthRun run = simulate_truth(o, UncertaintyVector::Zero(), times);
+    for (const Vec3& e : run.position_error_ap_m) EXPECT_LT(e.norm(), 1e-6) << deg << " deg";
+  }
+}
+
+TEST(TruthSimulator, OddPartAgreesWithTheLinearLevelPerUncertainty) {
+  // First order: every uncertainty at its bound, both systems. The residual
+  // is ~0.17% (1 − g_s/g: the linear model uses g for the specific force, the
+  // truth has gravity = gravitation − centrifugal at the site), up to 0.4%
+  // for δL0 and δh (geocentric vs plumb-line latitude in their initial
+  // conditions).
+  const auto times = minutes_1_to_90();
+  std::map<std::string, Gap> per_group;
+  for (System s : {System::kTheodolite, System::kGyrocompass}) {
+    const TruthOptions o = continuous_options(s);
+    const auto maps = position_maps(s, Fidelity::kLinear, o.model, times);
+    for (int i = 0; i < ux::kDim; ++i) {
+      const UncertaintyVector x = single(i);
+      const TruthRun plus = simulate_truth(o, x, times), minus = simulate_truth(o, -x, times);
+      Gap gap;
+      for (std::size_t k = 0; k < times.size(); ++k) {
+        const Vec3 odd = 0.5 * (plus.position_error_ap_m[k] - minus.position_error_ap_m[k]);
+        gap.add(odd, maps[k] * x);
+        per_group[std::string(catalogue()[i].group)].add(odd, maps[k] * x);
+      }
+      EXPECT_LE(gap.excess_m, 0.0) << system_name(s) << " " << catalogue()[i].name << ": worst |Δ| "
+                                   << gap.abs_m << " m, relative " << gap.rel;
+    }
+  }
+  for (const auto& [group, gap] : per_group)
+    std::printf("  odd part vs linear  %-20s worst %8.3f m  relative %.4f\n", group.c_str(), gap.abs_m,
+                gap.rel);
+}
+
+TEST(TruthSimulator, RawAgreesWithTheLinearLevelExceptTheAttributedSecondOrderTerms) {
+  // truth(x) − linear(x) directly. Three cases exceed 1% + 1 m, each by a
+  // second-order term the linear model drops (the report's "neglecting
+  // products of uncertainties", §3.1.4):
+  //  * δf_x, δf_y (both systems): the leveling tilt θ = δf/g (1 mrad at 1 mg)
+  //    makes the z accelerometer read −g cos θ: δr_z = r0 (θ²/2)(1 − cos ω_s t),
+  //    6.4 m peak, while the horizontal errors nearly cancel (the bias is
+  //    leveled out). Checked here after removing that term.
+  //  * ω_doy, system 2: the gyrocompass azimuth error C'_z = −ω_doy/(ω_ie cos L0)
+  //    (14 mrad at 10 meru) and the drift angle d_y compose as finite rotations:
+  //    exp([C'×]) exp([d×]) = exp([(C' + d + ½ C' × d + …)×]), a tilt about x of
+  //    ½ |C'_z| d_y growing with t, 168 m in y at 90 min against 3.4 km of
+  //    first-order error. See SecondOrderPartIsTheFiniteRotationKinematics.
+  const auto times = minutes_1_to_90();
+  std::map<std::string, Gap> per_group;
+  for (System s : {System::kTheodolite, System::kGyrocompass}) {
+    const TruthOptions o = continuous_options(s);
+    const auto maps = position_maps(s, Fidelity::kLinear, o.model, times);
+    for (int i = 0; i < ux::kDim; ++i) {
+      const bool tilt_case = i == ux::kAccelBias + 0 || i == ux::kAccelBias + 1;
+      const bool composition_case = s == System::kGyrocompass && i == ux::kGyroDrift + 1;
+      const UncertaintyVector x = single(i);
+      const TruthRun run = simulate_truth(o, x, times);
+      Gap gap, corrected;
+      for (std::size_t k = 0; k < times.size(); ++k) {
+        const Vec3 lin = maps[k] * x;
+        gap.add(run.position_error_ap_m[k], lin);
+        per_group[std::string(catalogue()[i].group)].add(run.position_error_ap_m[k], lin);
+        const Vec3 second(0.0, 0.0, vertical_tilt_term_m(run.switchover_misalignment_rad, times[k], o.model));
+        corrected.add(run.position_error_ap_m[k] - second, lin);
+      }
+      const std::string what = system_name(s) + " " + std::string(catalogue()[i].name);
+      if (tilt_case) {
+        EXPECT_GT(gap.excess_m, 0.0) << what << " (the tilt term should show)";
+        EXPECT_LE(corrected.excess_m, 0.0) << what << ": after the tilt term |Δ| " << corrected.abs_m;
+        EXPECT_NEAR(gap.abs_m, o.model.radius_m * 1e-6, 0.05) << what;  // r0 θ², θ = 1 mrad
+      } else if (composition_case) {
+        EXPECT_GT(gap.abs_m, 100.0) << what;
+        EXPECT_LT(gap.abs_m, 200.0) << what;
+      } else {
+        EXPECT_LE(gap.excess_m, 0.0) << what << ": worst |Δ| " << gap.abs_m << " m, relative " << gap.rel;
+      }
+    }
+  }
+  for (const auto& [group, gap] : per_group)
+    std::printf("  truth vs linear     %-20s worst %8.3f m  relative %.4f\n", group.c_str(), gap.abs_m,
+                gap.rel);
+}
+
+TEST(TruthSimulator, EvenPartIsQuadraticInTheUncertainty) {
+  // The even part r(x) + r(−x) is made of products of uncertainties: halving
+  // x quarters it (to 2%: quartic terms and round-off).
+  const auto times = minutes_1_to_90();
+  for (System s : {System::kTheodolite, System::kGyrocompass}) {
+    const TruthOptions o = continuous_options(s);
+    for (int i : {ux::kAccelBias + 0, ux::kGyroDrift + 0, ux::kGyroDrift + 1, ux::kGyroMuyDrift + 0,
+                  ux::kMisalignAlign + 1}) {
+      const auto even = [&](double scale) {
+        const UncertaintyVector x = single(i, scale);
+        const TruthRun p = simulate_truth(o, x, times), m = simulate_truth(o, -x, times);
+        return 0.5 * (p.position_error_ap_m.back() + m.position_error_ap_m.back()).norm();
+      };
+      const double full = even(1.0), half = even(0.5);
+      ASSERT_GT(full, 0.5) << catalogue()[i].name;
+      EXPECT_NEAR(full / half, 4.0, 0.08) << system_name(s) << " " << catalogue()[i].name;
+    }
+  }
+}
+
+TEST(TruthSimulator, SecondOrderPartIsTheFiniteRotationKinematics) {
+  // An independent reference for the instrument and alignment errors: the
+  // Schuler-loop ODE of the linear level driven by the exact specific-force
+  // error of a platform turned by the finite rotations C_a^{a'}(t) =
+  // A0 exp([d(t)×]) (A0 = switchover_attitude(C'), d(t) the drift angles of
+  // (3.13)): u = (I + A) C_{a'}^a(t) f^{a'}(t) + δf_nav − f^{a'}(t). It has
+  // every product of rotation angles and no other nonlinearity. The truth
+  // must agree to ≤ 0.5 m + 0.1%, including the 168 m of ω_doy in system 2
+  // (what remains: MU acting on the misaligned force, the time steps).
+  const auto times = minutes_1_to_90();
+  for (System s : {System::kTheodolite, System::kGyrocompass}) {
+    const TruthOptions o = continuous_options(s);
+    const ModelOptions& m = o.model;
+    const LinearErrorModel linear(s, m);
+    for (int i : {ux::kAccelBias + 0, ux::kAccelBias + 1, ux::kAccelScale + 2, ux::kGyroDrift + 0,
+                  ux::kGyroDrift + 1, ux::kGyroDrift + 2, ux::kGyroMuDrift + 1, ux::kGyroMuyDrift + 0,
+                  ux::kMisalignAlign + 0, ux::kMisalignConst + 2, ux::kTheodolite}) {
+      const UncertaintyVector x = single(i);
+      const TruthRun run = simulate_truth(o, x, times);
+      const double g_s = run.site_gravity_mps2;
+      const Mat3 a0 = switchover_attitude(run.switchover_misalignment_rad, Vec3(0, 0, -g_s));
+      Vec3 bias = x.segment<3>(ux::kAccelBias);
+      bias.head<2>() += x.segment<2>(ux::kBiasChangeConst) + x.segment<2>(ux::kBiasChangeAlign);
+      const Vec3 scale = Vec3::Ones() + x.segment<3>(ux::kAccelScale);
+      const auto forcing = [&](double t) {
+        const Vec3 f_ap = C_ap_n(m.latitude_rad, m.earth_rate_radps * t) * Vec3(0, 0, -g_s);
+        const Vec3 d = linear.drift_angles(t) * x;
+        const Mat3 c_ap_a = a0 * Eigen::AngleAxisd(d.norm(), d.norm() > 0 ? Vec3(d.normalized()) : Vec3::UnitX())
+                                     .toRotationMatrix();
+        Sensitivity3 u = Sensitivity3::Zero();
+        u.col(0) = scale.cwiseProduct(c_ap_a.transpose() * f_ap) + bias - f_ap;
+        return u;
+      };
+      const auto ref = integrate_schuler_ode(forcing, Sensitivity3::Zero(), Sensitivity3::Zero(), times,
+                                             m.schuler_radps(), 5.0);
+      double worst = 0.0;
+      for (std::size_t k = 0; k < times.size(); ++k) {
+        const Vec3 r = ref[k].col(0);
+        const double d = (run.position_error_ap_m[k] - r).norm();
+        EXPECT_LT(d, 0.5 + 1e-3 * r.norm()) << system_name(s) << " " << catalogue()[i].name << " t "
+                                            << times[k] << " truth "
+                                            << run.position_error_ap_m[k].transpose() << " ref "
+                                            << r.transpose();
+        worst = std::max(worst, d);
+      }
+      std::printf("  truth vs exact-rotation reference  %s %-20s worst %.3f m\n", system_name(s).c_str(),
+                  std::string(catalogue()[i].name).c_str(), worst);
+    }
+  }
+}
+
+/// Uniform within ±bound, from a fixed hashed stream.
+UncertaintyVector random_at_bounds(std::uint64_t seed) {
+  const NormalSource source = hashed_normal_source(seed);
+  NormalDraws draws(source, 0);
+  UncertaintyVector x;
+  const UncertaintyVector b = default_bounds();
+  for (int i = 0; i < ux::kDim; ++i) x[i] = b[i] * (2.0 * draws.next_uniform() - 1.0);
+  return x;
+}
+
+TEST(TruthSimulator, AllUncertaintiesTogetherAgreeWithTheLinearLevel) {
+  // Several uncertainties at once: products between different uncertainties
+  // add to the squares above; the errors are km, so 1% covers them.
+  const auto times = minutes_1_to_90();
+  for (System s : {System::kTheodolite, System::kGyrocompass}) {
+    const TruthOptions o = continuous_options(s);
+    for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {
+      const UncertaintyVector x = random_at_bounds(seed);
+      const TruthRun run = simulate_truth(o, x, times);
+      const auto lin = linear_errors(s, o.model, x, times);
+      Gap gap;
+      for (std::size_t k = 0; k < times.size(); ++k) gap.add(run.position_error_ap_m[k], lin[k]);
+      EXPECT_LE(gap.excess_m, 0.0) << system_name(s) << " seed " << seed;
+      std::printf("  all together  %s seed %d  worst %8.2f m  relative %.4f  (|linear| at 90 min %.0f m)\n",
+                  system_name(s).c_str(), static_cast<int>(seed), gap.abs_m, gap.rel, lin.back().norm());
+    }
+  }
+}
+
+TEST(TruthSimulator, AccelerometerOutputErrorAgreesWithTheLinearForcing) {
+  // Δf^a (4.2) over each filter interval equals the mean of the linear
+  // forcing u(t) over it (§4.1 with δg/g = −3 δh/r0), continuous output.
+  const std::vector<double> times = uniform_times(1200.0, 10.0);
+  for (System s : {System::kTheodolite, System::kGyrocompass}) {
+    const TruthOptions o = continuous_options(s);
+    const LinearErrorModel linear(s, o.model);
+    for (std::uint64_t seed : {5u, 6u}) {
+      const UncertaintyVector x = random_at_bounds(seed);
+      const TruthRun run = simulate_truth(o, x, times);
+      double worst = 0.0;
+      for (std::size_t k = 1; k < times.size(); ++k) {
+        const double t = times[k], tau = o.filter_interval_s;
+        const Vec3 mean = (linear.forcing(t - tau) * x + 4.0 * (linear.forcing(t - 0.5 * tau) * x) +
+                           linear.forcing(t) * x) / 6.0;
+        const double d = (run.accel_error_ap_mps2[k] - mean).norm();
+        worst = std::max(worst, d);
+        // 1% plus 1 µg: the 0.17% of g_s/g and second-order tilt terms (g θ²/2).
+        EXPECT_LT(d, 0.01 * mean.norm() + 1e-6 * kGravityMps2) << system_name(s) << " t " << t;
+      }
+      EXPECT_TRUE(std::isnan(run.accel_error_ap_mps2[0].x()));  // t = 0 < τ
+      std::printf("  Δf vs linear forcing %s seed %d worst %.3g m/s² (%.3f µg)\n", system_name(s).c_str(),
+                  static_cast<int>(seed), worst, worst / kUgToMps2);
+    }
+  }
+}
+
+TEST(TruthSimulator, HalvingTheStepChangesResultsByLessThanATenthOfAMetre) {
+  const std::vector<double> times = uniform_times(7200.0, 10.0);
+  for (System s : {System::kTheodolite, System::kGyrocompass}) {
+    for (double dv : {0.0, 0.1 * kFtpsToMps}) {
+      TruthOptions o;
+      o.system = s;
+      o.dv_pulse_mps = dv;
+      const UncertaintyVector x = random_at_bounds(7);
+      const TruthRun coarse = simulate_truth(o, x, times);
+      o.step_s *= 0.5;
+      const TruthRun fine = simulate_truth(o, x, times);
+      double worst = 0.0, worst_f = 0.0;
+      for (std::size_t k = 0; k < times.size(); ++k) {
+        worst = std::max(worst, (coarse.position_error_ap_m[k] - fine.position_error_ap_m[k]).norm());
+        if (k > 0)
+          worst_f = std::max(worst_f, (coarse.accel_error_ap_mps2[k] - fine.accel_error_ap_mps2[k]).norm());
+      }
+      EXPECT_LT(worst, 0.1) << system_name(s) << " dv " << dv;
+      std::printf("  halving %g s -> %g s, %s, dv_pulse %.4f m/s: max |Δδr| %.2e m, max |ΔΔf| %.2e m/s²\n",
+                  2 * o.step_s, o.step_s, system_name(s).c_str(), dv, worst, worst_f);
+    }
+  }
+}
+
+TEST(TruthSimulator, PulsesQuantizeWithTheRemainderCarried) {
+  // The pulse counts add up to the integral of the continuous output to
+  // within one pulse at every output time (the remainder is carried, never
+  // dropped), and each interval's count is its continuous increment rounded
+  // within one pulse.
+  const std::vector<double> times = uniform_times(6000.0, 10.0);
   for (System s : {System::kTheodolite, System::kGyrocompass}) {
     TruthOptions o;
     o.system = s;
-    o.dv_pulse_mps = 0;
-    std::vector<double> lt;
-    for (int m = 1; m <= 90; ++m) lt.push_back(60.0 * m);
-    auto maps = position_maps(s, Fidelity::kLinear, o.model, lt);
-    const UncertaintyVector b = default_bounds();
-    for (int i = 0; i < ux::kDim; ++i) {
-      UncertaintyVector xi = UncertaintyVector::Zero();
-      xi[i] = b[i];
-      auto rp = simulate_truth(o, xi, lt);
-      auto rm = simulate_truth(o, -xi, lt);
-      double raw_abs = 0, raw_rel = 0, odd_abs = 0, odd_rel = 0, even = 0, lin_max = 0, raw_ex = -9, odd_ex = -9;
-      for (size_t k = 0; k < lt.size(); ++k) {
-        Vec3 lin = maps[k] * xi;
-        Vec3 raw = rp.position_error_ap_m[k] - lin;
-        Vec3 odd = 0.5 * (rp.position_error_ap_m[k] - rm.position_error_ap_m[k]) - lin;
-        Vec3 ev = 0.5 * (rp.position_error_ap_m[k] + rm.position_error_ap_m[k]);
-        double n = std::max(lin.norm(), 1.0);
-        raw_abs = std::max(raw_abs, raw.norm()); raw_rel = std::max(raw_rel, raw.norm() / n);
-        odd_abs = std::max(odd_abs, odd.norm()); odd_rel = std::max(odd_rel, odd.norm() / n);
-        raw_ex = std::max(raw_ex, raw.norm() - 0.01 * lin.norm() - 1);
-        odd_ex = std::max(odd_ex, odd.norm() - 0.01 * lin.norm() - 1);
-        even = std::max(even, ev.norm()); lin_max = std::max(lin_max, lin.norm());
+    const double w = o.dv_pulse_mps;
+    o.pulse_phase = Vec3(0.3, -0.2, 0.1);
+    const UncertaintyVector x = random_at_bounds(8);
+    const TruthRun pulsed = simulate_truth(o, x, times);
+    o.dv_pulse_mps = 0.0;
+    const TruthRun cont = simulate_truth(o, x, times);
+    Vec3 total_pulses = Vec3::Zero(), total_cont = Vec3::Zero();
+    const double tau = o.filter_interval_s;
+    for (std::size_t k = 1; k < times.size(); ++k) {
+      // Continuous increment over the interval: (Δf + f̂) τ; f̂ is the same in both runs.
+      const Vec3 cont_dv = (cont.accel_error_ap_mps2[k] - pulsed.accel_error_ap_mps2[k]) * tau +
+                           w * pulsed.pulse_counts[k].cast<double>();
+      total_pulses += w * pulsed.pulse_counts[k].cast<double>();
+      total_cont += cont_dv;
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_LE(std::abs(total_pulses[a] - total_cont[a]), w) << "axis " << a << " t " << times[k];
+        EXPECT_LE(std::abs(w * pulsed.pulse_counts[k][a] - cont_dv[a]), 2 * w);
       }
-      printf("sys%d %-22s lin %9.1f raw %8.3f (%.4f) ex %7.2f | odd %8.3f (%.4f) ex %7.2f | even %8.3f\n",
-             int(s), std::string(catalogue()[i].name).c_str(), lin_max, raw_abs, raw_rel, raw_ex, odd_abs, odd_rel, odd_ex, even);
     }
+    // The z accelerometer counts ~g τ / w ≈ 3200 pulses per interval.
+    EXPECT_NEAR(static_cast<double>(pulsed.pulse_counts[1].z()), -pulsed.site_gravity_mps2 * tau / w, 2.0);
+    // Position: the remainder costs well under a metre more than the
+    // continuous output (the computer's velocity lags by < half a pulse).
+    for (std::size_t k = 0; k < times.size(); ++k)
+      EXPECT_LT((pulsed.position_error_ap_m[k] - cont.position_error_ap_m[k]).norm(), 1.0);
   }
+}
+
+TEST(TruthSimulator, TorquerCommandsTurnThePlatform) {
+  // Injection point 4: a constant torquer rate c turns the platform like a
+  // drift that the alignment never saw: the linear level's drift term with
+  // d = c t and no alignment change.
+  const auto times = minutes_1_to_90();
+  TruthOptions o = continuous_options(System::kTheodolite);
+  const Vec3 c(0.0, 5.0 * kMeruToRadps, 2.0 * kMeruToRadps);
+  o.torquer_command_radps = [c](double) { return c; };
+  const TruthRun run = simulate_truth(o, UncertaintyVector::Zero(), times);
+  const ModelOptions& m = o.model;
+  const auto forcing = [&](double t) {
+    const Vec3 gravity_ap = m.gravity_mps2 * C_ap_n(m.latitude_rad, m.earth_rate_radps * t).col(2);
+    Sensitivity3 u = Sensitivity3::Zero();
+    u.col(0) = -gravity_ap.cross(c * t);  // −(Z + D + Ψ) C g_e with D = paper_skew(c t)
+    return u;
+  };
+  const auto ref = integrate_schuler_ode(forcing, Sensitivity3::Zero(), Sensitivity3::Zero(), times,
+                                         m.schuler_radps(), 5.0);
+  Gap gap;
+  for (std::size_t k = 0; k < times.size(); ++k) gap.add(run.position_error_ap_m[k], ref[k].col(0));
+  EXPECT_LE(gap.excess_m, 0.0) << gap.abs_m;
+}
+
+TEST(TruthSimulator, IsDeterministic) {
+  const std::vector<double> times = uniform_times(3000.0, 10.0);
+  TruthOptions o;
+  o.effects = {parse_effect("sway"), parse_effect("velocity_random_walk"), parse_effect("switch_transient")};
+  const NormalSource noise = hashed_normal_source(42);
+  const UncertaintyVector x = random_at_bounds(9);
+  const TruthRun a = simulate_truth(o, x, times, noise), b = simulate_truth(o, x, times, noise);
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    EXPECT_EQ(a.position_error_ap_m[k], b.position_error_ap_m[k]);
+    EXPECT_EQ(a.pulse_counts[k], b.pulse_counts[k]);
+  }
+}
+
+TEST(TruthSimulator, OptionsAreValidated) {
+  TruthOptions o;
+  EXPECT_FALSE(validate(o).has_value());
+  o.step_s = 0.0;
+  ASSERT_TRUE(validate(o).has_value());
+  EXPECT_EQ(validate(o)->field(), "step_s");
+  o = TruthOptions{};
+  o.pulse_phase.x() = 0.5;
+  ASSERT_TRUE(validate(o).has_value());
+  o = TruthOptions{};
+  o.dv_pulse_mps = -1.0;
+  ASSERT_TRUE(validate(o).has_value());
+  EXPECT_EQ(validate(o)->field(), "dv_pulse_mps");
+}
+
+TEST(TruthSimulator, CostOfOneRun) {
+  // Not a gate (timing thresholds stay out of unit tests, STYLE §13): the
+  // figure for issue 6 (< 2 ms for 15 min test + 84 min flight, one core).
+  const std::vector<double> times = uniform_times(99.0 * 60.0, 10.0);
+  const TruthOptions o;
+  UncertaintyVector x = random_at_bounds(10);
+  const int runs = 20;
+  const std::clock_t c0 = std::clock();
+  double sink = 0.0;
+  for (int k = 0; k < runs; ++k) {
+    x[0] = -x[0];
+    sink += simulate_truth(o, x, times).position_error_ap_m.back().x();
+  }
+  const double cpu_ms = 1e3 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC / runs;
+  std::printf("  one truth run (99 min, step %g s, outputs every 10 s, 0.1 ft/s pulses): %.3f ms CPU (%g)\n",
+              o.step_s, cpu_ms, sink);
+  EXPECT_TRUE(std::isfinite(sink));
 }
 
 }  // namespace
