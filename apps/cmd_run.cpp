@@ -1,17 +1,30 @@
 // insmc run: the Monte Carlo study. Prints the envelope table, writes the
-// output files of the README's contract into --out DIR.
+// output files of the README's contract into --out DIR. With --checkpoint it
+// saves its progress (apps/checkpoint.h) and --resume continues it; under
+// MPI the ranks share the blocks (apps/study_runner.h, apps/ranks.h).
+#include <algorithm>
 #include <chrono>
 #include <fmt/format.h>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
 
+#include "apps/checkpoint.h"
 #include "apps/cli_common.h"
-#include "apps/progress.h"
+#include "apps/interrupt.h"
+#include "apps/ranks.h"
 #include "apps/study_options.h"
+#include "apps/study_runner.h"
 #include "apps/sweep.h"
 #include "lib/common/input_error.h"
+#include "lib/common/version.h"
+#include "lib/units/quantity.h"
 #include "lib/uncertainty/catalogue.h"
 #include "montecarlo/engine/engine.h"
 #include "lib/compensation/extended_vector.h"
 #include "montecarlo/sampler/sampler.h"
+#include "montecarlo/write/atomic_file.h"
 #include "montecarlo/write/csv.h"
 
 namespace insmc::app {
@@ -52,25 +65,142 @@ int replay(const mc::StudyConfig& c, const mc::StudyLayout& l, const mc::StudyMa
   return 0;
 }
 
-}  // namespace
+/// The options a --resume command line may give; every other setting comes
+/// from the checkpoint.
+const std::vector<std::string> kResumeOptions = {"out", "format", "threads", "checkpoint", "checkpoint-every"};
 
-int run_run(const Args& args) {
+/// Of the settings (threads aside) and of every output's predicted mean and
+/// RMS: a resumed run must compute exactly the study it continues.
+std::uint64_t study_fingerprint(const mc::StudyConfig& config, const mc::StudyMap& map) {
+  mc::StudyConfig c = config;
+  c.threads = 0;
+  return fnv1a64(mc::settings_json(c).dump() + mc::StudyAccumulator(map).serialize());
+}
+
+/// Runs `f` on rank 0; a failure there becomes the same InputError on every
+/// rank (the others would otherwise wait for rank 0 in the next collective).
+template <class F>
+void on_root_or_fail_everywhere(Ranks& ranks, const std::string& field, const std::string& value, F&& f) {
+  std::string error;
+  if (ranks.root()) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      error = e.what();
+      if (error.empty()) error = "failed";
+    }
+  }
+  error = ranks.broadcast(error);
+  if (!error.empty()) throw InputError(field, value, error);
+}
+
+/// --resume FILE: read on rank 0 and sent to the others (no shared file
+/// system needed for it).
+Checkpoint load_checkpoint(const std::string& path, Ranks& ranks) {
+  std::string bytes;
+  on_root_or_fail_everywhere(ranks, "--resume", path, [&] {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot open the file");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (!in.good() && !in.eof()) throw std::runtime_error("cannot read the file");
+    bytes = std::move(ss).str();
+  });
+  return decode_checkpoint(ranks.broadcast(std::move(bytes)), path);
+}
+
+/// The finished blocks and their state from a checkpoint of this study.
+StudyProgress restore_progress(const Checkpoint& ck, const std::string& path, const mc::StudyConfig& config,
+                               const mc::StudyLayout& layout, const mc::StudyMap& map, Ranks& ranks) {
+  if (ck.fingerprint != study_fingerprint(config, map) || ck.samples != config.samples)
+    throw InputError("--resume", path,
+                     "the study no longer matches the checkpoint's (was its --config file changed?)");
+  const std::uint64_t blocks = mc::block_count(config.samples);
+  for (std::size_t i = 0; i < ck.done.size(); ++i)
+    if (ck.done[i].end > blocks || (i > 0 && ck.done[i].begin < ck.done[i - 1].end))
+      throw InputError("--resume", path, "the checkpoint is corrupt (finished blocks)");
+  StudyProgress p;
+  p.done = mc::normalize(ck.done);
+  p.state = mc::StudyAccumulator(map);
+  on_root_or_fail_everywhere(ranks, "--resume", path, [&] {  // rank 0 merges the states
+    try {
+      p.state = mc::StudyAccumulator::deserialize(ck.state);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(fmt::format("the checkpoint is corrupt ({})", e.what()));
+    }
+    const std::uint64_t expected = mc::sample_total(p.done, config.samples);
+    if (p.state.outputs().size() != layout.outputs.size() ||
+        (!p.state.outputs().empty() && p.state.outputs().front().count() != expected))
+      throw std::runtime_error("the checkpoint is corrupt (its state does not match its finished blocks)");
+  });
+  return p;
+}
+
+int run_command(const Args& args, Ranks& ranks) {
   po::options_description opts("Options");
   opts.add_options()("out", po::value<std::string>(), "folder for envelope.csv, envelope_grid.csv, envelope.md, "
                                                       "envelope.svg and run.json (created if needed)")(
       "format", po::value<std::string>()->default_value("markdown"),
       "stdout: markdown (readable table), csv (envelope.csv alone) or json (run.json alone)")(
-      "replay", po::value<std::string>(), "recompute sample INDEX alone and print its uncertainties and errors");
+      "replay", po::value<std::string>(), "recompute sample INDEX alone and print its uncertainties and errors")(
+      "checkpoint", po::value<std::string>(),
+      "write FILE (every setting and the merged state of the finished samples) every --checkpoint-every of work, "
+      "at the end (the file is kept) and on SIGINT/SIGTERM, which then exit 130/143")(
+      "checkpoint-every", po::value<std::string>()->default_value("10s"), "work between two checkpoints, > 0")(
+      "resume", po::value<std::string>(),
+      "continue the run of checkpoint FILE to the same result, byte for byte; no other option is needed, and only "
+      "--out, --format, --threads, --checkpoint (default FILE) and --checkpoint-every may be given");
   opts.add(study_options_description(true));
-  const auto vm = parse_args(args, "run", "[options]", opts);
+  const std::string synopsis = "[options]\n       insmc run --resume FILE [--out DIR] [--format F]";
+  auto vm = parse_args(args, "run", synopsis, opts);
   if (!vm) return 0;
+
+  // --resume: the checkpoint's own arguments, with this command line's
+  // --out, --format, ... in place of theirs, parsed as if typed again.
+  Args run_args = args;
+  std::optional<Checkpoint> resumed;
+  const std::string resume_path = vm->count("resume") ? (*vm)["resume"].as<std::string>() : "";
+  if (vm->count("resume")) {
+    std::vector<std::string> overrides;
+    Args override_tokens;
+    for (const GivenOption& o : given_options(args, opts)) {
+      if (o.name == "resume") continue;
+      if (std::find(kResumeOptions.begin(), kResumeOptions.end(), o.name) == kResumeOptions.end())
+        throw InputError("--resume", resume_path,
+                         fmt::format("the checkpoint restores every setting; --{} cannot be given with it (only "
+                                     "--out, --format, --threads, --checkpoint and --checkpoint-every can)",
+                                     o.name));
+      overrides.push_back(o.name);
+      override_tokens.insert(override_tokens.end(), o.tokens.begin(), o.tokens.end());
+    }
+    resumed = load_checkpoint(resume_path, ranks);
+    run_args = without_options(given_options(resumed->args, opts), overrides);
+    run_args.insert(run_args.end(), override_tokens.begin(), override_tokens.end());
+    if (!vm->count("checkpoint")) run_args.insert(run_args.end(), {"--checkpoint", resume_path});
+    vm = parse_args(run_args, "run", synopsis, opts);
+  }
+
   const mc::StudyConfig config = read_study_config(*vm, true);
   const OutputFormat format = parse_output_format((*vm)["format"].as<std::string>());
   const mc::LengthUnit unit = read_length_unit(*vm);
+  const std::string checkpoint_path = vm->count("checkpoint") ? (*vm)["checkpoint"].as<std::string>() : "";
+  const std::string every_text = (*vm)["checkpoint-every"].as<std::string>();
+  const double checkpoint_every_s = parse_quantity(every_text, Dimension::kTime, "--checkpoint-every");
+  if (!(checkpoint_every_s > 0)) throw InputError("--checkpoint-every", every_text, "must be > 0");
   const std::vector<SweepAxis> sweeps = find_sweeps(*vm);
   if (!sweeps.empty()) {
     if (vm->count("replay")) throw InputError("--replay", (*vm)["replay"].as<std::string>(), "cannot be combined with a sweep");
-    const SweepFiles files = run_sweep(config, sweeps, unit == mc::LengthUnit::kFoot);
+    if (!checkpoint_path.empty())
+      throw InputError("--checkpoint", checkpoint_path,
+                       "cannot be combined with a sweep (checkpoint the points as separate runs)");
+    // Each point's blocks are split over the ranks (one rank without MPI).
+    const SweepFiles files =
+        run_sweep(config, sweeps, unit == mc::LengthUnit::kFoot, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
+          RunPlan plan;
+          plan.result_everywhere = true;
+          return run_study_blocks(c, m, ranks, StudyProgress{{}, mc::StudyAccumulator(m)}, plan).progress.state;
+        });
+    if (!ranks.root()) return 0;
     if (vm->count("out"))
       write_output_files((*vm)["out"].as<std::string>(), {{"sweep.csv", files.sweep_csv}, {"sweep.md", files.summary_md},
                                                           {"sweep.svg", files.plot_svg}});
@@ -82,6 +212,7 @@ int run_run(const Args& args) {
 
   if (vm->count("replay")) {
     const std::string text = (*vm)["replay"].as<std::string>();
+    if (!checkpoint_path.empty()) throw InputError("--checkpoint", checkpoint_path, "cannot be combined with --replay");
     std::uint64_t index = 0;
     try {
       std::size_t used = 0;
@@ -92,20 +223,68 @@ int run_run(const Args& args) {
     }
     if (index >= config.samples)
       throw InputError("--replay", text, fmt::format("must be below --samples = {}", config.samples));
-    return replay(config, layout, map, index);
+    return ranks.root() ? replay(config, layout, map, index) : 0;
   }
 
-  const auto start = std::chrono::steady_clock::now();
-  Progress progress(config.samples);
-  const mc::StudyAccumulator acc = mc::run_blocks(config, map, 0, mc::block_count(config.samples),
-                                                  [&](std::uint64_t done) { progress.update(done); });
-  const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  StudyProgress start{{}, mc::StudyAccumulator(map)};
+  if (resumed) start = restore_progress(*resumed, resume_path, config, layout, map, ranks);
+  const std::uint64_t resumed_from_sample = mc::sample_total(start.done, config.samples);
+  RunPlan plan;
+  if (!checkpoint_path.empty()) {
+    mc::StudyConfig settings = config;
+    settings.threads = 0;
+    Checkpoint ck;
+    ck.version = kVersion;
+    ck.args = without_options(given_options(run_args, opts), {"checkpoint", "resume"});
+    ck.settings = mc::settings_json(settings).dump();
+    ck.fingerprint = study_fingerprint(config, map);
+    ck.samples = config.samples;
+    plan.checkpoint_every_s = checkpoint_every_s;
+    plan.stop_on_signals = true;
+    plan.write_checkpoint = [ck = std::move(ck), &checkpoint_path](const StudyProgress& p) mutable {
+      ck.done = p.done;
+      ck.state = p.state.serialize();
+      mc::write_file_atomically(checkpoint_path, encode_checkpoint(ck));
+    };
+    // A path that cannot be written fails now, not after the first stretch of work.
+    on_root_or_fail_everywhere(ranks, "--checkpoint", checkpoint_path, [&] { plan.write_checkpoint(start); });
+  }
+
+  const auto started = std::chrono::steady_clock::now();
+  const RunOutcome outcome = run_study_blocks(config, map, ranks, std::move(start), plan);
+  const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (outcome.signal != 0) {
+    if (ranks.root())
+      fmt::print(stderr, "insmc run: interrupted by {}: checkpoint {} written ({} of {} samples finished); continue "
+                         "with: insmc run --resume {}\n",
+                 signal_name(outcome.signal), checkpoint_path, mc::sample_total(outcome.progress.done, config.samples),
+                 config.samples, checkpoint_path);
+    ranks.barrier();  // every rank exits after rank 0 has written and said so
+    return 128 + outcome.signal;
+  }
+  if (!ranks.root()) return 0;
+  const mc::StudyAccumulator& acc = outcome.progress.state;
 
   const mc::EnvelopeFiles files = mc::render_envelope(config, layout, map, acc, unit);
   mc::Json run = mc::Json::object();
   run["settings"] = mc::settings_json(config);
   run["elapsed_s"] = elapsed_s;
-  run["resumed_from_sample"] = 0;
+  run["resumed_from_sample"] = resumed_from_sample;
+  if (ranks.distributed()) {
+    run["ranks"] = ranks.size();
+    mc::Json shares = mc::Json::array();  // per rank: its [first, end) sample ranges in this run
+    for (const mc::BlockSet& share : outcome.shares) {
+      mc::Json ranges = mc::Json::array();
+      for (const mc::BlockRange& r : share) {
+        mc::Json range = mc::Json::array();
+        range.push_back(std::min(config.samples, r.begin * mc::kBlockSize));
+        range.push_back(std::min(config.samples, r.end * mc::kBlockSize));
+        ranges.push_back(range);
+      }
+      shares.push_back(ranges);
+    }
+    run["rank_sample_ranges"] = shares;
+  }
   run["envelope"] = files.envelope_json;
   const std::string run_json = run.dump();
 
@@ -125,6 +304,29 @@ int run_run(const Args& args) {
       break;
   }
   return 0;
+}
+
+}  // namespace
+
+int run_run(const Args& args) {
+  const std::unique_ptr<Ranks> ranks = join_ranks();
+  if (!ranks->distributed()) return run_command(args, *ranks);
+  // Under MPI every rank parses the same arguments, so bad input fails on
+  // every rank alike: rank 0 reports it, before MPI_Finalize (mpirun may end
+  // the job once a rank has exited non-zero), and every rank exits 2.
+  try {
+    return run_command(args, *ranks);
+  } catch (const InputError& e) {
+    if (ranks->root()) fmt::print(stderr, "insmc run: {}\n", e.what());
+    return 2;
+  } catch (const po::error& e) {
+    if (ranks->root()) fmt::print(stderr, "insmc run: {} (see insmc run --help)\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {  // the other ranks may be waiting for this one: end them all
+    fmt::print(stderr, "insmc run: error on rank {}: {}\n", ranks->rank(), e.what());
+    ranks->abort(3);
+    return 3;
+  }
 }
 
 }  // namespace insmc::app

@@ -75,7 +75,8 @@ std::vector<SweepAxis> find_sweeps(const po::variables_map& vm) {
   return axes;
 }
 
-SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, bool paper_units) {
+SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, bool paper_units,
+                     const StudyRunner& run) {
   const double k = paper_units ? 1.0 / kFtToM : 1.0;
   const std::string u = paper_units ? "ft" : "m";
   std::vector<std::string> header;
@@ -106,7 +107,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
     mc::validate(c);
     const mc::StudyLayout layout = mc::make_layout(c);
     const mc::StudyMap map(c, layout);
-    const mc::StudyAccumulator acc = mc::run_blocks(c, map, 0, mc::block_count(c.samples));
+    const mc::StudyAccumulator acc = run ? run(c, map) : mc::run_blocks(c, map, 0, mc::block_count(c.samples));
     std::string point_name;
     for (std::size_t i = 0; i < axes.size(); ++i)
       point_name += fmt::format("{}{}={}", i ? " " : "", axes[i].column, axes[i].texts[idx[i]]);

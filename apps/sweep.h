@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "apps/cli_common.h"
+#include "montecarlo/engine/engine.h"
 #include "montecarlo/study/study_config.h"
 
 namespace insmc::app {
@@ -28,6 +29,11 @@ std::vector<SweepAxis> find_sweeps(const po::variables_map& vm);
 struct SweepFiles {
   std::string sweep_csv, summary_md, plot_svg;
 };
-SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, bool paper_units);
+/// Runs the Monte Carlo study of one point (every block, merged).
+using StudyRunner = std::function<mc::StudyAccumulator(const mc::StudyConfig&, const mc::StudyMap&)>;
+/// `run`: how each point is run (default: every block in this process; under
+/// MPI, apps/cmd_run.cpp splits each point's blocks over the ranks).
+SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, bool paper_units,
+                     const StudyRunner& run = {});
 
 }  // namespace insmc::app

@@ -2,12 +2,15 @@
 # Installs what insmc needs from Debian 12's archive, only what is missing.
 # Idempotent and quiet on success; run as root (no sudo needed or used).
 #   scripts/install-deps.sh          build + run dependencies
-#   scripts/install-deps.sh --test   also GoogleTest, Random123 (test oracle)
+#   scripts/install-deps.sh --test   also GoogleTest, Random123 (test oracle),
+#                                    Open MPI (the MPI build's tests)
 set -euo pipefail
 
 packages=(g++ cmake make libeigen3-dev libtbb-dev libboost-program-options-dev libboost-dev libfmt-dev)
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(libgtest-dev librandom123-dev)
+  # openssh-client: Open MPI's mpirun refuses to start without an rsh/ssh agent,
+  # even on one machine (Debian only recommends it).
+  packages+=(libgtest-dev librandom123-dev openmpi-bin libopenmpi-dev openssh-client)
 fi
 
 missing=()

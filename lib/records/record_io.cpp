@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
@@ -435,7 +434,7 @@ void assert_writable(const RecordFile& file) {
 
 void append_optional(fmt::memory_buffer& out, const std::optional<double>& v) {
   out.push_back(',');
-  if (v) fmt::format_to(std::back_inserter(out), "{}", *v);
+  if (v) fmt::format_to(fmt::appender(out), "{}", *v);
 }
 
 }  // namespace
@@ -456,7 +455,7 @@ RecordFile read_record_file(const std::filesystem::path& path) {
 std::string write_record_file(const RecordFile& file, TruthKeys truth) {
   assert_writable(file);
   fmt::memory_buffer out;
-  const auto it = std::back_inserter(out);
+  const auto it = fmt::appender(out);
   fmt::format_to(it, "{}\n", kVersionLine);
   for (const auto& e : file.header.entries) fmt::format_to(it, "# {}={}\n", e.key, e.value);
   if (truth == TruthKeys::kKeep) {

@@ -1,6 +1,7 @@
 #include "lib/truth/earth_model.h"
 
 #include <cmath>
+#include <numbers>
 
 #include "lib/common/assert.h"
 
@@ -33,7 +34,7 @@ double plumb_latitude(const GravityField& field, double w, double R, double phi)
 
 double geocentric_latitude_for_plumb(const GravityField& field, double w, double R,
                                      double L) {
-  INSMC_ASSERT(std::abs(L) < 0.5 * 3.14159265358979323846, "plumb latitude {} rad", L);
+  INSMC_ASSERT(std::abs(L) < 0.5 * std::numbers::pi, "plumb latitude {} rad", L);
   // dL/dφ = 1 + O(ω²R/g, J2): the plain fixed-point iteration contracts by
   // ~0.004 per step.
   double phi = L;

@@ -24,7 +24,7 @@ Vec3 GridProcess::at(double t) const {
 }
 
 GridProcess::Integrals GridProcess::integrals(double t0, double t1) const {
-  Integrals out{Vec3::Zero(), Vec3::Zero()};
+  Integrals out{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
   if (nodes_.empty() || t1 <= t0) return out;
   double s0 = t0;
   while (s0 < t1) {
@@ -36,6 +36,8 @@ GridProcess::Integrals GridProcess::integrals(double t0, double t1) const {
     const Vec3 p0 = at(s0), pm = at(sm), p1 = at(s1);
     out.first += len / 6.0 * (p0 + 4.0 * pm + p1);
     out.second += len / 6.0 * ((t1 - s0) * p0 + 4.0 * (t1 - sm) * pm + (t1 - s1) * p1);
+    out.third += len / 12.0 *
+                 ((t1 - s0) * (t1 - s0) * p0 + 4.0 * (t1 - sm) * (t1 - sm) * pm + (t1 - s1) * (t1 - s1) * p1);
     s0 = s1;
   }
   return out;

@@ -22,11 +22,13 @@ class GridProcess {
   /// p(t), t ≥ 0.
   Vec3 at(double t_s) const;
 
-  /// ∫_{t0}^{t1} p(s) ds and ∫_{t0}^{t1} (t1 − s) p(s) ds, exact for the
-  /// piecewise-linear form (Simpson per grid segment).
+  /// ∫_{t0}^{t1} (t1 − s)^{n−1}/(n−1)! p(s) ds for n = 1, 2, 3 (the n-fold
+  /// integrals of p from t0 to t1), exact for the piecewise-linear form
+  /// (Simpson per grid segment: the integrands are at most cubic).
   struct Integrals {
     Vec3 first;   ///< ∫ p
     Vec3 second;  ///< ∫ (t1 − s) p(s) ds = ∫_{t0}^{t1} ∫_{t0}^{s} p
+    Vec3 third;   ///< ∫ (t1 − s)²/2 p(s) ds
   };
   Integrals integrals(double t0_s, double t1_s) const;
 

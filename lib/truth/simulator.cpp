@@ -118,8 +118,9 @@ double integral_of_remainder(double a0, double dv, double dw, double h, double w
         const double sq = std::sqrt(disc);
         const double qq = -0.5 * (alpha + (alpha >= 0 ? sq : -sq));
         const double r1 = qq / beta, r2 = (qq != 0.0) ? c / qq : r1;
-        const double mid = 0.5 * (sa + sb);
-        root = std::abs(r1 - mid) <= std::abs(r2 - mid) ? r1 : r2;
+        // The piece is monotone: one root lies in it (up to round-off).
+        const double slack = 1e-9 * h;
+        root = (r1 >= sa - slack && r1 <= sb + slack) ? r1 : r2;
       }
       root = std::clamp(root, sa, sb);
       integral_q += direction * (sb - root);
@@ -128,10 +129,23 @@ double integral_of_remainder(double a0, double dv, double dw, double h, double w
   return exact_integral - w * integral_q;
 }
 
+/// Turns the platform quaternion of `y` by the body-frame rotation vector θ.
+void turn_platform(State& y, const Vec3& theta) {
+  const double a = theta.norm();
+  if (a == 0.0) return;
+  const Vec3 axis = theta / a;
+  const double c = std::cos(0.5 * a), s = std::sin(0.5 * a);
+  const Eigen::Vector4d q = y.segment<4>(kQ);
+  const Vec3 qv = q.segment<3>(1), r = s * axis;
+  Eigen::Vector4d out;  // q ⊗ (cos ½a, sin ½a axis)
+  out[0] = q[0] * c - qv.dot(r);
+  out.segment<3>(1) = q[0] * r + c * qv + qv.cross(r);
+  y.segment<4>(kQ) = out.normalized();
+}
+
 /// Everything constant during a run, and the right-hand side of the ODE.
 struct Dynamics {
   // earth and truth
-  double earth_rate = 0.0;
   Vec3 site_position_e = Vec3::Zero();
   Vec3 site_gravitation_e = Vec3::Zero();  ///< incl. the deflection anomaly
   Vec3 site_specific_force_e = Vec3::Zero();
@@ -144,8 +158,6 @@ struct Dynamics {
   double anisoelastic = 0.0;
   const std::vector<ExponentialTerm>* bias_transients = nullptr;
   const std::vector<ExponentialTerm>* drift_transients = nullptr;
-  const GridProcess* drift_process = nullptr;
-  const GridProcess* angle_walk = nullptr;
   const std::function<Vec3(double)>* torquer = nullptr;
   // computer
   Mat3 c_hat = Mat3::Identity();   ///< Ĉ_a^i (3.20)
@@ -160,15 +172,9 @@ struct Dynamics {
     return n / computer_radius * computer_field.gravitation(computer_radius / n * r_c);
   }
 
-  Mat3 platform(const Eigen::Vector4d& q, double t) const {
-    Mat3 c = quaternion_matrix(q);
-    if (angle_walk && !angle_walk->empty()) c = c * rotation(angle_walk->at(t));
-    return c;
-  }
-
   void derivative(double t, double c, double s, const State& y, State& dy) const {
     const Eigen::Vector4d q = y.segment<4>(kQ);
-    const Mat3 c_i_a_t = platform(q, t).transpose();
+    const Mat3 c_i_a_t = quaternion_matrix(q).transpose();
     const Vec3 f_i = rotate_z(c, s, site_specific_force_e);
     const Vec3 f_a = c_i_a_t * f_i;
     Vec3 f_m = scale.cwiseProduct(f_a) + nav_bias + quadratic.cwiseProduct(f_a.cwiseAbs2());
@@ -177,7 +183,6 @@ struct Dynamics {
       omega += anisoelastic * Vec3(f_a.y() * f_a.z(), f_a.z() * f_a.x(), f_a.x() * f_a.y());
     for (const ExponentialTerm& e : *bias_transients) f_m += std::exp(-t / e.time_constant_s) * e.amplitude;
     for (const ExponentialTerm& e : *drift_transients) omega += std::exp(-t / e.time_constant_s) * e.amplitude;
-    if (!drift_process->empty()) omega += drift_process->at(t);
     if (*torquer) omega += (*torquer)(t);
     // q̇ = ½ q ⊗ (0, ω): the platform turns at ω_ia^a (3.6)–(3.7).
     const double qw = q[0];
@@ -313,7 +318,6 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
 
   // ---- the site (truth) ------------------------------------------------------
   Dynamics d;
-  d.earth_rate = w_ie;
   d.site_position_e = position_for_plumb_latitude(true_field, w_ie, r0, L0);
   const Vec3 reference_gravitation = true_field.gravitation(d.site_position_e);
   const Vec3 centripetal = -w_ie * w_ie * Vec3(d.site_position_e.x(), d.site_position_e.y(), 0.0);
@@ -363,8 +367,6 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   d.anisoelastic = p.anisoelastic_radps_per_mps2sq;
   d.bias_transients = &p.bias_transients;
   d.drift_transients = &p.drift_transients;
-  d.drift_process = &p.drift_process;
-  d.angle_walk = &p.angle_walk;
   d.torquer = &o.torquer_command_radps;
 
   // ---- navigation computer -----------------------------------------------------
@@ -380,8 +382,9 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   const Vec3 r_c0 = position_for_plumb_latitude(computer_field, w_ie, d.computer_radius, latitude_hat);
   const Vec3 v_c0 = earth_axis.cross(r_c0) + c_ap_i * x.segment<3>(ux::kInitialVelocity);
   const SwayState sway0 = sway_at(p.sway, 0.0);
+  const Vec3 earth_axis_n = c_e_n.transpose() * earth_axis;  // Ω in the site's n frame
   const Vec3 sway_r0 = c_e_n * sway0.position_n;
-  const Vec3 sway_v0 = c_e_n * sway0.velocity_n + earth_axis.cross(sway_r0);
+  const Vec3 sway_v0 = c_e_n * (sway0.velocity_n + earth_axis_n.cross(sway0.position_n));
 
   State y = State::Zero();
   y.segment<4>(kQ) = q0;
@@ -408,6 +411,7 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
 
   const bool has_bias_process = !p.bias_process.empty(), has_vrw = !p.velocity_walk.empty();
   const bool has_sway = !p.sway.empty();
+  const bool has_drift_process = !p.drift_process.empty(), has_angle_walk = !p.angle_walk.empty();
   double t = 0.0, c0 = 1.0, s0 = 0.0;
   State k1, k2, k3, k4;
   for (std::size_t stop = 1; stop < stops.size(); ++stop) {
@@ -426,8 +430,14 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
       d.derivative(t1, c1, s1, y + h * k3, k4);
       y += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
       y.segment<4>(kQ).normalize();
-      // Terms faster than the step, by their exact integrals (split).
-      if (has_bias_process || has_vrw) {
+      // Terms faster than the step, by their exact integrals (split): the
+      // random accelerometer processes add to the velocity increments; the
+      // random platform rotations (drift process, angle random walk) turn the
+      // measured force by −θ(s) × f^a within the step (first order in θ, a
+      // few µrad per step), the drift process also turning the platform for
+      // the steps that follow.
+      const bool turns = has_drift_process || has_angle_walk;
+      if (has_bias_process || has_vrw || turns) {
         Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
         if (has_bias_process) {
           const GridProcess::Integrals b = p.bias_process.integrals(t, t1);
@@ -439,17 +449,43 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
           dv += p.velocity_walk.at(t1) - v0;
           dw += p.velocity_walk.integrals(t, t1).first - (t1 - t) * v0;
         }
+        if (turns) {
+          const Vec3 f_a = d.scale.asDiagonal() * (quaternion_matrix(y.segment<4>(kQ)).transpose() *
+                                                   rotate_z(cm, sm, d.site_specific_force_e));
+          if (has_drift_process) {
+            const GridProcess::Integrals w_int = p.drift_process.integrals(t, t1);
+            dv -= w_int.second.cross(f_a);
+            dw -= w_int.third.cross(f_a);
+            turn_platform(y, w_int.first);
+          }
+          if (has_angle_walk) {
+            const GridProcess::Integrals a_int = p.angle_walk.integrals(t, t1);
+            dv -= a_int.first.cross(f_a);
+            dw -= a_int.second.cross(f_a);
+          }
+        }
         y.segment<3>(kDV) += dv;
         y.segment<3>(kDW) += dw;
         y.segment<3>(kDVel) += d.c_hat * dv;
         y.segment<3>(kDR) += d.c_hat * dw;
       }
       if (has_sway) {
-        // The sway acceleration in the platform; the computer follows the
-        // true motion, so δr keeps only the initial offsets (set above).
-        const SwayState a = sway_at(p.sway, t), b = sway_at(p.sway, t1);
-        const Mat3 to_platform = d.scale.asDiagonal() * d.platform(y.segment<4>(kQ), tm).transpose() *
-                                 earth_rotation(w_ie * tm) * c_e_n;
+        // The sway motion in the platform, exactly: its inertial displacement
+        // x(t) = R(t) C_n^e s(t) and velocity v(t) = R(t) C_n^e (ṡ + Ω × s) give
+        // ΔV = v(t1) − v(t0), ΔW = x(t1) − x(t0) − h v(t0). The computer follows
+        // the true motion, so δr keeps only the initial offsets (set above).
+        const auto inertial = [&](double time, SwayState* velocity) {
+          const SwayState st = sway_at(p.sway, time);
+          const Mat3 r = earth_rotation(w_ie * time) * c_e_n;
+          velocity->velocity_n = r * (st.velocity_n + earth_axis_n.cross(st.position_n));
+          velocity->position_n = r * st.position_n;
+        };
+        SwayState a, b;  // here in i
+        inertial(t, &a);
+        inertial(t1, &b);
+        Mat3 c_a_i = quaternion_matrix(y.segment<4>(kQ)).transpose();
+        if (has_angle_walk) c_a_i = rotation(p.angle_walk.at(tm)).transpose() * c_a_i;
+        const Mat3 to_platform = d.scale.asDiagonal() * c_a_i;
         y.segment<3>(kDV) += to_platform * (b.velocity_n - a.velocity_n);
         y.segment<3>(kDW) += to_platform * (b.position_n - a.position_n - (t1 - t) * a.velocity_n);
       }

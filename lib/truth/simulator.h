@@ -14,11 +14,14 @@
 ///    drift MU f^a from the actual specific force in the actual platform frame
 ///    (3.9)–(3.10), plus the torquer-command hook. Initial attitude: the
 ///    steady-state misalignment at switch-over C' (2.18a) (full alignment
-///    equations, lib/alignment) applied as the finite rotation exp([C'×]) of
-///    the true local-level frame a';
+///    equations, lib/alignment) turning the true local-level frame a' as the
+///    loops leave it (switchover_attitude below: azimuth C'_z, then the tilt
+///    that meets the linear horizontal specific force exactly);
 ///  * accelerometers f_m = (I + A) f^a + δf + (∂f_x, ∂f_y, 0) (3.14)–(3.18),
 ///    integrated to velocity increments and quantized into pulses of weight
-///    dv_pulse_mps with the remainder carried (rounding quantizer);
+///    dv_pulse_mps with the remainder carried (rounding quantizer: a pulse
+///    each time the accumulator passes ±w/2; its initial content is the
+///    pulse phase);
 ///  * a navigation computer in i: r̈_c = G_c(r_c) + Ĉ_a^i ΔV-rate (3.20),
 ///    Ĉ_a^i from L̂0 = L0 + δL0, computed gravitation with external altitude
 ///    |r| ≈ r0 + δh (3.21), initial position and velocity from L̂0 and the
@@ -47,10 +50,22 @@
 ///
 /// Numerics: the navigation error δr = r_c − r (exact difference, no
 /// linearization) and the platform are integrated together by classical RK4
-/// with steps of at most step_s landing on every output time; stochastic
-/// effects are realized on a fixed noise grid. Disturbance terms that vary
-/// faster than the step (sway, the random accelerometer processes) enter the
-/// velocity increments by their exact integrals.
+/// with steps of at most step_s landing on every output time (halving the
+/// 5 s default changes δr by < 1e-6 m continuous, < 1e-3 m with pulses).
+/// Stochastic effects are realized on a fixed noise grid; terms that vary
+/// faster than the step enter by their exact integrals over it (split from
+/// the RK4 step): the random accelerometer processes and the sway motion as
+/// velocity increments, the random platform rotations (drift instability,
+/// angle random walk) as the exact rotation of the platform and the force
+/// −θ(s) × f^a it makes the accelerometers see within the step. Pulses: the
+/// remainder's time integral (the computer's position lag) uses the pulse
+/// crossing times of a quadratic accumulator path when few pulses fall in a
+/// step, and the equidistributed-remainder formula when many do.
+///
+/// Second-order terms the linear model drops (measured, tests/unit/lib/truth):
+/// the vertical r0 (θ²/2)(1 − cos ω_s t) of a leveling tilt θ (6.4 m at 1 mg
+/// of δf_x), and the finite-rotation product ½ C' × d of misalignment and
+/// drift angle (171 m in system 2 for ω_doy = 10 meru, where C'_z = 14 mrad).
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -82,8 +97,10 @@ struct TruthOptions {
   /// Spherical gravitation (false) or with the earth's J2 (true), in both the
   /// truth and the computer (the gravity_model effect makes them differ).
   bool j2_gravity = false;
-  /// Initial content of each accelerometer's pulse accumulator, in pulses,
-  /// [−0.5, 0.5) (the pulse phase).
+  /// Initial content ρ0 of each accelerometer's pulse accumulator, in pulses,
+  /// [−0.5, 0.5) (the pulse phase). Counted at the first pulse, it is an
+  /// initial velocity error of ρ0 once pulses are dense (a Schuler
+  /// oscillation of up to 12 m at half a 0.1 ft/s pulse).
   Vec3 pulse_phase = Vec3::Zero();
   /// Grid of the effects' random processes [s]; > 0.
   double noise_grid_s = 1.0;

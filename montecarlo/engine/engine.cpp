@@ -98,7 +98,8 @@ StudyAccumulator StudyAccumulator::deserialize(std::string_view bytes) {
 }
 
 StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint64_t first_block,
-                            std::uint64_t end_block, const ProgressCallback& progress) {
+                            std::uint64_t end_block, const ProgressCallback& progress, const std::atomic<bool>* stop,
+                            std::uint64_t* finished_end) {
   const int threads = c.threads > 0 ? c.threads
                                     : static_cast<int>(tbb::info::default_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
@@ -107,17 +108,28 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
   tbb::enumerable_thread_specific<StudyAccumulator> partial(empty);
   tbb::enumerable_thread_specific<Workspace> workspaces(map, static_cast<int>(c.systems.size()));
   std::atomic<std::uint64_t> done{0};
-  tbb::parallel_for(tbb::blocked_range<std::uint64_t>(first_block, end_block, 1),
-                    [&](const tbb::blocked_range<std::uint64_t>& range) {
-                      Workspace& ws = workspaces.local();
-                      StudyAccumulator& acc = partial.local();
-                      for (std::uint64_t b = range.begin(); b != range.end(); ++b) {
-                        run_block(c, map, sampler, b, ws, acc);
-                        const std::uint64_t n = std::min<std::uint64_t>(kBlockSize, c.samples - b * kBlockSize);
-                        const std::uint64_t total = done.fetch_add(n) + n;
-                        if (progress) progress(total);
-                      }
-                    });
+  // One task per thread; each claims the next block from a shared counter.
+  // Blocks are therefore started in index order, and a claimed block is
+  // always finished: when `stop` ends the run early, the finished blocks are
+  // exactly [first_block, next).
+  std::atomic<std::uint64_t> next{first_block};
+  const auto stopped = [stop] { return stop != nullptr && stop->load(std::memory_order_acquire); };
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, threads, 1),
+      [&](const tbb::blocked_range<int>&) {
+        Workspace& ws = workspaces.local();
+        StudyAccumulator& acc = partial.local();
+        while (!stopped()) {
+          const std::uint64_t b = next.fetch_add(1);
+          if (b >= end_block) break;
+          run_block(c, map, sampler, b, ws, acc);
+          const std::uint64_t n = std::min<std::uint64_t>(kBlockSize, c.samples - b * kBlockSize);
+          const std::uint64_t total = done.fetch_add(n) + n;
+          if (progress) progress(total);
+        }
+      },
+      tbb::simple_partitioner());
+  if (finished_end) *finished_end = std::min(next.load(), end_block);
   // Exact, associative and commutative merge: the order does not matter.
   StudyAccumulator total = empty;
   for (const StudyAccumulator& p : partial) total.merge(p);

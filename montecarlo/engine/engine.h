@@ -37,8 +37,17 @@ class StudyAccumulator {
 using ProgressCallback = std::function<void(std::uint64_t samples_done)>;
 
 /// Runs blocks [first_block, end_block) of the study (all blocks by default).
+///
+/// Cancellation: when `stop` is given and becomes true, no further block is
+/// started; blocks already started are finished. Blocks are started in
+/// increasing index order, so the finished blocks are always exactly
+/// [first_block, *finished_end): the result is their state, and
+/// *finished_end (when given) is set to end_block unless the run stopped
+/// early. A checkpoint can record the cut exactly (no block lost or counted
+/// twice).
 StudyAccumulator run_blocks(const StudyConfig& config, const StudyMap& map, std::uint64_t first_block,
-                            std::uint64_t end_block, const ProgressCallback& progress = {});
+                            std::uint64_t end_block, const ProgressCallback& progress = {},
+                            const std::atomic<bool>* stop = nullptr, std::uint64_t* finished_end = nullptr);
 
 inline std::uint64_t block_count(std::uint64_t samples) { return (samples + kBlockSize - 1) / kBlockSize; }
 

@@ -197,9 +197,11 @@ class CounterStream {
 /// Bulk uniforms: out[i * count_per_sample + j] = the j-th uniform01() of
 /// CounterStream(seed, purpose, first_index + i), bit for bit, for
 /// i < n_samples and j < count_per_sample. out.size() must equal
-/// count_per_sample * n_samples. The Philox rounds run over lanes of 16
-/// counters; on x86-64 CPUs with AVX2 a vectorised kernel is chosen at run
-/// time (integer arithmetic only, so the bits do not depend on the kernel).
+/// count_per_sample * n_samples. On x86-64 CPUs with AVX2 a vectorised
+/// kernel (8 samples at a time, one Philox counter per 64-bit lane) is
+/// chosen at run time, else a scalar one; the Philox rounds are integer
+/// arithmetic and the doubles are formed by exact operations, so the bits
+/// do not depend on the kernel.
 void fill_uniform01(std::uint64_t seed, Stream purpose, std::uint64_t first_index,
                     std::size_t count_per_sample, std::size_t n_samples, std::span<double> out);
 

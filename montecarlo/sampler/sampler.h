@@ -4,8 +4,9 @@
 /// `Uncertainties` stream (draw j for parameter j), so sample i's x is a
 /// pure function of (seed, i) and a block of samples is drawn in bulk.
 #include <array>
-#include <optional>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include "lib/uncertainty/uncertainty_model.h"
 #include "montecarlo/random/philox.h"
@@ -17,7 +18,11 @@ class Sampler {
   explicit Sampler(const UncertaintyModel& model);
 
   /// uniforms: n × kDim, sample-major (fill_uniform01 layout);
-  /// x: kDim × n, column-major (one column per sample).
+  /// x: kDim × n, column-major (one column per sample). Bit for bit
+  /// x[s * kDim + j] == transform_one(j, uniforms[s * kDim + j]). The
+  /// uniform parameters go through one vectorised pass (AVX2 when the CPU
+  /// has it); the other kinds are then written parameter by parameter.
+  /// uniforms and x must not overlap.
   void transform(const double* uniforms, std::size_t n, double* x) const;
 
   /// The uncertainty vector of sample `index` alone (for --replay).
@@ -31,6 +36,13 @@ class Sampler {
   std::array<DistributionKind, ux::kDim> kind_;
   std::array<double, ux::kDim> bound_, fixed_;
   std::array<std::optional<TruncatedNormalTransform>, ux::kDim> normal_;
+  /// bound_[j] for uniform parameters, 0 for the others, repeated for
+  /// kScaleSamples samples so a run of whole samples is one flat loop.
+  static constexpr int kScaleSamples = 4;
+  std::array<double, kScaleSamples * ux::kDim> uniform_scale_{};
+  /// The parameters that are not uniform, in increasing order.
+  std::array<int, ux::kDim> other_{};
+  int n_other_ = 0;
 };
 
 }  // namespace insmc::mc

@@ -1,11 +1,16 @@
 #include "tests/cli/run_program.h"
 
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <random>
+#include <spawn.h>
 #include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;  // POSIX: the environment, passed on to spawned programs
 
 namespace insmc::testing {
 
@@ -27,14 +32,45 @@ TempDir::~TempDir() {
   std::filesystem::remove_all(path_, ec);
 }
 
-ProgramResult run_insmc(const std::string& args) {
-  const char* bin = INSMC_BINARY_PATH;  // set by tests/CMakeLists.txt (NEEDS_PROGRAM)
+std::string insmc_path() { return INSMC_BINARY_PATH; }  // set by tests/CMakeLists.txt (NEEDS_PROGRAM)
+
+ProgramResult run_shell(const std::string& command) {
   TempDir io;
   const auto out = io.path() / "out", err = io.path() / "err";
-  const std::string cmd = std::string(bin) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
+  const std::string cmd = command + " >" + out.string() + " 2>" + err.string() + " </dev/null";
   const int status = std::system(cmd.c_str());
   ProgramResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
   return r;
+}
+
+ProgramResult run_insmc(const std::string& args) { return run_shell(insmc_path() + " " + args); }
+
+BackgroundProgram::BackgroundProgram(const std::string& command) {
+  const std::string cmd = "exec " + command + " >" + (io_.path() / "out").string() + " 2>" +
+                          (io_.path() / "err").string() + " </dev/null";
+  const char* argv[] = {"/bin/sh", "-c", cmd.c_str(), nullptr};
+  pid_t pid = -1;
+  if (posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0)
+    throw std::runtime_error("posix_spawn failed: " + command);
+  pid_ = pid;
+}
+
+BackgroundProgram::~BackgroundProgram() {
+  if (pid_ <= 0) return;
+  kill(pid_, SIGKILL);
+  waitpid(pid_, nullptr, 0);
+}
+
+void BackgroundProgram::send(int signal) {
+  if (pid_ > 0) kill(pid_, signal);
+}
+
+ProgramResult BackgroundProgram::wait() {
+  int status = 0;
+  if (pid_ <= 0 || waitpid(pid_, &status, 0) != pid_) throw std::runtime_error("waitpid failed");
+  pid_ = -1;
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
+  return {code, read_file(io_.path() / "out"), read_file(io_.path() / "err")};
 }
 
 }  // namespace insmc::testing

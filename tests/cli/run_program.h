@@ -1,6 +1,7 @@
 #pragma once
 // Runs the built insmc (INSMC_BINARY_PATH, compiled in by CMake) with a shell
-// command line and captures its exit code, stdout and stderr.
+// command line and captures its exit code, stdout and stderr; or starts it in
+// the background, for tests that signal it.
 #include <filesystem>
 #include <string>
 
@@ -14,6 +15,12 @@ struct ProgramResult {
 /// `args` is appended to the program path; it is passed through /bin/sh.
 ProgramResult run_insmc(const std::string& args);
 
+/// The path of the built insmc.
+std::string insmc_path();
+
+/// A whole /bin/sh command line (e.g. insmc under mpirun), run to the end.
+ProgramResult run_shell(const std::string& command);
+
 /// A fresh empty folder under the system temp dir, removed by the destructor.
 class TempDir {
  public:
@@ -24,6 +31,24 @@ class TempDir {
 
  private:
   std::filesystem::path path_;
+};
+
+/// A /bin/sh command line started in the background (`exec`ed, so a signal
+/// reaches the program itself), for tests that interrupt it.
+class BackgroundProgram {
+ public:
+  explicit BackgroundProgram(const std::string& command);
+  /// Kills (SIGKILL) and reaps the program if it is still running.
+  ~BackgroundProgram();
+  BackgroundProgram(const BackgroundProgram&) = delete;
+  BackgroundProgram& operator=(const BackgroundProgram&) = delete;
+  void send(int signal);
+  /// Waits for the end: exit code (128 + signal when killed), stdout, stderr.
+  ProgramResult wait();
+
+ private:
+  TempDir io_;
+  int pid_ = -1;
 };
 
 std::string read_file(const std::filesystem::path& p);

@@ -10,7 +10,7 @@ namespace insmc::effects {
 namespace {
 
 constexpr EffectParameter kParameters[] = {
-    {"accel_rms", Dimension::kAcceleration, 0.05,
+    {"accel_rms", Dimension::kAcceleration, 5.0 * kMgToMps2,
      "RMS of the horizontal sway acceleration per axis", ParameterRange::kNonNegative},
     {"period_min", Dimension::kTime, 2.0, "shortest sway period", ParameterRange::kPositive},
     {"period_max", Dimension::kTime, 20.0, "longest sway period", ParameterRange::kPositive},

@@ -25,19 +25,32 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-// A study small enough for Debug + sanitizers: every scheme (so the test
-// run's quantized measurements, the realignment draws and sway are on the
-// block path), both systems, the three report times, no grid; a partial
-// last block (7 full blocks + 300).
-StudyConfig small_study(Fidelity fidelity = Fidelity::kLinear) {
+// Sizes are chosen for the Debug + sanitizer build, where building a
+// study's maps costs seconds per scheme and system and a block of the test
+// run schemes about a second.
+//
+// The full sample path: schemes none, 5.1.1 (test run + realignment draws)
+// and 5.4 (alignment-phase data), sway on, so the quantized measurements and
+// every random stream are on the block path; one system; 3 blocks, the last
+// partial (2 full + 300).
+StudyConfig full_path_study() {
   StudyConfig c;
-  c.schemes = all_schemes();
-  c.fidelity = fidelity;
+  c.schemes = {Scheme::kNone, Scheme::k5_1_1, Scheme::k5_4};
+  c.systems = {System::kGyrocompass};
+  c.fidelity = Fidelity::kLinear;
   c.with_grid = false;
   c.test.sway.velocity_rms_mps = 0.01;
-  c.samples = 7 * kBlockSize + 300;
+  c.samples = 2 * kBlockSize + 300;
   c.seed = 0x5eed'0000'1234ULL;
   c.threads = 1;
+  return c;
+}
+
+// A cheap study: scheme none, both systems, report times only.
+StudyConfig cheap_study() {
+  StudyConfig c = full_path_study();
+  c.schemes = {Scheme::kNone};
+  c.systems = {System::kTheodolite, System::kGyrocompass};
   return c;
 }
 
@@ -51,38 +64,39 @@ struct Study {
   StudyAccumulator run_all() const { return run(0, block_count(c.samples)); }
 };
 
-// ---------------------------------------------------------------- determinism
-
-TEST(EngineDeterminism, ThreadCountDoesNotChangeTheBytes) {
-  struct Case {
-    const char* name;
-    StudyConfig config;
-  };
-  StudyConfig with_grid = small_study(Fidelity::kPaper);
-  with_grid.with_grid = true;  // envelope grid too: 47 times
-  with_grid.schemes = {Scheme::kNone, Scheme::k5_3};
-  with_grid.samples = 2 * kBlockSize + 5;
-  const std::vector<Case> cases{{"linear, report times", small_study()}, {"paper, with grid", with_grid}};
-  for (const Case& c : cases) {
-    Study study(c.config);
-    study.c.threads = 1;
-    const std::string expected = study.run_all().serialize();
-    for (const int threads : {2, 3, 8}) {
-      study.c.threads = threads;
-      EXPECT_EQ(study.run_all().serialize(), expected) << c.name << ", " << threads << " threads";
-    }
+void expect_same_bytes_for_any_thread_count(Study& study) {
+  study.c.threads = 1;
+  const std::string expected = study.run_all().serialize();
+  for (const int threads : {2, 3, 8}) {
+    study.c.threads = threads;
+    EXPECT_EQ(study.run_all().serialize(), expected) << threads << " threads";
   }
 }
 
+// ---------------------------------------------------------------- determinism
+
+TEST(EngineDeterminism, ThreadCountDoesNotChangeTheBytes) {
+  Study study(full_path_study());
+  ASSERT_EQ(block_count(study.c.samples), 3u);
+  expect_same_bytes_for_any_thread_count(study);
+}
+
+TEST(EngineDeterminism, ThreadCountDoesNotChangeTheBytesPaperWithGrid) {
+  StudyConfig c = cheap_study();
+  c.fidelity = Fidelity::kPaper;
+  c.with_grid = true;  // the envelope grid too: 47 times
+  Study study(c);
+  expect_same_bytes_for_any_thread_count(study);
+}
+
 TEST(EngineDeterminism, RankSplitMergedInAnyOrderEqualsTheSingleRun) {
-  Study study(small_study());
+  Study study(full_path_study());
   study.c.threads = 2;
   const std::uint64_t n_blocks = block_count(study.c.samples);
-  ASSERT_EQ(n_blocks, 8u);
+  ASSERT_EQ(n_blocks, 3u);
   const std::string expected = study.run_all().serialize();
-  // Three "ranks" with unequal contiguous block ranges; the last holds the
-  // partial block.
-  const std::array<StudyAccumulator, 3> parts{study.run(0, 3), study.run(3, 5), study.run(5, n_blocks)};
+  // Three "ranks" of one block each; the last holds the partial block.
+  const std::array<StudyAccumulator, 3> parts{study.run(0, 1), study.run(1, 2), study.run(2, n_blocks)};
   std::array<int, 3> order{0, 1, 2};
   do {
     StudyAccumulator total;  // default-constructed: the merge identity
@@ -103,7 +117,7 @@ TEST(EngineDeterminism, RankSplitMergedInAnyOrderEqualsTheSingleRun) {
 }
 
 TEST(EngineDeterminism, MergeWithAnEmptyAccumulatorIsTheIdentity) {
-  Study study(small_study());
+  Study study(cheap_study());
   const StudyAccumulator acc = study.run(0, 2);
   StudyAccumulator left;
   left.merge(acc);
@@ -119,7 +133,7 @@ TEST(EngineDeterminism, MergeWithAnEmptyAccumulatorIsTheIdentity) {
 // ---------------------------------------------------------------- blocks
 
 TEST(Engine, PartialLastBlockCountsEverySampleOnce) {
-  Study study(small_study());
+  Study study(cheap_study());
   const std::uint64_t n_blocks = block_count(study.c.samples);
   const StudyAccumulator all = study.run_all();
   const StudyAccumulator last = study.run(n_blocks - 1, n_blocks);
@@ -129,14 +143,13 @@ TEST(Engine, PartialLastBlockCountsEverySampleOnce) {
     EXPECT_EQ(last.outputs()[o].count(), 300u) << "output " << o;
   }
   // A study of fewer samples than one block.
-  Study tiny(small_study());
-  tiny.c.samples = 5;
-  const StudyAccumulator t = tiny.run_all();
+  study.c.samples = 5;
+  const StudyAccumulator t = study.run_all();
   for (const OutputStats& s : t.outputs()) EXPECT_EQ(s.count(), 5u);
 }
 
 TEST(Engine, SerializeRoundTrip) {
-  Study study(small_study());
+  Study study(cheap_study());
   const StudyAccumulator acc = study.run(0, 2);
   const std::string bytes = acc.serialize();
   const StudyAccumulator back = StudyAccumulator::deserialize(bytes);
@@ -181,8 +194,8 @@ TEST(EngineReplay, OneSampleBlockMatchesEvaluateSample) {
   // samples = 1024 k + 1 makes block k hold sample 1024 k alone: the
   // engine's min and max of every output are then that sample's value. The
   // engine builds z with the same call as evaluate_sample (one sample), so
-  // every scheme, quantized measurements included, is comparable.
-  Study study(small_study());
+  // the quantized measurements of the test-run schemes are comparable too.
+  Study study(full_path_study());
   const Sampler sampler(study.c.uncertainties);
   for (const std::uint64_t k : {0u, 1u, 6u, 1000u}) {
     study.c.samples = k * kBlockSize + 1;
@@ -207,7 +220,7 @@ TEST(EngineReplay, FullBlockMinMaxAndSumOfSquaresMatchEvaluateSample) {
   // pulse counters' input for the whole block as one matrix product; a
   // rounding difference there can (rarely) move a floor() by a whole pulse,
   // which no rounding tolerance covers.
-  StudyConfig c = small_study();
+  StudyConfig c = full_path_study();
   c.schemes = {Scheme::kNone, Scheme::k5_4};
   Study study(c);
   const Sampler sampler(study.c.uncertainties);

@@ -18,6 +18,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -154,22 +155,33 @@ TEST(CounterStream, DoubleDrawsUseTwoWordsHighFirst) {
 // ---------------------------------------------------------------- bulk == scalar
 
 TEST(FillUniform01, EqualsScalarStreamBitForBit) {
+  // The AVX2 kernel runs tiles of 8 samples (lanes over samples, rounds 0-2
+  // partly shared by a sample's blocks), so the cases cover partial tiles,
+  // odd and even counts, every purpose word (it enters round 0), a sample
+  // index crossing into the high word inside a tile, wrap-around past
+  // 2^64 in the dropped lanes of a partial tile, and the engine's call
+  // (33 uniforms x 1024 samples).
   struct Case {
     std::uint64_t seed;
+    Stream purpose;
     std::uint64_t first_index;
     std::size_t count_per_sample;
     std::size_t n_samples;
   };
-  const std::array<Case, 9> cases{{
-      {1, 0, 1, 1},
-      {1, 0, 2, 1},
-      {2, 5, 3, 7},
-      {3, 100, 7, 17},
-      {4, 0, 16, 16},
-      {5, (1ull << 32) - 3, 5, 9},  // sample index crosses into the high word
-      {6, 12345, 33, 5},
-      {0xffffffffffffffffull, 0xfffffffffffffff0ull, 31, 15},
-      {9, 77, 128, 3},
+  const std::array<Case, 13> cases{{
+      {1, Stream::Uncertainties, 0, 1, 1},
+      {1, Stream::Realignment, 0, 2, 1},
+      {2, Stream::Sway, 5, 3, 7},
+      {3, Stream::PulsePhase, 100, 7, 17},
+      {4, Stream::TruthEffects, 0, 16, 16},
+      {5, Stream::Bootstrap, (1ull << 32) - 3, 5, 9},  // index crosses into the high word
+      {6, Stream::Measurement, 12345, 33, 5},
+      {0xffffffffffffffffull, Stream::Uncertainties, 0xfffffffffffffff0ull, 31, 15},
+      {9, Stream::Sway, 77, 128, 3},
+      {10, Stream::Uncertainties, 7ull << 20, 33, 1024},
+      {11, Stream::Measurement, 999, 33, 13},
+      {0x0123456789abcdefull, Stream::Realignment, 0xfedcba9876543210ull, 34, 11},
+      {12, static_cast<Stream>(0xfffffff0u), (1ull << 32) - 5, 9, 8},
   }};
   using detail::PhiloxKernel;
   int kernels_tested = 0;
@@ -178,16 +190,16 @@ TEST(FillUniform01, EqualsScalarStreamBitForBit) {
     ++kernels_tested;
     for (const Case& c : cases) {
       std::vector<double> bulk(c.count_per_sample * c.n_samples, -1.0);
-      detail::fill_uniform01_with(kernel, c.seed, Stream::Uncertainties, c.first_index,
-                                  c.count_per_sample, c.n_samples, bulk);
+      detail::fill_uniform01_with(kernel, c.seed, c.purpose, c.first_index, c.count_per_sample,
+                                  c.n_samples, bulk);
       for (std::size_t i = 0; i < c.n_samples; ++i) {
-        CounterStream s(c.seed, Stream::Uncertainties, c.first_index + i);
+        CounterStream s(c.seed, c.purpose, c.first_index + i);
         for (std::size_t j = 0; j < c.count_per_sample; ++j) {
           const double scalar = s.uniform01();
           ASSERT_EQ(std::bit_cast<std::uint64_t>(bulk[i * c.count_per_sample + j]),
                     std::bit_cast<std::uint64_t>(scalar))
-              << "kernel " << static_cast<int>(kernel) << " seed " << c.seed << " sample " << i
-              << " draw " << j;
+              << "kernel " << static_cast<int>(kernel) << " seed " << c.seed << " purpose "
+              << static_cast<std::uint32_t>(c.purpose) << " sample " << i << " draw " << j;
         }
       }
     }
@@ -195,6 +207,30 @@ TEST(FillUniform01, EqualsScalarStreamBitForBit) {
   EXPECT_GE(kernels_tested, 1);
   if (!detail::kernel_available(PhiloxKernel::Avx2)) {
     std::cout << "note: no AVX2 on this CPU; only the generic bulk kernel was tested\n";
+  }
+}
+
+TEST(FillUniform01, WritesExactlyItsSpan) {
+  // Partial tiles must not write outside out: guard values on both sides.
+  using detail::PhiloxKernel;
+  for (const PhiloxKernel kernel : {PhiloxKernel::Generic, PhiloxKernel::Avx2}) {
+    if (!detail::kernel_available(kernel)) continue;
+    for (const std::size_t count : {std::size_t{1}, std::size_t{2}, std::size_t{33}}) {
+      for (std::size_t n = 1; n <= 17; ++n) {
+        std::vector<double> buf(count * n + 2 * count + 2, -7.0);
+        detail::fill_uniform01_with(kernel, 3, Stream::Sway, 40, count, n,
+                                    std::span<double>(buf).subspan(count + 1, count * n));
+        for (std::size_t i = 0; i < buf.size(); ++i) {
+          const bool inside = i >= count + 1 && i < count + 1 + count * n;
+          if (inside) {
+            ASSERT_TRUE(buf[i] >= 0.0 && buf[i] < 1.0) << "count " << count << " n " << n;
+          } else {
+            ASSERT_EQ(buf[i], -7.0) << "kernel " << static_cast<int>(kernel) << " count "
+                                    << count << " n " << n << " offset " << i;
+          }
+        }
+      }
+    }
   }
 }
 

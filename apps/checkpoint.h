@@ -1,0 +1,58 @@
+#pragma once
+/// The checkpoint file of `insmc run --checkpoint FILE`: every setting of
+/// the run (its argument list, re-parsed on --resume) and the merged
+/// aggregator state of the finished blocks. Written atomically
+/// (montecarlo/write/atomic_file.h), so a reader sees the previous
+/// checkpoint or the new one, never a mix.
+///
+/// Layout (little-endian; str = u64 length + bytes):
+///   "insmc checkpoint\n", u32 format (kCheckpointFormat), str version,
+///   u64 argc, argc × str, str settings (JSON, for people), u64 fingerprint,
+///   u64 samples, u64 ranges, ranges × (u64 begin, u64 end) finished blocks,
+///   str accumulator state, u64 checksum of everything before it.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "apps/cli_common.h"
+#include "montecarlo/engine/block_ranges.h"
+
+namespace insmc::app {
+
+inline constexpr std::uint32_t kCheckpointFormat = 1;
+
+struct Checkpoint {
+  std::string version;            ///< the insmc that wrote it; --resume needs the same
+  Args args;                      ///< the run's arguments without --checkpoint and --resume
+  std::string settings;           ///< settings JSON of the run, threads 0 (for people)
+  std::uint64_t fingerprint = 0;  ///< of the settings and the study's outputs (checked on resume)
+  std::uint64_t samples = 0;
+  mc::BlockSet done;              ///< finished blocks
+  std::string state;              ///< StudyAccumulator::serialize(), merged over `done`
+};
+
+std::string encode_checkpoint(const Checkpoint& checkpoint);
+
+/// Throws InputError naming `path` and what is wrong: not a checkpoint,
+/// another format or program version, truncated or corrupt (checksum).
+Checkpoint decode_checkpoint(std::string_view bytes, const std::string& path);
+
+/// 64-bit FNV-1a over the bytes (the checksum and fingerprint: detects
+/// corruption, not tampering).
+std::uint64_t fnv1a64(std::string_view bytes);
+
+/// The options of a command line as (name, tokens) pairs: `options` plus the
+/// --help and --config that parse_args adds. Names are canonical (an
+/// abbreviation like --samp is reported as "samples").
+struct GivenOption {
+  std::string name;
+  Args tokens;  ///< as typed: {"--out", "DIR"} or {"--out=DIR"}
+};
+std::vector<GivenOption> given_options(const Args& args, const po::options_description& options);
+
+/// The tokens of `given` without the options named in `drop`.
+Args without_options(const std::vector<GivenOption>& given, const std::vector<std::string>& drop);
+
+}  // namespace insmc::app
