@@ -23,6 +23,8 @@ constexpr Subcommand kSubcommands[] = {
     {"covariance", insmc::app::run_covariance, "exact linear-covariance envelopes and the error budget"},
     {"check", insmc::app::run_check, "statistical bounds for CI: exit 1 when a bound is violated"},
     {"tables", insmc::app::run_tables, "the report's tables beside the values insmc computes"},
+    {"simulate", insmc::app::run_simulate, "truth-level records (format v1) with chosen named effects"},
+    {"effects", insmc::app::run_effects, "the truth simulator's named effects, parameters and defaults"},
     {"params", insmc::app::run_params, "the uncertainty catalogue: names, symbols, units, bounds"},
     {"bench", insmc::app::run_bench, "throughput of the Monte Carlo paths against the machine's floor"},
 };

@@ -15,5 +15,7 @@ int run_run(const Args& args);
 int run_covariance(const Args& args);
 int run_check(const Args& args);
 int run_bench(const Args& args);
+int run_effects(const Args& args);
+int run_simulate(const Args& args);
 
 }  // namespace insmc::app

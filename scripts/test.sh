@@ -21,7 +21,7 @@ run_suite() {  # run_suite BUILD_DIR TIMEOUT [ctest options]: quiet on success, 
 
 bash scripts/build.sh build/test -DCMAKE_BUILD_TYPE=RelWithDebInfo -DINSMC_WERROR=ON
 run_suite build/test 900
-bash scripts/build.sh build/sanitize -DCMAKE_BUILD_TYPE=Debug -DINSMC_WERROR=ON -DINSMC_SANITIZE=ON
+bash scripts/build.sh build/sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DINSMC_WERROR=ON -DINSMC_SANITIZE=ON
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 run_suite build/sanitize 1800
 # The MPI variant: insmc and its MPI tests only (the rest is the same code as
 # build/test), run serially (each test starts up to 3 ranks on the cores).

@@ -20,7 +20,7 @@ TEST(Cli, HelpAndVersion) {
   const auto version = run_insmc("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_EQ(version.out.rfind("insmc ", 0), 0u);
-  for (const char* sub : {"run", "covariance", "check", "tables", "params", "bench"}) {
+  for (const char* sub : {"run", "covariance", "check", "tables", "params", "bench", "simulate", "effects"}) {
     const auto r = run_insmc(std::string(sub) + " --help");
     EXPECT_EQ(r.exit_code, 0) << sub;
     EXPECT_NE(r.out.find("usage: insmc " + std::string(sub)), std::string::npos) << sub;
@@ -144,6 +144,27 @@ TEST(Cli, CheckExitsByTheBoundsVerdict) {
   const auto malformed = run_insmc("check --samples 3000 --bounds " + bad);
   EXPECT_EQ(malformed.exit_code, 2);
   EXPECT_NE(malformed.err.find("bad.txt:1:"), std::string::npos) << malformed.err;
+}
+
+TEST(Cli, SimulateWritesRecordsThatAreDeterministicPerSeed) {
+  TempDir dir;
+  const std::string a = (dir.path() / "a.csv").string(), b = (dir.path() / "b.csv").string();
+  ASSERT_EQ(run_insmc("simulate --runs 2 --seed 3 --effect accel_bias_instability --out " + a).exit_code, 0);
+  ASSERT_EQ(run_insmc("simulate --runs 2 --seed 3 --effect accel_bias_instability --out " + b).exit_code, 0);
+  const std::string text = read_file(a);
+  EXPECT_EQ(text, read_file(b));
+  EXPECT_EQ(text.rfind("# insmc-record v1\n", 0), 0u);
+  EXPECT_NE(text.find("# truth.effect.0=accel_bias_instability:"), std::string::npos);
+  EXPECT_NE(text.find("\n1,6300,nav,"), std::string::npos);  // run 1 ends at T + 90 min
+  const auto effects = run_insmc("effects --format csv");
+  EXPECT_EQ(effects.exit_code, 0);
+  EXPECT_NE(effects.out.find("gyro_drift_instability"), std::string::npos);
+  for (const char* bad : {"--effect no_such_effect", "--effect sway:accel_rms=-1mg", "--runs 0", "--scheme 5.2"}) {
+    const auto r = run_insmc(std::string("simulate ") + bad + " --out " + (dir.path() / "bad.csv").string());
+    EXPECT_EQ(r.exit_code, 2) << bad << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << bad << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "bad.csv")) << bad;
+  }
 }
 
 }  // namespace

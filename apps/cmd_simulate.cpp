@@ -1,0 +1,118 @@
+// insmc simulate: truth-level records (record format v1, DESIGN.md §3) of
+// runs on a stationary base: switch-over, test run, navigation, with chosen
+// named effects. Runs are deterministic per (seed, run).
+#include <cmath>
+#include <fmt/format.h>
+
+#include "apps/cli_common.h"
+#include "apps/study_options.h"
+#include "lib/common/assert.h"
+#include "lib/common/input_error.h"
+#include "lib/records/record_io.h"
+#include "lib/truth/simulator.h"
+#include "lib/units/quantity.h"
+#include "lib/units/units.h"
+#include "montecarlo/random/philox.h"
+#include "montecarlo/sampler/sampler.h"
+#include "montecarlo/write/atomic_file.h"
+
+namespace insmc::app {
+namespace {
+
+/// Effects' normal draws from the counter-based stream of (seed, run):
+/// stream s, counter c → one Philox block → an inverse-CDF normal.
+NormalSource philox_normals(std::uint64_t seed, std::uint64_t run) {
+  return [seed, run](std::uint64_t stream, std::uint64_t counter) {
+    const mc::PhiloxBlock ctr = {static_cast<std::uint32_t>(run), static_cast<std::uint32_t>(run >> 32),
+                                 static_cast<std::uint32_t>(mc::Stream::TruthEffects) + 0x100u * static_cast<std::uint32_t>(stream + 1),
+                                 static_cast<std::uint32_t>(counter)};
+    INSMC_ASSERT(counter < (1ull << 32) && stream < (1ull << 23), "noise draw {} of stream {}", counter, stream);
+    const mc::PhiloxBlock out = mc::philox4x32_10(ctr, mc::philox_key(seed));
+    return mc::inverse_normal_cdf(mc::open_uniform01_from_words(out[0], out[1]));
+  };
+}
+
+}  // namespace
+
+int run_simulate(const Args& args) {
+  po::options_description opts("Options");
+  opts.add_options()("out", po::value<std::string>(), "record file to write (required)")(
+      "runs", po::value<int>()->default_value(20), "number of runs (alignment, test run, navigation), >= 1")(
+      "seed", po::value<std::uint64_t>()->default_value(1), "seed; run i is a pure function of (seed, i)")(
+      "system", po::value<std::string>()->default_value("1"), "alignment system: 1 or 2")(
+      "scheme", po::value<std::string>()->default_value("none"), "compensation scheme (none: uncompensated)")(
+      "nav-duration", po::value<std::string>()->default_value("90min"), "navigation after the test run")(
+      "effect", po::value<std::vector<std::string>>()->composing(),
+      "NAME or NAME:param=value,... (insmc effects), repeatable")(
+      "step", po::value<std::string>()->default_value("5s"), "largest integration step");
+  opts.add(model_options_description());
+  opts.add(test_run_options_description());
+  opts.add(uncertainty_options_description());
+  const auto vm = parse_args(args, "simulate", "--out FILE [--runs N] [--effect NAME[:p=v,...]]... [options]", opts);
+  if (!vm) return 0;
+  if (!vm->count("out")) throw InputError("--out", "(missing)", "give the record file to write");
+  const int runs = (*vm)["runs"].as<int>();
+  if (runs < 1 || runs > 100000) throw InputError("--runs", std::to_string(runs), "must lie in [1, 100000]");
+  const std::uint64_t seed = (*vm)["seed"].as<std::uint64_t>();
+  const System system = parse_system((*vm)["system"].as<std::string>(), "--system");
+  const Scheme scheme = parse_scheme((*vm)["scheme"].as<std::string>());
+  if (scheme != Scheme::kNone)
+    throw InputError("--scheme", std::string(to_string(scheme)),
+                     "the truth simulator does not apply compensation schemes yet; only none is available");
+  const ModelOptions model = read_model_options(*vm, system == System::kGyrocompass);
+  const TestRunOptions test = read_test_run_options(*vm);
+  const UncertaintyModel uncertainties = read_uncertainty_model(*vm);
+  const double nav_s = parse_quantity((*vm)["nav-duration"].as<std::string>(), Dimension::kTime, "--nav-duration");
+  if (!(nav_s > 0) || nav_s > 6 * 3600.0) throw InputError("--nav-duration", format_quantity(nav_s, Dimension::kTime), "must lie in (0, 6h]");
+
+  TruthOptions truth;
+  truth.model = model;
+  truth.system = system;
+  truth.dv_pulse_mps = test.dv_pulse_mps;
+  truth.filter_interval_s = test.filter_interval_s;
+  truth.step_s = parse_quantity((*vm)["step"].as<std::string>(), Dimension::kTime, "--step");
+  if (vm->count("effect"))
+    for (const auto& e : (*vm)["effect"].as<std::vector<std::string>>()) truth.effects.push_back(parse_effect(e, "--effect"));
+  if (const auto err = validate(truth)) throw *err;
+
+  const double T = test.duration_s, tau = test.filter_interval_s;
+  const std::vector<double> times = uniform_times(T + nav_s, tau, false);
+  RecordFile file;
+  file.header = RecordHeader::make(model.latitude_rad / kDegToRad, system, T, scheme);
+  file.header.set("dv_pulse_mps", test.dv_pulse_mps);
+  file.header.set("position_resolution_m", test.position_resolution_m);
+  file.header.set("filter_interval_s", tau);
+  file.header.set("truth.seed", static_cast<double>(seed));
+  for (std::size_t i = 0; i < truth.effects.size(); ++i)
+    file.header.set(fmt::format("truth.effect.{}", i), format_effect(truth.effects[i]));
+  const mc::Sampler sampler(uncertainties);
+  for (int run = 0; run < runs; ++run) {
+    TruthOptions o = truth;
+    double phases[3];
+    mc::fill_uniform01(seed, mc::Stream::PulsePhase, static_cast<std::uint64_t>(run), 3, 1, phases);
+    o.pulse_phase = Vec3(phases[0] - 0.5, phases[1] - 0.5, phases[2] - 0.5);
+    const UncertaintyVector x = sampler.draw(seed, static_cast<std::uint64_t>(run));
+    const TruthRun r = simulate_truth(o, x, times, philox_normals(seed, static_cast<std::uint64_t>(run)));
+    RecordRun out;
+    out.id = run;
+    const double q = test.position_resolution_m;
+    for (std::size_t k = 0; k < r.t_s.size(); ++k) {
+      RecordRow row;
+      row.run = run;
+      row.t_s = r.t_s[k];
+      row.phase = r.t_s[k] <= T + 1e-9 ? Phase::kTest : Phase::kNav;
+      for (int a = 0; a < 3; ++a)
+        if (std::isfinite(r.accel_error_ap_mps2[k][a])) row.f_mps2[a] = r.accel_error_ap_mps2[k][a];
+      Vec3 pos = r.position_error_ap_m[k];
+      if (q > 0)  // the position computer's resolution
+        for (int a = 0; a < 3; ++a) pos[a] = q * std::round(pos[a] / q);
+      row.r_ap_m = pos;
+      out.rows.push_back(row);
+    }
+    file.runs.push_back(std::move(out));
+  }
+  mc::write_file_atomically((*vm)["out"].as<std::string>(), write_record_file(file));
+  return 0;
+}
+
+}  // namespace insmc::app
