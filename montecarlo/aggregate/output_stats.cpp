@@ -44,26 +44,45 @@ OutputStats::OutputStats(double shift, double scale)
       hist_(AbsHistogramLayout::kBins + 1, 0) {}
 
 void OutputStats::add_block(const double* v, std::size_t n) {
-  double sd = 0, sd2 = 0, s2 = 0, s4 = 0, lo = min_, hi = max_;
+  // Four interleaved partial sums (fixed lanes, combined in a fixed order):
+  // the loop vectorises and the result is still a pure function of the block.
+  constexpr std::size_t kLanes = 4;
+  double sd[kLanes] = {}, sd2[kLanes] = {}, s2[kLanes] = {}, s4[kLanes] = {};
+  double lo[kLanes] = {min_, min_, min_, min_}, hi[kLanes] = {max_, max_, max_, max_};
+  const std::size_t body = n - n % kLanes;
+  for (std::size_t i = 0; i < body; i += kLanes) {
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      const double r = v[i + l], d = r - shift_, r2 = r * r;
+      sd[l] += d;
+      sd2[l] += d * d;
+      s2[l] += r2;
+      s4[l] += r2 * r2;
+      lo[l] = std::min(lo[l], r);
+      hi[l] = std::max(hi[l], r);
+    }
+  }
+  for (std::size_t i = body; i < n; ++i) {  // the tail goes to lane i % kLanes
+    const std::size_t l = i % kLanes;
+    const double r = v[i], d = r - shift_, r2 = r * r;
+    sd[l] += d;
+    sd2[l] += d * d;
+    s2[l] += r2;
+    s4[l] += r2 * r2;
+    lo[l] = std::min(lo[l], r);
+    hi[l] = std::max(hi[l], r);
+  }
   constexpr auto kOverflow = static_cast<std::size_t>(AbsHistogramLayout::kBins);
   for (std::size_t i = 0; i < n; ++i) {
-    const double r = v[i], d = r - shift_, r2 = r * r;
-    sd += d;
-    sd2 += d * d;
-    s2 += r2;
-    s4 += r2 * r2;
-    lo = std::min(lo, r);
-    hi = std::max(hi, r);
-    const double pos = std::abs(r) * inv_bin_width_;
+    const double pos = std::abs(v[i]) * inv_bin_width_;
     ++hist_[pos < static_cast<double>(kOverflow) ? static_cast<std::size_t>(pos) : kOverflow];
   }
   n_ += n;
-  sum_d_.add(sd);
-  sum_d2_.add(sd2);
-  sum_r2_.add(s2);
-  sum_r4_.add(s4);
-  min_ = lo;
-  max_ = hi;
+  sum_d_.add((sd[0] + sd[1]) + (sd[2] + sd[3]));
+  sum_d2_.add((sd2[0] + sd2[1]) + (sd2[2] + sd2[3]));
+  sum_r2_.add((s2[0] + s2[1]) + (s2[2] + s2[3]));
+  sum_r4_.add((s4[0] + s4[1]) + (s4[2] + s4[3]));
+  min_ = std::min(std::min(lo[0], lo[1]), std::min(lo[2], lo[3]));
+  max_ = std::max(std::max(hi[0], hi[1]), std::max(hi[2], hi[3]));
 }
 
 void OutputStats::merge(const OutputStats& o) {

@@ -38,8 +38,13 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
   sampler.transform(ws.uniforms.data(), n, ws.x.data());
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
   for (std::size_t j = 0; j < ws.y.size(); ++j) {
-    map.pipeline(static_cast<int>(j)).extended_vectors(first, n, ws.x, ws.z);
-    ws.y[j].topRows(ni).noalias() = ws.z.leftCols(ni).transpose() * map.transposed(static_cast<int>(j));
+    const int sj = static_cast<int>(j);
+    if (map.depends_on_x_only(sj)) {  // z = [x; 0]: the same product on the rows that matter
+      ws.y[j].topRows(ni).noalias() = ws.x.leftCols(ni).transpose() * map.transposed(sj).topRows<ux::kDim>();
+      continue;
+    }
+    map.pipeline(sj).extended_vectors(first, n, ws.x, ws.z);
+    ws.y[j].topRows(ni).noalias() = ws.z.leftCols(ni).transpose() * map.transposed(sj);
   }
   auto& outs = acc.outputs();
   for (std::size_t o = 0; o < outs.size(); ++o) {

@@ -45,6 +45,7 @@ StudyMap::StudyMap(const StudyConfig& c, const StudyLayout& l) : config_(&c), la
       }
     }
     input_map_t_.push_back(pipelines_[j]->covariance_map().transpose() * mt);
+    x_only_.push_back(mt.bottomRows(ez::kDim - ux::kDim).cwiseAbs().maxCoeff() == 0.0);
     map_t_.push_back(std::move(mt));
   }
   // Exact moments of r = s·w + s·E[w] with independent, symmetric inputs w.

@@ -26,6 +26,9 @@ class StudyMap {
   const Eigen::MatrixXd& transposed(int system_j) const { return map_t_[system_j]; }
   /// First row (in transposed(j)) of output o's five rows, and its system.
   int row_base(std::size_t output) const;
+  /// True when system j's outputs depend on x alone (e.g. scheme none): the
+  /// engine then skips the test-run pipeline and multiplies x directly.
+  bool depends_on_x_only(int system_j) const { return x_only_[system_j]; }
   int system_index(std::size_t output) const;
 
   /// Output value from its five row values (sqrt(N² + E²) for horizontal).
@@ -51,6 +54,7 @@ class StudyMap {
   const StudyLayout* layout_;
   std::vector<std::shared_ptr<const SystemPipeline>> pipelines_;
   std::vector<Eigen::MatrixXd> map_t_;
+  std::vector<bool> x_only_;
   std::vector<Eigen::MatrixXd> input_map_t_;  // W × rows: (G^T M^T) per system
   std::vector<double> mean_, rms_, var_r2_, ready_time_s_;
 };
