@@ -49,28 +49,19 @@ void OutputStats::add_block(const double* v, std::size_t n) {
   constexpr std::size_t kLanes = 4;
   double sd[kLanes] = {}, sd2[kLanes] = {}, s2[kLanes] = {}, s4[kLanes] = {};
   double lo[kLanes] = {min_, min_, min_, min_}, hi[kLanes] = {max_, max_, max_, max_};
-  const std::size_t body = n - n % kLanes;
-  for (std::size_t i = 0; i < body; i += kLanes) {
-    for (std::size_t l = 0; l < kLanes; ++l) {
-      const double r = v[i + l], d = r - shift_, r2 = r * r;
-      sd[l] += d;
-      sd2[l] += d * d;
-      s2[l] += r2;
-      s4[l] += r2 * r2;
-      lo[l] = std::min(lo[l], r);
-      hi[l] = std::max(hi[l], r);
-    }
-  }
-  for (std::size_t i = body; i < n; ++i) {  // the tail goes to lane i % kLanes
-    const std::size_t l = i % kLanes;
-    const double r = v[i], d = r - shift_, r2 = r * r;
+  auto accumulate = [&](std::size_t l, double r) {
+    const double d = r - shift_, r2 = r * r;
     sd[l] += d;
     sd2[l] += d * d;
     s2[l] += r2;
     s4[l] += r2 * r2;
     lo[l] = std::min(lo[l], r);
     hi[l] = std::max(hi[l], r);
-  }
+  };
+  const std::size_t body = n - n % kLanes;
+  for (std::size_t i = 0; i < body; i += kLanes)
+    for (std::size_t l = 0; l < kLanes; ++l) accumulate(l, v[i + l]);
+  for (std::size_t i = body; i < n; ++i) accumulate(i % kLanes, v[i]);  // the tail: lane i % kLanes
   constexpr auto kOverflow = static_cast<std::size_t>(AbsHistogramLayout::kBins);
   for (std::size_t i = 0; i < n; ++i) {
     const double pos = std::abs(v[i]) * inv_bin_width_;
