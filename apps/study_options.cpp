@@ -64,7 +64,8 @@ po::options_description study_options_description(bool monte_carlo) {
                   "alignment system(s): 1 (theodolite), 2 (gyrocompassing), or 1,2")(
       "scheme", po::value<std::string>()->default_value("all"), "compensation scheme(s), comma list, or all")(
       "fidelity", po::value<std::string>()->default_value("linear"),
-      "paper (the report's closed forms as printed) or linear (full linear model, report errors corrected)")(
+      "paper (the report's closed forms as printed), linear (full linear model, report errors corrected) or "
+      "truth (the nonlinear simulator per sample; --scheme none)")(
       "confidence", po::value<double>()->default_value(0.95), "confidence level of the RMS intervals, in (0, 1)")(
       "units", po::value<std::string>()->default_value("si"), "si (metres, _m columns) or paper (feet, _ft columns)")(
       "grid-step", po::value<std::string>()->default_value("2min"), "envelope time-grid step")(

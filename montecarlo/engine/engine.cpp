@@ -10,6 +10,8 @@
 #include <tbb/parallel_for.h>
 
 #include "lib/common/assert.h"
+#include "lib/propagation/position_maps.h"
+#include "lib/truth/simulator.h"
 #include "montecarlo/random/philox.h"
 #include "montecarlo/sampler/sampler.h"
 
@@ -29,6 +31,32 @@ struct Workspace {
   std::vector<double> h;
 };
 
+/// Rows (x, y, z, north, east per scheme and time) of system j from the
+/// truth simulator for each sample of the block (scheme none only).
+void truth_rows(const StudyConfig& c, const StudyMap& map, int j, std::uint64_t first, std::size_t n,
+                const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
+  TruthOptions o;
+  o.model = c.model;
+  o.system = c.systems[static_cast<std::size_t>(j)];
+  o.dv_pulse_mps = c.test.dv_pulse_mps;
+  o.filter_interval_s = c.test.filter_interval_s;
+  const std::vector<double>& times = map.layout().times_s;
+  for (std::size_t s = 0; s < n; ++s) {
+    double phase[3];
+    fill_uniform01(c.seed, Stream::PulsePhase, first + s, 3, 1, phase);
+    o.pulse_phase = Vec3(phase[0] - 0.5, phase[1] - 0.5, phase[2] - 0.5);
+    const TruthRun run = simulate_truth(o, x.col(static_cast<Eigen::Index>(s)), times);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      const Vec3& r = run.position_error_ap_m[k];
+      const Eigen::Vector2d ne = local_level_horizontal(times[k], c.model) * r;
+      const Eigen::Index base = kRowsPerMap * static_cast<Eigen::Index>(k), si = static_cast<Eigen::Index>(s);
+      for (int a = 0; a < 3; ++a) y(si, base + a) = r[a];
+      y(si, base + 3) = ne[0];
+      y(si, base + 4) = ne[1];
+    }
+  }
+}
+
 void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler, std::uint64_t block,
                Workspace& ws, StudyAccumulator& acc) {
   const std::uint64_t first = block * kBlockSize;
@@ -39,6 +67,10 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
   for (std::size_t j = 0; j < ws.y.size(); ++j) {
     const int sj = static_cast<int>(j);
+    if (c.fidelity == Fidelity::kTruth) {  // the nonlinear simulator, sample by sample
+      truth_rows(c, map, sj, first, n, ws.x, ws.y[j]);
+      continue;
+    }
     if (map.depends_on_x_only(sj)) {  // z = [x; 0]: the same product on the rows that matter
       ws.y[j].topRows(ni).noalias() = ws.x.leftCols(ni).transpose() * map.transposed(sj).topRows<ux::kDim>();
       continue;

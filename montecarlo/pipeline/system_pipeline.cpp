@@ -35,7 +35,7 @@ SystemPipeline::SystemPipeline(const StudyConfig& c, System system)
   }
   const ModelOptions& m = c.model;
   k_ = test_.intervals();
-  const TestRunMaps maps = test_run_maps(system, c.fidelity, m, test_);
+  const TestRunMaps maps = test_run_maps(system, c.map_fidelity(), m, test_);
   velocity_map_.resize(3 * k_, ux::kDim);
   position_map_.resize(3 * k_, ux::kDim);
   nominal_velocity_.resize(3, k_ + 1);
@@ -47,11 +47,11 @@ SystemPipeline::SystemPipeline(const StudyConfig& c, System system)
     velocity_map_.middleRows<3>(3 * (k - 1)) = maps.velocity_increment[k];
     position_map_.middleRows<3>(3 * (k - 1)) = maps.position_change[k];
   }
-  initial_position_ = c.fidelity == Fidelity::kPaper ? paper_short_run_matrices(system, m).initial_position_m
+  initial_position_ = c.map_fidelity() == Fidelity::kPaper ? paper_short_run_matrices(system, m).initial_position_m
                                                      : LinearErrorModel(system, m).initial_position();
   const Resolvability r = resolvable_terms(system, m, test_, c.uncertainties);
   est_ = make_estimators(test_, m, r.u3, r.u4);
-  const Sensitivity3 steady = steady_state(system, c.fidelity, m);
+  const Sensitivity3 steady = steady_state(system, c.map_fidelity(), m);
   torquer_map_ = torquer_commands(steady, m);
   align_accel_map_ = alignment_accelerometer_outputs(steady, m);
   const double w = m.earth_rate_radps;

@@ -15,8 +15,12 @@ namespace insmc::mc {
 struct StudyConfig {
   std::vector<System> systems = {System::kTheodolite, System::kGyrocompass};
   std::vector<Scheme> schemes = all_schemes();
-  /// paper (the report's closed forms) or linear (the corrected linear model).
+  /// paper (the report's closed forms), linear (the corrected linear model)
+  /// or truth (the nonlinear simulator, per sample; scheme none so far).
   Fidelity fidelity = Fidelity::kLinear;
+  /// The linear-in-x level that gives the maps and the covariance prediction
+  /// (for truth: linear, the reference the truth level is compared with).
+  Fidelity map_fidelity() const { return fidelity == Fidelity::kTruth ? Fidelity::kLinear : fidelity; }
   ModelOptions model;
   UncertaintyModel uncertainties;
   /// The preflight test run, its measurements and the realignment (chapter 4, 5).

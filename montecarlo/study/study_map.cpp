@@ -30,13 +30,13 @@ StudyMap::StudyMap(const StudyConfig& c, const StudyLayout& l) : config_(&c), la
   const int n_schemes = static_cast<int>(c.schemes.size());
   for (System s : c.systems) pipelines_.push_back(std::make_shared<const SystemPipeline>(c, s));
   for (int i = 0; i < n_schemes; ++i) {
-    const SchemeMaps probe = scheme_position_maps(c.schemes[i], c.systems[0], c.fidelity, c.model, c.test, {0.0});
+    const SchemeMaps probe = scheme_position_maps(c.schemes[i], c.systems[0], c.map_fidelity(), c.model, c.test, {0.0});
     ready_time_s_.push_back(probe.ready_time_s);
   }
   for (int j = 0; j < l.n_systems; ++j) {
     Eigen::MatrixXd mt(ez::kDim, kRowsPerMap * n_schemes * l.n_times);
     for (int i = 0; i < n_schemes; ++i) {
-      const SchemeMaps maps = scheme_position_maps(c.schemes[i], c.systems[j], c.fidelity, c.model, c.test, l.times_s);
+      const SchemeMaps maps = scheme_position_maps(c.schemes[i], c.systems[j], c.map_fidelity(), c.model, c.test, l.times_s);
       for (int k = 0; k < l.n_times; ++k) {
         const int base = kRowsPerMap * (i * l.n_times + k);
         const Eigen::Matrix<double, 2, 3> h = local_level_horizontal(maps.frame_time_offset_s + l.times_s[k], c.model);

@@ -146,6 +146,18 @@ TEST(Cli, CheckExitsByTheBoundsVerdict) {
   EXPECT_NE(malformed.err.find("bad.txt:1:"), std::string::npos) << malformed.err;
 }
 
+TEST(Cli, TruthFidelityRunsAndIsIdenticalForAnyThreadCount) {
+  const std::string common = "run --fidelity truth --scheme none --samples 1500 --grid-step 30min --format csv";
+  const auto one = run_insmc(common + " --threads 1");
+  const auto two = run_insmc(common + " --threads 2");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_EQ(one.out, two.out);
+  EXPECT_NE(one.out.find("none,2,switchover,horizontal,84,1500,"), std::string::npos);
+  const auto refused = run_insmc("run --fidelity truth --scheme 5.2 --samples 10");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("--scheme = 5.2"), std::string::npos) << refused.err;
+}
+
 TEST(Cli, SimulateWritesRecordsThatAreDeterministicPerSeed) {
   TempDir dir;
   const std::string a = (dir.path() / "a.csv").string(), b = (dir.path() / "b.csv").string();
