@@ -66,6 +66,7 @@
 #include "lib/compensation/scheme.h"
 #include "lib/uncertainty/catalogue.h"
 #include "montecarlo/engine/engine.h"
+#include "tests/statistical/r2_check.h"
 #include "montecarlo/sampler/sampler.h"
 
 namespace insmc::mc {
@@ -117,26 +118,15 @@ StudyConfig measured_config(Fidelity fidelity, std::uint64_t seed, std::uint64_t
   return c;
 }
 
-std::string describe(const StudyLayout& l, std::size_t o) {
-  const OutputSpec& s = l.outputs[o];
-  return fmt::format("scheme {}, system {}, t = {} min, {}", to_string(s.scheme), system_number(s.system),
-                     std::lround(l.times_s[static_cast<std::size_t>(s.time_index)] / 60), to_string(s.axis));
-}
 
-struct R2Check {
-  double deviation, bound;
-  bool pass() const { return std::fabs(deviation) <= bound; }
-};
+using testing::describe;
+using testing::R2Check;
 R2Check r2_check(const OutputStats& s, const StudyMap& exact, std::size_t o) {
-  const double n = static_cast<double>(s.count());
-  const double e_r2 = exact.predicted_rms()[o] * exact.predicted_rms()[o];
-  return {s.sum_squares() / n - e_r2, kZ * std::sqrt(exact.predicted_var_r2()[o] / n)};
+  return testing::r2_check(s, exact, o, kZ);
 }
 
 double two_sided_power(double shift, double sd_null, double sd_alt) {
-  const boost::math::normal nd;
-  return boost::math::cdf(nd, (-kZ * sd_null - shift) / sd_alt) +
-         boost::math::cdf(boost::math::complement(nd, (kZ * sd_null - shift) / sd_alt));
+  return testing::two_sided_power(shift, sd_null, sd_alt, kZ);
 }
 
 StudyAccumulator run(const Study& st) { return run_blocks(st.c, st.map, 0, block_count(st.c.samples)); }

@@ -42,6 +42,7 @@
 #include "lib/compensation/scheme.h"
 #include "lib/uncertainty/catalogue.h"
 #include "montecarlo/engine/engine.h"
+#include "tests/statistical/r2_check.h"
 
 namespace insmc::mc {
 namespace {
@@ -90,30 +91,15 @@ StudyConfig mixed_config(std::uint64_t seed) {
   return c;
 }
 
-std::string describe(const StudyLayout& l, std::size_t o) {
-  const OutputSpec& s = l.outputs[o];
-  return "system " + std::to_string(system_number(s.system)) + ", t = " +
-         std::to_string(std::lround(l.times_s[static_cast<std::size_t>(s.time_index)] / 60)) + " min, " +
-         std::string(to_string(s.axis));
-}
 
-// |m̂2 − E r²| ≤ z sqrt(Var(r²)/n) for output o, with the moments of `exact`.
-struct R2Check {
-  double deviation, bound;
-  bool pass() const { return std::fabs(deviation) <= bound; }
-};
+using testing::describe;
+using testing::R2Check;
 R2Check r2_check(const OutputStats& s, const StudyMap& exact, std::size_t o) {
-  const double n = static_cast<double>(s.count());
-  const double e_r2 = exact.predicted_rms()[o] * exact.predicted_rms()[o];
-  return {s.sum_squares() / n - e_r2, kZ * std::sqrt(exact.predicted_var_r2()[o] / n)};
+  return testing::r2_check(s, exact, o, kZ);
 }
 
-// Power of the two-sided check when the statistic is N(shift, sd_alt²) and it
-// rejects outside ±z sd_null.
 double two_sided_power(double shift, double sd_null, double sd_alt) {
-  const boost::math::normal nd;
-  return boost::math::cdf(nd, (-kZ * sd_null - shift) / sd_alt) +
-         boost::math::cdf(boost::math::complement(nd, (kZ * sd_null - shift) / sd_alt));
+  return testing::two_sided_power(shift, sd_null, sd_alt, kZ);
 }
 
 StudyAccumulator run(const Study& st) { return run_blocks(st.c, st.map, 0, block_count(st.c.samples)); }
