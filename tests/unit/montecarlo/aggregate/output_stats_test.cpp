@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "montecarlo/random/philox.h"
+#include "tests/unit/montecarlo/aggregate/permutation.h"
 
 namespace insmc::mc {
 namespace {
@@ -71,15 +72,7 @@ OutputStats one_pass(const std::vector<double>& v, double shift, double scale, s
   return s;
 }
 
-std::vector<std::size_t> permutation(std::size_t n, CounterStream& rng) {
-  std::vector<std::size_t> p(n);
-  std::iota(p.begin(), p.end(), std::size_t{0});
-  for (std::size_t i = n; i > 1; --i) {
-    const auto j = static_cast<std::size_t>(rng.uniform01() * static_cast<double>(i));
-    std::swap(p[i - 1], p[j]);
-  }
-  return p;
-}
+using testing::permutation;
 
 // ---------------------------------------------------------------- merge
 
