@@ -12,27 +12,11 @@
 #include "lib/truth/simulator.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
-#include "montecarlo/random/philox.h"
+#include "montecarlo/gap/record_simulation.h"
 #include "montecarlo/sampler/sampler.h"
 #include "montecarlo/write/atomic_file.h"
 
 namespace insmc::app {
-namespace {
-
-/// Effects' normal draws from the counter-based stream of (seed, run):
-/// stream s, counter c → one Philox block → an inverse-CDF normal.
-NormalSource philox_normals(std::uint64_t seed, std::uint64_t run) {
-  return [seed, run](std::uint64_t stream, std::uint64_t counter) {
-    const mc::PhiloxBlock ctr = {static_cast<std::uint32_t>(run), static_cast<std::uint32_t>(run >> 32),
-                                 static_cast<std::uint32_t>(mc::Stream::TruthEffects) + 0x100u * static_cast<std::uint32_t>(stream + 1),
-                                 static_cast<std::uint32_t>(counter)};
-    INSMC_ASSERT(counter < (1ull << 32) && stream < (1ull << 23), "noise draw {} of stream {}", counter, stream);
-    const mc::PhiloxBlock out = mc::philox4x32_10(ctr, mc::philox_key(seed));
-    return mc::inverse_normal_cdf(mc::open_uniform01_from_words(out[0], out[1]));
-  };
-}
-
-}  // namespace
 
 int run_simulate(const Args& args) {
   po::options_description opts("Options");
@@ -86,31 +70,9 @@ int run_simulate(const Args& args) {
   for (std::size_t i = 0; i < truth.effects.size(); ++i)
     file.header.set(fmt::format("truth.effect.{}", i), format_effect(truth.effects[i]));
   const mc::Sampler sampler(uncertainties);
-  for (int run = 0; run < runs; ++run) {
-    TruthOptions o = truth;
-    double phases[3];
-    mc::fill_uniform01(seed, mc::Stream::PulsePhase, static_cast<std::uint64_t>(run), 3, 1, phases);
-    o.pulse_phase = Vec3(phases[0] - 0.5, phases[1] - 0.5, phases[2] - 0.5);
-    const UncertaintyVector x = sampler.draw(seed, static_cast<std::uint64_t>(run));
-    const TruthRun r = simulate_truth(o, x, times, philox_normals(seed, static_cast<std::uint64_t>(run)));
-    RecordRun out;
-    out.id = run;
-    const double q = test.position_resolution_m;
-    for (std::size_t k = 0; k < r.t_s.size(); ++k) {
-      RecordRow row;
-      row.run = run;
-      row.t_s = r.t_s[k];
-      row.phase = r.t_s[k] <= T + 1e-9 ? Phase::kTest : Phase::kNav;
-      for (int a = 0; a < 3; ++a)
-        if (std::isfinite(r.accel_error_ap_mps2[k][a])) row.f_mps2[a] = r.accel_error_ap_mps2[k][a];
-      Vec3 pos = r.position_error_ap_m[k];
-      if (q > 0)  // the position computer's resolution
-        for (int a = 0; a < 3; ++a) pos[a] = q * std::round(pos[a] / q);
-      row.r_ap_m = pos;
-      out.rows.push_back(row);
-    }
-    file.runs.push_back(std::move(out));
-  }
+  const mc::RecordRunSpec spec{T, test.position_resolution_m};
+  for (int run = 0; run < runs; ++run)
+    file.runs.push_back(mc::simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(run), times, spec));
   mc::write_file_atomically((*vm)["out"].as<std::string>(), write_record_file(file));
   return 0;
 }

@@ -17,5 +17,8 @@ int run_check(const Args& args);
 int run_bench(const Args& args);
 int run_effects(const Args& args);
 int run_simulate(const Args& args);
+int run_gap(const Args& args);
+int run_gap_validate(const Args& args);
+int run_import_imu(const Args& args);
 
 }  // namespace insmc::app

@@ -71,6 +71,13 @@ std::vector<Sensitivity3> integrate_schuler_ode(const Forcing& forcing, const Se
                                                 double schuler_radps, double max_step_s = 2.0,
                                                 double t_start_s = 0.0);
 
+/// The same ODE for any 3-row map type (e.g. Eigen::Matrix<double, 3,
+/// Eigen::Dynamic> for responses to other inputs than the uncertainties).
+template <class Map, class Forcing>
+std::vector<Map> integrate_schuler_maps(const Forcing& forcing, const Map& r0_map, const Map& v0_map,
+                                        const std::vector<double>& times_s, double schuler_radps,
+                                        double max_step_s, double t_start_s = 0.0);
+
 /// Convenience: S(t) of the linear model at the given times.
 std::vector<Sensitivity3> linear_position_maps(const LinearErrorModel& model,
                                                const std::vector<double>& times_s,

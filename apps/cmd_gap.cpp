@@ -1,0 +1,63 @@
+// insmc gap: the sim-to-real gap diagnosis of record files (DESIGN.md §3,
+// issue 7): the gap and its significance, where it lies, which candidate
+// effect removes it on held-out runs, and how far it shrinks.
+#include <fmt/format.h>
+
+#include "apps/cli_common.h"
+#include "apps/study_options.h"
+#include "lib/common/input_error.h"
+#include "lib/records/record_io.h"
+#include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/gap/report.h"
+
+namespace insmc::app {
+
+int run_gap(const Args& args) {
+  po::options_description opts("Options");
+  opts.add_options()("records", po::value<std::vector<std::string>>()->composing(),
+                     "record file (format v1), repeatable; all of one site")(
+      "out", po::value<std::string>(), "folder for gap.md, its plots and gap.json")(
+      "format", po::value<std::string>()->default_value("markdown"), "what to print: markdown or json")(
+      "alpha", po::value<double>()->default_value(0.01), "false-alarm rate of a significant gap, (0, 0.5)")(
+      "seed", po::value<std::uint64_t>()->default_value(1), "seed of the null runs and the resampling")(
+      "calibration-runs", po::value<int>()->default_value(0), "null runs (0: max(200, 10 x runs))")(
+      "max-effects", po::value<int>()->default_value(3), "effects added greedily at most, >= 1");
+  opts.add(uncertainty_options_description());
+  const auto vm = parse_args(args, "gap", "--records FILE [--records FILE...] [--out DIR] [--format json]", opts);
+  if (!vm) return 0;
+  if (!vm->count("records")) throw InputError("--records", "(missing)", "give at least one record file");
+  const OutputFormat format = parse_output_format((*vm)["format"].as<std::string>());
+  if (format == OutputFormat::kCsv) throw InputError("--format", "csv", "gap prints markdown or json");
+  mc::DiagnosisOptions options;
+  options.alpha = (*vm)["alpha"].as<double>();
+  if (!(options.alpha > 0 && options.alpha < 0.5))
+    throw InputError("--alpha", fmt::format("{}", options.alpha), "must lie in (0, 0.5)");
+  options.seed = (*vm)["seed"].as<std::uint64_t>();
+  options.calibration_runs = (*vm)["calibration-runs"].as<int>();
+  if (options.calibration_runs < 0 || options.calibration_runs > 100000)
+    throw InputError("--calibration-runs", std::to_string(options.calibration_runs), "must lie in [0, 100000]");
+  if (options.calibration_runs > 0 && options.calibration_runs < 50)
+    throw InputError("--calibration-runs", std::to_string(options.calibration_runs), "use 0 (automatic) or >= 50");
+  options.max_selected = (*vm)["max-effects"].as<int>();
+  if (options.max_selected < 1 || options.max_selected > 5)
+    throw InputError("--max-effects", std::to_string(options.max_selected), "must lie in [1, 5]");
+  options.prior = read_uncertainty_model(*vm);
+
+  const std::vector<std::string> names = (*vm)["records"].as<std::vector<std::string>>();
+  std::vector<RecordFile> files;
+  for (const std::string& name : names) files.push_back(without_truth(read_record_file(name)));
+  const RecordFile merged = mc::merge_record_files(files, names);
+  const mc::Diagnosis d = mc::diagnose(merged, options);
+
+  const std::string json = mc::diagnosis_json(d, names).dump(2) + "\n";
+  std::vector<std::pair<std::string, std::string>> report = mc::diagnosis_report(d, names);
+  if (vm->count("out")) {
+    OutputFiles files_out(report.begin(), report.end());
+    files_out.emplace_back("gap.json", json);
+    write_output_files((*vm)["out"].as<std::string>(), files_out);
+  }
+  fmt::print("{}", format == OutputFormat::kJson ? json : report.front().second);
+  return 0;
+}
+
+}  // namespace insmc::app

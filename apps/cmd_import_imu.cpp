@@ -1,0 +1,183 @@
+// insmc import-imu: raw IMU samples (CSV) → records of format v1 (DESIGN.md
+// §3, issue 7). A strapdown computer in the inertial frame on a stationary
+// base stands in for the space-stabilized platform (lib/imu/strapdown.h):
+// leveling from the accelerometers, azimuth and latitude from the user,
+// gyro bias from the alignment window, then test run and navigation.
+#include <cmath>
+#include <fmt/format.h>
+#include <sstream>
+
+#include "apps/cli_common.h"
+#include "lib/common/input_error.h"
+#include "lib/imu/imu_samples.h"
+#include "lib/imu/strapdown.h"
+#include "lib/records/record_io.h"
+#include "lib/units/quantity.h"
+#include "lib/units/units.h"
+#include "montecarlo/write/atomic_file.h"
+
+namespace insmc::app {
+namespace {
+
+/// "a,b,c" → three column names (blanks around names dropped).
+std::array<std::string, 3> parse_three_columns(const std::string& text, const char* field) {
+  std::array<std::string, 3> out;
+  std::stringstream in(text);
+  std::string item;
+  int n = 0;
+  while (std::getline(in, item, ',')) {
+    const auto first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
+    if (n < 3) out[n] = first == std::string::npos ? "" : item.substr(first, last - first + 1);
+    ++n;
+  }
+  if (n != 3 || (!text.empty() && text.back() == ','))
+    throw InputError(field, text, "must be three column names X,Y,Z separated by commas");
+  return out;
+}
+
+enum class RunsFrom { kFile, kSplit };
+
+RunsFrom parse_runs_from(const std::string& text) {
+  if (text == "file") return RunsFrom::kFile;
+  if (text == "split") return RunsFrom::kSplit;
+  throw InputError("--runs-from", text,
+                   "must be file (one run from the start of each input) or split (consecutive runs of "
+                   "alignment + test + navigation from each input)");
+}
+
+std::string join_columns(const std::array<std::string, 3>& c) { return fmt::format("{},{},{}", c[0], c[1], c[2]); }
+
+}  // namespace
+
+int run_import_imu(const Args& args) {
+  po::options_description opts("Options");
+  opts.add_options()("input", po::value<std::vector<std::string>>()->composing(),
+                     "IMU CSV file (plain text; gunzip first), repeatable: runs in the given order")(
+      "out", po::value<std::string>(), "record file to write (required)")(
+      "runs-from", po::value<std::string>()->default_value("file"),
+      "file: one run from the start of each input; split: consecutive runs of align + test + nav")(
+      "rate", po::value<std::string>(), "sample rate, e.g. 100Hz (sample k at k/rate); or --time-column")(
+      "time-column", po::value<std::string>(), "column with the sample times (instead of --rate)")(
+      "time-unit", po::value<std::string>()->default_value("s"), "unit of the time column: s, ms, min, h")(
+      "gyro-columns", po::value<std::string>()->default_value("gyro_x_dps,gyro_y_dps,gyro_z_dps"),
+      "gyro columns of the sensor x,y,z axes")(
+      "accel-columns", po::value<std::string>()->default_value("acc_x_g,acc_y_g,acc_z_g"),
+      "accelerometer columns of the sensor x,y,z axes")(
+      "gyro-unit", po::value<std::string>()->default_value("deg/s"), "unit of the gyro columns: deg/s, rad/s, deg/h")(
+      "accel-unit", po::value<std::string>()->default_value("g"), "unit of the accelerometer columns: g, m/s2")(
+      "latitude", po::value<std::string>(), "latitude L0 of the site (required, e.g. 51.08deg)")(
+      "altitude", po::value<std::string>()->default_value("0m"), "height of the site above the model sphere r0")(
+      "azimuth", po::value<std::string>()->default_value("0deg"),
+      "heading of the sensor x axis from north, positive toward east (system 1's theodolite)")(
+      "align-duration", po::value<std::string>()->default_value("300s"),
+      "alignment window before t = 0: leveling and gyro-bias estimate")(
+      "test-duration", po::value<std::string>()->default_value("15min"), "test run T after the switch to navigation")(
+      "nav-duration", po::value<std::string>()->default_value("90min"), "navigation after the test run")(
+      "interval", po::value<std::string>()->default_value("10s"),
+      "output interval, also the filter interval tau of the accelerometer error f")(
+      "gyro-bias", po::value<std::string>()->default_value("remove"),
+      "remove: subtract the gyro bias estimated during alignment; keep: navigate on the raw gyros");
+  const auto vm = parse_args(args, "import-imu",
+                             "--input FILE [--input FILE]... --out FILE --latitude ANGLE (--rate RATE | "
+                             "--time-column NAME) [options]",
+                             opts);
+  if (!vm) return 0;
+  if (!vm->count("input")) throw InputError("--input", "(missing)", "give at least one IMU CSV file");
+  if (!vm->count("out")) throw InputError("--out", "(missing)", "give the record file to write");
+  if (!vm->count("latitude"))
+    throw InputError("--latitude", "(missing)",
+                     "give the site's latitude (e.g. 51.08deg): the earth rate the gyros sense and the expected "
+                     "gravity depend on it");
+  const auto q = [&](const char* name, Dimension d) {
+    return parse_quantity((*vm)[name].as<std::string>(), d, std::string("--") + name);
+  };
+
+  ImuCsvOptions csv;
+  csv.gyro_columns = parse_three_columns((*vm)["gyro-columns"].as<std::string>(), "--gyro-columns");
+  csv.accel_columns = parse_three_columns((*vm)["accel-columns"].as<std::string>(), "--accel-columns");
+  csv.gyro_unit = parse_gyro_unit((*vm)["gyro-unit"].as<std::string>(), "--gyro-unit");
+  csv.accel_unit = parse_accel_unit((*vm)["accel-unit"].as<std::string>(), "--accel-unit");
+  if (!vm->count("rate") && !vm->count("time-column"))
+    throw InputError("--rate", "(missing)", "give the sample rate (e.g. 100Hz) or a time column with --time-column");
+  if (vm->count("rate")) csv.rate_hz = parse_rate_hz((*vm)["rate"].as<std::string>(), "--rate");
+  if (vm->count("time-column")) {
+    csv.time_column = (*vm)["time-column"].as<std::string>();
+    const std::string unit = (*vm)["time-unit"].as<std::string>();
+    try {  // the time units of parse_quantity, named without a number
+      csv.time_unit_s = parse_quantity("1" + unit, Dimension::kTime, "--time-unit");
+    } catch (const InputError&) {
+      throw InputError("--time-unit", unit, "must be one of: s, min, h, ms");
+    }
+  }
+  if (auto e = validate(csv)) throw *e;
+
+  StrapdownOptions nav;
+  nav.latitude_rad = q("latitude", Dimension::kAngle);
+  nav.altitude_m = q("altitude", Dimension::kLength);
+  nav.azimuth_rad = q("azimuth", Dimension::kAngle);
+  nav.align_duration_s = q("align-duration", Dimension::kTime);
+  nav.test_duration_s = q("test-duration", Dimension::kTime);
+  nav.nav_duration_s = q("nav-duration", Dimension::kTime);
+  nav.output_interval_s = q("interval", Dimension::kTime);
+  nav.gyro_bias = parse_gyro_bias_mode((*vm)["gyro-bias"].as<std::string>(), "--gyro-bias");
+  if (auto e = validate(nav)) throw *e;
+  const RunsFrom runs_from = parse_runs_from((*vm)["runs-from"].as<std::string>());
+
+  RecordFile file;
+  file.header = RecordHeader::make(nav.latitude_rad / kDegToRad, System::kTheodolite, nav.test_duration_s, Scheme::kNone);
+  file.header.set(kKeyDvPulseMps, 0.0);  // continuous accelerometer output
+  file.header.set(kKeyPositionResolutionM, 0.0);
+  file.header.set("filter_interval_s", nav.output_interval_s);
+  // Informational (imu.*): how the records were made.
+  file.header.set("imu.gyro_unit", std::string(to_string(csv.gyro_unit)));
+  file.header.set("imu.accel_unit", std::string(to_string(csv.accel_unit)));
+  file.header.set("imu.gyro_columns", join_columns(csv.gyro_columns));
+  file.header.set("imu.accel_columns", join_columns(csv.accel_columns));
+  if (csv.time_column.empty())
+    file.header.set("imu.rate_hz", csv.rate_hz);
+  else
+    file.header.set("imu.time_column", csv.time_column);
+  file.header.set("imu.altitude_m", nav.altitude_m);
+  file.header.set("imu.azimuth_deg", nav.azimuth_rad / kDegToRad);
+  file.header.set("imu.align_duration_s", nav.align_duration_s);
+  file.header.set("imu.nav_duration_s", nav.nav_duration_s);
+  file.header.set("imu.gyro_bias", std::string(to_string(nav.gyro_bias)));
+  file.header.set("imu.runs_from", std::string(runs_from == RunsFrom::kFile ? "file" : "split"));
+  file.header.set("imu.site_gravity_mps2", stationary_site(nav).gravity_mps2);
+
+  const double T = nav.test_duration_s;
+  std::int64_t run_id = 0;
+  for (const std::string& input : (*vm)["input"].as<std::vector<std::string>>()) {
+    const ImuSamples samples = read_imu_csv(input, csv);
+    const int runs = runs_from == RunsFrom::kFile ? 1 : std::max(1, runs_available(samples, nav));
+    for (int j = 0; j < runs; ++j, ++run_id) {
+      const StrapdownRun r = run_strapdown(samples, j * nav.run_duration_s(), nav);
+      const std::string key = fmt::format("imu.run{}.", run_id);
+      file.header.set(key + "source", input);
+      file.header.set(key + "switch_time_s", r.switch_time_s);
+      const StrapdownAlignment& a = r.alignment;
+      for (int k = 0; k < 3; ++k)
+        file.header.set(fmt::format("{}gyro_bias_{}_radps", key, "xyz"[k]), a.gyro_bias_b_radps[k]);
+      file.header.set(key + "accel_magnitude_mps2", a.mean_accel_b_mps2.norm());
+      file.header.set(key + "roll_deg", a.roll_rad / kDegToRad);
+      file.header.set(key + "pitch_deg", a.pitch_rad / kDegToRad);
+      RecordRun out;
+      out.id = run_id;
+      for (std::size_t k = 0; k < r.t_s.size(); ++k) {
+        RecordRow row;
+        row.run = run_id;
+        row.t_s = r.t_s[k];
+        row.phase = r.t_s[k] <= T ? Phase::kTest : Phase::kNav;  // (DESIGN.md §3: test for 0 ≤ t ≤ T)
+        for (int c = 0; c < 3; ++c)
+          if (std::isfinite(r.accel_error_ap_mps2[k][c])) row.f_mps2[c] = r.accel_error_ap_mps2[k][c];
+        row.r_ap_m = r.position_error_ap_m[k];
+        out.rows.push_back(row);
+      }
+      file.runs.push_back(std::move(out));
+    }
+  }
+  mc::write_file_atomically((*vm)["out"].as<std::string>(), write_record_file(file));
+  return 0;
+}
+
+}  // namespace insmc::app

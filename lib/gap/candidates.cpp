@@ -1,0 +1,441 @@
+#include "lib/gap/candidates.h"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <numbers>
+
+#include "lib/frames/frames.h"
+#include "lib/gap/response.h"
+#include "lib/units/units.h"
+
+namespace insmc::gap {
+namespace {
+
+constexpr double kUg = 1e-6 * kGravityMps2;  // µg in m/s²
+
+std::vector<double> scaled(std::initializer_list<double> values, double unit) {
+  std::vector<double> out;
+  for (double v : values) out.push_back(v * unit);
+  return out;
+}
+
+double layout_end(const Layout& layout) {
+  double end = 0.0;
+  for (const ObservationRow& r : layout.rows) end = std::max(end, r.t_s);
+  return end;
+}
+
+/// Knots t_j = j Δ, j = 1..K, covering the run (the value at 0 is the
+/// alignment's: processes enter as changes since switch-over).
+std::vector<double> knots(const Layout& layout, double spacing_s) {
+  std::vector<double> k;
+  const double end = layout_end(layout);
+  for (double t = spacing_s; t < end + spacing_s; t += spacing_s) k.push_back(t);
+  return k;
+}
+
+/// Knot spacing for a process of correlation time tau (0: random walk):
+/// a third of tau resolves a Gauss–Markov process, within bounds that keep
+/// the model small.
+double knot_spacing(double tau) {
+  return tau > 0 ? std::clamp(tau / 3.0, kMinKnotSpacingS, kKnotSpacingS) : kKnotSpacingS;
+}
+
+/// Hat function of knot t_j (spacing d) and its integral from 0 to t.
+double hat(double t, double tj, double d) { return std::max(0.0, 1.0 - std::abs(t - tj) / d); }
+double hat_integral(double t, double tj, double d) {
+  const double a = tj - d;
+  if (t <= a) return 0.0;
+  if (t <= tj) return (t - a) * (t - a) / (2 * d);
+  if (t <= tj + d) return d / 2 + (t - tj) - (t - tj) * (t - tj) / (2 * d);
+  return d;
+}
+
+/// Covariance of the change since 0 of a unit process at s and t:
+/// random walk (tau 0, unit variance after 1 h) or Gauss–Markov (unit σ).
+double change_covariance(double s, double t, double tau) {
+  if (tau <= 0) return std::min(s, t) / 3600.0;
+  return std::exp(-std::abs(s - t) / tau) - std::exp(-s / tau) - std::exp(-t / tau) + 1.0;
+}
+
+enum class Drive { kAccel, kAngle, kRate, kVelocity };
+
+/// Unit response (rows × 3K) of a process on the knots, per axis, already
+/// multiplied by the Cholesky factor of its knot covariance: the coefficients
+/// are independent with variance σ².
+Eigen::MatrixXd process_columns(const LayoutContext& ctx, Drive drive, double tau) {
+  const std::string key = "process" + std::to_string(static_cast<int>(drive)) + ":" + std::to_string(tau);
+  if (auto it = ctx.cache.find(key); it != ctx.cache.end()) return it->second;
+  const double d = knot_spacing(tau);
+  const std::vector<double> tk = knots(*ctx.layout, d);
+  const int K = static_cast<int>(tk.size());
+  Eigen::MatrixXd cov(K, K);
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < K; ++j) cov(i, j) = change_covariance(tk[i], tk[j], tau);
+  cov.diagonal().array() += 1e-12 * cov.diagonal().maxCoeff();
+  const Eigen::MatrixXd L = cov.llt().matrixL();
+  InputSignal in;
+  in.columns = 3 * K;
+  in.f_responds = drive != Drive::kVelocity;
+  in.at = [&, drive, K, d](double t, Columns3& accel, Columns3& angle) {
+    accel.setZero();
+    angle.setZero();
+    for (int j = 0; j < K; ++j) {
+      double v = 0.0;
+      switch (drive) {
+        case Drive::kAccel: case Drive::kAngle: v = hat(t, tk[j], d); break;
+        case Drive::kRate: v = hat_integral(t, tk[j], d); break;  // θ = ∫ ω
+        case Drive::kVelocity:  // a = dv/dt of the hat
+          v = (t > tk[j] - d && t <= tk[j]) ? 1.0 / d : (t > tk[j] && t <= tk[j] + d) ? -1.0 / d : 0.0;
+          break;
+      }
+      for (int k = 0; k < 3; ++k) (drive == Drive::kAccel || drive == Drive::kVelocity ? accel : angle)(k, 3 * j + k) = v;
+    }
+  };
+  Eigen::MatrixXd r = input_response(*ctx.layout, *ctx.site, in);
+  // Columns per axis k: r(:, 3j + k); mix the knots by L.
+  Eigen::MatrixXd out(r.rows(), 3 * K);
+  for (int k = 0; k < 3; ++k) {
+    Eigen::MatrixXd axis(r.rows(), K);
+    for (int j = 0; j < K; ++j) axis.col(j) = r.col(3 * j + k);
+    const Eigen::MatrixXd mixed = axis * L;
+    for (int j = 0; j < K; ++j) out.col(3 * j + k) = mixed.col(j);
+  }
+  ctx.cache[key] = out;
+  return out;
+}
+
+/// Noise added to the f rows (per axis weight) [ (m/s²)² ].
+Eigen::VectorXd f_noise(const LayoutContext& ctx, const Eigen::Vector3d& var) {
+  Eigen::VectorXd add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));
+  for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
+    const ObservationRow& r = ctx.layout->rows[i];
+    if (r.quantity == Quantity::kF) add[static_cast<Eigen::Index>(i)] = var[r.axis];
+  }
+  return add;
+}
+
+/// A random process on the knots with σ = params[0], τ = params[1].
+Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma, double tau, bool tilt_noise) {
+  Extension e;
+  // A Gauss–Markov process has its stationary σ already at switch-over: the
+  // alignment takes that value for δf or ω_do, beyond Table 3.1's.
+  if (tau > 0 && drive == Drive::kAccel) e.x_var_add.segment<3>(ux::kAccelBias).setConstant(sigma * sigma);
+  if (tau > 0 && drive == Drive::kRate) e.x_var_add.segment<3>(ux::kGyroDrift).setConstant(sigma * sigma);
+  e.columns = process_columns(ctx, drive, tau);
+  e.column_var = Eigen::VectorXd::Constant(e.columns.cols(), sigma * sigma);
+  // The part of the process faster than the knots, seen by the f rows as
+  // noise: a random walk's bridge between knots has mean variance q Δ/6
+  // (q = σ²/1 h; a Gauss–Markov process is locally one with q = 2σ²/τ).
+  const double q = tau <= 0 ? sigma * sigma / 3600.0 : 2.0 * sigma * sigma / tau;
+  const double nugget = q * knot_spacing(tau) / 6.0;
+  const double g = ctx.site->model.gravity_mps2;
+  if (drive == Drive::kAccel) e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(nugget));
+  if (drive == Drive::kAngle && tilt_noise) e.noise_var_add = f_noise(ctx, Eigen::Vector3d(g * g * nugget, g * g * nugget, 0.0));
+  return e;
+}
+
+/// Columns of a deterministic signature with amplitude prior params (one
+/// column per axis unless `shared`).
+Eigen::MatrixXd signature_columns(const LayoutContext& ctx, const std::string& key, int columns,
+                                  const std::function<void(double, Columns3&, Columns3&)>& at) {
+  if (auto it = ctx.cache.find(key); it != ctx.cache.end()) return it->second;
+  InputSignal in;
+  in.columns = columns;
+  in.at = at;
+  Eigen::MatrixXd r = input_response(*ctx.layout, *ctx.site, in);
+  ctx.cache[key] = r;
+  return r;
+}
+
+/// f^{a'}(t) = −C(t) g_e, the specific force at rest in a' (3.24).
+Eigen::Vector3d specific_force(double t, const ModelOptions& m) { return -gravity_in_ap(t, m); }
+
+/// ∫_0^t of a smooth vector function by a table at 10 s (Simpson per step), linear between.
+class IntegralTable {
+ public:
+  IntegralTable(const std::function<Eigen::Vector3d(double)>& f, double end_s) {
+    values_.push_back(Eigen::Vector3d::Zero());
+    for (double t = 0; t < end_s + kStep; t += kStep)
+      values_.push_back(values_.back() + kStep / 6.0 * (f(t) + 4.0 * f(t + kStep / 2) + f(t + kStep)));
+  }
+  Eigen::Vector3d at(double t) const {
+    const double u = std::clamp(t / kStep, 0.0, static_cast<double>(values_.size() - 1) - 1e-9);
+    const auto i = static_cast<std::size_t>(u);
+    const double w = u - static_cast<double>(i);
+    return (1 - w) * values_[i] + w * values_[std::min(i + 1, values_.size() - 1)];
+  }
+ private:
+  static constexpr double kStep = 10.0;
+  std::vector<Eigen::Vector3d> values_;
+};
+
+Candidate bounds() {
+  return {"bounds", "priors wider than Table 3.1: every uncertainty's variance times s²",
+          {{"scale", Dimension::kDimensionless, {1.5, 2, 3, 5, 10, 30, 100, 300, 1000}}},
+          [](const LayoutContext&, std::span<const double> p) {
+            Extension e;
+            e.x_var_scale = UncertaintyVector::Constant(p[0] * p[0]);
+            return e;
+          }};
+}
+
+Candidate quantization() {
+  return {"quantization",
+          "ΔV pulses coarser than the model's: counting noise w²/(6τ²) in f and a pulse-phase velocity error w²/12",
+          {{"dv_pulse", Dimension::kVelocity, {0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0}}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            Extension e;
+            const double w0 = ctx.site->dv_pulse_mps, w = std::max(p[0], w0), tau = ctx.site->filter_interval_s;
+            e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant((w * w - w0 * w0) / (6 * tau * tau)));
+            e.x_var_add.segment<3>(ux::kInitialVelocity).setConstant((w * w - w0 * w0) / 12.0);
+            return e;
+          }};
+}
+
+Candidate sway() {
+  return {"sway",
+          "vehicle sway of periods 2-20 s: residual acceleration in f after the τ box filter, and its "
+          "velocity at switch-over",
+          {{"accel_rms", Dimension::kAcceleration, scaled({0.2, 0.5, 1, 2, 5, 10, 20, 50}, kMgToMps2)}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            // Log-uniform periods in [2, 20] s: mean power gain of the box
+            // filter sinc²(π τ/P) and mean 1/ω² for the velocity.
+            constexpr double p1 = 2.0, p2 = 20.0, vertical = 0.3;
+            const double tau = ctx.site->filter_interval_s;
+            double gain = 0.0;
+            constexpr int n = 200;
+            for (int i = 0; i < n; ++i) {
+              const double period = p1 * std::pow(p2 / p1, (i + 0.5) / n);
+              const double x = std::numbers::pi * tau / period;
+              gain += std::pow(std::sin(x) / x, 2) / n;
+            }
+            const double inv_w2 = (p2 * p2 - p1 * p1) / (2 * std::log(p2 / p1)) / (4 * std::numbers::pi * std::numbers::pi);
+            const double a2 = p[0] * p[0];
+            Extension e;
+            e.noise_var_add = f_noise(ctx, a2 * gain * Eigen::Vector3d(1, 1, vertical * vertical));
+            e.x_var_add.segment<3>(ux::kInitialVelocity) = a2 * inv_w2 * Eigen::Vector3d(1, 1, vertical * vertical);
+            return e;
+          }};
+}
+
+Candidate accel_bias_instability() {
+  return {"accel_bias_instability",
+          "accelerometer bias wandering as a random walk (tau 0, σ after 1 h) or Gauss–Markov process",
+          {{"sigma", Dimension::kAcceleration, scaled({2, 5, 10, 20, 50, 100, 200, 500, 2000}, kUg)},
+           {"tau", Dimension::kTime, {0.0, 300.0, 1200.0, 3600.0}}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            return process_extension(ctx, Drive::kAccel, p[0], p[1], false);
+          }};
+}
+
+Candidate gyro_drift_instability() {
+  return {"gyro_drift_instability",
+          "gyro drift wandering as a random walk (tau 0, σ after 1 h) or Gauss–Markov process",
+          {{"sigma", Dimension::kAngularRate, scaled({0.1, 0.2, 0.5, 1, 2, 5, 10, 30}, kMeruToRadps)},
+           {"tau", Dimension::kTime, {0.0, 300.0, 1200.0, 3600.0}}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            return process_extension(ctx, Drive::kRate, p[0], p[1], false);
+          }};
+}
+
+Candidate angle_random_walk() {
+  return {"angle_random_walk", "white gyro rate noise: the platform angle walks (σ after 1 h)",
+          {{"angle_1h", Dimension::kAngle, scaled({0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 3}, kMradToRad)}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            return process_extension(ctx, Drive::kAngle, p[0], 0.0, true);
+          }};
+}
+
+Candidate velocity_random_walk() {
+  return {"velocity_random_walk",
+          "white accelerometer noise: white in f (q/τ), a velocity random walk in r (σ after 1 h)",
+          {{"velocity_1h", Dimension::kVelocity, {0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 3.0}}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            Extension e = process_extension(ctx, Drive::kVelocity, p[0], 0.0, false);
+            const double q = p[0] * p[0] / 3600.0;
+            e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(q / ctx.site->filter_interval_s));
+            return e;
+          }};
+}
+
+Candidate thermal_transient() {
+  return {"thermal_transient",
+          "bias and drift settling exponentially after switch-on: a(t) = b (e^{-t/tau} − 1), "
+          "θ(t) = d (tau (1 − e^{-t/tau}) − t) per axis",
+          {{"bias", Dimension::kAcceleration, scaled({0, 10, 30, 100, 300}, kUg)},
+           {"drift", Dimension::kAngularRate, scaled({0, 0.3, 1, 3, 10}, kMeruToRadps)},
+           {"tau", Dimension::kTime, {600.0, 1200.0, 2400.0}}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            const double tau = p[2];
+            Extension e;
+            e.columns = signature_columns(ctx, "thermal:" + std::to_string(tau), 6,
+                                          [tau](double t, Columns3& a, Columns3& th) {
+                                            a.setZero();
+                                            th.setZero();
+                                            const double decay = std::exp(-t / tau);
+                                            for (int k = 0; k < 3; ++k) {
+                                              a(k, k) = decay - 1.0;
+                                              th(k, 3 + k) = tau * (1.0 - decay) - t;
+                                            }
+                                          });
+            e.column_var.resize(6);
+            e.column_var << Eigen::Vector3d::Constant(p[0] * p[0]), Eigen::Vector3d::Constant(p[1] * p[1]);
+            return e;
+          }};
+}
+
+Candidate anisoelastic_drift() {
+  return {"anisoelastic_drift",
+          "g²-sensitive drift ω = c (f_y f_z, f_z f_x, f_x f_y)/g² as the earth turns gravity in the platform",
+          {{"coefficient", Dimension::kAngularRate, scaled({0.3, 1, 2, 5, 10, 20, 50}, kMeruToRadps)}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            const ModelOptions m = ctx.site->model;
+            const double g2 = m.gravity_mps2 * m.gravity_mps2;
+            const IntegralTable theta(
+                [&](double t) -> Eigen::Vector3d {
+                  const Eigen::Vector3d f = specific_force(t, m);
+                  return Eigen::Vector3d(f.y() * f.z(), f.z() * f.x(), f.x() * f.y()) / g2;
+                },
+                layout_end(*ctx.layout) + 60.0);
+            Extension e;
+            e.columns = signature_columns(ctx, "anisoelastic", 1, [&](double t, Columns3& a, Columns3& th) {
+              a.setZero();
+              th.col(0) = theta.at(t);
+            });
+            e.column_var = Eigen::VectorXd::Constant(1, p[0] * p[0]);
+            return e;
+          }};
+}
+
+Candidate scale_factor_nonlinearity() {
+  return {"scale_factor_nonlinearity",
+          "accelerometer output k2 (f_k/g)² per axis, changing as the earth turns gravity in the platform",
+          {{"k2", Dimension::kAcceleration, scaled({20, 50, 100, 200, 500, 1000, 3000}, kUg)}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            const ModelOptions m = ctx.site->model;
+            const Eigen::Vector3d f0 = specific_force(0.0, m);
+            Extension e;
+            e.columns = signature_columns(ctx, "sfn", 3, [m, f0](double t, Columns3& a, Columns3& th) {
+              th.setZero();
+              a.setZero();
+              const Eigen::Vector3d f = specific_force(t, m);
+              const double g2 = m.gravity_mps2 * m.gravity_mps2;
+              // The value at switch-over is nulled by the leveling (x, y) or is δf_z (z).
+              for (int k = 0; k < 3; ++k) a(k, k) = (f[k] * f[k] - f0[k] * f0[k]) / g2;
+            });
+            e.column_var = Eigen::VectorXd::Constant(3, p[0] * p[0]);
+            return e;
+          }};
+}
+
+Candidate deflection_of_vertical() {
+  return {"deflection_of_vertical",
+          "deflection of the vertical beyond Table 3.1: the same earth-fixed horizontal gravity anomaly as ξ, η (2.8b), wider",
+          {{"deflection", Dimension::kAngle, scaled({0.05, 0.1, 0.2, 0.5, 1, 2, 5}, kMradToRad)}},
+          [](const LayoutContext&, std::span<const double> p) {
+            Extension e;
+            e.x_var_add.segment<2>(ux::kDeflection).setConstant(p[0] * p[0]);
+            return e;
+          }};
+}
+
+Candidate gravity_model() {
+  return {"gravity_model",
+          "the computer's gravitation differs from the true one (e.g. J2): a horizontal anomaly like ξ, η that "
+          "also shifts the latitude taken from the plumb line (δL0), and a vertical one, fixed to the earth, that "
+          "drives r only (f is referred to the measured g)",
+          {{"horizontal", Dimension::kAngle, scaled({0, 0.3, 1, 3, 10}, kMradToRad)},
+           {"vertical", Dimension::kAcceleration, scaled({10, 30, 100, 300, 1000, 3000}, kUg)}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            const ModelOptions m = ctx.site->model;
+            Extension e;
+            InputSignal in;
+            in.columns = 1;
+            in.f_responds = false;
+            // (3.24): the computer lacks δg_D, fixed to the earth: u = C(t) (0, 0, δg_D).
+            in.at = [m](double t, Columns3& a, Columns3& th) {
+              th.setZero();
+              a.col(0) = C_ap_n(m.latitude_rad, m.earth_rate_radps * t).col(2);
+            };
+            const auto key = std::string("vertical_anomaly");
+            if (!ctx.cache.count(key)) ctx.cache[key] = input_response(*ctx.layout, *ctx.site, in);
+            e.columns = ctx.cache[key];
+            e.column_var = Eigen::VectorXd::Constant(1, p[1] * p[1]);
+            // The horizontal anomaly tilts the plumb line the site's latitude
+            // is taken from: ξ, η and the latitude error δL0 (3.22) widen alike.
+            e.x_var_add.segment<2>(ux::kDeflection).setConstant(p[0] * p[0]);
+            e.x_var_add[ux::kLatitudeError] = p[0] * p[0];
+            return e;
+          }};
+}
+
+Candidate alignment_transient() {
+  return {"alignment_transient",
+          "alignment loops not settled at switch-over: a level and an azimuth misalignment beyond ζ_r",
+          {{"level", Dimension::kAngle, scaled({0, 0.03, 0.1, 0.3}, kMradToRad)},
+           {"azimuth", Dimension::kAngle, scaled({0.3, 1, 3, 10, 30, 100}, kMradToRad)}},
+          [](const LayoutContext&, std::span<const double> p) {
+            Extension e;
+            e.x_var_add.segment<3>(ux::kMisalignAlign) = Eigen::Vector3d(p[0] * p[0], p[0] * p[0], p[1] * p[1]);
+            return e;
+          }};
+}
+
+Candidate switch_transient() {
+  return {"switch_transient",
+          "steps at switch-over beyond Table 3.1: misalignment (all axes) and accelerometer bias",
+          {{"misalignment", Dimension::kAngle, scaled({0, 0.03, 0.1, 0.3, 1}, kMradToRad)},
+           {"bias", Dimension::kAcceleration, scaled({0, 20, 50, 100, 200, 500}, kUg)}},
+          [](const LayoutContext&, std::span<const double> p) {
+            Extension e;
+            e.x_var_add.segment<3>(ux::kMisalignAlign).setConstant(p[0] * p[0]);
+            e.x_var_add.segment<2>(ux::kBiasChangeAlign).setConstant(p[1] * p[1]);
+            e.x_var_add[ux::kAccelBias + 2] = p[1] * p[1];
+            return e;
+          }};
+}
+
+Candidate nonlinearity() {
+  return {"nonlinearity",
+          "terms the linear level drops (products of uncertainties, finite rotations): a model error "
+          "of a share of the predicted position error",
+          {{"share", Dimension::kDimensionless, {0.01, 0.03, 0.1, 0.3}}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            Extension e;
+            e.noise_var_add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));
+            for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i)
+              if (ctx.layout->rows[i].quantity == Quantity::kR)
+                e.noise_var_add[static_cast<Eigen::Index>(i)] = std::pow(p[0] * ctx.base->prior_std[static_cast<Eigen::Index>(i)], 2);
+            return e;
+          }};
+}
+
+}  // namespace
+
+int Candidate::grid_size() const {
+  int n = 1;
+  for (const CandidateParameter& p : parameters) n *= static_cast<int>(p.grid.size());
+  return n;
+}
+
+std::vector<double> Candidate::grid_point(int index) const {
+  std::vector<double> v(parameters.size());
+  for (std::size_t i = parameters.size(); i-- > 0;) {
+    const int n = static_cast<int>(parameters[i].grid.size());
+    v[i] = parameters[i].grid[static_cast<std::size_t>(index % n)];
+    index /= n;
+  }
+  return v;
+}
+
+const std::vector<Candidate>& candidate_registry() {
+  static const std::vector<Candidate> all = {
+      bounds(), quantization(), sway(), accel_bias_instability(), gyro_drift_instability(),
+      angle_random_walk(), velocity_random_walk(), thermal_transient(), anisoelastic_drift(),
+      scale_factor_nonlinearity(), deflection_of_vertical(), gravity_model(), alignment_transient(), switch_transient(),
+      nonlinearity()};
+  return all;
+}
+
+}  // namespace insmc::gap

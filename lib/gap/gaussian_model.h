@@ -1,0 +1,58 @@
+#pragma once
+/// The model of one run's observations as the diagnosis sees it: linear in
+/// its causes with known second moments (the linear level, issue 7),
+///   y = H c + e,  c ~ (0, diag(prior_var)),  e ~ (0, diag(noise_var)),
+/// c = (x, effect coefficients): the first 33 columns are the uncertainties of
+/// Table 3.1 (priors overridable), further columns come from candidate
+/// effects (candidates.h). Only second moments are used, so nothing assumes
+/// the uniform bounds of Table 3.1 are Gaussian.
+#include <Eigen/Core>
+#include <vector>
+
+#include "lib/gap/layout.h"
+#include "lib/uncertainty/uncertainty_vector.h"
+
+namespace insmc::gap {
+
+struct GaussianModel {
+  Eigen::MatrixXd H;          ///< rows × columns
+  Eigen::VectorXd prior_var;  ///< columns
+  Eigen::VectorXd noise_var;  ///< rows, > 0
+};
+
+/// Share of the predicted position error the model-error floor allows for:
+/// the truth's first-order terms the linear level takes with g instead of the
+/// site's g_s (0.17 % at 45°) and its second-order terms (docs/truth-vs-linear.md).
+inline constexpr double kRelativeModelError = 0.003;
+/// Absolute model-error floor of r rows [m] (issue 6: truth and linear agree
+/// within 1 % + 1 m).
+inline constexpr double kAbsoluteModelErrorM = 1.0;
+/// Floor of the f noise [m/s²] (≈ 0.1 µg) so that a continuous output
+/// (dv_pulse 0) still has a finite weight.
+inline constexpr double kFNoiseFloorMps2 = 1e-6;
+
+/// The base model of a layout: x with `x_var`, the pulse phase (an initial
+/// velocity error uniform within ±w/2, simulator.h) added to (u)V, f noise
+/// of pulse counting w²/(6τ²) (two independent remainders per window), r
+/// noise of the position resolution q²/12 and the model-error floor.
+struct BaseModel {
+  Eigen::MatrixXd H_x;             ///< rows × 33
+  UncertaintyVector x_var;         ///< with the pulse phase
+  Eigen::VectorXd noise_var;       ///< rows
+  Eigen::VectorXd prior_std;       ///< rows: predicted std of each row from x alone
+};
+BaseModel make_base_model(const Layout& layout, const RecordSite& site, const UncertaintyVector& x_var);
+
+/// A candidate effect's addition to the base model.
+struct Extension {
+  Eigen::MatrixXd columns;          ///< rows × m (may be 0 columns)
+  Eigen::VectorXd column_var;       ///< m
+  UncertaintyVector x_var_scale = UncertaintyVector::Ones();  ///< multiplies x_var
+  UncertaintyVector x_var_add = UncertaintyVector::Zero();    ///< then added
+  Eigen::VectorXd noise_var_add;    ///< rows, or empty
+};
+
+/// The base model with every extension applied.
+GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>& extensions);
+
+}  // namespace insmc::gap

@@ -1,0 +1,88 @@
+#pragma once
+/// What the gap diagnosis (DESIGN.md §3, issue 7) takes from a record file:
+/// per run, the observations it compares with the model, in the order the
+/// model's rows are built (test rows first: they are what the fit sees), and
+/// the groups by which the gap is reported (axis × stage × time window).
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lib/common/model_options.h"
+#include "lib/common/system.h"
+#include "lib/records/record.h"
+
+namespace insmc::gap {
+
+enum class Quantity { kF, kR };  ///< filtered accelerometer error Δf, position error r
+enum class Stage { kTest, kNav };
+
+/// Report groups. Per axis k = x, y, z: the test-run fit residuals of f and
+/// r, the post-test innovations of f, of r in the windows 0–42, 42–63,
+/// 63–84 and > 84 min after the test, and the estimates against the prior.
+inline constexpr int kNavWindows = 4;
+inline constexpr int kGroupCount = 3 + 3 + 3 + 3 * kNavWindows + 1;
+inline constexpr int kEstimatesGroup = kGroupCount - 1;
+int group_of(Stage stage, Quantity quantity, int axis, int window);
+std::string group_name(int group);      ///< e.g. "nav r_y 42-63 min"
+std::string group_stage(int group);     ///< "test fit", "post-test navigation", "estimates vs prior"
+int group_axis(int group);              ///< 0..2, or −1 for the estimates
+std::string group_window(int group);    ///< "test", "0-42 min", ..., "" for the estimates
+/// Window of a navigation time: minutes after the end of the test run T.
+int nav_window(double t_s, double test_duration_s);
+
+/// One observed value: a component of f or r at a time.
+struct ObservationRow {
+  double t_s = 0.0;
+  Quantity quantity = Quantity::kR;
+  int axis = 0;
+  int group = 0;
+  bool operator==(const ObservationRow&) const = default;
+};
+
+/// The rows of a run in model order: test rows, then navigation rows.
+struct Layout {
+  std::vector<ObservationRow> rows;
+  int test_rows = 0;
+  bool operator==(const Layout&) const = default;
+};
+
+/// What the header says about the runs (non-`truth.` keys only).
+struct RecordSite {
+  System system = System::kTheodolite;
+  ModelOptions model;                 ///< latitude from the header, the rest defaults
+  double test_duration_s = 900.0;
+  double filter_interval_s = 10.0;    ///< τ of f (header filter_interval_s, else the f spacing)
+  double dv_pulse_mps = 0.0;          ///< 0: continuous f
+  double position_resolution_m = 0.0;
+};
+
+/// One run: its layout and observed values (same order).
+struct RunData {
+  std::int64_t id = 0;
+  Layout layout;
+  std::vector<double> values;
+  double end_s = 0.0;  ///< last time of the run
+};
+
+struct ExtractionOptions {
+  /// r rows closer than this to the last kept one are skipped: r is smooth,
+  /// and the model's cost grows with the rows [s].
+  double r_spacing_s = 30.0;
+};
+
+/// Reads the site from the header. `default_pulse_mps` applies when the
+/// header has no dv_pulse_mps.
+RecordSite read_site(const RecordHeader& header, double default_pulse_mps);
+
+/// The runs' observations. f rows are kept where the record has them and at
+/// spacings ≥ τ (overlapping windows would be correlated), r rows at
+/// spacings ≥ r_spacing_s. Runs are returned in file order.
+std::vector<RunData> extract_runs(const RecordFile& file, const RecordSite& site,
+                                  const ExtractionOptions& options = {});
+
+/// The f spacing of a record when the header does not give τ: the median
+/// spacing of consecutive f rows of the test runs (0 when there are none).
+double median_f_spacing(const RecordFile& file);
+
+}  // namespace insmc::gap

@@ -1,0 +1,59 @@
+#pragma once
+/// One run against a GaussianModel (gaussian_model.h), the way the report's
+/// preflight procedure uses the data: the test-run rows are fitted (linear
+/// minimum-variance estimate of the causes c with the prior), then the
+/// navigation rows are predicted from that fit. Each row gets a normalized
+/// square z² whose expectation under the model is exactly 1, whatever the
+/// distribution (only second moments enter):
+///   test rows:  residual e = y − H ĉ,   E e² = σ² − h P⁺ hᵀ;
+///   nav rows:   innovation ν = y − H ĉ, E ν² = h P⁺ hᵀ + σ²;
+///   estimates:  ĉ_j of x,               E ĉ_j² = P_jj − P⁺_jj,
+/// P⁺ the posterior covariance. Sums per report group (layout.h) are what the
+/// gap metric aggregates over runs.
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "lib/gap/gaussian_model.h"
+
+namespace insmc::gap {
+
+/// Σ z² and the number of terms per group.
+struct GroupSums {
+  std::array<double, kGroupCount> z2{};
+  std::array<double, kGroupCount> count{};
+  GroupSums& operator+=(const GroupSums& o) {
+    for (int g = 0; g < kGroupCount; ++g) z2[g] += o.z2[g], count[g] += o.count[g];
+    return *this;
+  }
+};
+
+/// An estimate counts in the "estimates vs prior" group when the test run
+/// removes at least this share of its prior variance.
+inline constexpr double kResolvedShare = 0.1;
+
+class RunAnalyser {
+ public:
+  RunAnalyser(const Layout& layout, const GaussianModel& model);
+
+  /// Group sums of one run's values (layout order).
+  GroupSums analyse(const Eigen::VectorXd& y) const;
+  /// As analyse, also giving z (the signed normalized residual/innovation per row).
+  GroupSums analyse(const Eigen::VectorXd& y, Eigen::VectorXd& z) const;
+
+  /// Expected square of each row's residual (test) or innovation (nav).
+  const Eigen::VectorXd& expected_square() const { return expected_; }
+
+ private:
+  const Layout* layout_;
+  Eigen::MatrixXd H_;             // rows × active columns
+  Eigen::MatrixXd weighted_test_; // test rows of H / σ², rows × active
+  Eigen::MatrixXd posterior_;     // P⁺
+  Eigen::VectorXd expected_;      // rows
+  std::vector<int> estimate_columns_;  // active indices of resolved x
+  Eigen::VectorXd estimate_var_;
+  int test_rows_ = 0;
+};
+
+}  // namespace insmc::gap

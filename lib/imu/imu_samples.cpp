@@ -1,0 +1,307 @@
+#include "lib/imu/imu_samples.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <set>
+
+#include "lib/records/number_text.h"
+#include "lib/units/units.h"
+
+namespace insmc {
+namespace {
+
+using records_detail::describe;
+using records_detail::NumberStatus;
+using records_detail::parse_double;
+
+constexpr std::string_view kGyroAllowed = "must be one of: deg/s, rad/s, deg/h";
+constexpr std::string_view kAccelAllowed = "must be one of: g, m/s2";
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+/// One field of a CSV line: its text without surrounding blanks and the
+/// 1-based column of its first byte in the line.
+struct Field {
+  std::string_view text;
+  std::size_t column;
+};
+
+void split_fields(std::string_view line, std::vector<Field>& out) {
+  out.clear();
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    const std::size_t stop = comma == std::string_view::npos ? line.size() : comma;
+    std::size_t first = start;
+    while (first < stop && is_blank(line[first])) ++first;
+    out.push_back(Field{trim(line.substr(start, stop - start)), first + 1});
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+}
+
+/// What the reader needs of one wanted column: its header name and the
+/// option that named it (for messages).
+struct WantedColumn {
+  std::string name;
+  std::string option;
+};
+
+class Parser {
+ public:
+  Parser(std::string_view text, std::string_view source, const ImuCsvOptions& o)
+      : text_(text), source_(source), options_(o) {}
+
+  ImuSamples parse() {
+    if (text_.starts_with("\xEF\xBB\xBF")) text_.remove_prefix(3);  // UTF-8 byte-order mark
+    std::string_view line;
+    bool have_header = false;
+    ImuSamples out;
+    out.source = std::string(source_);
+    std::vector<Field> fields;
+    double first_time = 0.0, previous_time = 0.0;
+    std::size_t previous_line = 0;
+    const double gyro_si = to_si(options_.gyro_unit), accel_si = to_si(options_.accel_unit);
+    const bool timed = !options_.time_column.empty();
+    while (next_line(line)) {
+      const std::string_view content = trim(line);
+      if (content.empty() || content.front() == '#') continue;
+      split_fields(line, fields);
+      if (!have_header) {
+        parse_header(fields);
+        have_header = true;
+        continue;
+      }
+      if (fields.size() != header_count_) {
+        const std::size_t column = fields.size() > header_count_ ? fields[header_count_].column : line.size() + 1;
+        fail(column, fmt::format("{} fields, but the header (line {}) has {}", fields.size(), header_line_,
+                                 header_count_));
+      }
+      double values[7];
+      for (std::size_t c = 0; c < wanted_.size(); ++c) {
+        const Field& f = fields[index_[c]];
+        const NumberStatus status = parse_double(f.text, values[c]);
+        if (status != NumberStatus::kOk)
+          fail(f.column, fmt::format("{} = '{}': {}", wanted_[c].name, f.text, describe(status)));
+      }
+      double t = 0.0;
+      if (timed) {
+        t = values[6] * options_.time_unit_s;
+        if (out.t_s.empty()) first_time = t;
+        t -= first_time;
+        if (!out.t_s.empty() && !(t > previous_time)) {
+          fail(fields[index_[6]].column,
+               fmt::format("{} = '{}': time must increase strictly (line {} has {})", wanted_[6].name,
+                           fields[index_[6]].text, previous_line, previous_text_));
+        }
+        previous_text_ = std::string(fields[index_[6]].text);
+      } else {
+        t = static_cast<double>(out.t_s.size()) / options_.rate_hz;
+      }
+      previous_time = t;
+      previous_line = line_number_;
+      out.t_s.push_back(t);
+      out.gyro_b_radps.emplace_back(gyro_si * values[0], gyro_si * values[1], gyro_si * values[2]);
+      out.accel_b_mps2.emplace_back(accel_si * values[3], accel_si * values[4], accel_si * values[5]);
+    }
+    if (!have_header)
+      throw InputError(fmt::format("{}: no header line: the first line that is not blank or '#' must name the "
+                                   "columns (e.g. {})",
+                                   source_, fmt::join(column_names(), ",")));
+    if (out.t_s.size() < 2)
+      throw InputError(fmt::format("{}: {} data row(s) after the header (line {}): at least 2 samples are needed",
+                                   source_, out.t_s.size(), header_line_));
+    return out;
+  }
+
+ private:
+  std::vector<std::string> column_names() const {
+    std::vector<std::string> names;
+    for (const WantedColumn& w : wanted()) names.push_back(w.name);
+    return names;
+  }
+
+  std::vector<WantedColumn> wanted() const {
+    std::vector<WantedColumn> w;
+    for (const auto& n : options_.gyro_columns) w.push_back({n, "--gyro-columns"});
+    for (const auto& n : options_.accel_columns) w.push_back({n, "--accel-columns"});
+    if (!options_.time_column.empty()) w.push_back({options_.time_column, "--time-column"});
+    return w;
+  }
+
+  void parse_header(const std::vector<Field>& fields) {
+    header_line_ = line_number_;
+    header_count_ = fields.size();
+    wanted_ = wanted();
+    index_.assign(wanted_.size(), 0);
+    std::vector<std::string> missing;
+    for (std::size_t c = 0; c < wanted_.size(); ++c) {
+      std::optional<std::size_t> found;
+      for (std::size_t i = 0; i < fields.size(); ++i) {
+        if (fields[i].text != wanted_[c].name) continue;
+        if (found)
+          fail(fields[i].column, fmt::format("duplicate column '{}' (also column {} of the header)",
+                                             wanted_[c].name, fields[*found].column));
+        found = i;
+      }
+      if (found)
+        index_[c] = *found;
+      else
+        missing.push_back(fmt::format("'{}' ({})", wanted_[c].name, wanted_[c].option));
+    }
+    if (!missing.empty()) {
+      std::vector<std::string_view> have;
+      for (const Field& f : fields) have.push_back(f.text);
+      fail(1, fmt::format("missing column(s) {}: the header has {}; name the columns with --gyro-columns, "
+                          "--accel-columns (x,y,z) and --time-column",
+                          fmt::join(missing, ", "), fmt::join(have, ",")));
+    }
+  }
+
+  bool next_line(std::string_view& line) {
+    if (pos_ >= text_.size()) return false;
+    const std::size_t end = text_.find('\n', pos_);
+    const std::size_t stop = end == std::string_view::npos ? text_.size() : end;
+    line = text_.substr(pos_, stop - pos_);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    pos_ = stop + 1;
+    ++line_number_;
+    return true;
+  }
+
+  [[noreturn]] void fail(std::size_t column, const std::string& message) const {
+    throw InputError(fmt::format("{}:{}:{}: {}", source_, line_number_, column, message));
+  }
+
+  std::string_view text_;
+  std::string_view source_;
+  const ImuCsvOptions& options_;
+  std::size_t pos_ = 0, line_number_ = 0;
+  std::size_t header_line_ = 0, header_count_ = 0;
+  std::vector<WantedColumn> wanted_;
+  std::vector<std::size_t> index_;  ///< header index of each wanted column
+  std::string previous_text_;
+};
+
+}  // namespace
+
+std::string_view to_string(GyroUnit u) {
+  switch (u) {
+    case GyroUnit::kDegPerS: return "deg/s";
+    case GyroUnit::kRadPerS: return "rad/s";
+    case GyroUnit::kDegPerH: return "deg/h";
+  }
+  return "?";
+}
+
+std::string_view to_string(AccelUnit u) {
+  switch (u) {
+    case AccelUnit::kG: return "g";
+    case AccelUnit::kMps2: return "m/s2";
+  }
+  return "?";
+}
+
+GyroUnit parse_gyro_unit(std::string_view text, std::string_view field) {
+  for (GyroUnit u : {GyroUnit::kDegPerS, GyroUnit::kRadPerS, GyroUnit::kDegPerH})
+    if (to_string(u) == text) return u;
+  throw InputError(std::string(field), std::string(text), std::string(kGyroAllowed));
+}
+
+AccelUnit parse_accel_unit(std::string_view text, std::string_view field) {
+  for (AccelUnit u : {AccelUnit::kG, AccelUnit::kMps2})
+    if (to_string(u) == text) return u;
+  throw InputError(std::string(field), std::string(text), std::string(kAccelAllowed));
+}
+
+double to_si(GyroUnit u) {
+  switch (u) {
+    case GyroUnit::kDegPerS: return kDegToRad;
+    case GyroUnit::kRadPerS: return 1.0;
+    case GyroUnit::kDegPerH: return kDegphToRadps;
+  }
+  return 1.0;
+}
+
+double to_si(AccelUnit u) { return u == AccelUnit::kG ? kGravityMps2 : 1.0; }
+
+double parse_rate_hz(std::string_view text, std::string_view field) {
+  const std::string s(text);
+  constexpr std::string_view allowed = "a sample rate > 0 with the unit Hz or kHz (e.g. 100Hz)";
+  const char* begin = s.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double number = std::strtod(begin, &end);
+  if (s.empty() || end == begin) throw InputError(std::string(field), s, fmt::format("not a number; expected {}", allowed));
+  std::string_view unit(end);
+  while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
+  double factor = 0.0;
+  if (unit == "Hz") factor = 1.0;
+  else if (unit == "kHz") factor = 1e3;
+  else if (unit.empty()) throw InputError(std::string(field), s, fmt::format("a unit is required; expected {}", allowed));
+  else throw InputError(std::string(field), s, fmt::format("unknown unit '{}'; expected {}", unit, allowed));
+  const double rate = number * factor;
+  if (errno == ERANGE || !std::isfinite(rate) || !(rate > 0))
+    throw InputError(std::string(field), s, fmt::format("must be finite and > 0; expected {}", allowed));
+  return rate;
+}
+
+std::optional<InputError> validate(const ImuCsvOptions& o) {
+  const bool timed = !o.time_column.empty();
+  if (!timed && !(o.rate_hz > 0 && std::isfinite(o.rate_hz)))
+    return InputError("--rate", fmt::format("{}Hz", o.rate_hz),
+                      "give a finite sample rate > 0 (e.g. 100Hz), or a time column with --time-column");
+  if (timed && o.rate_hz != 0.0)
+    return InputError("--rate", fmt::format("{}Hz", o.rate_hz),
+                      "give either --rate or --time-column, not both");
+  if (!(o.time_unit_s > 0 && std::isfinite(o.time_unit_s)))
+    return InputError("--time-unit", fmt::format("{}s", o.time_unit_s), "must be a finite time > 0");
+  std::set<std::string> seen;
+  const auto check = [&](const std::string& name, const char* option) -> std::optional<InputError> {
+    if (name.empty()) return InputError(option, "''", "column names must not be empty");
+    if (name.find(',') != std::string::npos || name.front() == '#')
+      return InputError(option, name, "a column name cannot contain ',' or start with '#'");
+    if (!seen.insert(name).second) return InputError(option, name, "each column may be used once");
+    return std::nullopt;
+  };
+  for (const auto& n : o.gyro_columns)
+    if (auto e = check(n, "--gyro-columns")) return e;
+  for (const auto& n : o.accel_columns)
+    if (auto e = check(n, "--accel-columns")) return e;
+  if (timed)
+    if (auto e = check(o.time_column, "--time-column")) return e;
+  return std::nullopt;
+}
+
+ImuSamples parse_imu_csv(std::string_view text, std::string_view source_name, const ImuCsvOptions& options) {
+  if (auto e = validate(options)) throw *e;
+  return Parser(text, source_name, options).parse();
+}
+
+ImuSamples read_imu_csv(const std::filesystem::path& path, const ImuCsvOptions& options) {
+  if (auto e = validate(options)) throw *e;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot open the IMU file: {}", path.string(), std::strerror(errno)));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw InputError(fmt::format("{}: cannot read the IMU file", path.string()));
+  if (text.size() >= 2 && static_cast<unsigned char>(text[0]) == 0x1f && static_cast<unsigned char>(text[1]) == 0x8b)
+    throw InputError(fmt::format("{}: gzip-compressed; import-imu reads plain CSV: unpack it first "
+                                 "(gzip -dc {} > FILE.csv) and give FILE.csv",
+                                 path.string(), path.string()));
+  return parse_imu_csv(text, path.string(), options);
+}
+
+}  // namespace insmc

@@ -1,0 +1,405 @@
+#include "montecarlo/gap/diagnosis.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+#include <numeric>
+
+#include "lib/common/input_error.h"
+#include "lib/gap/response.h"
+#include "montecarlo/gap/record_simulation.h"
+#include "montecarlo/gap/where.h"
+#include "montecarlo/random/philox.h"
+
+namespace insmc::mc {
+namespace {
+
+using gap::GroupSums;
+using gap::GroupValues;
+
+/// The runs, their layouts and the base model of each layout.
+struct Prepared {
+  gap::RecordSite site;
+  std::vector<gap::RunData> runs;
+  std::vector<gap::Layout> layouts;
+  std::vector<int> layout_of;  // per run
+  std::vector<gap::BaseModel> bases;
+  UncertaintyVector x_var;
+};
+
+int layout_index(Prepared& p, const gap::Layout& layout) {
+  for (std::size_t i = 0; i < p.layouts.size(); ++i)
+    if (p.layouts[i] == layout) return static_cast<int>(i);
+  p.layouts.push_back(layout);
+  p.bases.push_back(gap::make_base_model(layout, p.site, p.x_var));
+  return static_cast<int>(p.layouts.size() - 1);
+}
+
+Eigen::VectorXd values(const gap::RunData& run) {
+  return Eigen::Map<const Eigen::VectorXd>(run.values.data(), static_cast<Eigen::Index>(run.values.size()));
+}
+
+/// Per-run sums of every run under base + extensions (built per layout by `build`).
+template <class Build>
+std::vector<GroupSums> sums_under(const Prepared& p, const Build& build) {
+  std::vector<GroupSums> out(p.runs.size());
+  for (std::size_t L = 0; L < p.layouts.size(); ++L) {
+    if (std::find(p.layout_of.begin(), p.layout_of.end(), static_cast<int>(L)) == p.layout_of.end()) continue;
+    const std::vector<const gap::Extension*> ext = build(static_cast<int>(L));
+    const gap::RunAnalyser analyser(p.layouts[L], gap::combine(p.bases[L], ext));
+    for (std::size_t r = 0; r < p.runs.size(); ++r)
+      if (p.layout_of[r] == static_cast<int>(L)) out[r] = analyser.analyse(values(p.runs[r]));
+  }
+  return out;
+}
+
+std::vector<int> all_runs(std::size_t n) {
+  std::vector<int> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = static_cast<int>(i);
+  return v;
+}
+
+/// Indices of a resample with replacement of `n` out of `pool` (stream index b).
+std::vector<int> resample(std::uint64_t seed, std::uint64_t b, int n, int pool) {
+  CounterStream s(seed, Stream::Bootstrap, b);
+  std::vector<int> idx(static_cast<std::size_t>(n));
+  for (int& i : idx) i = std::min(pool - 1, static_cast<int>(s.uniform01() * pool));
+  return idx;
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const double pos = q * static_cast<double>(v.size() - 1);
+  const auto i = static_cast<std::size_t>(pos);
+  const double w = pos - static_cast<double>(i);
+  return i + 1 < v.size() ? (1 - w) * v[i] + w * v[i + 1] : v[i];
+}
+
+/// Everything the candidate search needs from the null calibration.
+struct Null {
+  GroupValues power{};               // m0_g
+  std::vector<double> gaps;          // G of the null files
+  std::vector<GroupValues> log_ratios;  // ℓ of the null files
+};
+
+double p_value_of(double observed, const std::vector<double>& null) {
+  const auto above = std::count_if(null.begin(), null.end(), [&](double g) { return g >= observed; });
+  return (1.0 + static_cast<double>(above)) / (1.0 + static_cast<double>(null.size()));
+}
+
+/// Per-run sums of one candidate at every grid point (rows: grid points).
+struct CandidateSums {
+  std::vector<std::vector<GroupSums>> at;  // [grid][run]
+};
+
+CandidateSums evaluate_candidate(const Prepared& p, const gap::Candidate& c,
+                                 const std::vector<std::vector<gap::Extension>>& selected) {
+  std::vector<gap::LayoutContext> ctx(p.layouts.size());
+  for (std::size_t L = 0; L < p.layouts.size(); ++L) ctx[L] = {&p.layouts[L], &p.site, &p.bases[L], {}};
+  CandidateSums out;
+  out.at.resize(static_cast<std::size_t>(c.grid_size()));
+  for (int k = 0; k < c.grid_size(); ++k) {
+    const std::vector<double> theta = c.grid_point(k);
+    std::vector<gap::Extension> built(p.layouts.size());
+    out.at[static_cast<std::size_t>(k)] = sums_under(p, [&](int L) {
+      built[static_cast<std::size_t>(L)] = c.build(ctx[static_cast<std::size_t>(L)], theta);
+      std::vector<const gap::Extension*> e;
+      for (const gap::Extension& s : selected[static_cast<std::size_t>(L)]) e.push_back(&s);
+      e.push_back(&built[static_cast<std::size_t>(L)]);
+      return e;
+    });
+  }
+  return out;
+}
+
+int best_grid_point(const CandidateSums& s, const std::vector<int>& runs, const GroupValues& m0) {
+  int best = 0;
+  double best_gap = 1e300;
+  for (std::size_t k = 0; k < s.at.size(); ++k) {
+    const double g = gap::gap_value(gap::pooled(s.at[k], runs), m0);
+    if (g < best_gap) best_gap = g, best = static_cast<int>(k);
+  }
+  return best;
+}
+
+struct Scored {
+  int candidate = 0;
+  double heldout_gap = 0;
+  std::vector<GroupSums> heldout;  // per run, at the other half's fit
+  int full_fit = 0;
+  std::vector<ParameterEstimate> parameters;
+};
+
+/// 2-fold cross-validation (runs alternate between the halves in file order),
+/// the full-data fit and its resampled 16–84 % range.
+Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, const GroupValues& m0,
+             std::uint64_t seed) {
+  Scored out;
+  out.heldout.resize(n);
+  for (int fold = 0; fold < 2; ++fold) {
+    std::vector<int> train, test;
+    for (std::size_t r = 0; r < n; ++r) (static_cast<int>(r % 2) == fold ? test : train).push_back(static_cast<int>(r));
+    const int k = best_grid_point(s, train, m0);
+    for (int r : test) out.heldout[static_cast<std::size_t>(r)] = s.at[static_cast<std::size_t>(k)][static_cast<std::size_t>(r)];
+  }
+  out.heldout_gap = gap::gap_value(gap::pooled(out.heldout, all_runs(n)), m0);
+  out.full_fit = best_grid_point(s, all_runs(n), m0);
+  const std::vector<double> best = c.grid_point(out.full_fit);
+  constexpr int kResamples = 200;
+  std::vector<std::vector<double>> draws(c.parameters.size());
+  for (int b = 0; b < kResamples; ++b) {
+    const std::vector<double> theta =
+        c.grid_point(best_grid_point(s, resample(seed, 1'000'000 + static_cast<std::uint64_t>(b), static_cast<int>(n), static_cast<int>(n)), m0));
+    for (std::size_t i = 0; i < theta.size(); ++i) draws[i].push_back(theta[i]);
+  }
+  for (std::size_t i = 0; i < c.parameters.size(); ++i) {
+    const gap::CandidateParameter& par = c.parameters[i];
+    ParameterEstimate e{par.name, par.dimension, best[i], quantile(draws[i], 0.16), quantile(draws[i], 0.84),
+                        par.grid.size() > 1 && (best[i] == par.grid.front() || best[i] == par.grid.back())};
+    out.parameters.push_back(e);
+  }
+  return out;
+}
+
+std::vector<Scored> rank_candidates(const Prepared& p, const std::vector<std::vector<gap::Extension>>& selected,
+                                    const std::vector<std::string>& exclude, const GroupValues& m0,
+                                    std::uint64_t seed) {
+  const auto& registry = gap::candidate_registry();
+  std::vector<Scored> scored(registry.size());
+  std::vector<bool> used(registry.size(), false);
+  tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
+    if (std::find(exclude.begin(), exclude.end(), registry[c].name) != exclude.end()) return;
+    scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected), p.runs.size(), m0, seed);
+    scored[c].candidate = static_cast<int>(c);
+    used[c] = true;
+  });
+  std::vector<Scored> out;
+  for (std::size_t c = 0; c < registry.size(); ++c)
+    if (used[c]) out.push_back(std::move(scored[c]));
+  std::stable_sort(out.begin(), out.end(), [](const Scored& a, const Scored& b) { return a.heldout_gap < b.heldout_gap; });
+  return out;
+}
+
+Prepared prepare(const RecordFile& file, const DiagnosisOptions& options) {
+  Prepared p;
+  const RecordHeader header = file.header.without_truth();
+  p.site = gap::read_site(header, options.default_pulse_mps);
+  if (header.scheme() != Scheme::kNone)
+    throw InputError("header scheme", std::string(to_string(header.scheme())),
+                     "the diagnosis models uncompensated runs so far: only scheme=none records are accepted");
+  if (!(p.site.filter_interval_s > 0)) {
+    const double spacing = gap::median_f_spacing(file);
+    p.site.filter_interval_s = spacing > 0 ? spacing : 10.0;
+  }
+  p.x_var = options.prior.variance();
+  p.runs = gap::extract_runs(file, p.site, options.extraction);
+  for (const gap::RunData& run : p.runs) p.layout_of.push_back(layout_index(p, run.layout));
+  return p;
+}
+
+Null calibrate(Prepared& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
+               std::vector<gap::GroupSums>& sums, std::vector<Eigen::VectorXd>& z,
+               std::vector<int>& layout_of) {
+  TruthOptions truth;
+  truth.model = p.site.model;
+  truth.system = p.site.system;
+  truth.dv_pulse_mps = p.site.dv_pulse_mps;
+  truth.filter_interval_s = p.site.filter_interval_s;
+  const Sampler sampler(options.prior);
+  const RecordRunSpec spec{p.site.test_duration_s, p.site.position_resolution_m};
+  std::vector<gap::RunData> sim(static_cast<std::size_t>(runs));
+  tbb::parallel_for(0, runs, [&](int j) {
+    const RecordRun& pattern = file.runs[static_cast<std::size_t>(j) % file.runs.size()];
+    RecordFile one;
+    one.header = file.header;
+    one.runs.push_back(simulate_like(pattern, truth, sampler, options.seed, static_cast<std::uint64_t>(j), spec));
+    sim[static_cast<std::size_t>(j)] = std::move(gap::extract_runs(one, p.site, options.extraction).front());
+  });
+  layout_of.resize(sim.size());
+  for (std::size_t j = 0; j < sim.size(); ++j) layout_of[j] = layout_index(p, sim[j].layout);
+  std::vector<gap::RunAnalyser> analysers;
+  for (std::size_t L = 0; L < p.layouts.size(); ++L) analysers.emplace_back(p.layouts[L], gap::combine(p.bases[L], {}));
+  sums.resize(sim.size());
+  z.resize(sim.size());
+  tbb::parallel_for(std::size_t{0}, sim.size(), [&](std::size_t j) {
+    sums[j] = analysers[static_cast<std::size_t>(layout_of[j])].analyse(values(sim[j]), z[j]);
+  });
+  Null null;
+  null.power = gap::group_power(gap::pooled(sums, all_runs(sums.size())));
+  const int n = static_cast<int>(p.runs.size());
+  null.gaps.resize(static_cast<std::size_t>(options.bootstrap));
+  null.log_ratios.resize(static_cast<std::size_t>(options.bootstrap));
+  tbb::parallel_for(0, options.bootstrap, [&](int b) {
+    const GroupSums s = gap::pooled(sums, resample(options.seed, static_cast<std::uint64_t>(b), n, runs));
+    null.log_ratios[static_cast<std::size_t>(b)] = gap::log_power_ratio(s, null.power);
+    null.gaps[static_cast<std::size_t>(b)] = gap::gap_value(null.log_ratios[static_cast<std::size_t>(b)]);
+  });
+  return null;
+}
+
+std::string fmt_params(const std::vector<ParameterEstimate>& ps) {
+  std::string s;
+  for (const ParameterEstimate& e : ps) s += (s.empty() ? "" : ", ") + e.name + "=" + format_quantity(e.value, e.dimension);
+  return s;
+}
+
+}  // namespace
+
+Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
+  Prepared p = prepare(file, options);
+  Diagnosis d;
+  d.alpha = options.alpha;
+  d.runs = static_cast<int>(p.runs.size());
+  const int n = d.runs;
+  int with_test = 0, with_nav = 0;
+  for (const gap::RunData& r : p.runs) {
+    with_test += r.layout.test_rows > 0;
+    with_nav += static_cast<int>(r.layout.rows.size()) > r.layout.test_rows;
+  }
+  if (with_test == 0)
+    throw InputError("records", "no test rows", "the diagnosis needs the test run (phase test, 0 <= t_s <= T)");
+  if (with_nav < n)
+    d.statements.push_back(fmt::format("{} of {} runs stop at or before the end of the test: they count only in "
+                                       "the test-run groups", n - with_nav, n));
+
+  // Gap against the null of the model itself.
+  std::vector<GroupSums> null_sums;
+  std::vector<Eigen::VectorXd> null_z;
+  std::vector<int> null_layout;
+  const int ncal = options.calibration_runs > 0 ? options.calibration_runs : std::max(200, 10 * n);
+  d.calibration_runs = ncal;
+  const std::vector<GroupSums> base = sums_under(p, [](int) { return std::vector<const gap::Extension*>{}; });
+  const Null null = calibrate(p, file, options, ncal, null_sums, null_z, null_layout);
+  const GroupSums observed = gap::pooled(base, all_runs(p.runs.size()));
+  const GroupValues l = gap::log_power_ratio(observed, null.power);
+  d.gap = gap::gap_value(l);
+  d.p_value = p_value_of(d.gap, null.gaps);
+  d.significant = d.p_value < options.alpha;
+  d.null_gap_median = quantile(null.gaps, 0.5);
+  d.null_gap_critical = quantile(null.gaps, 1.0 - options.alpha);
+  if (n < 20)
+    d.statements.push_back(fmt::format("{} runs: the gap's power is reduced (a null file of {} runs scatters "
+                                       "up to G = {:.3g} at alpha = {})", n, n, d.null_gap_critical, options.alpha));
+
+  // Where it lies.
+  d.groups = group_results(observed, null.power, null.log_ratios);
+  d.by_axis = shares_by(d.groups, [](int g) { return g == gap::kEstimatesGroup ? std::string("estimates")
+                                                                             : std::string(1, "xyz"[gap::group_axis(g)]); });
+  d.by_stage = shares_by(d.groups, [](int g) { return gap::group_stage(g); });
+  d.by_window = shares_by(d.groups, [](int g) { return g == gap::kEstimatesGroup ? std::string("estimates") : gap::group_window(g); });
+  {
+    std::vector<gap::RunAnalyser> analysers;
+    for (std::size_t L = 0; L < p.layouts.size(); ++L) analysers.emplace_back(p.layouts[L], gap::combine(p.bases[L], {}));
+    std::vector<Eigen::VectorXd> z(p.runs.size());
+    std::vector<const gap::Layout*> layouts, null_layouts;
+    std::vector<const Eigen::VectorXd*> expected, null_expected;
+    for (std::size_t r = 0; r < p.runs.size(); ++r) {
+      analysers[static_cast<std::size_t>(p.layout_of[r])].analyse(values(p.runs[r]), z[r]);
+      layouts.push_back(&p.layouts[static_cast<std::size_t>(p.layout_of[r])]);
+      expected.push_back(&analysers[static_cast<std::size_t>(p.layout_of[r])].expected_square());
+    }
+    for (std::size_t j = 0; j < null_z.size(); ++j) {
+      null_layouts.push_back(&p.layouts[static_cast<std::size_t>(null_layout[j])]);
+      null_expected.push_back(&analysers[static_cast<std::size_t>(null_layout[j])].expected_square());
+    }
+    d.time_functions = time_function_shares(layouts, z, p.site);
+    d.allan = allan_curves(layouts, z, expected, null_layouts, null_z, null_expected, p.site.filter_interval_s);
+  }
+
+  // Which effect, and how far the gap shrinks.
+  if (n < options.minimum_runs) {
+    d.statements.push_back(fmt::format("{} runs: too few to fit candidate effects on one half and score them on "
+                                       "the other (at least {} needed); no ranking", n, options.minimum_runs));
+    return d;
+  }
+  if (!d.significant) {
+    d.statements.push_back(fmt::format("no significant gap (p = {:.3g} >= alpha = {}): no effect is selected",
+                                       d.p_value, options.alpha));
+  }
+  const auto& registry = gap::candidate_registry();
+  std::vector<std::vector<gap::Extension>> selected(p.layouts.size());
+  std::vector<std::string> taken;
+  d.heldout_gap_before = d.gap;
+  double before = d.gap;
+  for (int step = 0; step < std::max(1, options.max_selected); ++step) {
+    const std::vector<Scored> ranked = rank_candidates(p, selected, taken, null.power, options.seed);
+    if (ranked.empty()) break;
+    if (step == 0) {
+      d.ranked = true;
+      for (const Scored& s : ranked) {
+        const gap::Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
+        d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before});
+      }
+      d.top = d.ranking.front().effect;
+      if (ranked.size() > 1) {
+        // Runner-up margin and its resampling standard error.
+        constexpr int kResamples = 500;
+        std::vector<double> margins;
+        for (int b = 0; b < kResamples; ++b) {
+          const std::vector<int> idx = resample(options.seed, 2'000'000 + static_cast<std::uint64_t>(b), n, n);
+          margins.push_back(gap::gap_value(gap::pooled(ranked[1].heldout, idx), null.power) -
+                            gap::gap_value(gap::pooled(ranked[0].heldout, idx), null.power));
+        }
+        d.runner_up_margin = ranked[1].heldout_gap - ranked[0].heldout_gap;
+        const double mean = std::accumulate(margins.begin(), margins.end(), 0.0) / kResamples;
+        double var = 0;
+        for (double m : margins) var += (m - mean) * (m - mean);
+        d.runner_up_margin_se = std::sqrt(var / (kResamples - 1));
+        const bool single = d.ranking[0].effect.find('|') == std::string::npos &&
+                            d.ranking[1].effect.find('|') == std::string::npos;
+        if (single && d.runner_up_margin < 2.0 * d.runner_up_margin_se)
+          d.top = d.ranking[0].effect + "|" + d.ranking[1].effect;
+      }
+    }
+    if (!d.significant) break;
+    const Scored& best = ranked.front();
+    const gap::Candidate& c = registry[static_cast<std::size_t>(best.candidate)];
+    if (step > 0 && best.heldout_gap >= before) break;  // nothing left that helps on held-out runs
+    GreedyStep g{c.name, best.parameters, best.heldout_gap, p_value_of(best.heldout_gap, null.gaps)};
+    d.greedy.push_back(g);
+    d.selected.push_back(step == 0 ? d.top : c.name);
+    taken.push_back(c.name);
+    const std::vector<double> theta = c.grid_point(best.full_fit);
+    for (std::size_t L = 0; L < p.layouts.size(); ++L) {
+      const gap::LayoutContext ctx{&p.layouts[L], &p.site, &p.bases[L], {}};
+      selected[L].push_back(c.build(ctx, theta));
+    }
+    before = best.heldout_gap;
+    if (g.p_value >= options.alpha) break;  // no significant gap remains
+    if (step + 1 == options.max_selected)
+      d.statements.push_back(fmt::format("a significant gap remains after {} effects ({}); the greedy search stops "
+                                         "there", step + 1, fmt_params(best.parameters)));
+  }
+  return d;
+}
+
+RecordFile merge_record_files(const std::vector<RecordFile>& files, const std::vector<std::string>& names) {
+  RecordFile out = files.front();
+  std::map<std::int64_t, bool> ids;
+  for (const RecordRun& r : out.runs) ids[r.id] = true;
+  std::int64_t next = ids.empty() ? 0 : ids.rbegin()->first + 1;
+  for (std::size_t f = 1; f < files.size(); ++f) {
+    const RecordHeader& h = files[f].header;
+    const RecordHeader& h0 = files.front().header;
+    if (h.latitude_deg() != h0.latitude_deg() || h.system() != h0.system() ||
+        h.test_duration_s() != h0.test_duration_s() || h.scheme() != h0.scheme() ||
+        h.dv_pulse_mps() != h0.dv_pulse_mps())
+      throw InputError("--records " + names[f], "header",
+                       "all record files of one diagnosis must share latitude_deg, system, test_duration_s, "
+                       "scheme and dv_pulse_mps with " + names.front());
+    for (RecordRun r : files[f].runs) {
+      if (ids.count(r.id)) r.id = next;
+      for (RecordRow& row : r.rows) row.run = r.id;
+      ids[r.id] = true;
+      next = std::max(next, r.id + 1);
+      out.runs.push_back(std::move(r));
+    }
+  }
+  return out;
+}
+
+}  // namespace insmc::mc

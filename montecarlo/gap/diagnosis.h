@@ -1,0 +1,129 @@
+#pragma once
+/// `insmc gap`: the sim-to-real gap diagnosis (DESIGN.md §3, issue 7).
+///
+/// 1. Model: each run's f and r rows as the linear level predicts them
+///    (lib/gap), the test run fitted, the navigation predicted from the fit.
+/// 2. Gap: G of lib/gap/gap_metric.h on all runs, against the model's own
+///    null: truth-level runs with no effect and the priors, simulated at the
+///    records' own times, pulse weight, resolution, latitude and system
+///    (record_simulation.h). Significance: the share of null files (runs drawn
+///    with replacement from the null runs, as many as the records have) whose
+///    G is at least the observed one.
+/// 3. Where: each group's ℓ_g and its own null p-value, shares of Σ ℓ_g² by
+///    axis, stage and window; the post-test innovations projected on the time
+///    functions of the error (Schuler, earth rate, t², t³, t⁴); the Allan
+///    deviation of the f residuals against the null's.
+/// 4. Which effect: every candidate (lib/gap/candidates.h) fitted on one half
+///    of the runs (grid search, least G), scored on the other half, and the
+///    halves swapped (2-fold cross-validation): ranked by held-out G.
+/// 5. How far: shrink = 1 − G_after/G_before on held-out runs; effects added
+///    greedily while the held-out gap stays significant.
+/// The diagnosis reads only the records' non-`truth.` keys and the priors.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lib/gap/candidates.h"
+#include "lib/gap/gap_metric.h"
+#include "lib/records/record.h"
+#include "lib/uncertainty/uncertainty_model.h"
+
+namespace insmc::mc {
+
+struct DiagnosisOptions {
+  UncertaintyModel prior;           ///< Table 3.1 unless overridden
+  double alpha = 0.01;              ///< false-alarm rate of "significant"
+  std::uint64_t seed = 1;           ///< null runs and resampling
+  int calibration_runs = 0;         ///< null runs; 0: max(200, 10 × runs)
+  int bootstrap = 2000;             ///< null files for the p-values
+  int max_selected = 3;             ///< greedy additions at most
+  /// Pulse weight assumed when the header has no dv_pulse_mps [m/s].
+  double default_pulse_mps = 0.1 * kFtpsToMps;
+  gap::ExtractionOptions extraction;
+  int minimum_runs = 5;             ///< for a ranking (two halves of ≥ 2 runs)
+};
+
+struct GroupResult {
+  int group = 0;
+  double count = 0;        ///< terms over all runs
+  double power = 0;        ///< observed mean z²
+  double null_power = 0;   ///< m0_g
+  double log_ratio = 0;    ///< ℓ_g
+  double p_value = 1;      ///< of |ℓ_g| against the null files
+  double share = 0;        ///< ℓ_g² / Σ ℓ²
+};
+
+struct Share {
+  std::string name;
+  double share = 0;
+};
+
+struct TimeFunctionShares {
+  int axis = 0;
+  std::vector<Share> shares;  ///< of the post-test r innovation energy
+};
+
+struct AllanPoint {
+  double cluster_s = 0;
+  double observed = 0;  ///< Allan deviation of the f residuals [m/s²]
+  double null = 0;      ///< the same of the null runs
+};
+
+struct AllanCurve {
+  int axis = 0;
+  std::vector<AllanPoint> points;
+};
+
+struct ParameterEstimate {
+  std::string name;
+  Dimension dimension = Dimension::kDimensionless;
+  double value = 0, low = 0, high = 0;  ///< grid point of least G, 16–84 % of resampled fits
+  bool at_grid_edge = false;
+};
+
+struct CandidateResult {
+  std::string effect;
+  std::string description;
+  std::vector<ParameterEstimate> parameters;
+  double heldout_gap_after = 0;
+  double shrink = 0;
+};
+
+struct GreedyStep {
+  std::string effect;
+  std::vector<ParameterEstimate> parameters;
+  double heldout_gap = 0;
+  double p_value = 1;
+};
+
+struct Diagnosis {
+  int runs = 0;
+  int calibration_runs = 0;
+  std::vector<std::string> statements;  ///< what the data cannot support, plainly
+  double gap = 0, p_value = 1, alpha = 0.01;
+  bool significant = false;
+  double null_gap_median = 0, null_gap_critical = 0;  ///< quantiles 0.5 and 1 − α
+  std::vector<GroupResult> groups;
+  std::vector<Share> by_axis, by_stage, by_window;
+  std::vector<TimeFunctionShares> time_functions;
+  std::vector<AllanCurve> allan;
+  bool ranked = false;
+  double heldout_gap_before = 0;
+  std::vector<CandidateResult> ranking;   ///< ascending held-out gap
+  std::string top;                        ///< effect or class "a|b"
+  double runner_up_margin = 0, runner_up_margin_se = 0;
+  std::vector<GreedyStep> greedy;         ///< the effects added, in order
+  std::vector<std::string> selected;
+};
+
+/// Diagnoses the runs of one record file (already read and validated).
+/// Throws InputError when the file cannot be diagnosed at all (e.g. no run
+/// with test rows).
+Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options);
+
+/// Merges several record files of the same site (latitude, system, T,
+/// scheme) into one; runs are renumbered if their numbers collide. Throws
+/// InputError naming the file whose header differs.
+RecordFile merge_record_files(const std::vector<RecordFile>& files, const std::vector<std::string>& names);
+
+}  // namespace insmc::mc

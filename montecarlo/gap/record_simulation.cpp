@@ -1,0 +1,64 @@
+#include "montecarlo/gap/record_simulation.h"
+
+#include <cmath>
+
+#include "lib/common/assert.h"
+#include "montecarlo/random/philox.h"
+
+namespace insmc::mc {
+
+NormalSource philox_normals(std::uint64_t seed, std::uint64_t run) {
+  return [seed, run](std::uint64_t stream, std::uint64_t counter) {
+    const PhiloxBlock ctr = {static_cast<std::uint32_t>(run), static_cast<std::uint32_t>(run >> 32),
+                             static_cast<std::uint32_t>(Stream::TruthEffects) + 0x100u * static_cast<std::uint32_t>(stream + 1),
+                             static_cast<std::uint32_t>(counter)};
+    INSMC_ASSERT(counter < (1ull << 32) && stream < (1ull << 23), "noise draw {} of stream {}", counter, stream);
+    const PhiloxBlock out = philox4x32_10(ctr, philox_key(seed));
+    return inverse_normal_cdf(open_uniform01_from_words(out[0], out[1]));
+  };
+}
+
+RecordRun simulate_record_run(const TruthOptions& truth, const Sampler& sampler, std::uint64_t seed,
+                              std::uint64_t run, const std::vector<double>& times_s,
+                              const RecordRunSpec& spec) {
+  TruthOptions o = truth;
+  double phases[3];
+  fill_uniform01(seed, Stream::PulsePhase, run, 3, 1, phases);
+  o.pulse_phase = Vec3(phases[0] - 0.5, phases[1] - 0.5, phases[2] - 0.5);
+  const UncertaintyVector x = sampler.draw(seed, run);
+  const TruthRun r = simulate_truth(o, x, times_s, philox_normals(seed, run));
+  RecordRun out;
+  out.id = static_cast<std::int64_t>(run);
+  const double q = spec.position_resolution_m;
+  for (std::size_t k = 0; k < r.t_s.size(); ++k) {
+    RecordRow row;
+    row.run = out.id;
+    row.t_s = r.t_s[k];
+    row.phase = r.t_s[k] <= spec.test_duration_s + 1e-9 ? Phase::kTest : Phase::kNav;
+    for (int a = 0; a < 3; ++a)
+      if (std::isfinite(r.accel_error_ap_mps2[k][a])) row.f_mps2[a] = r.accel_error_ap_mps2[k][a];
+    Vec3 pos = r.position_error_ap_m[k];
+    if (q > 0)  // the position computer's resolution
+      for (int a = 0; a < 3; ++a) pos[a] = q * std::round(pos[a] / q);
+    row.r_ap_m = pos;
+    out.rows.push_back(row);
+  }
+  return out;
+}
+
+RecordRun simulate_like(const RecordRun& pattern, const TruthOptions& truth, const Sampler& sampler,
+                        std::uint64_t seed, std::uint64_t run, const RecordRunSpec& spec) {
+  std::vector<const RecordRow*> rows;
+  std::vector<double> times;
+  for (const RecordRow& row : pattern.rows)
+    if (row.phase != Phase::kAlign) rows.push_back(&row), times.push_back(row.t_s);
+  RecordRun out = simulate_record_run(truth, sampler, seed, run, times, spec);
+  for (std::size_t k = 0; k < out.rows.size(); ++k) {
+    out.rows[k].phase = rows[k]->phase;
+    for (int a = 0; a < 3; ++a)
+      if (!rows[k]->f_mps2[a]) out.rows[k].f_mps2[a].reset();
+  }
+  return out;
+}
+
+}  // namespace insmc::mc

@@ -1,0 +1,19 @@
+#pragma once
+/// The gap diagnosis written out: gap.json (machines) and gap.md with its
+/// SVG plots (people). Shape of the JSON: issue 7.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/write/json.h"
+
+namespace insmc::mc {
+
+Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_files);
+
+/// (file name, contents): gap.md and its plots.
+std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosis& d,
+                                                                  const std::vector<std::string>& record_files);
+
+}  // namespace insmc::mc

@@ -1,0 +1,63 @@
+#pragma once
+/// `insmc gap-validate` (issue 7): the diagnosis run blind on truth-level
+/// records with one named effect (or none) switched on, at several
+/// magnitudes and seeds. The data come from the truth simulator
+/// (lib/truth), never from the diagnosis' candidate models; the records are
+/// stripped of their `truth.` keys before the diagnosis sees them.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "montecarlo/gap/diagnosis.h"
+
+namespace insmc::mc {
+
+struct ValidationOptions {
+  bool quick = false;
+  int runs_per_file = 20;
+  std::vector<double> magnitudes = {0.3, 1.0, 3.0};  ///< factors on the effect's defaults
+  int seeds = 2;                                    ///< files per (effect, magnitude)
+  int null_files = 100;                             ///< files with no effect
+  double alpha = 0.01;
+  std::uint64_t seed = 1000;
+  /// The quick CI subset: 10-run files, the dominant magnitude, one seed, 4 null files.
+  static ValidationOptions quick_subset();
+};
+
+/// One blind diagnosis of one file.
+struct ValidationCase {
+  std::string effect;      ///< "none" for null data
+  double magnitude = 0;    ///< factor on the defaults
+  int seed = 0;
+  bool significant = false;
+  std::string top;         ///< the diagnosis' top effect or class ("" if not ranked)
+  bool identified = false; ///< top names the effect (alone or in a class of two)
+  double shrink = 0;       ///< of the top candidate on held-out runs
+  double recovered_ratio = 0;  ///< fitted / true of the magnitude parameter (0: not comparable)
+  double gap = 0, p_value = 1;
+};
+
+struct EffectScore {
+  std::string effect;
+  int significant_cases = 0, identified = 0;
+  double identification_rate = 0;   ///< among significant cases
+  double median_shrink = 0;         ///< among significant cases
+  double detection_threshold = 0;   ///< least magnitude identified in ≥ 90 % of its files (0: none)
+  double median_recovered_ratio = 0;
+};
+
+struct ValidationResult {
+  std::vector<ValidationCase> cases;
+  std::vector<EffectScore> scores;
+  int null_files = 0, false_alarms = 0;
+  double median_shrink = 0;             ///< over all significant effect cases
+  std::vector<std::string> failures;    ///< targets not met, one line each
+};
+
+ValidationResult validate_diagnosis(const ValidationOptions& options);
+
+/// validation.md, confusion.md, confusion.csv, validation.json.
+std::vector<std::pair<std::string, std::string>> validation_report(const ValidationResult& r,
+                                                                   const ValidationOptions& options);
+
+}  // namespace insmc::mc

@@ -1,0 +1,135 @@
+#include "montecarlo/gap/where.h"
+
+#include <Eigen/QR>
+#include <cmath>
+#include <map>
+
+namespace insmc::mc {
+
+std::vector<GroupResult> group_results(const gap::GroupSums& observed, const gap::GroupValues& null_power,
+                                       const std::vector<gap::GroupValues>& null_log_ratios) {
+  const gap::GroupValues power = gap::group_power(observed);
+  const gap::GroupValues l = gap::log_power_ratio(observed, null_power);
+  double total = 0;
+  for (double v : l)
+    if (std::isfinite(v)) total += v * v;
+  std::vector<GroupResult> out;
+  for (int g = 0; g < gap::kGroupCount; ++g) {
+    if (!std::isfinite(l[g])) continue;
+    std::size_t above = 0;
+    for (const gap::GroupValues& nl : null_log_ratios)
+      if (!std::isfinite(nl[g]) || std::abs(nl[g]) >= std::abs(l[g])) ++above;
+    out.push_back({g, observed.count[g], power[g], null_power[g], l[g],
+                   (1.0 + static_cast<double>(above)) / (1.0 + static_cast<double>(null_log_ratios.size())),
+                   total > 0 ? l[g] * l[g] / total : 0.0});
+  }
+  return out;
+}
+
+std::vector<Share> shares_by(const std::vector<GroupResult>& groups, const std::function<std::string(int)>& key) {
+  std::vector<Share> out;
+  for (const GroupResult& g : groups) {
+    const std::string k = key(g.group);
+    auto it = std::find_if(out.begin(), out.end(), [&](const Share& s) { return s.name == k; });
+    if (it == out.end()) out.push_back({k, g.share});
+    else it->share += g.share;
+  }
+  return out;
+}
+
+std::vector<TimeFunctionShares> time_function_shares(const std::vector<const gap::Layout*>& layouts,
+                                                     const std::vector<Eigen::VectorXd>& z,
+                                                     const gap::RecordSite& site) {
+  const char* names[] = {"Schuler sin/cos(w_s t)", "earth rate sin/cos(w_ie t)", "t^2", "t^3", "t^4", "rest"};
+  const double ws = site.model.schuler_radps(), wie = site.model.earth_rate_radps;
+  std::vector<TimeFunctionShares> out;
+  for (int axis = 0; axis < 3; ++axis) {
+    double explained[5] = {}, total = 0;
+    for (std::size_t r = 0; r < layouts.size(); ++r) {
+      std::vector<double> t, v;
+      for (std::size_t i = 0; i < layouts[r]->rows.size(); ++i) {
+        const gap::ObservationRow& row = layouts[r]->rows[i];
+        if (static_cast<int>(i) < layouts[r]->test_rows || row.quantity != gap::Quantity::kR || row.axis != axis) continue;
+        t.push_back(row.t_s);
+        v.push_back(z[r][static_cast<Eigen::Index>(i)]);
+      }
+      const auto m = static_cast<Eigen::Index>(t.size());
+      if (m < 8) continue;
+      const double end = t.back();
+      Eigen::VectorXd rest = Eigen::Map<Eigen::VectorXd>(v.data(), m);
+      total += rest.squaredNorm();
+      for (int f = 0; f < 5; ++f) {
+        Eigen::MatrixXd basis(m, f < 2 ? 2 : 1);
+        for (Eigen::Index i = 0; i < m; ++i) {
+          const double ti = t[static_cast<std::size_t>(i)];
+          if (f == 0) basis(i, 0) = std::sin(ws * ti), basis(i, 1) = std::cos(ws * ti);
+          else if (f == 1) basis(i, 0) = std::sin(wie * ti), basis(i, 1) = std::cos(wie * ti);
+          else basis(i, 0) = std::pow(ti / end, f);
+        }
+        const Eigen::VectorXd fit = basis * basis.colPivHouseholderQr().solve(rest);
+        explained[f] += fit.squaredNorm();
+        rest -= fit;
+      }
+    }
+    TimeFunctionShares s{axis, {}};
+    if (total > 0) {
+      double used = 0;
+      for (int f = 0; f < 5; ++f) s.shares.push_back({names[f], explained[f] / total}), used += explained[f] / total;
+      s.shares.push_back({names[5], std::max(0.0, 1.0 - used)});
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+namespace {
+
+/// Σ of squared differences of consecutive cluster means and their count,
+/// per cluster size, for one axis of one run's f residuals.
+void add_allan(const gap::Layout& layout, const Eigen::VectorXd& z, const Eigen::VectorXd& expected, int axis,
+               std::map<int, std::pair<double, double>>& acc) {
+  std::vector<double> e;
+  for (std::size_t i = 0; i < layout.rows.size(); ++i)
+    if (layout.rows[i].quantity == gap::Quantity::kF && layout.rows[i].axis == axis)
+      e.push_back(z[static_cast<Eigen::Index>(i)] * std::sqrt(expected[static_cast<Eigen::Index>(i)]));
+  for (int m = 1; 4 * m <= static_cast<int>(e.size()); m *= 2) {
+    std::vector<double> means;
+    for (std::size_t s = 0; s + static_cast<std::size_t>(m) <= e.size(); s += static_cast<std::size_t>(m)) {
+      double sum = 0;
+      for (int k = 0; k < m; ++k) sum += e[s + static_cast<std::size_t>(k)];
+      means.push_back(sum / m);
+    }
+    for (std::size_t k = 1; k < means.size(); ++k) {
+      acc[m].first += (means[k] - means[k - 1]) * (means[k] - means[k - 1]);
+      acc[m].second += 1;
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<AllanCurve> allan_curves(const std::vector<const gap::Layout*>& layouts,
+                                     const std::vector<Eigen::VectorXd>& z,
+                                     const std::vector<const Eigen::VectorXd*>& expected,
+                                     const std::vector<const gap::Layout*>& null_layouts,
+                                     const std::vector<Eigen::VectorXd>& null_z,
+                                     const std::vector<const Eigen::VectorXd*>& null_expected,
+                                     double filter_interval_s) {
+  std::vector<AllanCurve> out;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::map<int, std::pair<double, double>> data, null;
+    for (std::size_t r = 0; r < layouts.size(); ++r) add_allan(*layouts[r], z[r], *expected[r], axis, data);
+    for (std::size_t r = 0; r < null_layouts.size(); ++r) add_allan(*null_layouts[r], null_z[r], *null_expected[r], axis, null);
+    AllanCurve c{axis, {}};
+    for (const auto& [m, sum] : data) {
+      if (sum.second <= 0 || !null.count(m) || null[m].second <= 0) continue;
+      // Allan variance ½ ⟨(ȳ_{k+1} − ȳ_k)²⟩.
+      c.points.push_back({m * filter_interval_s, std::sqrt(0.5 * sum.first / sum.second),
+                          std::sqrt(0.5 * null[m].first / null[m].second)});
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace insmc::mc

@@ -1,0 +1,40 @@
+#pragma once
+/// Where the gap lies (issue 7 item 2): per group, shares by axis, stage and
+/// window; the post-test innovations on the error's time functions; the
+/// Allan deviation of the f residuals against the null's.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "montecarlo/gap/diagnosis.h"
+
+namespace insmc::mc {
+
+/// Per group: power, null power, ℓ_g, its p-value against the null files'
+/// |ℓ_g|, and its share of Σ ℓ².
+std::vector<GroupResult> group_results(const gap::GroupSums& observed, const gap::GroupValues& null_power,
+                                       const std::vector<gap::GroupValues>& null_log_ratios);
+
+/// Σ of the groups' shares under each key (key order of first appearance).
+std::vector<Share> shares_by(const std::vector<GroupResult>& groups, const std::function<std::string(int)>& key);
+
+/// Per axis: the share of the post-test r innovation energy (normalized, all
+/// runs) explained by, in this order, the Schuler terms sin/cos ω_s t, the
+/// earth-rate terms sin/cos ω_ie t, then t², t³, t⁴ (each after the ones
+/// before, least squares per run), and what is left ("rest").
+std::vector<TimeFunctionShares> time_function_shares(const std::vector<const gap::Layout*>& layouts,
+                                                     const std::vector<Eigen::VectorXd>& z,
+                                                     const gap::RecordSite& site);
+
+/// Per axis: Allan deviation of the f residuals (all f rows of a run in
+/// time order, non-overlapping clusters of 1, 2, 4, ... rows) of the data
+/// and of the null runs.
+std::vector<AllanCurve> allan_curves(const std::vector<const gap::Layout*>& layouts,
+                                     const std::vector<Eigen::VectorXd>& z,
+                                     const std::vector<const Eigen::VectorXd*>& expected,
+                                     const std::vector<const gap::Layout*>& null_layouts,
+                                     const std::vector<Eigen::VectorXd>& null_z,
+                                     const std::vector<const Eigen::VectorXd*>& null_expected,
+                                     double filter_interval_s);
+
+}  // namespace insmc::mc
