@@ -128,10 +128,31 @@ Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma,
   // noise: a random walk's bridge between knots has mean variance q Δ/6
   // (q = σ²/1 h; a Gauss–Markov process is locally one with q = 2σ²/τ).
   const double q = tau <= 0 ? sigma * sigma / 3600.0 : 2.0 * sigma * sigma / tau;
-  const double nugget = q * knot_spacing(tau) / 6.0;
+  const double d = knot_spacing(tau), nugget = q * d / 6.0;
   const double g = ctx.site->model.gravity_mps2;
   if (drive == Drive::kAccel) e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(nugget));
   if (drive == Drive::kAngle && tilt_noise) e.noise_var_add = f_noise(ctx, Eigen::Vector3d(g * g * nugget, g * g * nugget, 0.0));
+  if (drive == Drive::kRate) return e;
+  // The r rows see the bridges too: the bridge of interval j integrates to an
+  // impulse of variance q Δ³/12 at its middle m_j, which the Schuler loop
+  // (3.24) turns into sin(ω_s (t − m_j))/ω_s of position (accelerometer error,
+  // tilt × g) or cos(ω_s (t − m_j)) (velocity). Independent between
+  // intervals: their variances add.
+  if (e.noise_var_add.size() == 0) e.noise_var_add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));
+  const Eigen::Vector3d gain = drive == Drive::kAngle ? Eigen::Vector3d(g * g, g * g, 0.0) : Eigen::Vector3d::Ones();
+  const double ws = ctx.site->model.schuler_radps(), impulse = q * d * d * d / 12.0;
+  for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
+    const ObservationRow& row = ctx.layout->rows[i];
+    if (row.quantity != Quantity::kR) continue;
+    double sum = 0.0;
+    for (double start = 0.0; start < row.t_s; start += d) {
+      const double part = std::min(1.0, (row.t_s - start) / d);  // a partly elapsed interval
+      const double lag = row.t_s - (start + 0.5 * part * d);
+      const double h = drive == Drive::kVelocity ? std::cos(ws * lag) : std::sin(ws * lag) / ws;
+      sum += h * h * part * part * part;
+    }
+    e.noise_var_add[static_cast<Eigen::Index>(i)] += gain[row.axis] * impulse * sum;
+  }
   return e;
 }
 
@@ -254,7 +275,7 @@ Candidate velocity_random_walk() {
           [](const LayoutContext& ctx, std::span<const double> p) {
             Extension e = process_extension(ctx, Drive::kVelocity, p[0], 0.0, false);
             const double q = p[0] * p[0] / 3600.0;
-            e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(q / ctx.site->filter_interval_s));
+            e.noise_var_add += f_noise(ctx, Eigen::Vector3d::Constant(q / ctx.site->filter_interval_s));
             return e;
           }};
 }

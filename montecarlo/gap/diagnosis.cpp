@@ -332,7 +332,8 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
       d.ranked = true;
       for (const Scored& s : ranked) {
         const gap::Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
-        d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before});
+        d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before,
+                             gap::log_power_ratio(gap::pooled(s.heldout, all_runs(s.heldout.size())), null.power)});
       }
       d.top = d.ranking.front().effect;
       if (ranked.size() > 1) {

@@ -87,6 +87,7 @@ struct CandidateResult {
   std::vector<ParameterEstimate> parameters;
   double heldout_gap_after = 0;
   double shrink = 0;
+  gap::GroupValues heldout_log_ratios{};  ///< ℓ_g on held-out runs with the effect added
 };
 
 struct GreedyStep {

@@ -102,6 +102,10 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
     e["params"] = parameters_json(c.parameters);
     e["heldout_gap_after"] = c.heldout_gap_after;
     e["shrink"] = c.shrink;
+    Json left = Json::object();
+    for (int g = 0; g < gap::kGroupCount; ++g)
+      if (std::isfinite(c.heldout_log_ratios[g])) left[gap::group_name(g)] = c.heldout_log_ratios[g];
+    e["heldout_log_ratios"] = left;
     ranking.push_back(e);
   }
   j["ranked"] = d.ranked;

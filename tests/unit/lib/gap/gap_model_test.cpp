@@ -1,0 +1,215 @@
+// The gap diagnosis' linear-Gaussian run model (lib/gap): responses against
+// closed forms and against the linear model's own columns, the analyser's
+// expected squares against draws from the model, the metric, the candidates
+// and the extraction of records other software may write.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "lib/gap/candidates.h"
+#include "lib/gap/gap_metric.h"
+#include "lib/gap/response.h"
+#include "lib/gap/run_analysis.h"
+#include "lib/uncertainty/uncertainty_model.h"
+#include "lib/units/units.h"
+
+namespace insmc::gap {
+namespace {
+
+RecordSite site() {
+  RecordSite s;
+  s.filter_interval_s = 10.0;
+  s.dv_pulse_mps = 0.1 * kFtpsToMps;
+  return s;
+}
+
+/// f rows every τ and r rows every 60 s on three axes, test T = 900 s.
+Layout layout(double end_s) {
+  Layout l;
+  for (int stage = 0; stage < 2; ++stage) {
+    for (double t = 10.0; t <= end_s + 1e-9; t += 10.0) {
+      const bool test = t <= 900.0;
+      if (test != (stage == 0)) continue;
+      const Stage st = test ? Stage::kTest : Stage::kNav;
+      const int w = test ? 0 : nav_window(t, 900.0);
+      for (int k = 0; k < 3; ++k) l.rows.push_back({t, Quantity::kF, k, group_of(st, Quantity::kF, k, w)});
+      if (std::fmod(t, 60.0) == 0.0)
+        for (int k = 0; k < 3; ++k) l.rows.push_back({t, Quantity::kR, k, group_of(st, Quantity::kR, k, w)});
+    }
+    if (stage == 0) l.test_rows = static_cast<int>(l.rows.size());
+  }
+  return l;
+}
+
+TEST(GapResponse, ConstantAccelerometerErrorGivesTheSchulerClosedForm) {
+  const Layout l = layout(3000.0);
+  const RecordSite s = site();
+  InputSignal in;
+  in.columns = 1;
+  in.at = [](double, Columns3& a, Columns3& th) {
+    a.setZero();
+    th.setZero();
+    a(0, 0) = 1.0;
+  };
+  const Eigen::MatrixXd r = input_response(l, s, in);
+  const double ws = s.model.schuler_radps();
+  for (std::size_t i = 0; i < l.rows.size(); ++i) {
+    const ObservationRow& row = l.rows[i];
+    const double want = row.axis != 0 ? 0.0
+                        : row.quantity == Quantity::kF ? 1.0
+                                                       : (1.0 - std::cos(ws * row.t_s)) / (ws * ws);  // (3.24)
+    EXPECT_NEAR(r(static_cast<Eigen::Index>(i), 0), want, 1e-9 * (1.0 + std::abs(want))) << row.t_s;
+  }
+}
+
+TEST(GapResponse, AnAccelerometerInputEqualsTheLinearModelsSwitchOverBiasColumn) {
+  // ∂f_cx enters the linear model (3.18) as a pure navigation-mode bias: the
+  // input path (response.h) must reproduce LinearErrorModel's column.
+  const Layout l = layout(6300.0);
+  const RecordSite s = site();
+  const Eigen::MatrixXd x = uncertainty_response(l, s);
+  for (int k = 0; k < 2; ++k) {
+    InputSignal in;
+    in.columns = 1;
+    in.at = [k](double, Columns3& a, Columns3& th) {
+      a.setZero();
+      th.setZero();
+      a(k, 0) = 1.0;
+    };
+    const Eigen::MatrixXd r = input_response(l, s, in);
+    const Eigen::VectorXd col = x.col(ux::kBiasChangeConst + k);
+    EXPECT_LT((r.col(0) - col).cwiseAbs().maxCoeff(), 1e-9 * col.cwiseAbs().maxCoeff()) << k;
+  }
+}
+
+TEST(GapResponse, APlatformTiltIsSeenAsGravityAcrossTheAccelerometers) {
+  // f^a = (I − [θ×]) f^{a'} with f^{a'} = (0, 0, −g) at t = 0: a tilt θ_y gives
+  // f_x = g θ_y and a tilt θ_x gives f_y = −g θ_x.
+  const Layout l = layout(60.0);
+  const RecordSite s = site();
+  InputSignal in;
+  in.columns = 2;
+  in.at = [](double, Columns3& a, Columns3& th) {
+    a.setZero();
+    th.setZero();
+    th(1, 0) = 1.0;
+    th(0, 1) = 1.0;
+  };
+  const Eigen::MatrixXd r = input_response(l, s, in);
+  const double g = s.model.gravity_mps2;
+  ASSERT_EQ(l.rows[0].quantity, Quantity::kF);
+  EXPECT_NEAR(r(0, 0), g, 1e-3 * g);   // f_x at t = 10 s, θ_y
+  EXPECT_NEAR(r(1, 1), -g, 1e-3 * g);  // f_y, θ_x
+}
+
+TEST(GapAnalysis, NormalizedSquaresAverageOneOnDataDrawnFromTheModel) {
+  // E z² = 1 per group for data y = H c + e drawn with the model's own second
+  // moments. Per-run group means are independent across runs: their mean is
+  // tested against 1 with 4.5 standard errors (a false failure ~7e-6 per group).
+  const Layout l = layout(3600.0);
+  const RecordSite s = site();
+  const BaseModel base = make_base_model(l, s, UncertaintyModel{}.variance());
+  const GaussianModel m = combine(base, {});
+  const RunAnalyser a(l, m);
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> n01;
+  constexpr int kRuns = 400;
+  std::vector<GroupValues> means;
+  for (int r = 0; r < kRuns; ++r) {
+    Eigen::VectorXd c(m.prior_var.size()), e(m.noise_var.size());
+    for (Eigen::Index j = 0; j < c.size(); ++j) c[j] = std::sqrt(m.prior_var[j]) * n01(rng);
+    for (Eigen::Index i = 0; i < e.size(); ++i) e[i] = std::sqrt(m.noise_var[i]) * n01(rng);
+    means.push_back(group_power(a.analyse(m.H * c + e)));
+  }
+  for (int g = 0; g < kGroupCount; ++g) {
+    if (!std::isfinite(means[0][g])) continue;
+    double sum = 0, sq = 0;
+    for (const GroupValues& v : means) sum += v[g], sq += v[g] * v[g];
+    const double mean = sum / kRuns, sd = std::sqrt((sq - kRuns * mean * mean) / (kRuns - 1));
+    EXPECT_LT(std::abs(mean - 1.0), 4.5 * sd / std::sqrt(kRuns)) << group_name(g) << " mean " << mean;
+  }
+}
+
+TEST(GapMetric, IsTheRmsOfTheGroupsLogPowerRatios) {
+  GroupSums s;
+  GroupValues ref;
+  ref.fill(std::nan(""));
+  for (int g = 0; g < 4; ++g) s.z2[g] = 10.0, s.count[g] = 10.0, ref[g] = 1.0;
+  EXPECT_DOUBLE_EQ(gap_value(s, ref), 0.0);
+  s.z2[0] = 10.0 * std::exp(2.0);  // one group of four off by e² in power
+  EXPECT_NEAR(gap_value(s, ref), std::sqrt(4.0 / 4.0), 1e-12);
+  s.z2[1] = 10.0 * std::exp(-2.0);  // too little scatter counts as much as too much
+  EXPECT_NEAR(gap_value(s, ref), std::sqrt(8.0 / 4.0), 1e-12);
+}
+
+TEST(GapCandidates, EveryGridPointBuildsAConsistentExtension) {
+  const Layout l = layout(2400.0);
+  const RecordSite s = site();
+  const BaseModel base = make_base_model(l, s, UncertaintyModel{}.variance());
+  for (const Candidate& c : candidate_registry()) {
+    const LayoutContext ctx{&l, &s, &base, {}};
+    ASSERT_GT(c.grid_size(), 1) << c.name;
+    for (int k : {0, c.grid_size() - 1}) {
+      const Extension e = c.build(ctx, c.grid_point(k));
+      EXPECT_EQ(e.columns.cols(), e.column_var.size()) << c.name;
+      if (e.columns.cols() > 0) {
+        EXPECT_EQ(e.columns.rows(), static_cast<Eigen::Index>(l.rows.size())) << c.name;
+      }
+      if (e.noise_var_add.size() > 0) {
+        EXPECT_EQ(e.noise_var_add.size(), static_cast<Eigen::Index>(l.rows.size())) << c.name;
+        EXPECT_GE(e.noise_var_add.minCoeff(), 0.0) << c.name;
+      }
+      EXPECT_GE(e.x_var_add.minCoeff(), 0.0) << c.name;
+      const GaussianModel m = combine(base, {&e});
+      EXPECT_NO_FATAL_FAILURE(RunAnalyser(l, m)) << c.name;
+    }
+  }
+}
+
+TEST(GapLayout, RecordsOfOtherSoftwareAreTakenAsTheyCome) {
+  // f every 5 s (windows of 10 s overlap: every other is kept), an f gap,
+  // r every 20 s, a run that stops early, arbitrary run numbers.
+  RecordFile file;
+  file.header = RecordHeader::make(45.0, System::kTheodolite, 900.0, Scheme::kNone);
+  for (std::int64_t id : {17, -3}) {
+    RecordRun run;
+    run.id = id;
+    const double end = id == 17 ? 6300.0 : 2000.0;
+    for (double t = 5.0; t <= end; t += 5.0) {
+      RecordRow row;
+      row.run = id;
+      row.t_s = t;
+      row.phase = t <= 900.0 ? Phase::kTest : Phase::kNav;
+      if (!(t > 300.0 && t < 400.0)) row.f_mps2 = {1e-4, 2e-4, 3e-4};
+      row.r_ap_m = std::fmod(t, 20.0) == 0.0 ? std::optional<Eigen::Vector3d>(Eigen::Vector3d(1.0, 2.0, 3.0))
+                                             : std::nullopt;
+      if (row.r_ap_m || row.has_f()) run.rows.push_back(row);
+    }
+    file.runs.push_back(run);
+  }
+  EXPECT_DOUBLE_EQ(median_f_spacing(file), 5.0);
+  RecordSite s = site();
+  const std::vector<RunData> runs = extract_runs(file, s);
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_EQ(runs[0].id, 17);
+  for (const RunData& r : runs) {
+    double last_f = -1e9, last_r = -1e9;
+    for (const ObservationRow& row : r.layout.rows) {
+      if (row.axis != 0) continue;
+      if (row.quantity == Quantity::kF) {
+        EXPECT_GE(row.t_s - last_f, 10.0 - 1e-9);
+        EXPECT_FALSE(row.t_s > 300.0 && row.t_s < 400.0);
+        last_f = row.t_s;
+      } else {
+        EXPECT_TRUE(row.t_s - last_r >= 30.0 - 1e-9 || row.t_s == r.end_s) << row.t_s;  // the last always counts
+        last_r = row.t_s;
+      }
+    }
+    EXPECT_EQ(r.values.size(), r.layout.rows.size());
+  }
+  EXPECT_DOUBLE_EQ(runs[1].end_s, 2000.0);
+}
+
+}  // namespace
+}  // namespace insmc::gap
