@@ -1,0 +1,137 @@
+// End-to-end tests of `insmc gap` and `insmc gap-validate`: null records give
+// no significant gap, a withheld effect is found and named, records written
+// by other software are taken, bad input is refused (exit 2, one line).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "lib/records/record_io.h"
+#include "tests/cli/run_program.h"
+
+namespace insmc::testing {
+namespace {
+
+int line_count(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+
+std::string simulate(const TempDir& dir, const std::string& name, const std::string& options, int runs = 10) {
+  const std::string path = (dir.path() / name).string();
+  const auto r = run_insmc("simulate --runs " + std::to_string(runs) + " --out " + path + " " + options);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return path;
+}
+
+bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+
+TEST(Gap, RecordsOfTheModelItselfShowNoSignificantGap) {
+  // The null is the model itself: the false-alarm rate is alpha = 1 %; with
+  // this fixed seed the file is one of the 99 %.
+  TempDir dir;
+  const std::string records = simulate(dir, "null.csv", "--seed 11");
+  const auto r = run_insmc("gap --records " + records + " --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"significant\": false")) << r.out.substr(0, 400);
+  EXPECT_TRUE(has(r.out, "\"selected\": []")) << r.out.substr(0, 400);
+}
+
+TEST(Gap, AWithheldAccelerometerBiasInstabilityIsFoundAndNamed) {
+  TempDir dir;
+  const std::string records = simulate(dir, "abi.csv", "--seed 12 --effect accel_bias_instability:sigma=150ug");
+  const std::string out = (dir.path() / "report").string();
+  const auto r = run_insmc("gap --records " + records + " --out " + out + " --format json --max-effects 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"significant\": true")) << r.out.substr(0, 400);
+  const auto top = r.out.find("\"top\": \"");
+  ASSERT_NE(top, std::string::npos);
+  EXPECT_TRUE(has(r.out.substr(top, 80), "accel_bias_instability")) << r.out.substr(top, 80);
+  for (const char* f : {"gap.md", "gap.json", "gap_groups.svg", "gap_allan.svg"})
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / f)) << f;
+  EXPECT_EQ(read_file(std::filesystem::path(out) / "gap.json"), r.out);
+}
+
+TEST(Gap, RecordsOfOtherSoftwareAreDiagnosed) {
+  // Header keys in another order with unknown keys, numbers as 45.000, f every
+  // 20 s with a gap, runs of unequal length, arbitrary run numbers, no truth keys.
+  TempDir dir;
+  const RecordFile sim = read_record_file(simulate(dir, "sim.csv", "--seed 13", 6));
+  std::ostringstream text;
+  text << "# insmc-record v1\n# vendor=acme\n# scheme=none\n# test_duration_s=900.000\n# system=1\n"
+          "# latitude_deg=45.000\n# dv_pulse_mps=0.03048\nr_z,r_y,r_x,phase,t_s,run,f_x,f_y,f_z\n";
+  int k = 0;
+  for (const RecordRun& run : sim.runs) {
+    const double end = k % 2 ? 3600.0 : 6300.0;
+    const long id = 1000 - 37 * k++;
+    for (const RecordRow& row : run.rows) {
+      if (row.t_s > end) break;
+      const bool f = std::fmod(row.t_s, 20.0) == 0.0 && !(row.t_s > 2000 && row.t_s < 2300);
+      text << (*row.r_ap_m)[2] << ',' << (*row.r_ap_m)[1] << ',' << (*row.r_ap_m)[0] << ','
+           << (row.phase == Phase::kTest ? "test" : "nav") << ',' << row.t_s << ',' << id;
+      for (int a = 0; a < 3; ++a) {
+        text << ',';
+        if (f && row.f_mps2[a]) text << *row.f_mps2[a];
+      }
+      text << '\n';
+    }
+  }
+  const std::string path = (dir.path() / "other.csv").string();
+  std::ofstream(path) << text.str();
+  const auto r = run_insmc("gap --records " + path + " --format json --max-effects 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"runs\": 6")) << r.out.substr(0, 300);
+  EXPECT_TRUE(has(r.out, "\"significant\": false")) << r.out.substr(0, 400);
+}
+
+TEST(Gap, TooFewRunsGiveAStatementNotARanking) {
+  TempDir dir;
+  const std::string records = simulate(dir, "few.csv", "--seed 14 --effect sway:accel_rms=20mg", 3);
+  const auto r = run_insmc("gap --records " + records + " --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"ranked\": false")) << r.out.substr(0, 300);
+  EXPECT_TRUE(has(r.out, "too few to fit candidate effects")) << r.out;
+}
+
+TEST(Gap, BadInputIsRefusedWithOneLine) {
+  TempDir dir;
+  const std::string good = simulate(dir, "g.csv", "", 5);
+  std::string text = read_file(good);
+  const std::string bad = (dir.path() / "bad.csv").string();
+  std::ofstream(bad) << text.substr(0, text.rfind('\n', text.size() - 2) + 1) << "4,10,test,x,0,0,0,0,0\n";
+  std::string scheme_text = text;
+  scheme_text.replace(scheme_text.find("scheme=none"), 11, "scheme=5.2");
+  const std::string scheme = (dir.path() / "scheme.csv").string();
+  std::ofstream(scheme) << scheme_text;
+  const std::string out = (dir.path() / "out").string();
+  for (const std::string& args :
+       {"gap --records " + bad + " --out " + out, "gap --records /no/such/file.csv --out " + out,
+        "gap --records " + good + " --alpha 2 --out " + out, "gap --out " + out,
+        "gap --records " + good + " --format csv --out " + out, "gap --records " + scheme + " --out " + out,
+        "gap --records " + good + " --bound nonsense=1 --out " + out}) {
+    const auto r = run_insmc(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << args << "\n" << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  }
+  EXPECT_TRUE(has(run_insmc("gap --records " + bad).err, "bad.csv:")) << "file:line:column";
+}
+
+TEST(GapValidate, QuickSubsetScoresEveryEffectBlind) {
+  TempDir dir;
+  const std::string out = (dir.path() / "v").string();
+  const auto r = run_insmc("gap-validate --quick --out " + out);
+  // 0 when every target holds, 1 when one fails (named on stderr).
+  ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.err;
+  if (r.exit_code == 1) {
+    EXPECT_TRUE(has(r.err, "target not met")) << r.err;
+  }
+  const std::string csv = read_file(std::filesystem::path(out) / "confusion.csv");
+  for (const char* e : {"none", "quantization", "sway", "accel_bias_instability", "switch_transient"})
+    EXPECT_TRUE(has(csv, e)) << e;
+  const std::string json = read_file(std::filesystem::path(out) / "validation.json");
+  EXPECT_TRUE(has(json, "\"false_alarms\": 0")) << json.substr(0, 300);
+  EXPECT_EQ(run_insmc("gap-validate --seeds 0").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace insmc::testing
