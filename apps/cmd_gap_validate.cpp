@@ -11,7 +11,7 @@ namespace insmc::app {
 
 int run_gap_validate(const Args& args) {
   po::options_description opts("Options");
-  opts.add_options()("quick", "the CI subset (10-run files, magnitude 3x the defaults, 4 null files)")(
+  opts.add_options()("quick", "the CI subset (10-run files, magnitude 10x the defaults, 4 null files)")(
       "out", po::value<std::string>(), "folder for validation.md, confusion.md/csv, validation.json")(
       "seed", po::value<std::uint64_t>()->default_value(1000), "seed of the first simulated file")(
       "null-files", po::value<int>(), "null files (default 100, quick 4)")(

@@ -90,7 +90,7 @@ ValidationOptions ValidationOptions::quick_subset() {
   ValidationOptions o;
   o.quick = true;
   o.runs_per_file = 10;
-  o.magnitudes = {3.0};
+  o.magnitudes = {10.0};
   o.seeds = 1;
   o.null_files = 4;
   return o;

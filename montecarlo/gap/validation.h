@@ -15,12 +15,12 @@ namespace insmc::mc {
 struct ValidationOptions {
   bool quick = false;
   int runs_per_file = 20;
-  std::vector<double> magnitudes = {0.3, 1.0, 3.0};  ///< factors on the effect's defaults
+  std::vector<double> magnitudes = {1.0, 3.0, 10.0, 30.0};  ///< factors on the effect's defaults
   int seeds = 2;                                    ///< files per (effect, magnitude)
   int null_files = 100;                             ///< files with no effect
   double alpha = 0.01;
   std::uint64_t seed = 1000;
-  /// The quick CI subset: 10-run files, the dominant magnitude, one seed, 4 null files.
+  /// The quick CI subset: 10-run files, one dominant magnitude (10x), one seed, 4 null files.
   static ValidationOptions quick_subset();
 };
 
