@@ -19,6 +19,16 @@ std::vector<double> scaled(std::initializer_list<double> values, double unit) {
   return out;
 }
 
+/// {−v_n, …, −v_1, 0, v_1, …, v_n} × unit: a signed amplitude of a
+/// deterministic effect.
+std::vector<double> signed_grid(std::initializer_list<double> values, double unit) {
+  std::vector<double> out;
+  for (auto it = std::rbegin(values); it != std::rend(values); ++it) out.push_back(-*it * unit);
+  out.push_back(0.0);
+  for (double v : values) out.push_back(v * unit);
+  return out;
+}
+
 double layout_end(const Layout& layout) {
   double end = 0.0;
   for (const ObservationRow& r : layout.rows) end = std::max(end, r.t_s);
@@ -282,34 +292,31 @@ Candidate velocity_random_walk() {
 
 Candidate thermal_transient() {
   return {"thermal_transient",
-          "bias and drift settling exponentially after switch-on: a(t) = b (e^{-t/tau} − 1), "
-          "θ(t) = d (tau (1 − e^{-t/tau}) − t) per axis",
-          {{"bias", Dimension::kAcceleration, scaled({0, 10, 30, 100, 300}, kUg)},
-           {"drift", Dimension::kAngularRate, scaled({0, 0.3, 1, 3, 10}, kMeruToRadps)},
+          "bias and drift settling exponentially after switch-on, the same in every run (a design effect): "
+          "a(t) = b (e^{-t/tau} − 1), θ(t) = d (tau (1 − e^{-t/tau}) − t) on every axis; b, d at switch-over",
+          {{"bias", Dimension::kAcceleration, signed_grid({10, 30, 100, 300}, kUg)},
+           {"drift", Dimension::kAngularRate, signed_grid({0.3, 1, 3, 10}, kMeruToRadps)},
            {"tau", Dimension::kTime, {600.0, 1200.0, 2400.0}}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const double tau = p[2];
+            const Eigen::MatrixXd cols = signature_columns(ctx, "thermal:" + std::to_string(tau), 2,
+                                                           [tau](double t, Columns3& a, Columns3& th) {
+                                                             const double decay = std::exp(-t / tau);
+                                                             a.setZero();
+                                                             th.setZero();
+                                                             a.col(0).setConstant(decay - 1.0);
+                                                             th.col(1).setConstant(tau * (1.0 - decay) - t);
+                                                           });
             Extension e;
-            e.columns = signature_columns(ctx, "thermal:" + std::to_string(tau), 6,
-                                          [tau](double t, Columns3& a, Columns3& th) {
-                                            a.setZero();
-                                            th.setZero();
-                                            const double decay = std::exp(-t / tau);
-                                            for (int k = 0; k < 3; ++k) {
-                                              a(k, k) = decay - 1.0;
-                                              th(k, 3 + k) = tau * (1.0 - decay) - t;
-                                            }
-                                          });
-            e.column_var.resize(6);
-            e.column_var << Eigen::Vector3d::Constant(p[0] * p[0]), Eigen::Vector3d::Constant(p[1] * p[1]);
+            e.mean = p[0] * cols.col(0) + p[1] * cols.col(1);
             return e;
           }};
 }
-
 Candidate anisoelastic_drift() {
   return {"anisoelastic_drift",
-          "g²-sensitive drift ω = c (f_y f_z, f_z f_x, f_x f_y)/g² as the earth turns gravity in the platform",
-          {{"coefficient", Dimension::kAngularRate, scaled({0.3, 1, 2, 5, 10, 20, 50}, kMeruToRadps)}},
+          "g²-sensitive drift ω = c (f_y f_z, f_z f_x, f_x f_y)/g² as the earth turns gravity in the platform, the "
+          "same in every run (a design effect)",
+          {{"coefficient", Dimension::kAngularRate, signed_grid({0.3, 1, 2, 5, 10, 20, 50}, kMeruToRadps)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
             const double g2 = m.gravity_mps2 * m.gravity_mps2;
@@ -320,47 +327,44 @@ Candidate anisoelastic_drift() {
                 },
                 layout_end(*ctx.layout) + 60.0);
             Extension e;
-            e.columns = signature_columns(ctx, "anisoelastic", 1, [&](double t, Columns3& a, Columns3& th) {
-              a.setZero();
-              th.col(0) = theta.at(t);
-            });
-            e.column_var = Eigen::VectorXd::Constant(1, p[0] * p[0]);
+            e.mean = p[0] * signature_columns(ctx, "anisoelastic", 1, [&](double t, Columns3& a, Columns3& th) {
+                              a.setZero();
+                              th.col(0) = theta.at(t);
+                            }).col(0);
             return e;
           }};
 }
-
 Candidate scale_factor_nonlinearity() {
   return {"scale_factor_nonlinearity",
-          "accelerometer output k2 (f_k/g)² per axis, changing as the earth turns gravity in the platform",
-          {{"k2", Dimension::kAcceleration, scaled({20, 50, 100, 200, 500, 1000, 3000}, kUg)}},
+          "accelerometer output k2 (f_k/g)² on every axis as the earth turns gravity in the platform, the same in "
+          "every run (a design effect)",
+          {{"k2", Dimension::kAcceleration, signed_grid({20, 50, 100, 200, 500, 1000, 3000}, kUg)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
             const Eigen::Vector3d f0 = specific_force(0.0, m);
             Extension e;
-            e.columns = signature_columns(ctx, "sfn", 3, [m, f0](double t, Columns3& a, Columns3& th) {
-              th.setZero();
-              a.setZero();
-              const Eigen::Vector3d f = specific_force(t, m);
-              const double g2 = m.gravity_mps2 * m.gravity_mps2;
-              // The value at switch-over is nulled by the leveling (x, y) or is δf_z (z).
-              for (int k = 0; k < 3; ++k) a(k, k) = (f[k] * f[k] - f0[k] * f0[k]) / g2;
-            });
-            e.column_var = Eigen::VectorXd::Constant(3, p[0] * p[0]);
+            e.mean = p[0] * signature_columns(ctx, "sfn", 1, [m, f0](double t, Columns3& a, Columns3& th) {
+                              th.setZero();
+                              const Eigen::Vector3d f = specific_force(t, m);
+                              const double g2 = m.gravity_mps2 * m.gravity_mps2;
+                              // The value at switch-over is nulled by the leveling (x, y) or is δf_z (z).
+                              a.col(0) = (f.array().square() - f0.array().square()).matrix() / g2;
+                            }).col(0);
             return e;
           }};
 }
-
 Candidate deflection_of_vertical() {
   return {"deflection_of_vertical",
-          "deflection of the vertical beyond Table 3.1: the same earth-fixed horizontal gravity anomaly as ξ, η (2.8b), wider",
-          {{"deflection", Dimension::kAngle, scaled({0.05, 0.1, 0.2, 0.5, 1, 2, 5}, kMradToRad)}},
-          [](const LayoutContext&, std::span<const double> p) {
+          "deflection of the vertical at the site beyond Table 3.1, the same in every run: ξ, η of (2.8b) with a "
+          "fixed value",
+          {{"xi", Dimension::kAngle, signed_grid({0.1, 0.3, 1, 3}, kMradToRad)},
+           {"eta", Dimension::kAngle, signed_grid({0.1, 0.3, 1, 3}, kMradToRad)}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
             Extension e;
-            e.x_var_add.segment<2>(ux::kDeflection).setConstant(p[0] * p[0]);
+            e.mean = p[0] * ctx.base->H_x.col(ux::kDeflection) + p[1] * ctx.base->H_x.col(ux::kDeflection + 1);
             return e;
           }};
 }
-
 Candidate gravity_model() {
   return {"gravity_model",
           "the computer's gravitation differs from the true one (e.g. J2): a horizontal anomaly like ξ, η that "

@@ -41,6 +41,7 @@ GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>
   m.H.leftCols(ux::kDim) = base.H_x;
   m.prior_var.head(ux::kDim) = x_var;
   m.noise_var = base.noise_var;
+  m.mean = Eigen::VectorXd::Zero(n);
   Eigen::Index at = ux::kDim;
   for (const Extension* e : extensions) {
     INSMC_ASSERT(e->columns.rows() == n || e->columns.cols() == 0, "extension rows {}", e->columns.rows());
@@ -51,6 +52,7 @@ GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>
     }
     at += k;
     if (e->noise_var_add.size() == n) m.noise_var += e->noise_var_add;
+    if (e->mean.size() == n) m.mean += e->mean;
   }
   return m;
 }

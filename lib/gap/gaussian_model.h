@@ -1,7 +1,7 @@
 #pragma once
 /// The model of one run's observations as the diagnosis sees it: linear in
 /// its causes with known second moments (the linear level, issue 7),
-///   y = H c + e,  c ~ (0, diag(prior_var)),  e ~ (0, diag(noise_var)),
+///   y = μ + H c + e,  c ~ (0, diag(prior_var)),  e ~ (0, diag(noise_var)),
 /// c = (x, effect coefficients): the first 33 columns are the uncertainties of
 /// Table 3.1 (priors overridable), further columns come from candidate
 /// effects (candidates.h). Only second moments are used, so nothing assumes
@@ -15,6 +15,7 @@
 namespace insmc::gap {
 
 struct GaussianModel {
+  Eigen::VectorXd mean;       ///< rows: E y (deterministic effects, same in every run)
   Eigen::MatrixXd H;          ///< rows × columns
   Eigen::VectorXd prior_var;  ///< columns
   Eigen::VectorXd noise_var;  ///< rows, > 0
@@ -50,6 +51,9 @@ struct Extension {
   UncertaintyVector x_var_scale = UncertaintyVector::Ones();  ///< multiplies x_var
   UncertaintyVector x_var_add = UncertaintyVector::Zero();    ///< then added
   Eigen::VectorXd noise_var_add;    ///< rows, or empty
+  /// rows, or empty: a deterministic signature, the same in every run (a
+  /// design or site effect), subtracted from the data before the fit.
+  Eigen::VectorXd mean;
 };
 
 /// The base model with every extension applied.

@@ -7,8 +7,9 @@
 namespace insmc::gap {
 
 RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model)
-    : layout_(&layout), test_rows_(layout.test_rows) {
+    : layout_(&layout), mean_(model.mean), test_rows_(layout.test_rows) {
   const Eigen::Index n = model.H.rows();
+  if (mean_.size() != n) mean_ = Eigen::VectorXd::Zero(n);
   INSMC_ASSERT(n == static_cast<Eigen::Index>(layout.rows.size()), "rows {} vs layout {}", n, layout.rows.size());
   // Causes with zero prior variance are known exactly: drop them.
   std::vector<Eigen::Index> active;
@@ -54,8 +55,9 @@ GroupSums RunAnalyser::analyse(const Eigen::VectorXd& y) const {
   return analyse(y, z);
 }
 
-GroupSums RunAnalyser::analyse(const Eigen::VectorXd& y, Eigen::VectorXd& z) const {
+GroupSums RunAnalyser::analyse(const Eigen::VectorXd& data, Eigen::VectorXd& z) const {
   const Eigen::Index nt = test_rows_;
+  const Eigen::VectorXd y = data - mean_;
   const Eigen::VectorXd c = posterior_ * (weighted_test_.transpose() * y.head(nt));
   z = ((y - H_ * c).array() / expected_.array().sqrt()).matrix();
   GroupSums sums;

@@ -47,6 +47,7 @@ class RunAnalyser {
 
  private:
   const Layout* layout_;
+  Eigen::VectorXd mean_;          // rows
   Eigen::MatrixXd H_;             // rows × active columns
   Eigen::MatrixXd weighted_test_; // test rows of H / σ², rows × active
   Eigen::MatrixXd posterior_;     // P⁺

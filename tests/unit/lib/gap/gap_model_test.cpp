@@ -156,6 +156,9 @@ TEST(GapCandidates, EveryGridPointBuildsAConsistentExtension) {
       if (e.columns.cols() > 0) {
         EXPECT_EQ(e.columns.rows(), static_cast<Eigen::Index>(l.rows.size())) << c.name;
       }
+      if (e.mean.size() > 0) {
+        EXPECT_EQ(e.mean.size(), static_cast<Eigen::Index>(l.rows.size())) << c.name;
+      }
       if (e.noise_var_add.size() > 0) {
         EXPECT_EQ(e.noise_var_add.size(), static_cast<Eigen::Index>(l.rows.size())) << c.name;
         EXPECT_GE(e.noise_var_add.minCoeff(), 0.0) << c.name;
