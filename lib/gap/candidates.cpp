@@ -19,16 +19,6 @@ std::vector<double> scaled(std::initializer_list<double> values, double unit) {
   return out;
 }
 
-/// {−v_n, …, −v_1, 0, v_1, …, v_n} × unit: a signed amplitude of a
-/// deterministic effect.
-std::vector<double> signed_grid(std::initializer_list<double> values, double unit) {
-  std::vector<double> out;
-  for (auto it = std::rbegin(values); it != std::rend(values); ++it) out.push_back(-*it * unit);
-  out.push_back(0.0);
-  for (double v : values) out.push_back(v * unit);
-  return out;
-}
-
 double layout_end(const Layout& layout) {
   double end = 0.0;
   for (const ObservationRow& r : layout.rows) end = std::max(end, r.t_s);
@@ -214,7 +204,7 @@ Candidate bounds() {
 Candidate quantization() {
   return {"quantization",
           "ΔV pulses coarser than the model's: counting noise w²/(6τ²) in f and a pulse-phase velocity error w²/12",
-          {{"dv_pulse", Dimension::kVelocity, {0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0}}},
+          {{"dv_pulse", Dimension::kVelocity, {0.02, 0.03, 0.05, 0.07, 0.1, 0.15, 0.2, 0.3, 0.5, 0.7, 1.0, 1.5, 2.0, 3.0, 5.0}}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             Extension e;
             const double w0 = ctx.site->dv_pulse_mps, w = std::max(p[0], w0), tau = ctx.site->filter_interval_s;
@@ -228,7 +218,7 @@ Candidate sway() {
   return {"sway",
           "vehicle sway of periods 2-20 s: residual acceleration in f after the τ box filter, and its "
           "velocity at switch-over",
-          {{"accel_rms", Dimension::kAcceleration, scaled({0.2, 0.5, 1, 2, 5, 10, 20, 50}, kMgToMps2)}},
+          {{"accel_rms", Dimension::kAcceleration, scaled({0.2, 0.5, 1, 2, 5, 10, 20, 50, 100, 200}, kMgToMps2)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             // Log-uniform periods in [2, 20] s: mean power gain of the box
             // filter sinc²(π τ/P) and mean 1/ω² for the velocity.
@@ -263,7 +253,7 @@ Candidate accel_bias_instability() {
 Candidate gyro_drift_instability() {
   return {"gyro_drift_instability",
           "gyro drift wandering as a random walk (tau 0, σ after 1 h) or Gauss–Markov process",
-          {{"sigma", Dimension::kAngularRate, scaled({0.1, 0.2, 0.5, 1, 2, 5, 10, 30}, kMeruToRadps)},
+          {{"sigma", Dimension::kAngularRate, scaled({0.1, 0.2, 0.5, 1, 2, 5, 10, 30, 100}, kMeruToRadps)},
            {"tau", Dimension::kTime, {0.0, 300.0, 1200.0, 3600.0}}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             return process_extension(ctx, Drive::kRate, p[0], p[1], false);
@@ -272,7 +262,7 @@ Candidate gyro_drift_instability() {
 
 Candidate angle_random_walk() {
   return {"angle_random_walk", "white gyro rate noise: the platform angle walks (σ after 1 h)",
-          {{"angle_1h", Dimension::kAngle, scaled({0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 3}, kMradToRad)}},
+          {{"angle_1h", Dimension::kAngle, scaled({0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 3, 10}, kMradToRad)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             return process_extension(ctx, Drive::kAngle, p[0], 0.0, true);
           }};
@@ -281,7 +271,7 @@ Candidate angle_random_walk() {
 Candidate velocity_random_walk() {
   return {"velocity_random_walk",
           "white accelerometer noise: white in f (q/τ), a velocity random walk in r (σ after 1 h)",
-          {{"velocity_1h", Dimension::kVelocity, {0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 3.0}}},
+          {{"velocity_1h", Dimension::kVelocity, {0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 3.0, 10.0}}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             Extension e = process_extension(ctx, Drive::kVelocity, p[0], 0.0, false);
             const double q = p[0] * p[0] / 3600.0;
@@ -294,8 +284,8 @@ Candidate thermal_transient() {
   return {"thermal_transient",
           "bias and drift settling exponentially after switch-on, the same in every run (a design effect): "
           "a(t) = b (e^{-t/tau} − 1), θ(t) = d (tau (1 − e^{-t/tau}) − t) on every axis; b, d at switch-over",
-          {{"bias", Dimension::kAcceleration, signed_grid({10, 30, 100, 300}, kUg)},
-           {"drift", Dimension::kAngularRate, signed_grid({0.3, 1, 3, 10}, kMeruToRadps)},
+          {{"bias", Dimension::kAcceleration, {0.0}, true},
+           {"drift", Dimension::kAngularRate, {0.0}, true},
            {"tau", Dimension::kTime, {600.0, 1200.0, 2400.0}}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const double tau = p[2];
@@ -307,8 +297,14 @@ Candidate thermal_transient() {
                                                              a.col(0).setConstant(decay - 1.0);
                                                              th.col(1).setConstant(tau * (1.0 - decay) - t);
                                                            });
+            // b(t) = b0 + b0 (e^{-t/tau} − 1): the part at switch-over acts as
+            // the fixed bias δf and drift ω_do do, through the alignment (their
+            // columns of H_x); the settling is the signature above.
+            const Eigen::MatrixXd& H = ctx.base->H_x;
+            const Eigen::VectorXd fixed_bias = H.middleCols<3>(ux::kAccelBias).rowwise().sum();
+            const Eigen::VectorXd fixed_drift = H.middleCols<3>(ux::kGyroDrift).rowwise().sum();
             Extension e;
-            e.mean = p[0] * cols.col(0) + p[1] * cols.col(1);
+            e.mean = p[0] * (cols.col(0) + fixed_bias) + p[1] * (cols.col(1) + fixed_drift);
             return e;
           }};
 }
@@ -316,7 +312,7 @@ Candidate anisoelastic_drift() {
   return {"anisoelastic_drift",
           "g²-sensitive drift ω = c (f_y f_z, f_z f_x, f_x f_y)/g² as the earth turns gravity in the platform, the "
           "same in every run (a design effect)",
-          {{"coefficient", Dimension::kAngularRate, signed_grid({0.3, 1, 2, 5, 10, 20, 50}, kMeruToRadps)}},
+          {{"coefficient", Dimension::kAngularRate, {0.0}, true}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
             const double g2 = m.gravity_mps2 * m.gravity_mps2;
@@ -338,18 +334,21 @@ Candidate scale_factor_nonlinearity() {
   return {"scale_factor_nonlinearity",
           "accelerometer output k2 (f_k/g)² on every axis as the earth turns gravity in the platform, the same in "
           "every run (a design effect)",
-          {{"k2", Dimension::kAcceleration, signed_grid({20, 50, 100, 200, 500, 1000, 3000}, kUg)}},
+          {{"k2", Dimension::kAcceleration, {0.0}, true}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
             const Eigen::Vector3d f0 = specific_force(0.0, m);
+            const double g2 = m.gravity_mps2 * m.gravity_mps2;
+            // The value at switch-over acts as a fixed bias δf through the
+            // alignment (its H_x columns); the change as gravity turns is the signature.
+            Eigen::VectorXd at_switch = Eigen::VectorXd::Zero(ctx.base->H_x.rows());
+            for (int k = 0; k < 3; ++k) at_switch += f0[k] * f0[k] / g2 * ctx.base->H_x.col(ux::kAccelBias + k);
             Extension e;
-            e.mean = p[0] * signature_columns(ctx, "sfn", 1, [m, f0](double t, Columns3& a, Columns3& th) {
-                              th.setZero();
-                              const Eigen::Vector3d f = specific_force(t, m);
-                              const double g2 = m.gravity_mps2 * m.gravity_mps2;
-                              // The value at switch-over is nulled by the leveling (x, y) or is δf_z (z).
-                              a.col(0) = (f.array().square() - f0.array().square()).matrix() / g2;
-                            }).col(0);
+            e.mean = p[0] * (at_switch + signature_columns(ctx, "sfn", 1, [m, f0, g2](double t, Columns3& a, Columns3& th) {
+                                           th.setZero();
+                                           const Eigen::Vector3d f = specific_force(t, m);
+                                           a.col(0) = (f.array().square() - f0.array().square()).matrix() / g2;
+                                         }).col(0));
             return e;
           }};
 }
@@ -357,8 +356,8 @@ Candidate deflection_of_vertical() {
   return {"deflection_of_vertical",
           "deflection of the vertical at the site beyond Table 3.1, the same in every run: ξ, η of (2.8b) with a "
           "fixed value",
-          {{"xi", Dimension::kAngle, signed_grid({0.1, 0.3, 1, 3}, kMradToRad)},
-           {"eta", Dimension::kAngle, signed_grid({0.1, 0.3, 1, 3}, kMradToRad)}},
+          {{"xi", Dimension::kAngle, {0.0}, true},
+           {"eta", Dimension::kAngle, {0.0}, true}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             Extension e;
             e.mean = p[0] * ctx.base->H_x.col(ux::kDeflection) + p[1] * ctx.base->H_x.col(ux::kDeflection + 1);
@@ -398,7 +397,7 @@ Candidate gravity_model() {
 Candidate alignment_transient() {
   return {"alignment_transient",
           "alignment loops not settled at switch-over: a level and an azimuth misalignment beyond ζ_r",
-          {{"level", Dimension::kAngle, scaled({0, 0.03, 0.1, 0.3}, kMradToRad)},
+          {{"level", Dimension::kAngle, scaled({0, 0.03, 0.1, 0.3, 1, 3}, kMradToRad)},
            {"azimuth", Dimension::kAngle, scaled({0.3, 1, 3, 10, 30, 100}, kMradToRad)}},
           [](const LayoutContext&, std::span<const double> p) {
             Extension e;
@@ -410,8 +409,8 @@ Candidate alignment_transient() {
 Candidate switch_transient() {
   return {"switch_transient",
           "steps at switch-over beyond Table 3.1: misalignment (all axes) and accelerometer bias",
-          {{"misalignment", Dimension::kAngle, scaled({0, 0.03, 0.1, 0.3, 1}, kMradToRad)},
-           {"bias", Dimension::kAcceleration, scaled({0, 20, 50, 100, 200, 500}, kUg)}},
+          {{"misalignment", Dimension::kAngle, scaled({0, 0.03, 0.1, 0.3, 1, 3, 10}, kMradToRad)},
+           {"bias", Dimension::kAcceleration, scaled({0, 20, 50, 100, 200, 500, 1000, 3000}, kUg)}},
           [](const LayoutContext&, std::span<const double> p) {
             Extension e;
             e.x_var_add.segment<3>(ux::kMisalignAlign).setConstant(p[0] * p[0]);
@@ -452,6 +451,13 @@ std::vector<double> Candidate::grid_point(int index) const {
     index /= n;
   }
   return v;
+}
+
+std::vector<int> Candidate::amplitude_indices() const {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < parameters.size(); ++i)
+    if (parameters[i].amplitude) out.push_back(static_cast<int>(i));
+  return out;
 }
 
 const std::vector<Candidate>& candidate_registry() {

@@ -31,7 +31,10 @@ struct LayoutContext {
 struct CandidateParameter {
   std::string name;
   Dimension dimension;
-  std::vector<double> grid;  ///< SI, ascending
+  std::vector<double> grid;  ///< SI, ascending ({0} for an amplitude)
+  /// The size of a deterministic signature: the extension's mean is linear
+  /// in it, and it is fitted by least squares, not on a grid.
+  bool amplitude = false;
 };
 
 struct Candidate {
@@ -43,8 +46,10 @@ struct Candidate {
 
   /// Number of grid points (the product of the parameters' grids).
   int grid_size() const;
-  /// Parameter values of grid point `index`.
+  /// Parameter values of grid point `index` (amplitudes 0).
   std::vector<double> grid_point(int index) const;
+  /// Indices of the amplitude parameters.
+  std::vector<int> amplitude_indices() const;
 };
 
 /// Every candidate, in a fixed order.

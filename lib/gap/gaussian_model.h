@@ -54,6 +54,13 @@ struct Extension {
   /// rows, or empty: a deterministic signature, the same in every run (a
   /// design or site effect), subtracted from the data before the fit.
   Eigen::VectorXd mean;
+
+  /// True when the extension only moves the mean (the covariance, hence the
+  /// fit, is the one without it).
+  bool mean_only() const {
+    return columns.cols() == 0 && noise_var_add.size() == 0 && (x_var_scale.array() == 1.0).all() &&
+           (x_var_add.array() == 0.0).all();
+  }
 };
 
 /// The base model with every extension applied.

@@ -1,6 +1,7 @@
 #include "lib/gap/run_analysis.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "lib/common/assert.h"
 
@@ -56,19 +57,31 @@ GroupSums RunAnalyser::analyse(const Eigen::VectorXd& y) const {
 }
 
 GroupSums RunAnalyser::analyse(const Eigen::VectorXd& data, Eigen::VectorXd& z) const {
-  const Eigen::Index nt = test_rows_;
-  const Eigen::VectorXd y = data - mean_;
-  const Eigen::VectorXd c = posterior_ * (weighted_test_.transpose() * y.head(nt));
-  z = ((y - H_ * c).array() / expected_.array().sqrt()).matrix();
+  const Eigen::VectorXd v = normalized(data);
+  z = v.head(static_cast<Eigen::Index>(layout_->rows.size()));
+  return sums_of(v);
+}
+
+Eigen::VectorXd RunAnalyser::normalized_linear(const Eigen::VectorXd& y) const {
+  const auto n = static_cast<Eigen::Index>(layout_->rows.size());
+  const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
+  const Eigen::VectorXd c = posterior_ * (weighted_test_.transpose() * y.head(test_rows_));
+  Eigen::VectorXd v(n + m);
+  v.head(n) = ((y - H_ * c).array() / expected_.array().sqrt()).matrix();
+  for (Eigen::Index k = 0; k < m; ++k) v[n + k] = c[estimate_columns_[static_cast<std::size_t>(k)]] / std::sqrt(estimate_var_[k]);
+  return v;
+}
+
+GroupSums RunAnalyser::sums_of(const Eigen::VectorXd& v) const {
   GroupSums sums;
-  for (std::size_t i = 0; i < layout_->rows.size(); ++i) {
-    const int g = layout_->rows[i].group;
-    sums.z2[g] += z[static_cast<Eigen::Index>(i)] * z[static_cast<Eigen::Index>(i)];
+  const auto n = static_cast<Eigen::Index>(layout_->rows.size());
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const int g = layout_->rows[static_cast<std::size_t>(i)].group;
+    sums.z2[g] += v[i] * v[i];
     sums.count[g] += 1.0;
   }
-  for (std::size_t k = 0; k < estimate_columns_.size(); ++k) {
-    const double e = c[estimate_columns_[k]];
-    sums.z2[kEstimatesGroup] += e * e / estimate_var_[static_cast<Eigen::Index>(k)];
+  for (Eigen::Index k = n; k < v.size(); ++k) {
+    sums.z2[kEstimatesGroup] += v[k] * v[k];
     sums.count[kEstimatesGroup] += 1.0;
   }
   return sums;

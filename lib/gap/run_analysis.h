@@ -42,6 +42,14 @@ class RunAnalyser {
   /// As analyse, also giving z (the signed normalized residual/innovation per row).
   GroupSums analyse(const Eigen::VectorXd& y, Eigen::VectorXd& z) const;
 
+  /// The run's normalized values: z per row, then each resolved estimate
+  /// over its expected std (the terms of the group sums). Affine in the data:
+  /// normalized(y) = normalized_linear(y − model mean).
+  Eigen::VectorXd normalized(const Eigen::VectorXd& data) const { return normalized_linear(data - mean_); }
+  Eigen::VectorXd normalized_linear(const Eigen::VectorXd& y) const;
+  /// Group sums of normalized values.
+  GroupSums sums_of(const Eigen::VectorXd& normalized_values) const;
+
   /// Expected square of each row's residual (test) or innovation (nav).
   const Eigen::VectorXd& expected_square() const { return expected_; }
 

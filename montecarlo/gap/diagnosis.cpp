@@ -10,6 +10,7 @@
 
 #include "lib/common/input_error.h"
 #include "lib/gap/response.h"
+#include "montecarlo/gap/candidate_fit.h"
 #include "montecarlo/gap/record_simulation.h"
 #include "montecarlo/gap/where.h"
 #include "montecarlo/random/philox.h"
@@ -20,27 +21,7 @@ namespace {
 using gap::GroupSums;
 using gap::GroupValues;
 
-/// The runs, their layouts and the base model of each layout.
-struct Prepared {
-  gap::RecordSite site;
-  std::vector<gap::RunData> runs;
-  std::vector<gap::Layout> layouts;
-  std::vector<int> layout_of;  // per run
-  std::vector<gap::BaseModel> bases;
-  UncertaintyVector x_var;
-};
-
-int layout_index(Prepared& p, const gap::Layout& layout) {
-  for (std::size_t i = 0; i < p.layouts.size(); ++i)
-    if (p.layouts[i] == layout) return static_cast<int>(i);
-  p.layouts.push_back(layout);
-  p.bases.push_back(gap::make_base_model(layout, p.site, p.x_var));
-  return static_cast<int>(p.layouts.size() - 1);
-}
-
-Eigen::VectorXd values(const gap::RunData& run) {
-  return Eigen::Map<const Eigen::VectorXd>(run.values.data(), static_cast<Eigen::Index>(run.values.size()));
-}
+using Prepared = PreparedRuns;
 
 /// Per-run sums of every run under base + extensions (built per layout by `build`).
 template <class Build>
@@ -51,7 +32,7 @@ std::vector<GroupSums> sums_under(const Prepared& p, const Build& build) {
     const std::vector<const gap::Extension*> ext = build(static_cast<int>(L));
     const gap::RunAnalyser analyser(p.layouts[L], gap::combine(p.bases[L], ext));
     for (std::size_t r = 0; r < p.runs.size(); ++r)
-      if (p.layout_of[r] == static_cast<int>(L)) out[r] = analyser.analyse(values(p.runs[r]));
+      if (p.layout_of[r] == static_cast<int>(L)) out[r] = analyser.analyse(run_values(p.runs[r]));
   }
   return out;
 }
@@ -91,46 +72,11 @@ double p_value_of(double observed, const std::vector<double>& null) {
   return (1.0 + static_cast<double>(above)) / (1.0 + static_cast<double>(null.size()));
 }
 
-/// Per-run sums of one candidate at every grid point (rows: grid points).
-struct CandidateSums {
-  std::vector<std::vector<GroupSums>> at;  // [grid][run]
-};
-
-CandidateSums evaluate_candidate(const Prepared& p, const gap::Candidate& c,
-                                 const std::vector<std::vector<gap::Extension>>& selected) {
-  std::vector<gap::LayoutContext> ctx(p.layouts.size());
-  for (std::size_t L = 0; L < p.layouts.size(); ++L) ctx[L] = {&p.layouts[L], &p.site, &p.bases[L], {}};
-  CandidateSums out;
-  out.at.resize(static_cast<std::size_t>(c.grid_size()));
-  for (int k = 0; k < c.grid_size(); ++k) {
-    const std::vector<double> theta = c.grid_point(k);
-    std::vector<gap::Extension> built(p.layouts.size());
-    out.at[static_cast<std::size_t>(k)] = sums_under(p, [&](int L) {
-      built[static_cast<std::size_t>(L)] = c.build(ctx[static_cast<std::size_t>(L)], theta);
-      std::vector<const gap::Extension*> e;
-      for (const gap::Extension& s : selected[static_cast<std::size_t>(L)]) e.push_back(&s);
-      e.push_back(&built[static_cast<std::size_t>(L)]);
-      return e;
-    });
-  }
-  return out;
-}
-
-int best_grid_point(const CandidateSums& s, const std::vector<int>& runs, const GroupValues& m0) {
-  int best = 0;
-  double best_gap = 1e300;
-  for (std::size_t k = 0; k < s.at.size(); ++k) {
-    const double g = gap::gap_value(gap::pooled(s.at[k], runs), m0);
-    if (g < best_gap) best_gap = g, best = static_cast<int>(k);
-  }
-  return best;
-}
-
 struct Scored {
   int candidate = 0;
   double heldout_gap = 0;
   std::vector<GroupSums> heldout;  // per run, at the other half's fit
-  int full_fit = 0;
+  Choice full_fit;
   std::vector<ParameterEstimate> parameters;
 };
 
@@ -143,17 +89,17 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
   for (int fold = 0; fold < 2; ++fold) {
     std::vector<int> train, test;
     for (std::size_t r = 0; r < n; ++r) (static_cast<int>(r % 2) == fold ? test : train).push_back(static_cast<int>(r));
-    const int k = best_grid_point(s, train, m0);
-    for (int r : test) out.heldout[static_cast<std::size_t>(r)] = s.at[static_cast<std::size_t>(k)][static_cast<std::size_t>(r)];
+    const Choice k = choose(s, train, m0);
+    for (int r : test) out.heldout[static_cast<std::size_t>(r)] = run_sums(s, k, r);
   }
   out.heldout_gap = gap::gap_value(gap::pooled(out.heldout, all_runs(n)), m0);
-  out.full_fit = best_grid_point(s, all_runs(n), m0);
-  const std::vector<double> best = c.grid_point(out.full_fit);
+  out.full_fit = choose(s, all_runs(n), m0);
+  const std::vector<double> best = parameter_values(c, out.full_fit);
   constexpr int kResamples = 200;
   std::vector<std::vector<double>> draws(c.parameters.size());
   for (int b = 0; b < kResamples; ++b) {
-    const std::vector<double> theta =
-        c.grid_point(best_grid_point(s, resample(seed, 1'000'000 + static_cast<std::uint64_t>(b), static_cast<int>(n), static_cast<int>(n)), m0));
+    const std::vector<int> runs = resample(seed, 1'000'000 + static_cast<std::uint64_t>(b), static_cast<int>(n), static_cast<int>(n));
+    const std::vector<double> theta = parameter_values(c, choose(s, runs, m0));
     for (std::size_t i = 0; i < theta.size(); ++i) draws[i].push_back(theta[i]);
   }
   for (std::size_t i = 0; i < c.parameters.size(); ++i) {
@@ -197,7 +143,7 @@ Prepared prepare(const RecordFile& file, const DiagnosisOptions& options) {
   }
   p.x_var = options.prior.variance();
   p.runs = gap::extract_runs(file, p.site, options.extraction);
-  for (const gap::RunData& run : p.runs) p.layout_of.push_back(layout_index(p, run.layout));
+  for (const gap::RunData& run : p.runs) p.layout_of.push_back(p.layout_index(run.layout));
   return p;
 }
 
@@ -220,13 +166,13 @@ Null calibrate(Prepared& p, const RecordFile& file, const DiagnosisOptions& opti
     sim[static_cast<std::size_t>(j)] = std::move(gap::extract_runs(one, p.site, options.extraction).front());
   });
   layout_of.resize(sim.size());
-  for (std::size_t j = 0; j < sim.size(); ++j) layout_of[j] = layout_index(p, sim[j].layout);
+  for (std::size_t j = 0; j < sim.size(); ++j) layout_of[j] = p.layout_index(sim[j].layout);
   std::vector<gap::RunAnalyser> analysers;
   for (std::size_t L = 0; L < p.layouts.size(); ++L) analysers.emplace_back(p.layouts[L], gap::combine(p.bases[L], {}));
   sums.resize(sim.size());
   z.resize(sim.size());
   tbb::parallel_for(std::size_t{0}, sim.size(), [&](std::size_t j) {
-    sums[j] = analysers[static_cast<std::size_t>(layout_of[j])].analyse(values(sim[j]), z[j]);
+    sums[j] = analysers[static_cast<std::size_t>(layout_of[j])].analyse(run_values(sim[j]), z[j]);
   });
   Null null;
   null.power = gap::group_power(gap::pooled(sums, all_runs(sums.size())));
@@ -270,6 +216,14 @@ void honest_statements(Diagnosis& d) {
                                          "held-out gap: Table 3.1's priors are too narrow for this system",
                                          c.parameters.front().value, 100 * c.shrink));
   }
+  // Candidates that change nothing on held-out runs: with these records they
+  // are either absent or masked by what is present (not identifiable here).
+  std::string traceless;
+  for (const CandidateResult& c : d.ranking)
+    if (std::abs(c.shrink) < 0.01) traceless += (traceless.empty() ? "" : ", ") + c.effect;
+  if (!traceless.empty())
+    d.statements.push_back(fmt::format("no held-out trace (|shrink| < 1 %): {}; with these records they are absent "
+                                       "or masked by what is present, so the data say nothing about them", traceless));
   if (d.top.find('|') != std::string::npos)
     d.statements.push_back(fmt::format("{} are not told apart by these data (held-out margin {:.3g} ± {:.3g}): "
                                        "reported as one class", d.top, d.runner_up_margin, d.runner_up_margin_se));
@@ -326,7 +280,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
     std::vector<const gap::Layout*> layouts, null_layouts;
     std::vector<const Eigen::VectorXd*> expected, null_expected;
     for (std::size_t r = 0; r < p.runs.size(); ++r) {
-      analysers[static_cast<std::size_t>(p.layout_of[r])].analyse(values(p.runs[r]), z[r]);
+      analysers[static_cast<std::size_t>(p.layout_of[r])].analyse(run_values(p.runs[r]), z[r]);
       layouts.push_back(&p.layouts[static_cast<std::size_t>(p.layout_of[r])]);
       expected.push_back(&analysers[static_cast<std::size_t>(p.layout_of[r])].expected_square());
     }
@@ -392,7 +346,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
     d.greedy.push_back(g);
     d.selected.push_back(step == 0 ? d.top : c.name);
     taken.push_back(c.name);
-    const std::vector<double> theta = c.grid_point(best.full_fit);
+    const std::vector<double> theta = parameter_values(c, best.full_fit);
     for (std::size_t L = 0; L < p.layouts.size(); ++L) {
       const gap::LayoutContext ctx{&p.layouts[L], &p.site, &p.bases[L], {}};
       selected[L].push_back(c.build(ctx, theta));

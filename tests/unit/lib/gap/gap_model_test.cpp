@@ -149,7 +149,20 @@ TEST(GapCandidates, EveryGridPointBuildsAConsistentExtension) {
   const BaseModel base = make_base_model(l, s, UncertaintyModel{}.variance());
   for (const Candidate& c : candidate_registry()) {
     const LayoutContext ctx{&l, &s, &base, {}};
-    ASSERT_GT(c.grid_size(), 1) << c.name;
+    const std::vector<int> amplitudes = c.amplitude_indices();
+    ASSERT_TRUE(c.grid_size() > 1 || !amplitudes.empty()) << c.name << ": nothing to fit";
+    for (int j : amplitudes) {
+      // The least-squares fit of an amplitude needs a mean linear in it.
+      std::vector<double> theta = c.grid_point(0);
+      theta[static_cast<std::size_t>(j)] = 1.0;
+      const Eigen::VectorXd one = c.build(ctx, theta).mean;
+      theta[static_cast<std::size_t>(j)] = -2.5;
+      const Eigen::VectorXd scaled = c.build(ctx, theta).mean;
+      ASSERT_EQ(one.size(), static_cast<Eigen::Index>(l.rows.size())) << c.name;
+      EXPECT_GT(one.norm(), 0.0) << c.name;
+      EXPECT_LE((scaled + 2.5 * one).norm(), 1e-12 * one.norm()) << c.name;
+      EXPECT_TRUE(c.build(ctx, c.grid_point(0)).mean_only()) << c.name;
+    }
     for (int k : {0, c.grid_size() - 1}) {
       const Extension e = c.build(ctx, c.grid_point(k));
       EXPECT_EQ(e.columns.cols(), e.column_var.size()) << c.name;
