@@ -284,8 +284,8 @@ Candidate thermal_transient() {
   return {"thermal_transient",
           "bias and drift settling exponentially after switch-on, the same in every run (a design effect): "
           "a(t) = b (e^{-t/tau} − 1), θ(t) = d (tau (1 − e^{-t/tau}) − t) on every axis; b, d at switch-over",
-          {{"bias", Dimension::kAcceleration, {0.0}, true},
-           {"drift", Dimension::kAngularRate, {0.0}, true},
+          {{"bias", Dimension::kAcceleration, {10 * kMgToMps2}, true},
+           {"drift", Dimension::kAngularRate, {300 * kMeruToRadps}, true},
            {"tau", Dimension::kTime, {600.0, 1200.0, 2400.0}}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const double tau = p[2];
@@ -312,7 +312,7 @@ Candidate anisoelastic_drift() {
   return {"anisoelastic_drift",
           "g²-sensitive drift ω = c (f_y f_z, f_z f_x, f_x f_y)/g² as the earth turns gravity in the platform, the "
           "same in every run (a design effect)",
-          {{"coefficient", Dimension::kAngularRate, {0.0}, true}},
+          {{"coefficient", Dimension::kAngularRate, {1000 * kMeruToRadps}, true}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
             const double g2 = m.gravity_mps2 * m.gravity_mps2;
@@ -334,7 +334,7 @@ Candidate scale_factor_nonlinearity() {
   return {"scale_factor_nonlinearity",
           "accelerometer output k2 (f_k/g)² on every axis as the earth turns gravity in the platform, the same in "
           "every run (a design effect)",
-          {{"k2", Dimension::kAcceleration, {0.0}, true}},
+          {{"k2", Dimension::kAcceleration, {20 * kMgToMps2}, true}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
             const Eigen::Vector3d f0 = specific_force(0.0, m);
@@ -356,8 +356,8 @@ Candidate deflection_of_vertical() {
   return {"deflection_of_vertical",
           "deflection of the vertical at the site beyond Table 3.1, the same in every run: ξ, η of (2.8b) with a "
           "fixed value",
-          {{"xi", Dimension::kAngle, {0.0}, true},
-           {"eta", Dimension::kAngle, {0.0}, true}},
+          {{"xi", Dimension::kAngle, {20 * kMradToRad}, true},
+           {"eta", Dimension::kAngle, {20 * kMradToRad}, true}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             Extension e;
             e.mean = p[0] * ctx.base->H_x.col(ux::kDeflection) + p[1] * ctx.base->H_x.col(ux::kDeflection + 1);
@@ -439,13 +439,15 @@ Candidate nonlinearity() {
 
 int Candidate::grid_size() const {
   int n = 1;
-  for (const CandidateParameter& p : parameters) n *= static_cast<int>(p.grid.size());
+  for (const CandidateParameter& p : parameters)
+    if (!p.amplitude) n *= static_cast<int>(p.grid.size());
   return n;
 }
 
 std::vector<double> Candidate::grid_point(int index) const {
-  std::vector<double> v(parameters.size());
+  std::vector<double> v(parameters.size(), 0.0);
   for (std::size_t i = parameters.size(); i-- > 0;) {
+    if (parameters[i].amplitude) continue;
     const int n = static_cast<int>(parameters[i].grid.size());
     v[i] = parameters[i].grid[static_cast<std::size_t>(index % n)];
     index /= n;

@@ -31,7 +31,9 @@ struct LayoutContext {
 struct CandidateParameter {
   std::string name;
   Dimension dimension;
-  std::vector<double> grid;  ///< SI, ascending ({0} for an amplitude)
+  /// SI, ascending; for an amplitude one value: the largest magnitude the
+  /// candidate covers (a fit beyond it is held there and flagged).
+  std::vector<double> grid;
   /// The size of a deterministic signature: the extension's mean is linear
   /// in it, and it is fitted by least squares, not on a grid.
   bool amplitude = false;

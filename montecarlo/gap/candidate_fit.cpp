@@ -61,6 +61,9 @@ CandidateSums evaluate_amplitudes(const PreparedRuns& p, const gap::Candidate& c
   for (std::size_t r = 0; r < p.runs.size(); ++r)
     out.normalized.push_back(out.fit[static_cast<std::size_t>(p.layout_of[r])]->normalized(run_values(p.runs[r])));
   const std::vector<int> amp = c.amplitude_indices();
+  out.amplitude_limit.resize(static_cast<Eigen::Index>(amp.size()));
+  for (std::size_t j = 0; j < amp.size(); ++j)
+    out.amplitude_limit[static_cast<Eigen::Index>(j)] = c.parameters[static_cast<std::size_t>(amp[j])].grid.front();
   out.signature.resize(static_cast<std::size_t>(c.grid_size()));
   for (int k = 0; k < c.grid_size(); ++k) {
     out.signature[static_cast<std::size_t>(k)].resize(p.layouts.size());
@@ -70,7 +73,7 @@ CandidateSums evaluate_amplitudes(const PreparedRuns& p, const gap::Candidate& c
       for (std::size_t j = 0; j < amp.size(); ++j) {
         // The signature of amplitude j alone, at unit size (SI).
         std::vector<double> theta = c.grid_point(k);
-        theta[static_cast<std::size_t>(amp[j])] = 1.0;
+        theta[static_cast<std::size_t>(amp[j])] = 1.0;  // unit size (SI)
         const gap::Extension e = c.build(ctx[L], theta);
         const Eigen::VectorXd z = out.fit[L]->normalized_linear(e.mean);
         if (Z.size() == 0) Z.resize(z.size(), static_cast<Eigen::Index>(amp.size()));
@@ -120,7 +123,8 @@ Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::G
     double g = 0;
     Choice here{k, {}};
     if (s.amplitudes) {
-      here.amplitude = least_squares_amplitudes(s, k, runs);
+      // Beyond its limit a signature is held at the limit (and flagged).
+      here.amplitude = least_squares_amplitudes(s, k, runs).cwiseMax(-s.amplitude_limit).cwiseMin(s.amplitude_limit);
       for (int r : runs) sums[static_cast<std::size_t>(r)] = run_sums(s, here, r);
       g = gap::gap_value(gap::pooled(sums, runs), m0);
     } else {

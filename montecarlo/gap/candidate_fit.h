@@ -46,6 +46,7 @@ struct CandidateSums {
   std::vector<Eigen::VectorXd> normalized;
   std::vector<std::vector<Eigen::MatrixXd>> signature;
   std::vector<int> layout_of;
+  Eigen::VectorXd amplitude_limit;  ///< the largest magnitude covered, per amplitude
   int grid_size() const { return amplitudes ? static_cast<int>(signature.size()) : static_cast<int>(at.size()); }
 };
 

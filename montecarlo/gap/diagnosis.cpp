@@ -105,7 +105,8 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
   for (std::size_t i = 0; i < c.parameters.size(); ++i) {
     const gap::CandidateParameter& par = c.parameters[i];
     ParameterEstimate e{par.name, par.dimension, best[i], quantile(draws[i], 0.16), quantile(draws[i], 0.84),
-                        par.grid.size() > 1 && (best[i] == par.grid.front() || best[i] == par.grid.back())};
+                        par.amplitude ? std::abs(best[i]) >= par.grid.front()
+                                      : par.grid.size() > 1 && (best[i] == par.grid.front() || best[i] == par.grid.back())};
     out.parameters.push_back(e);
   }
   return out;
