@@ -1,6 +1,7 @@
 #include "lib/gap/run_analysis.h"
 
 #include <algorithm>
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
 #include "lib/common/assert.h"
@@ -31,8 +32,18 @@ RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model)
   Eigen::MatrixXd info = (s.asDiagonal() * (H_.topRows(nt).transpose() * weighted_test_) * s.asDiagonal());
   info.diagonal().array() += 1.0;
   const Eigen::LLT<Eigen::MatrixXd> llt(info);
-  INSMC_ASSERT(llt.info() == Eigen::Success, "information matrix not positive definite ({} causes)", d);
-  posterior_ = s.asDiagonal() * llt.solve(Eigen::MatrixXd::Identity(d, d)) * s.asDiagonal();
+  if (llt.info() == Eigen::Success) {
+    posterior_ = s.asDiagonal() * llt.solve(Eigen::MatrixXd::Identity(d, d)) * s.asDiagonal();
+  } else {
+    // Priors many orders wider than the data (a candidate's widened bounds)
+    // leave round-off in the huge entries; info = I + (PSD) has every
+    // eigenvalue ≥ 1, which the eigen-decomposition restores.
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(info);
+    INSMC_ASSERT(eig.info() == Eigen::Success, "information matrix not decomposable ({} causes)", d);
+    const Eigen::VectorXd inv = eig.eigenvalues().cwiseMax(1.0).cwiseInverse();
+    posterior_ = s.asDiagonal() * (eig.eigenvectors() * inv.asDiagonal() * eig.eigenvectors().transpose()) *
+                 s.asDiagonal();
+  }
   const Eigen::VectorXd q = ((H_ * posterior_).array() * H_.array()).rowwise().sum();
   expected_.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) {

@@ -212,7 +212,9 @@ void honest_statements(Diagnosis& d) {
                                        "candidates do not describe", d.greedy.size(), left, d.null_gap_critical));
   for (const CandidateResult& c : d.ranking) {
     if (c.effect != "bounds" || c.parameters.empty()) continue;
-    if (c.shrink > 0.1)
+    const bool chosen = std::find(d.selected.begin(), d.selected.end(), c.effect) != d.selected.end() ||
+                        d.top.find(c.effect) != std::string::npos;
+    if (chosen && c.shrink > 0.1)
       d.statements.push_back(fmt::format("priors wider than Table 3.1 by a factor {} (bounds) remove {:.0f} % of the "
                                          "held-out gap: Table 3.1's priors are too narrow for this system",
                                          c.parameters.front().value, 100 * c.shrink));
