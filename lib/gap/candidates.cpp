@@ -366,30 +366,30 @@ Candidate deflection_of_vertical() {
 }
 Candidate gravity_model() {
   return {"gravity_model",
-          "the computer's gravitation differs from the true one (e.g. J2): a horizontal anomaly like ξ, η that "
-          "also shifts the latitude taken from the plumb line (δL0), and a vertical one, fixed to the earth, that "
-          "drives r only (f is referred to the measured g)",
-          {{"horizontal", Dimension::kAngle, scaled({0, 0.3, 1, 3, 10}, kMradToRad)},
-           {"vertical", Dimension::kAcceleration, scaled({10, 30, 100, 300, 1000, 3000}, kUg)}},
+          "the computer's gravitation differs from the true one (e.g. J2), the same in every run at a site: a "
+          "horizontal anomaly that tilts the plumb line like ξ, η, the latitude taken from the plumb line (δL0), "
+          "and a vertical anomaly, fixed to the earth, in f and r alike",
+          {{"xi", Dimension::kAngle, {20 * kMradToRad}, true},
+           {"eta", Dimension::kAngle, {20 * kMradToRad}, true},
+           {"latitude", Dimension::kAngle, {20 * kMradToRad}, true},
+           {"vertical", Dimension::kAcceleration, {10 * kMgToMps2}, true}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
-            Extension e;
             InputSignal in;
             in.columns = 1;
-            in.f_responds = false;
-            // (3.24): the computer lacks δg_D, fixed to the earth: u = C(t) (0, 0, δg_D).
+            in.f_responds = true;
+            // (3.24): the computer lacks δg_D, fixed to the earth: u = C(t) (0, 0, δg_D);
+            // the accelerometers see it too against the model's expected force (4.1).
             in.at = [m](double t, Columns3& a, Columns3& th) {
               th.setZero();
               a.col(0) = C_ap_n(m.latitude_rad, m.earth_rate_radps * t).col(2);
             };
-            const auto key = std::string("vertical_anomaly");
+            const auto key = std::string("vertical_anomaly_in_f");
             if (!ctx.cache.count(key)) ctx.cache[key] = input_response(*ctx.layout, *ctx.site, in);
-            e.columns = ctx.cache[key];
-            e.column_var = Eigen::VectorXd::Constant(1, p[1] * p[1]);
-            // The horizontal anomaly tilts the plumb line the site's latitude
-            // is taken from: ξ, η and the latitude error δL0 (3.22) widen alike.
-            e.x_var_add.segment<2>(ux::kDeflection).setConstant(p[0] * p[0]);
-            e.x_var_add[ux::kLatitudeError] = p[0] * p[0];
+            const Eigen::MatrixXd& H = ctx.base->H_x;
+            Extension e;
+            e.mean = p[0] * H.col(ux::kDeflection) + p[1] * H.col(ux::kDeflection + 1) +
+                     p[2] * H.col(ux::kLatitudeError) + p[3] * ctx.cache[key].col(0);
             return e;
           }};
 }

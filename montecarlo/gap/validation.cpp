@@ -1,6 +1,7 @@
 #include "montecarlo/gap/validation.h"
 
 #include <algorithm>
+#include <boost/math/distributions/binomial.hpp>
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
@@ -161,9 +162,24 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
   result.median_shrink = median(all_shrinks);
   if (result.median_shrink < 0.8)
     result.failures.push_back(fmt::format("median held-out shrink {:.2f} < 0.80", result.median_shrink));
-  if (result.null_files > 0 && result.false_alarms > options.alpha * result.null_files)
-    result.failures.push_back(fmt::format("false alarms on null data {}/{} > alpha = {}", result.false_alarms,
-                                          result.null_files, options.alpha));
+  if (result.null_files > 0) {
+    // A rate of exactly alpha still gives more than alpha·n false alarms in
+    // a finite set of null files about half the time: the target fails when
+    // the count is improbable under alpha (one-sided binomial test at 1 %).
+    const boost::math::binomial_distribution<double> at_alpha(result.null_files, options.alpha);
+    result.false_alarm_p = result.false_alarms == 0
+                               ? 1.0
+                               : boost::math::cdf(boost::math::complement(at_alpha, result.false_alarms - 1));
+    using B = boost::math::binomial_distribution<double>;
+    result.false_alarm_low =
+        B::find_lower_bound_on_p(result.null_files, result.false_alarms, 0.025, B::clopper_pearson_exact_interval);
+    result.false_alarm_high =
+        B::find_upper_bound_on_p(result.null_files, result.false_alarms, 0.025, B::clopper_pearson_exact_interval);
+    if (result.false_alarm_p < 0.01)
+      result.failures.push_back(fmt::format("false alarms on null data {}/{} are too many for alpha = {} (binomial "
+                                            "p = {:.2g})", result.false_alarms, result.null_files, options.alpha,
+                                            result.false_alarm_p));
+  }
   return result;
 }
 
@@ -203,11 +219,12 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
       "Records from the truth simulator ({} runs per file, system 1, 45°, 15 min test + 90 min), one effect at a "
       "time at magnitudes {} × its defaults (`insmc effects`), {} file(s) each; the diagnosis sees the records "
       "without their `truth.` keys.\n\n"
-      "Null data (the model itself, with its 0.1 ft/s pulses): {} false alarm(s) in {} files (alpha = {}).\n\n"
+      "Null data (the model itself, with its 0.1 ft/s pulses): {} false alarm(s) in {} files (alpha = {}; rate 95 % "
+      "interval {:.2g}–{:.2g}, binomial p of so many at alpha {:.2g}).\n\n"
       "Median held-out shrink over significant effect files: {:.2f}.\n\n## Per effect\n\n{}\n## Confusion "
       "(rows: true effect; columns: the diagnosis' top effect or class)\n\n{}\n## Every file\n\n{}\n## Targets\n\n",
       options.quick ? " (quick subset)" : "", options.runs_per_file, fmt::join(options.magnitudes, ", "), options.seeds,
-      r.false_alarms, r.null_files, options.alpha, r.median_shrink, render_markdown(scores), render_markdown(confusion),
+      r.false_alarms, r.null_files, options.alpha, r.false_alarm_low, r.false_alarm_high, r.false_alarm_p, r.median_shrink, render_markdown(scores), render_markdown(confusion),
       render_markdown(cases));
   if (r.failures.empty()) md += "Every target holds.\n";
   for (const std::string& f : r.failures) md += "- not met: " + f + "\n";
@@ -215,6 +232,11 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
   j["quick"] = options.quick;
   j["null_files"] = r.null_files;
   j["false_alarms"] = r.false_alarms;
+  Json ci = Json::array();
+  ci.push_back(r.false_alarm_low);
+  ci.push_back(r.false_alarm_high);
+  j["false_alarm_rate_ci95"] = ci;
+  j["false_alarm_binomial_p"] = r.false_alarm_p;
   j["median_shrink"] = r.median_shrink;
   Json s = Json::array();
   for (const EffectScore& e : r.scores) {

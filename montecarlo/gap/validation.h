@@ -50,6 +50,8 @@ struct ValidationResult {
   std::vector<ValidationCase> cases;
   std::vector<EffectScore> scores;
   int null_files = 0, false_alarms = 0;
+  double false_alarm_p = 1.0;                         ///< P(≥ false_alarms | null_files, alpha)
+  double false_alarm_low = 0, false_alarm_high = 1;   ///< Clopper–Pearson 95 % interval of the rate
   double median_shrink = 0;             ///< over all significant effect cases
   std::vector<std::string> failures;    ///< targets not met, one line each
 };
