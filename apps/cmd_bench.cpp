@@ -1,81 +1,151 @@
-// insmc bench: throughput of the Monte Carlo engine against the machine's
-// floor (generator + map + sums with no framework), measured in one run.
+// insmc bench: throughput of each Monte Carlo path against the floor it is
+// bound by, each pair measured in the same round (the machine is shared and
+// noisy; only same-round ratios are meaningful):
+//   paper, scheme none   generator + map GEMM + sums (throughput.h)
+//   paper, every scheme  the pipeline's batched products (pipeline_throughput.h)
+//   linear, every scheme the same floor
+//   truth, scheme none   a hand-written integrator of the same equations (truth_reference.h)
 #include <algorithm>
-#include <thread>
 #include <fmt/format.h>
+#include <thread>
 #include <vector>
 
 #include "apps/cli_common.h"
 #include "lib/common/input_error.h"
 #include "lib/common/version.h"
+#include "montecarlo/bench/pipeline_throughput.h"
 #include "montecarlo/bench/throughput.h"
+#include "montecarlo/bench/truth_throughput.h"
 #include "montecarlo/write/json.h"
 
 namespace insmc::app {
+namespace {
+
+struct Round {
+  mc::ThroughputResult paper;
+  mc::PipelineThroughput pipeline;
+  mc::TruthThroughput truth;
+  double engine_over_floor() const { return paper.engine_samples_per_s / paper.floor_samples_per_s; }
+  double scaling() const { return paper.engine_samples_per_s / paper.engine_one_thread_samples_per_s; }
+  double paper_full_over_floor() const { return pipeline.paper_samples_per_s / pipeline.floor_samples_per_s; }
+  double linear_over_floor() const { return pipeline.linear_samples_per_s / pipeline.floor_samples_per_s; }
+  double truth_over_reference() const { return truth.truth_samples_per_s / truth.reference_samples_per_s; }
+};
+
+double median(const std::vector<Round>& rounds, double (Round::*ratio)() const) {
+  std::vector<double> v;
+  for (const Round& r : rounds) v.push_back((r.*ratio)());
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+mc::Json round_json(const Round& r) {
+  mc::Json x = mc::Json::object();
+  x["generator_variates_per_s"] = r.paper.generator_variates_per_s;
+  x["floor_samples_per_s"] = r.paper.floor_samples_per_s;
+  x["engine_samples_per_s"] = r.paper.engine_samples_per_s;
+  x["engine_over_floor"] = r.engine_over_floor();
+  x["engine_one_thread_samples_per_s"] = r.paper.engine_one_thread_samples_per_s;
+  x["pipeline_floor_samples_per_s"] = r.pipeline.floor_samples_per_s;
+  x["paper_full_samples_per_s"] = r.pipeline.paper_samples_per_s;
+  x["paper_full_over_floor"] = r.paper_full_over_floor();
+  x["linear_samples_per_s"] = r.pipeline.linear_samples_per_s;
+  x["linear_over_floor"] = r.linear_over_floor();
+  x["truth_reference_samples_per_s"] = r.truth.reference_samples_per_s;
+  x["truth_samples_per_s"] = r.truth.truth_samples_per_s;
+  x["truth_over_reference"] = r.truth_over_reference();
+  return x;
+}
+
+}  // namespace
 
 int run_bench(const Args& args) {
   po::options_description opts("Options");
-  opts.add_options()("samples", po::value<std::uint64_t>()->default_value(2000000), "samples per measurement")(
+  opts.add_options()("samples", po::value<std::uint64_t>()->default_value(2000000),
+                     "samples per measurement of the uncompensated paper path")(
+      "pipeline-samples", po::value<std::uint64_t>()->default_value(102400),
+      "samples per measurement of the full pipelines (paper, linear)")(
+      "truth-samples", po::value<std::uint64_t>()->default_value(4096), "samples per measurement of the truth path")(
       "threads", po::value<int>()->default_value(0), "threads (0 = all cores)")(
       "rounds", po::value<int>()->default_value(3), "paired rounds; the median ratio is reported")(
       "json", po::bool_switch(), "print the JSON alone on stdout");
-  const auto vm = parse_args(args, "bench", "[--samples N] [--threads N] [--rounds N] [--json]", opts);
+  const auto vm = parse_args(
+      args, "bench", "[--samples N] [--pipeline-samples N] [--truth-samples N] [--threads N] [--rounds N] [--json]",
+      opts);
   if (!vm) return 0;
   const std::uint64_t samples = (*vm)["samples"].as<std::uint64_t>();
+  const std::uint64_t pipeline_samples = (*vm)["pipeline-samples"].as<std::uint64_t>();
+  const std::uint64_t truth_samples = (*vm)["truth-samples"].as<std::uint64_t>();
   const int rounds = (*vm)["rounds"].as<int>();
   int threads = (*vm)["threads"].as<int>();
-  if (samples < mc::kBlockSize) throw InputError("--samples", std::to_string(samples), "must be >= 1024");
+  for (const auto& [name, n] : {std::pair{"--samples", samples}, std::pair{"--pipeline-samples", pipeline_samples},
+                                std::pair{"--truth-samples", truth_samples}})
+    if (n < mc::kBlockSize) throw InputError(name, std::to_string(n), "must be >= 1024");
   if (rounds < 1 || rounds > 50) throw InputError("--rounds", std::to_string(rounds), "must lie in [1, 50]");
   if (threads < 0) throw InputError("--threads", std::to_string(threads), "must be >= 0");
   if (threads == 0) threads = static_cast<int>(std::thread::hardware_concurrency());
-  std::vector<mc::ThroughputResult> results;
-  std::vector<double> ratios, scaling;
-  for (int i = 0; i < rounds; ++i) {
-    results.push_back(mc::measure_throughput(mc::benchmark_study(samples, threads)));
-    ratios.push_back(results.back().engine_samples_per_s / results.back().floor_samples_per_s);
-    scaling.push_back(results.back().engine_samples_per_s / results.back().engine_one_thread_samples_per_s);
-  }
-  std::vector<double> sorted = ratios;
-  std::sort(sorted.begin(), sorted.end());
-  const double median = sorted[sorted.size() / 2];
-  std::vector<double> sorted_scaling = scaling;
-  std::sort(sorted_scaling.begin(), sorted_scaling.end());
-  const double median_scaling = sorted_scaling[sorted_scaling.size() / 2];
-  const mc::ThroughputResult& last = results.back();
-  mc::Json j = mc::Json::object();
-  j["version"] = kVersion;
-  j["study"] = "paper level, scheme none, systems 1 and 2, report times 42/63/84 min";
-  j["samples"] = static_cast<double>(samples);
-  j["threads"] = threads;
-  j["outputs_per_sample"] = last.outputs;
-  mc::Json rs = mc::Json::array();
-  for (const auto& r : results) {
-    mc::Json x = mc::Json::object();
-    x["generator_variates_per_s"] = r.generator_variates_per_s;
-    x["floor_samples_per_s"] = r.floor_samples_per_s;
-    x["engine_samples_per_s"] = r.engine_samples_per_s;
-    x["engine_over_floor"] = r.engine_samples_per_s / r.floor_samples_per_s;
-    x["engine_one_thread_samples_per_s"] = r.engine_one_thread_samples_per_s;
-    rs.push_back(x);
-  }
-  j["rounds"] = rs;
-  j["median_engine_over_floor"] = median;
-  j["median_thread_scaling"] = median_scaling;
+  std::vector<Round> results;
+  for (int i = 0; i < rounds; ++i)
+    results.push_back({mc::measure_throughput(mc::benchmark_study(samples, threads)),
+                       mc::measure_pipeline_throughput(pipeline_samples, threads),
+                       mc::measure_truth_throughput(mc::truth_study(truth_samples, threads))});
+  const double engine_median = median(results, &Round::engine_over_floor);
+  const double scaling_median = median(results, &Round::scaling);
+  const double paper_full_median = median(results, &Round::paper_full_over_floor);
+  const double linear_median = median(results, &Round::linear_over_floor);
+  const double truth_median = median(results, &Round::truth_over_reference);
+  const int outputs = results.back().paper.outputs;
   if ((*vm)["json"].as<bool>()) {
+    mc::Json j = mc::Json::object();
+    j["version"] = kVersion;
+    j["study"] = "paper level, scheme none, systems 1 and 2, report times 42/63/84 min";
+    j["samples"] = static_cast<double>(samples);
+    j["pipeline_samples"] = static_cast<double>(pipeline_samples);
+    j["truth_samples"] = static_cast<double>(truth_samples);
+    j["threads"] = threads;
+    j["outputs_per_sample"] = outputs;
+    mc::Json floors = mc::Json::object();
+    floors["paper_uncompensated"] = "generator + x-to-output GEMM + sums";
+    floors["paper_full"] = "generator + the pipeline's batched products (observation maps, fits, output map) + sums";
+    floors["linear"] = "the same as paper_full (same shapes)";
+    floors["truth"] = "hand-written fixed-step RK4 of the same equations, same steps";
+    j["floors"] = floors;
+    mc::Json rs = mc::Json::array();
+    for (const Round& r : results) rs.push_back(round_json(r));
+    j["rounds"] = rs;
+    j["median_engine_over_floor"] = engine_median;
+    j["median_thread_scaling"] = scaling_median;
+    j["median_paper_full_over_floor"] = paper_full_median;
+    j["median_linear_over_floor"] = linear_median;
+    j["median_truth_over_reference"] = truth_median;
     fmt::print("{}", j.dump());
     return 0;
   }
-  fmt::print("insmc bench: {} samples, {} threads, {} outputs per sample (paper level, report times)\n\n",
-             samples, threads, last.outputs);
+  fmt::print("insmc bench: {} threads; paper uncompensated {} samples ({} outputs), full pipelines {}, truth {}\n\n",
+             threads, samples, outputs, pipeline_samples, truth_samples);
   fmt::print("| round | generator [variates/s, 1 thread] | floor [samples/s] | engine [samples/s] | engine/floor "
              "| engine, 1 thread [samples/s] | scaling |\n");
   fmt::print("|---:|---:|---:|---:|---:|---:|---:|\n");
-  for (size_t i = 0; i < results.size(); ++i)
+  for (size_t i = 0; i < results.size(); ++i) {
+    const Round& r = results[i];
     fmt::print("| {} | {:.3g} | {:.3g} | {:.3g} | {:.2f} | {:.3g} | {:.2f} |\n", i + 1,
-               results[i].generator_variates_per_s, results[i].floor_samples_per_s, results[i].engine_samples_per_s,
-               ratios[i], results[i].engine_one_thread_samples_per_s, scaling[i]);
-  fmt::print("\nmedian engine/floor: {:.2f}; median {}-thread/1-thread scaling: {:.2f}\n", median, threads,
-             median_scaling);
+               r.paper.generator_variates_per_s, r.paper.floor_samples_per_s, r.paper.engine_samples_per_s,
+               r.engine_over_floor(), r.paper.engine_one_thread_samples_per_s, r.scaling());
+  }
+  fmt::print("\n| round | pipeline floor [samples/s] | paper full [samples/s] | /floor | linear [samples/s] | /floor "
+             "| truth reference [samples/s] | truth [samples/s] | /reference |\n");
+  fmt::print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (size_t i = 0; i < results.size(); ++i) {
+    const Round& r = results[i];
+    fmt::print("| {} | {:.3g} | {:.3g} | {:.2f} | {:.3g} | {:.2f} | {:.3g} | {:.3g} | {:.2f} |\n", i + 1,
+               r.pipeline.floor_samples_per_s, r.pipeline.paper_samples_per_s, r.paper_full_over_floor(),
+               r.pipeline.linear_samples_per_s, r.linear_over_floor(), r.truth.reference_samples_per_s,
+               r.truth.truth_samples_per_s, r.truth_over_reference());
+  }
+  fmt::print("\nmedians: paper uncompensated engine/floor {:.2f} ({}-thread/1-thread scaling {:.2f}); "
+             "paper full/floor {:.2f}; linear/floor {:.2f}; truth/reference {:.2f} (time ratio {:.2f})\n",
+             engine_median, threads, scaling_median, paper_full_median, linear_median, truth_median,
+             1.0 / truth_median);
   return 0;
 }
 

@@ -7,20 +7,13 @@
 #include <tbb/parallel_for.h>
 #include <vector>
 
+#include "montecarlo/bench/timing.h"
 #include "montecarlo/engine/engine.h"
 #include "montecarlo/random/philox.h"
 
 namespace insmc::mc {
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-/// Keeps a value alive so the optimizer cannot drop the loop.
-volatile double g_sink = 0.0;
-
-}  // namespace
+using bench::keep;
+using bench::seconds_since;
 
 StudyConfig benchmark_study(std::uint64_t samples, int threads) {
   StudyConfig c;
@@ -49,7 +42,7 @@ ThroughputResult measure_throughput(const StudyConfig& c) {
       fill_uniform01(c.seed, Stream::Uncertainties, first, ux::kDim, kBlockSize, u);
       acc += u[7];
     }
-    g_sink = acc;
+    keep(acc);
     r.generator_variates_per_s = static_cast<double>(n * ux::kDim) / seconds_since(t0);
   }
 
@@ -81,7 +74,7 @@ ThroughputResult measure_throughput(const StudyConfig& c) {
           const double v = y(s, col), v2 = v * v;
           s1 += v, s2 += v2, s4 += v2 * v2;
         }
-      g_sink = s1 + s2 + s4;
+      keep(s1 + s2 + s4);
     });
     r.floor_samples_per_s = static_cast<double>(blocks * kBlockSize) / seconds_since(t0);
   }
@@ -89,7 +82,7 @@ ThroughputResult measure_throughput(const StudyConfig& c) {
     const auto t0 = std::chrono::steady_clock::now();
     const StudyAccumulator acc = run_blocks(c, map, 0, block_count(c.samples));
     r.engine_samples_per_s = static_cast<double>(c.samples) / seconds_since(t0);
-    g_sink = acc.outputs()[0].sum_squares();
+    keep(acc.outputs()[0].sum_squares());
   }
   {  // the same study on one thread, measured right after: a paired scaling ratio
     StudyConfig one = c;
@@ -97,7 +90,7 @@ ThroughputResult measure_throughput(const StudyConfig& c) {
     const auto t0 = std::chrono::steady_clock::now();
     const StudyAccumulator acc = run_blocks(one, map, 0, block_count(c.samples));
     r.engine_one_thread_samples_per_s = static_cast<double>(c.samples) / seconds_since(t0);
-    g_sink = acc.outputs()[0].sum_squares();
+    keep(acc.outputs()[0].sum_squares());
   }
   return r;
 }

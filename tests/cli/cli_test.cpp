@@ -158,6 +158,23 @@ TEST(Cli, TruthFidelityRunsAndIsIdenticalForAnyThreadCount) {
   EXPECT_NE(refused.err.find("--scheme = 5.2"), std::string::npos) << refused.err;
 }
 
+TEST(Cli, BenchJsonIsTheJsonAloneWithEveryPath) {
+  // Smallest sizes: this checks the output contract, never the speeds.
+  const auto r = run_insmc("bench --samples 1024 --pipeline-samples 1024 --truth-samples 1024 --threads 1 "
+                           "--rounds 1 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_FALSE(r.out.empty());
+  EXPECT_EQ(r.out.front(), '{');
+  EXPECT_EQ(r.out.substr(r.out.find_last_not_of('\n')), "}\n");  // nothing after the JSON
+  for (const char* key : {"\"median_engine_over_floor\"", "\"median_paper_full_over_floor\"",
+                          "\"median_linear_over_floor\"", "\"median_truth_over_reference\"",
+                          "\"truth_reference_samples_per_s\"", "\"pipeline_floor_samples_per_s\""})
+    EXPECT_NE(r.out.find(key), std::string::npos) << key;
+  const auto bad = run_insmc("bench --truth-samples 10");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--truth-samples"), std::string::npos) << bad.err;
+}
+
 TEST(Cli, SimulateWritesRecordsThatAreDeterministicPerSeed) {
   TempDir dir;
   const std::string a = (dir.path() / "a.csv").string(), b = (dir.path() / "b.csv").string();
