@@ -19,6 +19,19 @@ std::vector<double> scaled(std::initializer_list<double> values, double unit) {
   return out;
 }
 
+/// lo, lo·r, lo·r², … up to hi (within 1 %), r = 10^(1/4), × unit: the same
+/// relative step (×1.78) for every scale parameter, so no candidate is
+/// favoured by a grid that happens to hold the data's value.
+std::vector<double> log_grid(double lo, double hi, double unit) {
+  std::vector<double> out;
+  for (int k = 0;; ++k) {
+    const double v = lo * std::pow(10.0, k / 4.0);
+    if (v > hi * 1.01) break;
+    out.push_back(v * unit);
+  }
+  return out;
+}
+
 double layout_end(const Layout& layout) {
   double end = 0.0;
   for (const ObservationRow& r : layout.rows) end = std::max(end, r.t_s);
@@ -76,7 +89,10 @@ Eigen::MatrixXd process_columns(const LayoutContext& ctx, Drive drive, double ta
   const Eigen::MatrixXd L = cov.llt().matrixL();
   InputSignal in;
   in.columns = 3 * K;
-  in.f_responds = drive != Drive::kVelocity;
+  // A velocity walk is seen by f too: the filtered f is its increment over τ,
+  // so the knot slopes and the white part of f are one process (modelled as
+  // independent, the test-run fit would read the walk as a bias).
+  in.f_responds = true;
   in.at = [&, drive, K, d](double t, Columns3& accel, Columns3& angle) {
     accel.setZero();
     angle.setZero();
@@ -133,25 +149,26 @@ Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma,
   if (drive == Drive::kAccel) e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(nugget));
   if (drive == Drive::kAngle && tilt_noise) e.noise_var_add = f_noise(ctx, Eigen::Vector3d(g * g * nugget, g * g * nugget, 0.0));
   if (drive == Drive::kRate) return e;
-  // The r rows see the bridges too: the bridge of interval j integrates to an
-  // impulse of variance q Δ³/12 at its middle m_j, which the Schuler loop
-  // (3.24) turns into sin(ω_s (t − m_j))/ω_s of position (accelerometer error,
-  // tilt × g) or cos(ω_s (t − m_j)) (velocity). Independent between
-  // intervals: their variances add.
+  // The r rows see the bridges too: the bridge B of interval j integrates to
+  // an impulse at its middle m_j, which the Schuler loop (3.24) turns into
+  // sin(ω_s (t − m_j))/ω_s of position (accelerometer error, tilt × g) or
+  // cos(ω_s (t − m_j)) (velocity). Over the first u of an interval of Δ,
+  // Var ∫B = q (u³/3 − u⁴/(4Δ)) (Brownian bridge; q Δ³/12 for a whole
+  // interval). Independent between intervals: their variances add.
   if (e.noise_var_add.size() == 0) e.noise_var_add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));
   const Eigen::Vector3d gain = drive == Drive::kAngle ? Eigen::Vector3d(g * g, g * g, 0.0) : Eigen::Vector3d::Ones();
-  const double ws = ctx.site->model.schuler_radps(), impulse = q * d * d * d / 12.0;
+  const double ws = ctx.site->model.schuler_radps();
   for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
     const ObservationRow& row = ctx.layout->rows[i];
     if (row.quantity != Quantity::kR) continue;
     double sum = 0.0;
     for (double start = 0.0; start < row.t_s; start += d) {
-      const double part = std::min(1.0, (row.t_s - start) / d);  // a partly elapsed interval
-      const double lag = row.t_s - (start + 0.5 * part * d);
+      const double u = std::min(d, row.t_s - start);  // a partly elapsed interval
+      const double lag = row.t_s - (start + 0.5 * u);
       const double h = drive == Drive::kVelocity ? std::cos(ws * lag) : std::sin(ws * lag) / ws;
-      sum += h * h * part * part * part;
+      sum += h * h * q * (u * u * u / 3.0 - u * u * u * u / (4.0 * d));
     }
-    e.noise_var_add[static_cast<Eigen::Index>(i)] += gain[row.axis] * impulse * sum;
+    e.noise_var_add[static_cast<Eigen::Index>(i)] += gain[row.axis] * sum;
   }
   return e;
 }
@@ -204,7 +221,7 @@ Candidate bounds() {
 Candidate quantization() {
   return {"quantization",
           "ΔV pulses coarser than the model's: counting noise w²/(6τ²) in f and a pulse-phase velocity error w²/12",
-          {{"dv_pulse", Dimension::kVelocity, {0.02, 0.03, 0.05, 0.07, 0.1, 0.15, 0.2, 0.3, 0.5, 0.7, 1.0, 1.5, 2.0, 3.0, 5.0}}},
+          {{"dv_pulse", Dimension::kVelocity, log_grid(0.02, 5, 1.0)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             Extension e;
             const double w0 = ctx.site->dv_pulse_mps, w = std::max(p[0], w0), tau = ctx.site->filter_interval_s;
@@ -218,7 +235,7 @@ Candidate sway() {
   return {"sway",
           "vehicle sway of periods 2-20 s: residual acceleration in f after the τ box filter, and its "
           "velocity at switch-over",
-          {{"accel_rms", Dimension::kAcceleration, scaled({0.2, 0.5, 1, 2, 5, 10, 20, 50, 100, 200}, kMgToMps2)}},
+          {{"accel_rms", Dimension::kAcceleration, log_grid(0.2, 200, kMgToMps2)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             // Log-uniform periods in [2, 20] s: mean power gain of the box
             // filter sinc²(π τ/P) and mean 1/ω² for the velocity.
@@ -243,7 +260,7 @@ Candidate sway() {
 Candidate accel_bias_instability() {
   return {"accel_bias_instability",
           "accelerometer bias wandering as a random walk (tau 0, σ after 1 h) or Gauss–Markov process",
-          {{"sigma", Dimension::kAcceleration, scaled({2, 5, 10, 20, 50, 100, 200, 500, 2000}, kUg)},
+          {{"sigma", Dimension::kAcceleration, log_grid(2, 2000, kUg)},
            {"tau", Dimension::kTime, {0.0, 300.0, 1200.0, 3600.0}}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             return process_extension(ctx, Drive::kAccel, p[0], p[1], false);
@@ -253,7 +270,7 @@ Candidate accel_bias_instability() {
 Candidate gyro_drift_instability() {
   return {"gyro_drift_instability",
           "gyro drift wandering as a random walk (tau 0, σ after 1 h) or Gauss–Markov process",
-          {{"sigma", Dimension::kAngularRate, scaled({0.1, 0.2, 0.5, 1, 2, 5, 10, 30, 100}, kMeruToRadps)},
+          {{"sigma", Dimension::kAngularRate, log_grid(0.1, 100, kMeruToRadps)},
            {"tau", Dimension::kTime, {0.0, 300.0, 1200.0, 3600.0}}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             return process_extension(ctx, Drive::kRate, p[0], p[1], false);
@@ -262,7 +279,7 @@ Candidate gyro_drift_instability() {
 
 Candidate angle_random_walk() {
   return {"angle_random_walk", "white gyro rate noise: the platform angle walks (σ after 1 h)",
-          {{"angle_1h", Dimension::kAngle, scaled({0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 3, 10}, kMradToRad)}},
+          {{"angle_1h", Dimension::kAngle, log_grid(0.005, 10, kMradToRad)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             return process_extension(ctx, Drive::kAngle, p[0], 0.0, true);
           }};
@@ -271,7 +288,7 @@ Candidate angle_random_walk() {
 Candidate velocity_random_walk() {
   return {"velocity_random_walk",
           "white accelerometer noise: white in f (q/τ), a velocity random walk in r (σ after 1 h)",
-          {{"velocity_1h", Dimension::kVelocity, {0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 3.0, 10.0}}},
+          {{"velocity_1h", Dimension::kVelocity, log_grid(0.01, 10, 1.0)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             Extension e = process_extension(ctx, Drive::kVelocity, p[0], 0.0, false);
             const double q = p[0] * p[0] / 3600.0;
@@ -369,9 +386,9 @@ Candidate gravity_model() {
           "the computer's gravitation differs from the true one (e.g. J2), the same in every run at a site: the "
           "computer places the site where its own model has the plumb line the leveling found, an offset fixed "
           "to the earth (north, down; turning with it in a'), and lacks a vertical anomaly that drives r",
-          {{"north_offset", Dimension::kLength, {50e3}, true},
-           {"down_offset", Dimension::kLength, {50e3}, true},
-           {"vertical", Dimension::kAcceleration, {10 * kMgToMps2}, true}},
+          {{"north_offset", Dimension::kLength, {1000e3}, true},
+           {"down_offset", Dimension::kLength, {1000e3}, true},
+           {"vertical", Dimension::kAcceleration, {100 * kMgToMps2}, true}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
             InputSignal in;
