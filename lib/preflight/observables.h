@@ -3,6 +3,8 @@
 /// accelerometer output error Δf^a(t) and the change of the position error
 /// Δr^{a'}(t) = δr^{a'}(t) − δr(0)^{a'}, per unit of each uncertainty, and
 /// the ΔV pulse-count resolution limits (4.6).
+#include <cmath>
+
 #include "lib/common/model_options.h"
 #include "lib/propagation/linear_model.h"
 #include "lib/propagation/paper_model.h"
@@ -34,5 +36,18 @@ struct ResolutionLimits {
 };
 ResolutionLimits pulse_resolution_limits(double dv_pulse_mps, double test_duration_s,
                                          const ModelOptions& options);
+
+/// The mean of a signal over `span_s` as a pulse counter of weight `pulse`
+/// reports it, less the `known` part of the signal: the counter sees
+/// (known + error)·span on top of its starting remainder phase01·pulse
+/// (phase01 ∈ [0, 1)) and counts whole pulses (§4.3, (5.14), (5.18)).
+/// pulse = 0: a continuous output, the error itself.
+inline double counted_mean(double error, double known, double span_s, double pulse, double phase01) {
+  if (!(pulse > 0)) return error;
+  return pulse * std::floor(((known + error) * span_s + phase01 * pulse) / pulse) / span_s - known;
+}
+
+/// The position computer's output at resolution q (nearest; q = 0: exact).
+inline double at_resolution(double value, double q) { return q > 0 ? q * std::round(value / q) : value; }
 
 }  // namespace insmc

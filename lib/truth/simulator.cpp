@@ -159,6 +159,8 @@ struct Dynamics {
   const std::vector<ExponentialTerm>* bias_transients = nullptr;
   const std::vector<ExponentialTerm>* drift_transients = nullptr;
   const std::function<Vec3(double)>* torquer = nullptr;
+  const AccelCompensation* compensation = nullptr;
+  bool compensating = false;  ///< the current step lies after compensation->start_s
   // computer
   Mat3 c_hat = Mat3::Identity();   ///< Ĉ_a^i (3.20)
   GravityField computer_field;
@@ -196,6 +198,7 @@ struct Dynamics {
     const Vec3 r_c = r_true + y.segment<3>(kDR) - quantization_offset_i;
     dy.segment<3>(kDVel) = computer_gravitation(r_c) - rotate_z(c, s, site_gravitation_e) +
                            c_hat * f_m - f_i;
+    if (compensating) dy.segment<3>(kDVel) += c_hat * compensation->at(t);  // point 2 (fig. 5.1)
     dy.segment<3>(kDR) = y.segment<3>(kDVel);
   }
 };
@@ -214,12 +217,16 @@ SwayState sway_at(const std::vector<SwayComponent>& sway, double t) {
   return s;
 }
 
-/// Times at which the integration stops: the outputs and the starts of their
-/// filter intervals, merged within 1e-9 s.
-std::vector<double> stop_times(const std::vector<double>& outputs, double tau) {
+/// Times at which the integration stops: the outputs, the starts of their
+/// filter intervals and the `events` (compensation start, reset) before the
+/// last output, merged within 1e-9 s.
+std::vector<double> stop_times(const std::vector<double>& outputs, double tau, std::initializer_list<double> events) {
   std::vector<double> stops;
-  stops.reserve(2 * outputs.size() + 1);
+  stops.reserve(2 * outputs.size() + 3);
   stops.push_back(0.0);
+  const double last = outputs.empty() ? 0.0 : outputs.back();
+  for (double e : events)
+    if (e > 0.0 && e < last) stops.push_back(e);
   for (double t : outputs) {
     stops.push_back(t);
     if (t - tau >= -1e-9) stops.push_back(std::max(0.0, t - tau));
@@ -263,6 +270,10 @@ std::optional<InputError> validate(const TruthOptions& o) {
   if (!(o.step_s > 0 && o.step_s <= 60)) return bad("step_s", o.step_s, "must be in (0, 60]");
   if (!(o.noise_grid_s > 0) || !std::isfinite(o.noise_grid_s))
     return bad("noise_grid_s", o.noise_grid_s, "must be > 0");
+  if (!std::isfinite(o.reset_at_s)) return bad("reset_at_s", o.reset_at_s, "must be finite (negative = no reset)");
+  const AccelCompensation& c = o.accel_compensation;
+  if (!(c.start_s >= 0) || !std::isfinite(c.start_s) || !c.step_mps2.allFinite() || !c.ramp_mps3.allFinite())
+    return bad("accel_compensation.start_s", c.start_s, "must be >= 0 with a finite step and ramp");
   for (int k = 0; k < 3; ++k)
     if (!(o.pulse_phase[k] >= -0.5 && o.pulse_phase[k] < 0.5))
       return bad(fmt::format("pulse_phase[{}]", k), o.pulse_phase[k], "must be in [-0.5, 0.5)");
@@ -296,7 +307,9 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   const ModelOptions& m = o.model;
   const double w_ie = m.earth_rate_radps, r0 = m.radius_m, L0 = m.latitude_rad;
   const double tau = o.filter_interval_s;
-  const std::vector<double> stops = stop_times(output_times_s, tau);
+  const AccelCompensation& compensation = o.accel_compensation;
+  const std::vector<double> stops =
+      stop_times(output_times_s, tau, {compensation.active() ? compensation.start_s : -1.0, o.reset_at_s});
 
   // ---- effects ---------------------------------------------------------------
   const double j2_computer = o.j2_gravity ? kEarthJ2 : 0.0;
@@ -368,6 +381,7 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   d.bias_transients = &p.bias_transients;
   d.drift_transients = &p.drift_transients;
   d.torquer = &o.torquer_command_radps;
+  d.compensation = &compensation;
 
   // ---- navigation computer -----------------------------------------------------
   const double latitude_hat = L0 + x[ux::kLatitudeError];
@@ -393,7 +407,7 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
 
   // ---- pulses ------------------------------------------------------------------
   const double w = p.dv_pulse_mps.value_or(o.dv_pulse_mps);
-  const Vec3 rho0 = w * o.pulse_phase;
+  Vec3 rho0 = w * o.pulse_phase;  // the remainder the computer's count starts from
   Vec3 rho = rho0;               // accumulator remainder
   Vec3 remainder_integral = Vec3::Zero();  // P = ∫ (ρ − ρ0) dt
   PulseCount3 pulses = PulseCount3::Zero();
@@ -423,6 +437,7 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
       const double cm = std::cos(w_ie * tm), sm = std::sin(w_ie * tm);
       const double c1 = std::cos(w_ie * t1), s1 = std::sin(w_ie * t1);
       d.quantization_offset_i = d.c_hat * remainder_integral;
+      d.compensating = compensation.active() && t >= compensation.start_s - 1e-9;
       y.segment<6>(kDV).setZero();
       d.derivative(t, c0, s0, y, k1);
       d.derivative(tm, cm, sm, y + 0.5 * h * k1, k2);
@@ -508,6 +523,21 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
       s0 = s1;
     }
     record(stop);
+    if (o.reset_at_s >= 0.0 && std::abs(stops[stop] - o.reset_at_s) <= 1e-9) {
+      // Points 5, 6: the computer's integrators get the position and velocity
+      // of (3.22), (3.23) for its stationary vehicle, turned with the earth to
+      // now; the true vehicle keeps its motion (sway). Its pulse count
+      // restarts from the present remainder.
+      const Mat3 turn = earth_rotation(w_ie * t);
+      const Vec3 offset_i = turn * (r_c0 - d.site_position_e);
+      const SwayState st = sway_at(p.sway, t);
+      const Mat3 to_i = turn * c_e_n;
+      y.segment<3>(kDR) = offset_i - to_i * st.position_n;
+      y.segment<3>(kDVel) = earth_axis.cross(offset_i) - to_i * (st.velocity_n + earth_axis_n.cross(st.position_n));
+      rho0 = rho;
+      remainder_integral.setZero();
+      record(stop);
+    }
   }
 
   // ---- outputs ---------------------------------------------------------------------

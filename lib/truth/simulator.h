@@ -80,6 +80,16 @@
 
 namespace insmc {
 
+/// A compensation signal at point 2: zero before `start_s`, then
+/// step_mps2 + ramp_mps3 (t − start_s) [m/s²] in the platform frame.
+struct AccelCompensation {
+  double start_s = 0.0;
+  Vec3 step_mps2 = Vec3::Zero();
+  Vec3 ramp_mps3 = Vec3::Zero();
+  bool active() const { return !step_mps2.isZero(0.0) || !ramp_mps3.isZero(0.0); }
+  Vec3 at(double t_s) const { return step_mps2 + (t_s - start_s) * ramp_mps3; }
+};
+
 struct TruthOptions {
   /// The site, loop gains and constants shared with the linear model.
   ModelOptions model;
@@ -110,6 +120,17 @@ struct TruthOptions {
   /// platform's rates in the navigation mode, in the platform frame [rad/s];
   /// empty = none. A hook for the compensation schemes.
   std::function<Vec3(double t_s)> torquer_command_radps;
+  /// Injection point 2 (fig. 5.1), and the integrators into it: a signal the
+  /// computer adds to the accelerometer outputs it integrates (platform
+  /// frame), step + ramp·(t − start) from `start_s` on. The instruments and
+  /// their pulses (and so the recorded Δf^a) are not affected.
+  AccelCompensation accel_compensation;
+  /// Points 5, 6 (fig. 5.1): at this time [s] the computer's velocity and
+  /// position integrators are set to the values it calculates for a
+  /// stationary vehicle ((3.22), (3.23) turned with the earth, no wiggle), and
+  /// its pulse bookkeeping restarts; negative = no reset. An output at this
+  /// very time gives the error just after the reset.
+  double reset_at_s = -1.0;
 };
 
 /// Checks every constraint on the options (and each effect); nullopt if valid.

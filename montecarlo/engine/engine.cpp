@@ -11,7 +11,7 @@
 
 #include "lib/common/assert.h"
 #include "lib/propagation/position_maps.h"
-#include "lib/truth/simulator.h"
+#include "lib/compensation/truth_compensation.h"
 #include "montecarlo/random/philox.h"
 #include "montecarlo/sampler/sampler.h"
 
@@ -31,34 +31,62 @@ struct Workspace {
   std::vector<double> h;
 };
 
+/// The truth level's per-system setup (the same estimators as the system's
+/// pipeline), built once per run.
+std::vector<TruthSchemeSetup> truth_setups(const StudyConfig& c, const StudyMap& map) {
+  std::vector<TruthSchemeSetup> out;
+  if (c.fidelity != Fidelity::kTruth) return out;
+  for (std::size_t j = 0; j < c.systems.size(); ++j) {
+    TruthOptions o;
+    o.model = c.model;
+    o.system = c.systems[j];
+    o.dv_pulse_mps = c.test.dv_pulse_mps;
+    o.filter_interval_s = c.test.filter_interval_s;
+    out.emplace_back(o, c.test, map.pipeline(static_cast<int>(j)).estimators());
+  }
+  return out;
+}
+
 /// Rows (x, y, z, north, east per scheme and time) of system j from the
-/// truth simulator for each sample of the block (scheme none only).
-void truth_rows(const StudyConfig& c, const StudyMap& map, int j, std::uint64_t first, std::size_t n,
-                const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
-  TruthOptions o;
-  o.model = c.model;
-  o.system = c.systems[static_cast<std::size_t>(j)];
-  o.dv_pulse_mps = c.test.dv_pulse_mps;
-  o.filter_interval_s = c.test.filter_interval_s;
+/// truth simulator with each scheme applied (truth_compensation.h), sample by
+/// sample. The draws besides x are those of the linear pipeline: the
+/// realignment's fresh ζ_r, ∂f_r, (u)V and the pulse counters' phases.
+void truth_rows(const StudyConfig& c, const StudyMap& map, const Sampler& sampler, const TruthSchemeSetup& setup,
+                std::uint64_t first, std::size_t n, const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
   const std::vector<double>& times = map.layout().times_s;
+  const double T = c.test.duration_s;
+  constexpr int kRealignDraws = static_cast<int>(std::size(kRealignedSlots));
   for (std::size_t s = 0; s < n; ++s) {
-    double phase[3];
-    fill_uniform01(c.seed, Stream::PulsePhase, first + s, 3, 1, phase);
-    o.pulse_phase = Vec3(phase[0] - 0.5, phase[1] - 0.5, phase[2] - 0.5);
-    const TruthRun run = simulate_truth(o, x.col(static_cast<Eigen::Index>(s)), times);
-    for (std::size_t k = 0; k < times.size(); ++k) {
-      const Vec3& r = run.position_error_ap_m[k];
-      const Eigen::Vector2d ne = local_level_horizontal(times[k], c.model) * r;
-      const Eigen::Index base = kRowsPerMap * static_cast<Eigen::Index>(k), si = static_cast<Eigen::Index>(s);
-      for (int a = 0; a < 3; ++a) y(si, base + a) = r[a];
-      y(si, base + 3) = ne[0];
-      y(si, base + 4) = ne[1];
+    const Eigen::Index si = static_cast<Eigen::Index>(s);
+    double phase[9], fresh[kRealignDraws];
+    fill_uniform01(c.seed, Stream::PulsePhase, first + s, 9, 1, phase);
+    fill_uniform01(c.seed, Stream::Realignment, first + s, kRealignDraws, 1, fresh);
+    TruthSchemeSample sample;
+    sample.x = x.col(si);
+    sample.realigned_x = sample.x;
+    for (int i = 0; i < kRealignDraws; ++i)
+      sample.realigned_x[kRealignedSlots[i].x_index] = sampler.transform_one(kRealignedSlots[i].x_index, fresh[i]);
+    sample.pulse_phase = Vec3(phase[0] - 0.5, phase[1] - 0.5, phase[2] - 0.5);
+    sample.torquer_phase01 = Vec3(phase[3], phase[4], phase[5]);
+    sample.align_pulse_phase01 = Vec3(phase[6], phase[7], phase[8]);
+    for (std::size_t i = 0; i < c.schemes.size(); ++i) {
+      const Scheme scheme = c.schemes[i];
+      const TruthRun run = run_truth_scheme(scheme, setup, sample, times).flight;
+      const double frame_offset = resets_at_test_end(scheme) ? T : 0.0;
+      for (std::size_t k = 0; k < times.size(); ++k) {
+        const Vec3& r = run.position_error_ap_m[k];
+        const Eigen::Vector2d ne = local_level_horizontal(frame_offset + times[k], c.model) * r;
+        const Eigen::Index base = kRowsPerMap * static_cast<Eigen::Index>(i * times.size() + k);
+        for (int a = 0; a < 3; ++a) y(si, base + a) = r[a];
+        y(si, base + 3) = ne[0];
+        y(si, base + 4) = ne[1];
+      }
     }
   }
 }
 
-void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler, std::uint64_t block,
-               Workspace& ws, StudyAccumulator& acc) {
+void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler,
+               const std::vector<TruthSchemeSetup>& truth, std::uint64_t block, Workspace& ws, StudyAccumulator& acc) {
   const std::uint64_t first = block * kBlockSize;
   const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kBlockSize, c.samples - first));
   fill_uniform01(c.seed, Stream::Uncertainties, first, ux::kDim, n,
@@ -68,7 +96,7 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
   for (std::size_t j = 0; j < ws.y.size(); ++j) {
     const int sj = static_cast<int>(j);
     if (c.fidelity == Fidelity::kTruth) {  // the nonlinear simulator, sample by sample
-      truth_rows(c, map, sj, first, n, ws.x, ws.y[j]);
+      truth_rows(c, map, sampler, truth[j], first, n, ws.x, ws.y[j]);
       continue;
     }
     if (map.depends_on_x_only(sj)) {  // z = [x; 0]: the same product on the rows that matter
@@ -141,6 +169,7 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
                                     : static_cast<int>(tbb::info::default_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   const Sampler sampler(c.uncertainties);
+  const std::vector<TruthSchemeSetup> truth = truth_setups(c, map);
   const StudyAccumulator empty(map);
   tbb::enumerable_thread_specific<StudyAccumulator> partial(empty);
   tbb::enumerable_thread_specific<Workspace> workspaces(map, static_cast<int>(c.systems.size()));
@@ -159,7 +188,7 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
         while (!stopped()) {
           const std::uint64_t b = next.fetch_add(1);
           if (b >= end_block) break;
-          run_block(c, map, sampler, b, ws, acc);
+          run_block(c, map, sampler, truth, b, ws, acc);
           const std::uint64_t n = std::min<std::uint64_t>(kBlockSize, c.samples - b * kBlockSize);
           const std::uint64_t total = done.fetch_add(n) + n;
           if (progress) progress(total);

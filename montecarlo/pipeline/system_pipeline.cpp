@@ -5,6 +5,7 @@
 
 #include "lib/alignment/alignment.h"
 #include "lib/propagation/linear_model.h"
+#include "lib/preflight/observables.h"
 #include "lib/propagation/paper_model.h"
 #include "montecarlo/random/philox.h"
 
@@ -18,7 +19,6 @@ constexpr int kPhaseDraws = 9;
 constexpr int kRealignDraws = static_cast<int>(std::size(kRealignedSlots));
 
 double quantize_down(double v, double step) { return step > 0 ? step * std::floor(v / step) : v; }
-double quantize_nearest(double v, double step) { return step > 0 ? step * std::round(v / step) : v; }
 
 /// The steady-state misalignment during alignment at the chosen fidelity.
 Sensitivity3 steady_state(System s, Fidelity f, const ModelOptions& m) {
@@ -112,7 +112,7 @@ void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const 
         // the remainder at switch-over as its starting phase.
         const double phase = phases[a] * dv;
         double prev = 0.0;
-        const double base_pos = quantize_nearest(true_position_(a, 0) + r0(a, si), q) - true_position_(a, 0);
+        const double base_pos = at_resolution(true_position_(a, 0) + r0(a, si), q) - true_position_(a, 0);
         for (int k = 1; k <= k_; ++k) {
           const double v = nominal_velocity_(a, k) + vel(3 * (k - 1) + a, si) + sway(k, a) - sway(0, a);
           const double counted = dv > 0 ? quantize_down(v + phase, dv) : v;
@@ -120,7 +120,7 @@ void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const 
           prev = counted;
           // The position computer's output at its resolution, less the known true position.
           const double truth = true_position_(a, k);
-          pos_data(k - 1, a) = quantize_nearest(truth + r0(a, si) + pos(3 * (k - 1) + a, si), q) - truth - base_pos;
+          pos_data(k - 1, a) = at_resolution(truth + r0(a, si) + pos(3 * (k - 1) + a, si), q) - truth - base_pos;
         }
       }
       const Eigen::Matrix<double, 4, 3> u_pos = est_.position * pos_data;  // (4.8): Û1..Û4 per axis
@@ -139,13 +139,9 @@ void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const 
       const Vec3 df = align_accel_map_ * x.col(si);
       for (int a = 0; a < 3; ++a) {
         // Torquer commands (5.14) counted in angle pulses over ta, less the known earth-rate command.
-        const double theta = (wc[a] + earth_rate_command_[a]) * ta;
-        z(ez::kTorquerCommands + a, si) =
-            dtheta > 0 ? quantize_down(theta + phases[3 + a] * dtheta, dtheta) / ta - earth_rate_command_[a] : wc[a];
+        z(ez::kTorquerCommands + a, si) = counted_mean(wc[a], earth_rate_command_[a], ta, dtheta, phases[3 + a]);
         // Accelerometer outputs (5.18) counted in ΔV pulses over ta, less the expected −g on z.
-        const double nominal = a == 2 ? -g : 0.0;
-        const double v = (nominal + df[a]) * ta;
-        z(ez::kAlignAccel + a, si) = dv > 0 ? quantize_down(v + phases[6 + a] * dv, dv) / ta - nominal : df[a];
+        z(ez::kAlignAccel + a, si) = counted_mean(df[a], a == 2 ? -g : 0.0, ta, dv, phases[6 + a]);
       }
     }
   }

@@ -25,11 +25,6 @@ void validate(const StudyConfig& c) {
   if (uses_system2 && !(std::abs(c.model.latitude_rad) < M_PI / 2 - 1e-9))
     throw InputError("--latitude", fmt::format("{}rad", c.model.latitude_rad),
                      "must lie strictly between -90deg and 90deg for system 2 (2.16 divides by cos L0)");
-  if (c.fidelity == Fidelity::kTruth)
-    for (Scheme s : c.schemes)
-      if (s != Scheme::kNone)
-        throw InputError("--scheme", std::string(to_string(s)),
-                         "the truth level applies no compensation scheme yet: use --scheme none with --fidelity truth");
   validate(c.test);
   for (int i = 0; i < ux::kDim; ++i) {
     const auto& p = c.uncertainties.at(i);

@@ -153,9 +153,17 @@ TEST(Cli, TruthFidelityRunsAndIsIdenticalForAnyThreadCount) {
   ASSERT_EQ(one.exit_code, 0) << one.err;
   EXPECT_EQ(one.out, two.out);
   EXPECT_NE(one.out.find("none,2,switchover,horizontal,84,1500,"), std::string::npos);
-  const auto refused = run_insmc("run --fidelity truth --scheme 5.2 --samples 10");
-  EXPECT_EQ(refused.exit_code, 2);
-  EXPECT_NE(refused.err.find("--scheme = 5.2"), std::string::npos) << refused.err;
+}
+
+TEST(Cli, TruthFidelityRunsEverySchemeIdenticallyForAnyThreadCount) {
+  const std::string common = "run --fidelity truth --scheme all --samples 40 --grid-step 42min --format csv";
+  const auto one = run_insmc(common + " --threads 1");
+  const auto two = run_insmc(common + " --threads 2");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_EQ(one.out, two.out);
+  for (const char* row : {"5.1.1,1,realignment,horizontal,84,40,", "5.2,2,test_end,horizontal,84,40,",
+                          "5.4,1,switchover,z,42,40,", "combined,2,realignment,x,84,40,"})
+    EXPECT_NE(one.out.find(row), std::string::npos) << row << "\n" << one.out;
 }
 
 TEST(Cli, BenchJsonIsTheJsonAloneWithEveryPath) {

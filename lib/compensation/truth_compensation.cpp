@@ -1,0 +1,127 @@
+#include "lib/compensation/truth_compensation.h"
+
+#include "lib/alignment/alignment.h"
+#include "lib/common/assert.h"
+#include "lib/compensation/compensation_maps.h"
+#include "lib/preflight/observables.h"
+
+namespace insmc {
+
+TestRunEstimates estimate_test_run(const TruthRun& run, const TestRunOptions& test,
+                                   const TestRunEstimators& est, const ModelOptions& m) {
+  const int K = test.intervals();
+  INSMC_ASSERT(static_cast<int>(run.t_s.size()) == K + 1, "test run of {} samples for K = {}", run.t_s.size(), K);
+  const double q = test.position_resolution_m;
+  Eigen::MatrixXd pos_data(K, 3), accel_data(K, 3);
+  const Vec3 true0 = true_position_ap(0.0, m);
+  for (int a = 0; a < 3; ++a) {
+    const double base = at_resolution(true0[a] + run.position_error_ap_m[0][a], q) - true0[a];
+    for (int k = 1; k <= K; ++k) {
+      const double truth = true_position_ap(run.t_s[k], m)[a];
+      pos_data(k - 1, a) = at_resolution(truth + run.position_error_ap_m[k][a], q) - truth - base;
+      accel_data(k - 1, a) = run.accel_error_ap_mps2[k][a];
+    }
+  }
+  const Eigen::Matrix<double, 4, 3> u_pos = est.position * pos_data;  // (4.8): Û1..Û4 per axis
+  const Eigen::Matrix<double, 3, 3> u_acc = est.accel * accel_data;   // (4.4): Â1, Û3, Û4 per axis
+  const double g = m.gravity_mps2, w = m.earth_rate_radps, T = test.duration_s;
+  TestRunEstimates e;
+  for (int a = 0; a < 3; ++a) {
+    e.u2[a] = u_pos(1, a);
+    e.u3[a] = u_pos(2, a);
+    e.u3_accel[a] = u_acc(1, a);
+    e.df_at_test_end_mps2[a] = g * (u_acc(0, a) + w * T * u_acc(1, a) + w * w * T * T / 2 * u_acc(2, a));  // (5.10)
+  }
+  return e;
+}
+
+TruthSchemeSetup::TruthSchemeSetup(const TruthOptions& t, const TestRunOptions& r, const TestRunEstimators& e)
+    : truth(t), test(r), estimators(e) {
+  INSMC_ASSERT(!truth.accel_compensation.active() && truth.reset_at_s < 0 && !truth.torquer_command_radps,
+               "the scheme sets the compensation itself");
+  const Sensitivity3 steady = full_steady_state_misalignment(truth.system, truth.model);
+  alignment_torquer_commands = torquer_commands(steady, truth.model);
+  alignment_accel_outputs = alignment_accelerometer_outputs(steady, truth.model);
+}
+
+namespace {
+
+std::vector<double> shifted(const std::vector<double>& times, double offset) {
+  std::vector<double> out(times);
+  for (double& t : out) t += offset;
+  return out;
+}
+
+/// 5.4's alignment-phase measurements as counted, less what is known: the
+/// torquer commands (5.14) in angle pulses, the accelerometer outputs (5.18)
+/// in ΔV pulses, averaged over the last `alignment_average_s`.
+void alignment_measurements(const TruthSchemeSetup& s, const TruthSchemeSample& sample, Vec3& commands_radps,
+                            Vec3& accel_mps2) {
+  const ModelOptions& m = s.truth.model;
+  const double w = m.earth_rate_radps, L = m.latitude_rad, ta = s.test.alignment_average_s;
+  const Vec3 earth_rate_command(w * std::cos(L), 0.0, -w * std::sin(L));  // ω_in^n (2.6)
+  const Vec3 wc = s.alignment_torquer_commands * sample.x;
+  const Vec3 df = s.alignment_accel_outputs * sample.x;
+  for (int a = 0; a < 3; ++a) {
+    commands_radps[a] = counted_mean(wc[a], earth_rate_command[a], ta, s.test.torquer_pulse_rad, sample.torquer_phase01[a]);
+    accel_mps2[a] = counted_mean(df[a], a == 2 ? -m.gravity_mps2 : 0.0, ta, s.test.dv_pulse_mps, sample.align_pulse_phase01[a]);
+  }
+}
+
+}  // namespace
+
+TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& s, const TruthSchemeSample& sample,
+                                const std::vector<double>& clock_times_s, const NormalSource& noise) {
+  const ModelOptions& m = s.truth.model;
+  const double g = m.gravity_mps2, w = m.earth_rate_radps, T = s.test.duration_s;
+  TruthOptions o = s.truth;
+  o.pulse_phase = sample.pulse_phase;
+  TruthSchemeRun run;
+  if (uses_test_run(scheme)) {
+    run.test = simulate_truth(o, sample.x, uniform_times(T, s.test.filter_interval_s), noise);
+    run.estimates = estimate_test_run(run.test, s.test, s.estimators, m);
+  }
+  const TestRunEstimates& e = run.estimates;
+  AccelCompensation& c = o.accel_compensation;
+  UncertaintyVector x = realigns(scheme) ? sample.realigned_x : sample.x;
+  switch (scheme) {
+    case Scheme::kNone: break;
+    case Scheme::k5_1_1:  // (5.2) at point 2, (5.3) through integrators, from the new switch-over
+      c.step_mps2 = -g * e.u2;
+      c.ramp_mps3 = -g * w * e.u3;
+      break;
+    case Scheme::k5_1_2:
+    case Scheme::kCombined: {
+      c.step_mps2 = -g * e.u2;
+      // (5.5): ω_cp on the torquers through the realignment and after it.
+      x.segment<3>(ux::kGyroDrift) += torquer_rates_from_u3(s.truth.system, m) * e.u3;
+      if (scheme == Scheme::kCombined) c.ramp_mps3 = -g * w * (combined_integrator_selection(s.truth.system) * e.u3);
+      break;
+    }
+    case Scheme::k5_2:  // (5.8): from T, −g(Û2 + Û3 ω_ie T) at point 2, −g ω_ie Û3 through integrators, resets
+      c.start_s = T;
+      c.step_mps2 = -g * (e.u2 + w * T * e.u3);
+      c.ramp_mps3 = -g * w * e.u3;
+      o.reset_at_s = T;
+      break;
+    case Scheme::k5_3:  // (5.11): from T, −Δf̂(T) at point 2, −g ω_ie Û3 (accelerometer slope), resets
+      c.start_s = T;
+      c.step_mps2 = -e.df_at_test_end_mps2;
+      c.ramp_mps3 = -g * w * e.u3_accel;
+      o.reset_at_s = T;
+      break;
+    case Scheme::k5_4: {  // (5.15), (5.16) at point 4 from t = 0; (5.19) at point 2
+      Vec3 commands, accel;
+      alignment_measurements(s, sample, commands, accel);
+      if (s.truth.system == System::kGyrocompass) commands.y() = 0.0;  // (5.15c): no y estimate
+      o.torquer_command_radps = [commands](double) { return commands; };
+      c.step_mps2 = -accel;
+      break;
+    }
+  }
+  const double offset = resets_at_test_end(scheme) ? T : 0.0;
+  run.flight = simulate_truth(o, x, shifted(clock_times_s, offset), noise);
+  return run;
+}
+
+}  // namespace insmc

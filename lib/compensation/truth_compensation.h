@@ -1,0 +1,74 @@
+#pragma once
+/// The compensation schemes of chapter 5 acting on the truth simulator
+/// (issue 6) through the same injection points of fig. 5.1 as
+/// compensation_maps.h uses on the linear model:
+///   * the test run is a truth run; its data are what the instruments give
+///     (ΔV pulses through the filter box, the position computer at its
+///     resolution), and the least-squares estimators of (4.4), (4.8) turn
+///     them into Û2, Û3 and Δf̂(T) (5.10);
+///   * point 2 and the integrators into it: TruthOptions::accel_compensation;
+///   * point 4: the torquer command hook (5.4: the measured alignment
+///     commands (5.15), (5.16)); for 5.1.2 and `combined` the torquer rates
+///     ω_cp (5.5) act through the realignment and after it, i.e. on the
+///     platform like a change of the level-platform drift ω_do;
+///   * points 5, 6: TruthOptions::reset_at_s (5.2, 5.3 at T);
+///   * a realignment: a new truth run whose per-alignment uncertainties (ζ_r,
+///     ∂f_r, (u)V) are the fresh draws, switched over at the scheme's t = 0.
+/// The alignment stays the steady state the truth simulator uses, so the
+/// alignment-phase measurements of 5.4 are the steady-state commands and
+/// outputs of lib/alignment, counted in pulses.
+#include <vector>
+
+#include "lib/compensation/scheme.h"
+#include "lib/preflight/test_run.h"
+#include "lib/truth/simulator.h"
+
+namespace insmc {
+
+/// What the preflight test run revealed (the estimates a scheme uses).
+struct TestRunEstimates {
+  Vec3 u2 = Vec3::Zero();        ///< Û2 from position data (4.8b)
+  Vec3 u3 = Vec3::Zero();        ///< Û3 from position data (4.8c)
+  Vec3 u3_accel = Vec3::Zero();  ///< Û3 from the accelerometer data, slope of (5.12)
+  Vec3 df_at_test_end_mps2 = Vec3::Zero();  ///< filtered Δf̂(T) (5.10)
+};
+
+/// Estimates from a test run sampled at t_k = kτ, k = 0..K (uniform_times(T, τ)):
+/// Δf^a per filter interval as recorded, Δr_k from the position error at the
+/// computer's resolution (its phase set by the true position of the vehicle).
+TestRunEstimates estimate_test_run(const TruthRun& test_run, const TestRunOptions& test,
+                                   const TestRunEstimators& estimators, const ModelOptions& model);
+
+/// Everything of a truth study fixed across samples.
+struct TruthSchemeSetup {
+  TruthSchemeSetup(const TruthOptions& truth, const TestRunOptions& test, const TestRunEstimators& estimators);
+  TruthOptions truth;  ///< site, system, pulses, effects (no compensation of its own)
+  TestRunOptions test;
+  TestRunEstimators estimators;
+  Sensitivity3 alignment_torquer_commands;  ///< ω_c (5.14) per unit x, steady state
+  Sensitivity3 alignment_accel_outputs;     ///< Δf_m (5.19) per unit x, steady state
+};
+
+/// One sample's draws.
+struct TruthSchemeSample {
+  UncertaintyVector x;           ///< the uncertainties
+  UncertaintyVector realigned_x; ///< x with a realignment's fresh draws (realigning schemes)
+  Vec3 pulse_phase = Vec3::Zero();  ///< ΔV remainders at switch-over, in pulses [−0.5, 0.5)
+  Vec3 torquer_phase01 = Vec3::Zero();    ///< 5.4: torquer pulse counters' phases [0, 1)
+  Vec3 align_pulse_phase01 = Vec3::Zero();  ///< 5.4: alignment ΔV counters' phases [0, 1)
+};
+
+/// A compensated truth run.
+struct TruthSchemeRun {
+  TruthRun test;  ///< the test run at t_k = kτ (empty for none and 5.4)
+  TestRunEstimates estimates;
+  /// The run after the scheme at the requested clock times (clock_of): its
+  /// t_s are on the simulator's time since the switch-over that started it
+  /// (T + t' for 5.2, 5.3; t for the others).
+  TruthRun flight;
+};
+
+TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& setup, const TruthSchemeSample& sample,
+                                const std::vector<double>& clock_times_s, const NormalSource& noise = {});
+
+}  // namespace insmc
