@@ -9,6 +9,7 @@
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
 #include "lib/records/record_io.h"
+#include "lib/compensation/truth_compensation.h"
 #include "lib/truth/simulator.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
@@ -40,9 +41,6 @@ int run_simulate(const Args& args) {
   const std::uint64_t seed = (*vm)["seed"].as<std::uint64_t>();
   const System system = parse_system((*vm)["system"].as<std::string>(), "--system");
   const Scheme scheme = parse_scheme((*vm)["scheme"].as<std::string>());
-  if (scheme != Scheme::kNone)
-    throw InputError("--scheme", std::string(to_string(scheme)),
-                     "the truth simulator does not apply compensation schemes yet; only none is available");
   const ModelOptions model = read_model_options(*vm, system == System::kGyrocompass);
   const TestRunOptions test = read_test_run_options(*vm);
   const UncertaintyModel uncertainties = read_uncertainty_model(*vm);
@@ -58,19 +56,27 @@ int run_simulate(const Args& args) {
   if (vm->count("effect"))
     for (const auto& e : (*vm)["effect"].as<std::vector<std::string>>()) truth.effects.push_back(parse_effect(e, "--effect"));
   if (const auto err = validate(truth)) throw *err;
+  // The scheme's estimators: the same resolvable terms as `insmc run` fits.
+  const Resolvability resolvable = resolvable_terms(system, model, test, uncertainties);
+  const TruthSchemeSetup setup(truth, test, make_estimators(test, model, resolvable.u3, resolvable.u4));
 
   const double T = test.duration_s, tau = test.filter_interval_s;
-  const std::vector<double> times = uniform_times(T + nav_s, tau, false);
+  // After a realignment the second navigation starts at nav_start_s = T + the
+  // realignment; its rows follow on the same filter grid.
+  const double nav_start_s = realigns(scheme) ? T + test.realignment_duration_s : T;
+  std::vector<double> times = uniform_times(T, tau, false);
+  for (double t : uniform_times(nav_s, tau, false)) times.push_back(nav_start_s + t);
   RecordFile file;
   file.header = RecordHeader::make(model.latitude_rad / kDegToRad, system, T, scheme);
   file.header.set("dv_pulse_mps", test.dv_pulse_mps);
   file.header.set("position_resolution_m", test.position_resolution_m);
   file.header.set("filter_interval_s", tau);
+  if (realigns(scheme)) file.header.set("nav_start_s", nav_start_s);
   file.header.set("truth.seed", static_cast<double>(seed));
   for (std::size_t i = 0; i < truth.effects.size(); ++i)
     file.header.set(fmt::format("truth.effect.{}", i), format_effect(truth.effects[i]));
   const mc::Sampler sampler(uncertainties);
-  const mc::RecordRunSpec spec{T, test.position_resolution_m};
+  const mc::RecordRunSpec spec{T, test.position_resolution_m, scheme, &setup, nav_start_s};
   for (int run = 0; run < runs; ++run)
     file.runs.push_back(mc::simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(run), times, spec));
   mc::write_file_atomically((*vm)["out"].as<std::string>(), write_record_file(file));

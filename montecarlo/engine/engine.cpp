@@ -14,6 +14,7 @@
 #include "lib/compensation/truth_compensation.h"
 #include "montecarlo/random/philox.h"
 #include "montecarlo/sampler/sampler.h"
+#include "montecarlo/sampler/truth_sample.h"
 
 namespace insmc::mc {
 namespace {
@@ -55,20 +56,9 @@ void truth_rows(const StudyConfig& c, const StudyMap& map, const Sampler& sample
                 std::uint64_t first, std::size_t n, const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
   const std::vector<double>& times = map.layout().times_s;
   const double T = c.test.duration_s;
-  constexpr int kRealignDraws = static_cast<int>(std::size(kRealignedSlots));
   for (std::size_t s = 0; s < n; ++s) {
     const Eigen::Index si = static_cast<Eigen::Index>(s);
-    double phase[9], fresh[kRealignDraws];
-    fill_uniform01(c.seed, Stream::PulsePhase, first + s, 9, 1, phase);
-    fill_uniform01(c.seed, Stream::Realignment, first + s, kRealignDraws, 1, fresh);
-    TruthSchemeSample sample;
-    sample.x = x.col(si);
-    sample.realigned_x = sample.x;
-    for (int i = 0; i < kRealignDraws; ++i)
-      sample.realigned_x[kRealignedSlots[i].x_index] = sampler.transform_one(kRealignedSlots[i].x_index, fresh[i]);
-    sample.pulse_phase = Vec3(phase[0] - 0.5, phase[1] - 0.5, phase[2] - 0.5);
-    sample.torquer_phase01 = Vec3(phase[3], phase[4], phase[5]);
-    sample.align_pulse_phase01 = Vec3(phase[6], phase[7], phase[8]);
+    const TruthSchemeSample sample = draw_truth_sample(sampler, c.seed, first + s, x.col(si));
     for (std::size_t i = 0; i < c.schemes.size(); ++i) {
       const Scheme scheme = c.schemes[i];
       const TruthRun run = run_truth_scheme(scheme, setup, sample, times).flight;

@@ -4,6 +4,7 @@
 
 #include "lib/common/assert.h"
 #include "montecarlo/random/philox.h"
+#include "montecarlo/sampler/truth_sample.h"
 
 namespace insmc::mc {
 
@@ -18,9 +19,59 @@ NormalSource philox_normals(std::uint64_t seed, std::uint64_t run) {
   };
 }
 
+namespace {
+
+/// A record row from one output of a truth run.
+RecordRow record_row(std::int64_t run, double t_s, const TruthRun& r, std::size_t k, const RecordRunSpec& spec) {
+  RecordRow row;
+  row.run = run;
+  row.t_s = t_s;
+  row.phase = t_s <= spec.test_duration_s + 1e-9 ? Phase::kTest : Phase::kNav;
+  for (int a = 0; a < 3; ++a)
+    if (std::isfinite(r.accel_error_ap_mps2[k][a])) row.f_mps2[a] = r.accel_error_ap_mps2[k][a];
+  Vec3 pos = r.position_error_ap_m[k];
+  const double q = spec.position_resolution_m;
+  if (q > 0)  // the position computer's resolution
+    for (int a = 0; a < 3; ++a) pos[a] = q * std::round(pos[a] / q);
+  row.r_ap_m = pos;
+  return row;
+}
+
+/// A run after spec.scheme: test rows from the scheme's test run, nav rows
+/// from the run after the scheme, on the record's clock.
+RecordRun scheme_record_run(const Sampler& sampler, std::uint64_t seed, std::uint64_t run,
+                            const std::vector<double>& times_s, const RecordRunSpec& spec) {
+  INSMC_ASSERT(spec.setup != nullptr, "a scheme record needs its setup");
+  const TruthSchemeSample sample = draw_truth_sample(sampler, seed, run, sampler.draw(seed, run));
+  const double T = spec.test_duration_s;
+  const double clock_zero = realigns(spec.scheme) ? spec.nav_start_s : resets_at_test_end(spec.scheme) ? T : 0.0;
+  std::vector<double> clock;
+  for (double t : times_s)
+    if (t > T + 1e-9 || !uses_test_run(spec.scheme)) clock.push_back(t - clock_zero);
+  INSMC_ASSERT(clock.empty() || clock.front() >= -1e-9, "nav row at {} s before the scheme's t = 0", clock.front() + clock_zero);
+  for (double& t : clock) t = std::max(t, 0.0);
+  const TruthSchemeRun r = run_truth_scheme(spec.scheme, *spec.setup, sample, clock, philox_normals(seed, run));
+  RecordRun out;
+  out.id = static_cast<std::int64_t>(run);
+  std::size_t test_k = 1, nav_k = 0;
+  for (double t : times_s) {
+    if (t <= T + 1e-9 && uses_test_run(spec.scheme)) {
+      INSMC_ASSERT(test_k < r.test.t_s.size() && std::abs(r.test.t_s[test_k] - t) < 1e-6,
+                   "test rows must be the filter grid: {} s", t);
+      out.rows.push_back(record_row(out.id, t, r.test, test_k++, spec));
+    } else {
+      out.rows.push_back(record_row(out.id, t, r.flight, nav_k++, spec));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 RecordRun simulate_record_run(const TruthOptions& truth, const Sampler& sampler, std::uint64_t seed,
                               std::uint64_t run, const std::vector<double>& times_s,
                               const RecordRunSpec& spec) {
+  if (spec.scheme != Scheme::kNone) return scheme_record_run(sampler, seed, run, times_s, spec);
   TruthOptions o = truth;
   double phases[3];
   fill_uniform01(seed, Stream::PulsePhase, run, 3, 1, phases);
@@ -29,20 +80,7 @@ RecordRun simulate_record_run(const TruthOptions& truth, const Sampler& sampler,
   const TruthRun r = simulate_truth(o, x, times_s, philox_normals(seed, run));
   RecordRun out;
   out.id = static_cast<std::int64_t>(run);
-  const double q = spec.position_resolution_m;
-  for (std::size_t k = 0; k < r.t_s.size(); ++k) {
-    RecordRow row;
-    row.run = out.id;
-    row.t_s = r.t_s[k];
-    row.phase = r.t_s[k] <= spec.test_duration_s + 1e-9 ? Phase::kTest : Phase::kNav;
-    for (int a = 0; a < 3; ++a)
-      if (std::isfinite(r.accel_error_ap_mps2[k][a])) row.f_mps2[a] = r.accel_error_ap_mps2[k][a];
-    Vec3 pos = r.position_error_ap_m[k];
-    if (q > 0)  // the position computer's resolution
-      for (int a = 0; a < 3; ++a) pos[a] = q * std::round(pos[a] / q);
-    row.r_ap_m = pos;
-    out.rows.push_back(row);
-  }
+  for (std::size_t k = 0; k < r.t_s.size(); ++k) out.rows.push_back(record_row(out.id, r.t_s[k], r, k, spec));
   return out;
 }
 

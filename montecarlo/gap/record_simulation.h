@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "lib/compensation/truth_compensation.h"
 #include "lib/records/record.h"
 #include "lib/truth/simulator.h"
 #include "montecarlo/sampler/sampler.h"
@@ -19,10 +20,21 @@ NormalSource philox_normals(std::uint64_t seed, std::uint64_t run);
 struct RecordRunSpec {
   double test_duration_s = 900.0;
   double position_resolution_m = 0.0;  ///< r rounded to this (0: not rounded)
+  /// The scheme applied after the test run (truth_compensation.h); with any
+  /// scheme but none, `setup` is required (its truth options are used).
+  Scheme scheme = Scheme::kNone;
+  const TruthSchemeSetup* setup = nullptr;
+  /// Second switch-over after a realignment (5.1.1, 5.1.2, combined): nav
+  /// rows must lie after it; their r is the error of that navigation.
+  double nav_start_s = 0.0;
 };
 
 /// One simulated run with rows at `times_s` (ascending, > 0): phase test up
 /// to T, nav after; f where the filter window is complete; r everywhere.
+/// With a scheme, the test rows must be the filter-interval grid τ..T (the
+/// data the scheme's estimates use). The effects' processes are realized
+/// along each simulated segment from its own switch-over (after a
+/// realignment they start again).
 RecordRun simulate_record_run(const TruthOptions& truth, const Sampler& sampler, std::uint64_t seed,
                               std::uint64_t run, const std::vector<double>& times_s,
                               const RecordRunSpec& spec);

@@ -196,12 +196,35 @@ TEST(Cli, SimulateWritesRecordsThatAreDeterministicPerSeed) {
   const auto effects = run_insmc("effects --format csv");
   EXPECT_EQ(effects.exit_code, 0);
   EXPECT_NE(effects.out.find("gyro_drift_instability"), std::string::npos);
-  for (const char* bad : {"--effect no_such_effect", "--effect sway:accel_rms=-1mg", "--runs 0", "--scheme 5.2"}) {
+  for (const char* bad : {"--effect no_such_effect", "--effect sway:accel_rms=-1mg", "--runs 0", "--scheme 5.9"}) {
     const auto r = run_insmc(std::string("simulate ") + bad + " --out " + (dir.path() / "bad.csv").string());
     EXPECT_EQ(r.exit_code, 2) << bad << r.err;
     EXPECT_EQ(line_count(r.err), 1) << bad << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "bad.csv")) << bad;
   }
+}
+
+TEST(Cli, SimulateAppliesEverySchemeOnTheRecordsClock) {
+  TempDir dir;
+  const std::string realigned = (dir.path() / "r.csv").string(), reset = (dir.path() / "z.csv").string();
+  ASSERT_EQ(run_insmc("simulate --runs 2 --scheme 5.1.1 --out " + realigned).exit_code, 0);
+  ASSERT_EQ(run_insmc("simulate --runs 2 --scheme 5.2 --out " + reset).exit_code, 0);
+  // 5.1.1: realigned for 10 min after T = 15 min, switched over again at 1500 s.
+  const std::string r = read_file(realigned);
+  EXPECT_NE(r.find("# scheme=5.1.1\n"), std::string::npos);
+  EXPECT_NE(r.find("# nav_start_s=1500\n"), std::string::npos);
+  EXPECT_NE(r.find("\n0,900,test,"), std::string::npos);
+  EXPECT_EQ(r.find("\n0,910,"), std::string::npos);  // nothing during the realignment
+  EXPECT_NE(r.find("\n0,1510,nav,"), std::string::npos);
+  EXPECT_NE(r.find("\n1,6900,nav,"), std::string::npos);
+  // 5.2: reset at T, rows go on at T + τ.
+  const std::string z = read_file(reset);
+  EXPECT_NE(z.find("\n1,910,nav,"), std::string::npos);
+  EXPECT_EQ(z.find("nav_start_s"), std::string::npos);
+  // The diagnosis models uncompensated runs only, and says so.
+  const auto gap = run_insmc("gap --records " + reset);
+  EXPECT_EQ(gap.exit_code, 2);
+  EXPECT_NE(gap.err.find("scheme"), std::string::npos) << gap.err;
 }
 
 }  // namespace
