@@ -23,7 +23,7 @@ struct GaussianModel {
 
 /// Share of the predicted position error the model-error floor allows for:
 /// the truth's first-order terms the linear level takes with g instead of the
-/// site's g_s (0.17 % at 45°) and its second-order terms (docs/truth-vs-linear.md).
+/// site's g_s (0.17 % at 45°) and its second-order terms (docs/truth-vs-models.md).
 inline constexpr double kRelativeModelError = 0.003;
 /// Absolute model-error floor of r rows [m] (issue 6: truth and linear agree
 /// within 1 % + 1 m).
