@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "lib/common/assert.h"
+#include "lib/preflight/observables.h"
+#include "lib/preflight/test_run.h"
 #include "montecarlo/random/philox.h"
 #include "montecarlo/sampler/truth_sample.h"
 
@@ -21,8 +23,12 @@ NormalSource philox_normals(std::uint64_t seed, std::uint64_t run) {
 
 namespace {
 
-/// A record row from one output of a truth run.
-RecordRow record_row(std::int64_t run, double t_s, const TruthRun& r, std::size_t k, const RecordRunSpec& spec) {
+/// A record row from one output of a truth run. r is what the position
+/// computer reads out at its resolution, less the true position: the
+/// rounding acts on the position (its phase set by where the vehicle is),
+/// as in the test-run pipeline, not on the error.
+RecordRow record_row(std::int64_t run, double t_s, const TruthRun& r, std::size_t k, const RecordRunSpec& spec,
+                     const ModelOptions& model) {
   RecordRow row;
   row.run = run;
   row.t_s = t_s;
@@ -30,9 +36,10 @@ RecordRow record_row(std::int64_t run, double t_s, const TruthRun& r, std::size_
   for (int a = 0; a < 3; ++a)
     if (std::isfinite(r.accel_error_ap_mps2[k][a])) row.f_mps2[a] = r.accel_error_ap_mps2[k][a];
   Vec3 pos = r.position_error_ap_m[k];
-  const double q = spec.position_resolution_m;
-  if (q > 0)  // the position computer's resolution
-    for (int a = 0; a < 3; ++a) pos[a] = q * std::round(pos[a] / q);
+  if (spec.position_resolution_m > 0) {
+    const Vec3 truth = true_position_ap(t_s, model);
+    for (int a = 0; a < 3; ++a) pos[a] = at_resolution(truth[a] + pos[a], spec.position_resolution_m) - truth[a];
+  }
   row.r_ap_m = pos;
   return row;
 }
@@ -58,9 +65,9 @@ RecordRun scheme_record_run(const Sampler& sampler, std::uint64_t seed, std::uin
     if (t <= T + 1e-9 && uses_test_run(spec.scheme)) {
       INSMC_ASSERT(test_k < r.test.t_s.size() && std::abs(r.test.t_s[test_k] - t) < 1e-6,
                    "test rows must be the filter grid: {} s", t);
-      out.rows.push_back(record_row(out.id, t, r.test, test_k++, spec));
+      out.rows.push_back(record_row(out.id, t, r.test, test_k++, spec, spec.setup->truth.model));
     } else {
-      out.rows.push_back(record_row(out.id, t, r.flight, nav_k++, spec));
+      out.rows.push_back(record_row(out.id, t, r.flight, nav_k++, spec, spec.setup->truth.model));
     }
   }
   return out;
@@ -80,7 +87,7 @@ RecordRun simulate_record_run(const TruthOptions& truth, const Sampler& sampler,
   const TruthRun r = simulate_truth(o, x, times_s, philox_normals(seed, run));
   RecordRun out;
   out.id = static_cast<std::int64_t>(run);
-  for (std::size_t k = 0; k < r.t_s.size(); ++k) out.rows.push_back(record_row(out.id, r.t_s[k], r, k, spec));
+  for (std::size_t k = 0; k < r.t_s.size(); ++k) out.rows.push_back(record_row(out.id, r.t_s[k], r, k, spec, truth.model));
   return out;
 }
 
