@@ -52,6 +52,7 @@ int run_simulate(const Args& args) {
   truth.system = system;
   truth.dv_pulse_mps = test.dv_pulse_mps;
   truth.filter_interval_s = test.filter_interval_s;
+  truth.alignment_loops = test.alignment_loops;
   truth.step_s = parse_quantity((*vm)["step"].as<std::string>(), Dimension::kTime, "--step");
   if (vm->count("effect"))
     for (const auto& e : (*vm)["effect"].as<std::vector<std::string>>()) truth.effects.push_back(parse_effect(e, "--effect"));

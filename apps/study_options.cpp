@@ -99,7 +99,12 @@ po::options_description test_run_options_description() {
       "alignment-average", po::value<std::string>()->default_value("10min"),
       "5.4: averaging time of the alignment-phase torquer commands and accelerometer outputs")(
       "torquer-pulse", po::value<std::string>()->default_value("1arcsec"),
-      "5.4: angle per gyro torquer pulse (resolution of the command measurement); 0rad = exact");
+      "5.4: angle per gyro torquer pulse (resolution of the command measurement); 0rad = exact")(
+      "alignment-time", po::value<std::string>()->default_value("steady"),
+      "truth level: fine-alignment time with the loops (2.9)/(2.13) simulated in the time domain, or steady "
+      "(the loops' steady state)")(
+      "coarse-misalignment", po::value<std::string>()->default_value("0.1mrad,0.1mrad,5mrad"),
+      "with --alignment-time: misalignment C_x,C_y,C_z at the start of the fine alignment");
   return d;
 }
 
@@ -127,6 +132,19 @@ TestRunOptions read_test_run_options(const po::variables_map& vm) {
     if (parts.size() != 2) throw InputError("--sway", sway, "expected VELOCITY_RMS,CORRELATION_TIME (e.g. 5mmps,6s) or off");
     t.sway.velocity_rms_mps = parse_quantity(parts[0], Dimension::kVelocity, "--sway velocity");
     t.sway.correlation_time_s = parse_quantity(parts[1], Dimension::kTime, "--sway time");
+  }
+  const std::string alignment = vm["alignment-time"].as<std::string>();
+  if (alignment != "steady") {
+    AlignmentLoopSettings a;
+    a.duration_s = parse_quantity(alignment, Dimension::kTime, "--alignment-time");
+    const std::string coarse = vm["coarse-misalignment"].as<std::string>();
+    const auto parts = split_commas(coarse);
+    if (parts.size() != 3) throw InputError("--coarse-misalignment", coarse, "expected C_x,C_y,C_z (e.g. 1mrad,1mrad,5mrad)");
+    for (int k = 0; k < 3; ++k)
+      a.initial_misalignment_rad[k] = parse_quantity(parts[static_cast<std::size_t>(k)], Dimension::kAngle, "--coarse-misalignment");
+    a.average_s = t.alignment_average_s;
+    validate(a);
+    t.alignment_loops = a;
   }
   validate(t);
   return t;

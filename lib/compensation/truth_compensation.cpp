@@ -55,13 +55,22 @@ std::vector<double> shifted(const std::vector<double>& times, double offset) {
 /// 5.4's alignment-phase measurements as counted, less what is known: the
 /// torquer commands (5.14) in angle pulses, the accelerometer outputs (5.18)
 /// in ΔV pulses, averaged over the last `alignment_average_s`.
-void alignment_measurements(const TruthSchemeSetup& s, const TruthSchemeSample& sample, Vec3& commands_radps,
-                            Vec3& accel_mps2) {
+/// With time-domain alignment loops the measurements are the loops' own
+/// averages (a run of the truth up to switch-over); else the steady state.
+void alignment_measurements(const TruthSchemeSetup& s, const TruthSchemeSample& sample, const NormalSource& noise,
+                            Vec3& commands_radps, Vec3& accel_mps2) {
   const ModelOptions& m = s.truth.model;
   const double w = m.earth_rate_radps, L = m.latitude_rad, ta = s.test.alignment_average_s;
   const Vec3 earth_rate_command(w * std::cos(L), 0.0, -w * std::sin(L));  // ω_in^n (2.6)
-  const Vec3 wc = s.alignment_torquer_commands * sample.x;
-  const Vec3 df = s.alignment_accel_outputs * sample.x;
+  Vec3 wc = s.alignment_torquer_commands * sample.x;
+  Vec3 df = s.alignment_accel_outputs * sample.x;
+  if (s.truth.alignment_loops) {
+    TruthOptions o = s.truth;
+    o.alignment_loops->average_s = ta;
+    const TruthRun aligned = simulate_truth(o, sample.x, {0.0}, noise);
+    wc = aligned.alignment_command_radps;
+    df = aligned.alignment_accel_output_mps2;
+  }
   for (int a = 0; a < 3; ++a) {
     commands_radps[a] = counted_mean(wc[a], earth_rate_command[a], ta, s.test.torquer_pulse_rad, sample.torquer_phase01[a]);
     accel_mps2[a] = counted_mean(df[a], a == 2 ? -m.gravity_mps2 : 0.0, ta, s.test.dv_pulse_mps, sample.align_pulse_phase01[a]);
@@ -84,6 +93,10 @@ TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& s, const 
   const TestRunEstimates& e = run.estimates;
   AccelCompensation& c = o.accel_compensation;
   UncertaintyVector x = realigns(scheme) ? sample.realigned_x : sample.x;
+  // A realignment starts from the navigating platform, level and in azimuth
+  // to within the test run's drift angles (a fraction of a mrad), not from a
+  // coarse alignment: its loops are taken in steady state.
+  if (realigns(scheme)) o.alignment_loops.reset();
   switch (scheme) {
     case Scheme::kNone: break;
     case Scheme::k5_1_1:  // (5.2) at point 2, (5.3) through integrators, from the new switch-over
@@ -112,7 +125,7 @@ TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& s, const 
       break;
     case Scheme::k5_4: {  // (5.15), (5.16) at point 4 from t = 0; (5.19) at point 2
       Vec3 commands, accel;
-      alignment_measurements(s, sample, commands, accel);
+      alignment_measurements(s, sample, noise, commands, accel);
       if (s.truth.system == System::kGyrocompass) commands.y() = 0.0;  // (5.15c): no y estimate
       o.torquer_command_radps = [commands](double) { return commands; };
       c.step_mps2 = -accel;

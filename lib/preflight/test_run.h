@@ -4,9 +4,11 @@
 /// error integrated over each filter interval, fig. 5.2, and the position
 /// error change Δr^{a'}), and the least-squares estimators of (4.7)/(4.8)
 /// and (4.4) as precomputed linear maps.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "lib/alignment/alignment_loops.h"
 #include "lib/common/model_options.h"
 #include "lib/common/system.h"
 #include "lib/frames/frames.h"
@@ -46,6 +48,10 @@ struct TestRunOptions {
   double torquer_pulse_rad = 1.0 * kArcsecToRad;
   /// Duration of the realignment of 5.1.1, 5.1.2 and combined (5-15 min practical, §5.1.2).
   double realignment_duration_s = 600.0;
+  /// The truth level's fine alignment in the time domain (alignment_loops.h);
+  /// nullopt = the loops' steady state. The linear-in-x levels have only the
+  /// steady state.
+  std::optional<AlignmentLoopSettings> alignment_loops;
 
   int intervals() const;  ///< K = T/τ
 };

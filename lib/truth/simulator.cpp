@@ -278,6 +278,7 @@ std::optional<InputError> validate(const TruthOptions& o) {
     if (!(o.pulse_phase[k] >= -0.5 && o.pulse_phase[k] < 0.5))
       return bad(fmt::format("pulse_phase[{}]", k), o.pulse_phase[k], "must be in [-0.5, 0.5)");
   try {
+    if (o.alignment_loops) validate(*o.alignment_loops);
     for (const EffectSpec& e : o.effects) validate_effect(e);
   } catch (const InputError& e) {
     return e;
@@ -349,8 +350,29 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   x_align.segment<3>(ux::kAccelBias) += p.alignment_bias_mps2;
   x_align.segment<3>(ux::kGyroDrift) += p.alignment_drift_radps;
   x_align.segment<2>(ux::kDeflection) += p.deflection_rad;
-  const Vec3 c_prime =
-      full_switchover_misalignment(o.system, site_options) * x_align + p.misalignment_step_rad;  // (2.18a)
+  Vec3 c_prime;
+  Vec3 alignment_command = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  Vec3 alignment_accel = alignment_command;
+  if (o.alignment_loops) {
+    // The loops in the time domain (2.9)/(2.13), the sway as (u)r̈ (t ≤ 0).
+    std::function<Vec3(double)> sway_acceleration;
+    if (!p.sway.empty())
+      sway_acceleration = [&p](double t) {
+        Vec3 a = Vec3::Zero();
+        for (const SwayComponent& c : p.sway) {
+          const double w = 2.0 * std::numbers::pi / c.period_s;
+          a -= w * w * std::sin(w * t + c.phase_rad) * c.amplitude_n_m;
+        }
+        return a;
+      };
+    const AlignmentLoopRun loops =
+        simulate_alignment_loops(o.system, site_options, *o.alignment_loops, x_align, sway_acceleration);
+    c_prime = loops.misalignment_rad + x_align.segment<3>(ux::kMisalignAlign) + p.misalignment_step_rad;  // (2.18a)
+    alignment_command = loops.mean_command_radps;
+    alignment_accel = loops.mean_accel_output_mps2;
+  } else {
+    c_prime = full_switchover_misalignment(o.system, site_options) * x_align + p.misalignment_step_rad;  // (2.18a)
+  }
   const Mat3 c_i_ap = C_ap_i(L0);
   const Mat3 c_ap_i = c_i_ap.transpose();
   // C_{a'}^{a0} = I + ψ, ψ = paper_skew(C') = −[C'×] (2.17), (2.18): to first
@@ -545,6 +567,8 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   run.dv_pulse_mps = w;
   run.site_gravity_mps2 = g_s;
   run.switchover_misalignment_rad = c_prime;
+  run.alignment_command_radps = alignment_command;
+  run.alignment_accel_output_mps2 = alignment_accel;
   const std::size_t n = output_times_s.size();
   run.t_s = output_times_s;
   run.position_error_ap_m.resize(n);

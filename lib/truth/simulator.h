@@ -68,9 +68,11 @@
 /// drift angle (171 m in system 2 for ω_doy = 10 meru, where C'_z = 14 mrad).
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <vector>
 
+#include "lib/alignment/alignment_loops.h"
 #include "lib/common/input_error.h"
 #include "lib/common/model_options.h"
 #include "lib/common/system.h"
@@ -125,6 +127,13 @@ struct TruthOptions {
   /// frame), step + ramp·(t − start) from `start_s` on. The instruments and
   /// their pulses (and so the recorded Δf^a) are not affected.
   AccelCompensation accel_compensation;
+  /// The fine alignment: nullopt (default) = the loops in steady state
+  /// (2.10)/(2.14); otherwise simulated in the time domain over the given
+  /// alignment time from a coarse error (alignment_loops.h), what has not
+  /// settled staying in C' at switch-over, with the sway effect's
+  /// accelerations as the disturbance (u)r̈ of (2.8). (A realignment of
+  /// 5.1.x starts from the navigating platform and is taken in steady state.)
+  std::optional<AlignmentLoopSettings> alignment_loops;
   /// Points 5, 6 (fig. 5.1): at this time [s] the computer's velocity and
   /// position integrators are set to the values it calculates for a
   /// stationary vehicle ((3.22), (3.23) turned with the earth, no wiggle), and
@@ -151,6 +160,11 @@ struct TruthRun {
   double dv_pulse_mps = 0.0;          ///< pulse weight used (after effects)
   double site_gravity_mps2 = 0.0;     ///< g_s = |f| at the site
   Vec3 switchover_misalignment_rad = Vec3::Zero();  ///< C' applied (incl. effects)
+  /// With time-domain alignment loops: the torquer commands ω_c (5.14) and
+  /// accelerometer outputs Δf_m (5.19) averaged over the end of the
+  /// alignment, unquantized; NaN with the steady state.
+  Vec3 alignment_command_radps = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  Vec3 alignment_accel_output_mps2 = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
 };
 
 /// Simulates one run for the uncertainties `x` (SI, ux order) and the effects

@@ -43,6 +43,7 @@ std::vector<TruthSchemeSetup> truth_setups(const StudyConfig& c, const StudyMap&
     o.system = c.systems[j];
     o.dv_pulse_mps = c.test.dv_pulse_mps;
     o.filter_interval_s = c.test.filter_interval_s;
+    o.alignment_loops = c.test.alignment_loops;
     out.emplace_back(o, c.test, map.pipeline(static_cast<int>(j)).estimators());
   }
   return out;

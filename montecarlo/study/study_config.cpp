@@ -25,6 +25,9 @@ void validate(const StudyConfig& c) {
   if (uses_system2 && !(std::abs(c.model.latitude_rad) < M_PI / 2 - 1e-9))
     throw InputError("--latitude", fmt::format("{}rad", c.model.latitude_rad),
                      "must lie strictly between -90deg and 90deg for system 2 (2.16 divides by cos L0)");
+  if (c.test.alignment_loops && c.fidelity != Fidelity::kTruth)
+    throw InputError("--alignment-time", fmt::format("{}s", c.test.alignment_loops->duration_s),
+                     "the time-domain alignment is simulated at the truth level only: add --fidelity truth or use steady");
   validate(c.test);
   for (int i = 0; i < ux::kDim; ++i) {
     const auto& p = c.uncertainties.at(i);

@@ -221,6 +221,12 @@ TEST(Cli, SimulateAppliesEverySchemeOnTheRecordsClock) {
   const std::string z = read_file(reset);
   EXPECT_NE(z.find("\n1,910,nav,"), std::string::npos);
   EXPECT_EQ(z.find("nav_start_s"), std::string::npos);
+  // The fine alignment in the time domain (truth level only).
+  const std::string aligned = (dir.path() / "a.csv").string();
+  EXPECT_EQ(run_insmc("simulate --runs 1 --scheme 5.4 --alignment-time 20min --out " + aligned).exit_code, 0);
+  const auto linear = run_insmc("run --samples 10 --alignment-time 20min");
+  EXPECT_EQ(linear.exit_code, 2);
+  EXPECT_NE(linear.err.find("--alignment-time"), std::string::npos) << linear.err;
   // The diagnosis models uncompensated runs only, and says so.
   const auto gap = run_insmc("gap --records " + reset);
   EXPECT_EQ(gap.exit_code, 2);
