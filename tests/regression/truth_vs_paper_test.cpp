@@ -28,17 +28,14 @@
 #include "lib/truth/simulator.h"
 #include "lib/uncertainty/catalogue.h"
 #include "lib/units/units.h"
+#include "tests/unit/lib/propagation/test_support.h"
 
 namespace insmc {
 namespace {
 
 constexpr double kCutFt = 1300.0;  // §3.4: terms under 1,300 ft after 1.5 h are dropped
 
-std::vector<double> minutes_1_to_90() {
-  std::vector<double> t;
-  for (int m = 1; m <= 90; ++m) t.push_back(60.0 * m);
-  return t;
-}
+using testing::minutes_1_to_90;
 
 enum class Correction { kNone, kMuyCosL0, kZetaRxAsStep, kUntruncatedK4 };
 

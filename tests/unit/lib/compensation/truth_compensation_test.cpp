@@ -31,29 +31,13 @@
 #include "lib/propagation/position_maps.h"
 #include "lib/uncertainty/catalogue.h"
 #include "lib/uncertainty/uncertainty_model.h"
+#include "tests/unit/lib/propagation/test_support.h"
 
 namespace insmc {
 namespace {
 
-std::vector<double> minutes_1_to_90() {
-  std::vector<double> t;
-  for (int m = 1; m <= 90; ++m) t.push_back(60.0 * m);
-  return t;
-}
-
-/// Uniform within the Table 3.1 bounds, from a fixed linear congruential
-/// sequence (the test needs spread values, not a particular distribution).
-UncertaintyVector within_bounds(std::uint64_t seed) {
-  std::uint64_t state = 0x9e3779b97f4a7c15ull * (seed + 1);
-  const UncertaintyVector b = default_bounds();
-  UncertaintyVector x;
-  for (int i = 0; i < ux::kDim; ++i) {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    const double u = static_cast<double>(state >> 11) * 0x1.0p-53;
-    x[i] = b[i] * (2.0 * u - 1.0);
-  }
-  return x;
-}
+using testing::minutes_1_to_90;
+using testing::within_bounds;
 
 struct Case {
   ModelOptions model;

@@ -1,6 +1,7 @@
 #pragma once
-// Shared helpers of the propagation tests: the times checked and the
-// largest effect per uncertainty at its Table 3.1 bound.
+// Shared helpers of the model-level tests: the times checked, the largest
+// effect per uncertainty at its Table 3.1 bound, spread draws within the bounds.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -24,5 +25,18 @@ double difference_at_bound_ft(const A& a, const B& b, int i) {
 }
 
 inline std::string name_of(int i) { return std::string(catalogue()[i].name); }
+
+/// Every uncertainty uniform within its Table 3.1 bound, from a fixed linear
+/// congruential sequence per seed (spread values, not a distribution test).
+inline UncertaintyVector within_bounds(std::uint64_t seed) {
+  std::uint64_t state = 0x9e3779b97f4a7c15ull * (seed + 1);
+  const UncertaintyVector b = default_bounds();
+  UncertaintyVector x;
+  for (int i = 0; i < ux::kDim; ++i) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    x[i] = b[i] * (2.0 * (static_cast<double>(state >> 11) * 0x1.0p-53) - 1.0);
+  }
+  return x;
+}
 
 }  // namespace insmc::testing
