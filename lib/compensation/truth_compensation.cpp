@@ -79,15 +79,22 @@ void alignment_measurements(const TruthSchemeSetup& s, const TruthSchemeSample& 
 
 }  // namespace
 
+TruthRun run_truth_test(const TruthSchemeSetup& s, const TruthSchemeSample& sample, const NormalSource& noise) {
+  TruthOptions o = s.truth;
+  o.pulse_phase = sample.pulse_phase;
+  return simulate_truth(o, sample.x, uniform_times(s.test.duration_s, s.test.filter_interval_s), noise);
+}
+
 TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& s, const TruthSchemeSample& sample,
-                                const std::vector<double>& clock_times_s, const NormalSource& noise) {
+                                const std::vector<double>& clock_times_s, const NormalSource& noise,
+                                const TruthRun* test_run) {
   const ModelOptions& m = s.truth.model;
   const double g = m.gravity_mps2, w = m.earth_rate_radps, T = s.test.duration_s;
   TruthOptions o = s.truth;
   o.pulse_phase = sample.pulse_phase;
   TruthSchemeRun run;
   if (uses_test_run(scheme)) {
-    run.test = simulate_truth(o, sample.x, uniform_times(T, s.test.filter_interval_s), noise);
+    run.test = test_run != nullptr ? *test_run : run_truth_test(s, sample, noise);
     run.estimates = estimate_test_run(run.test, s.test, s.estimators, m);
   }
   const TestRunEstimates& e = run.estimates;

@@ -68,7 +68,13 @@ struct TruthSchemeRun {
   TruthRun flight;
 };
 
+/// `test_run`: the sample's test run if already simulated (the same for
+/// every scheme that uses one: run_truth_test); else it is simulated here.
 TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& setup, const TruthSchemeSample& sample,
-                                const std::vector<double>& clock_times_s, const NormalSource& noise = {});
+                                const std::vector<double>& clock_times_s, const NormalSource& noise = {},
+                                const TruthRun* test_run = nullptr);
+
+/// The sample's test run at t_k = kτ, k = 0..K, before any compensation.
+TruthRun run_truth_test(const TruthSchemeSetup& setup, const TruthSchemeSample& sample, const NormalSource& noise = {});
 
 }  // namespace insmc

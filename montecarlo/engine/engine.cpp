@@ -60,9 +60,12 @@ void truth_rows(const StudyConfig& c, const StudyMap& map, const Sampler& sample
   for (std::size_t s = 0; s < n; ++s) {
     const Eigen::Index si = static_cast<Eigen::Index>(s);
     const TruthSchemeSample sample = draw_truth_sample(sampler, c.seed, first + s, x.col(si));
+    // One test run serves every scheme that uses it.
+    const bool any_test = std::any_of(c.schemes.begin(), c.schemes.end(), uses_test_run);
+    const TruthRun test = any_test ? run_truth_test(setup, sample) : TruthRun{};
     for (std::size_t i = 0; i < c.schemes.size(); ++i) {
       const Scheme scheme = c.schemes[i];
-      const TruthRun run = run_truth_scheme(scheme, setup, sample, times).flight;
+      const TruthRun run = run_truth_scheme(scheme, setup, sample, times, {}, any_test ? &test : nullptr).flight;
       const double frame_offset = resets_at_test_end(scheme) ? T : 0.0;
       for (std::size_t k = 0; k < times.size(); ++k) {
         const Vec3& r = run.position_error_ap_m[k];
