@@ -1,6 +1,5 @@
 #include "lib/compensation/truth_compensation.h"
 
-#include "lib/alignment/alignment.h"
 #include "lib/common/assert.h"
 #include "lib/compensation/compensation_maps.h"
 #include "lib/preflight/observables.h"
@@ -39,12 +38,12 @@ TruthSchemeSetup::TruthSchemeSetup(const TruthOptions& t, const TestRunOptions& 
     : truth(t), test(r), estimators(e) {
   INSMC_ASSERT(!truth.accel_compensation.active() && truth.reset_at_s < 0 && !truth.torquer_command_radps,
                "the scheme sets the compensation itself");
-  const Sensitivity3 steady = full_steady_state_misalignment(truth.system, truth.model);
-  alignment_torquer_commands = torquer_commands(steady, truth.model);
-  alignment_accel_outputs = alignment_accelerometer_outputs(steady, truth.model);
 }
 
 namespace {
+
+/// Offset of the noise streams of the navigation after a realignment.
+constexpr std::uint64_t kRealignedNoiseStreams = 1u << 20;
 
 std::vector<double> shifted(const std::vector<double>& times, double offset) {
   std::vector<double> out(times);
@@ -55,22 +54,17 @@ std::vector<double> shifted(const std::vector<double>& times, double offset) {
 /// 5.4's alignment-phase measurements as counted, less what is known: the
 /// torquer commands (5.14) in angle pulses, the accelerometer outputs (5.18)
 /// in ΔV pulses, averaged over the last `alignment_average_s`.
-/// With time-domain alignment loops the measurements are the loops' own
-/// averages (a run of the truth up to switch-over); else the steady state.
+/// What the alignment electronics saw (a run of the truth up to
+/// switch-over: steady state, or the loops' averages over ta).
 void alignment_measurements(const TruthSchemeSetup& s, const TruthSchemeSample& sample, const NormalSource& noise,
                             Vec3& commands_radps, Vec3& accel_mps2) {
   const ModelOptions& m = s.truth.model;
   const double w = m.earth_rate_radps, L = m.latitude_rad, ta = s.test.alignment_average_s;
   const Vec3 earth_rate_command(w * std::cos(L), 0.0, -w * std::sin(L));  // ω_in^n (2.6)
-  Vec3 wc = s.alignment_torquer_commands * sample.x;
-  Vec3 df = s.alignment_accel_outputs * sample.x;
-  if (s.truth.alignment_loops) {
-    TruthOptions o = s.truth;
-    o.alignment_loops->average_s = ta;
-    const TruthRun aligned = simulate_truth(o, sample.x, {0.0}, noise);
-    wc = aligned.alignment_command_radps;
-    df = aligned.alignment_accel_output_mps2;
-  }
+  TruthOptions o = s.truth;
+  if (o.alignment_loops) o.alignment_loops->average_s = ta;
+  const TruthRun aligned = simulate_truth(o, sample.x, {0.0}, noise);
+  const Vec3 wc = aligned.alignment_command_radps, df = aligned.alignment_accel_output_mps2;
   for (int a = 0; a < 3; ++a) {
     commands_radps[a] = counted_mean(wc[a], earth_rate_command[a], ta, s.test.torquer_pulse_rad, sample.torquer_phase01[a]);
     accel_mps2[a] = counted_mean(df[a], a == 2 ? -m.gravity_mps2 : 0.0, ta, s.test.dv_pulse_mps, sample.align_pulse_phase01[a]);
@@ -102,8 +96,16 @@ TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& s, const 
   UncertaintyVector x = realigns(scheme) ? sample.realigned_x : sample.x;
   // A realignment starts from the navigating platform, level and in azimuth
   // to within the test run's drift angles (a fraction of a mrad), not from a
-  // coarse alignment: its loops are taken in steady state.
-  if (realigns(scheme)) o.alignment_loops.reset();
+  // coarse alignment: its loops are taken in steady state. The second
+  // navigation has its own pulse phase and effect processes.
+  NormalSource flight_noise = noise;
+  if (realigns(scheme)) {
+    o.alignment_loops.reset();
+    o.pulse_phase = sample.align_pulse_phase01 - Vec3::Constant(0.5);
+    if (noise) flight_noise = [noise](std::uint64_t stream, std::uint64_t counter) {
+      return noise(stream + kRealignedNoiseStreams, counter);
+    };
+  }
   switch (scheme) {
     case Scheme::kNone: break;
     case Scheme::k5_1_1:  // (5.2) at point 2, (5.3) through integrators, from the new switch-over
@@ -140,7 +142,7 @@ TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& s, const 
     }
   }
   const double offset = resets_at_test_end(scheme) ? T : 0.0;
-  run.flight = simulate_truth(o, x, shifted(clock_times_s, offset), noise);
+  run.flight = simulate_truth(o, x, shifted(clock_times_s, offset), flight_noise);
   return run;
 }
 

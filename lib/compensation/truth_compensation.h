@@ -14,9 +14,11 @@
 ///   * points 5, 6: TruthOptions::reset_at_s (5.2, 5.3 at T);
 ///   * a realignment: a new truth run whose per-alignment uncertainties (ζ_r,
 ///     ∂f_r, (u)V) are the fresh draws, switched over at the scheme's t = 0.
-/// The alignment stays the steady state the truth simulator uses, so the
-/// alignment-phase measurements of 5.4 are the steady-state commands and
-/// outputs of lib/alignment, counted in pulses.
+/// The alignment-phase measurements of 5.4 are what the truth's alignment
+/// electronics saw (TruthRun::alignment_command_radps, with the effects'
+/// alignment-phase terms), counted in pulses. After a realignment the
+/// effects' processes and the pulse phase are drawn afresh (their own noise
+/// streams), not a replay of the test run's.
 #include <vector>
 
 #include "lib/compensation/scheme.h"
@@ -45,8 +47,6 @@ struct TruthSchemeSetup {
   TruthOptions truth;  ///< site, system, pulses, effects (no compensation of its own)
   TestRunOptions test;
   TestRunEstimators estimators;
-  Sensitivity3 alignment_torquer_commands;  ///< ω_c (5.14) per unit x, steady state
-  Sensitivity3 alignment_accel_outputs;     ///< Δf_m (5.19) per unit x, steady state
 };
 
 /// One sample's draws.
@@ -55,7 +55,9 @@ struct TruthSchemeSample {
   UncertaintyVector realigned_x; ///< x with a realignment's fresh draws (realigning schemes)
   Vec3 pulse_phase = Vec3::Zero();  ///< ΔV remainders at switch-over, in pulses [−0.5, 0.5)
   Vec3 torquer_phase01 = Vec3::Zero();    ///< 5.4: torquer pulse counters' phases [0, 1)
-  Vec3 align_pulse_phase01 = Vec3::Zero();  ///< 5.4: alignment ΔV counters' phases [0, 1)
+  /// 5.4: alignment ΔV counters' phases [0, 1); after a realignment (no 5.4
+  /// measurement) the phases of the second navigation's counters.
+  Vec3 align_pulse_phase01 = Vec3::Zero();
 };
 
 /// A compensated truth run.

@@ -351,8 +351,7 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   x_align.segment<3>(ux::kGyroDrift) += p.alignment_drift_radps;
   x_align.segment<2>(ux::kDeflection) += p.deflection_rad;
   Vec3 c_prime;
-  Vec3 alignment_command = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-  Vec3 alignment_accel = alignment_command;
+  Vec3 alignment_command, alignment_accel;
   if (o.alignment_loops) {
     // The loops in the time domain (2.9)/(2.13), the sway as (u)r̈ (t ≤ 0).
     std::function<Vec3(double)> sway_acceleration;
@@ -371,7 +370,12 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
     alignment_command = loops.mean_command_radps;
     alignment_accel = loops.mean_accel_output_mps2;
   } else {
+    // The loops in steady state (2.10)/(2.14); their commands (5.14) and
+    // accelerometer outputs (5.19) as the alignment electronics see them.
+    const Sensitivity3 steady = full_steady_state_misalignment(o.system, site_options);
     c_prime = full_switchover_misalignment(o.system, site_options) * x_align + p.misalignment_step_rad;  // (2.18a)
+    alignment_command = torquer_commands(steady, site_options) * x_align;
+    alignment_accel = alignment_accelerometer_outputs(steady, site_options) * x_align;
   }
   const Mat3 c_i_ap = C_ap_i(L0);
   const Mat3 c_ap_i = c_i_ap.transpose();

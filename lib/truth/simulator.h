@@ -160,11 +160,13 @@ struct TruthRun {
   double dv_pulse_mps = 0.0;          ///< pulse weight used (after effects)
   double site_gravity_mps2 = 0.0;     ///< g_s = |f| at the site
   Vec3 switchover_misalignment_rad = Vec3::Zero();  ///< C' applied (incl. effects)
-  /// With time-domain alignment loops: the torquer commands ω_c (5.14) and
-  /// accelerometer outputs Δf_m (5.19) averaged over the end of the
-  /// alignment, unquantized; NaN with the steady state.
-  Vec3 alignment_command_radps = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-  Vec3 alignment_accel_output_mps2 = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  /// What the alignment electronics saw, unquantized, with the effects'
+  /// alignment-phase terms and the site's g_s: the torquer commands ω_c
+  /// (5.14) less the earth-rate command and the accelerometer outputs Δf_m
+  /// (5.19) — steady-state values, or with time-domain loops their averages
+  /// over the end of the alignment (the measurements of scheme 5.4).
+  Vec3 alignment_command_radps = Vec3::Zero();
+  Vec3 alignment_accel_output_mps2 = Vec3::Zero();
 };
 
 /// Simulates one run for the uncertainties `x` (SI, ux order) and the effects

@@ -29,6 +29,9 @@ namespace {
 /// as in the test-run pipeline, not on the error.
 RecordRow record_row(std::int64_t run, double t_s, const TruthRun& r, std::size_t k, const RecordRunSpec& spec,
                      const ModelOptions& model) {
+  // The vehicle's position at the simulator's own time (after a realignment
+  // the second navigation's clock, not the record's).
+  const double truth_t_s = r.t_s[k];
   RecordRow row;
   row.run = run;
   row.t_s = t_s;
@@ -37,7 +40,7 @@ RecordRow record_row(std::int64_t run, double t_s, const TruthRun& r, std::size_
     if (std::isfinite(r.accel_error_ap_mps2[k][a])) row.f_mps2[a] = r.accel_error_ap_mps2[k][a];
   Vec3 pos = r.position_error_ap_m[k];
   if (spec.position_resolution_m > 0) {
-    const Vec3 truth = true_position_ap(t_s, model);
+    const Vec3 truth = true_position_ap(truth_t_s, model);
     for (int a = 0; a < 3; ++a) pos[a] = at_resolution(truth[a] + pos[a], spec.position_resolution_m) - truth[a];
   }
   row.r_ap_m = pos;

@@ -163,6 +163,56 @@ TEST(TruthCompensation, TestRunEstimatesAgreeWithTheLinearLevel) {
   }
 }
 
+TEST(TruthCompensation, EachSchemeUsesItsOwnEstimates) {
+  // A test run whose position data are zero and whose accelerometer data
+  // carry a slope: 5.3 (accelerometer data, (5.10)–(5.12)) must react to it,
+  // 5.2 (position data, (5.8)) must not — both against all-zero data.
+  const Case c = make_case(System::kTheodolite);
+  TruthOptions o;
+  o.dv_pulse_mps = 0.0;
+  const TruthSchemeSetup setup(o, c.test, c.estimators);
+  TruthSchemeSample sample;
+  sample.x = within_bounds(3);
+  sample.realigned_x = sample.x;
+  TruthRun zero = simulate_truth(o, UncertaintyVector::Zero(), uniform_times(c.test.duration_s, c.test.filter_interval_s));
+  for (auto& r : zero.position_error_ap_m) r.setZero();
+  for (auto& f : zero.accel_error_ap_mps2) f.setZero();
+  TruthRun sloped = zero;
+  for (std::size_t k = 0; k < sloped.t_s.size(); ++k) sloped.accel_error_ap_mps2[k].x() = 1e-7 * sloped.t_s[k];
+  const TestRunEstimates e = estimate_test_run(sloped, c.test, c.estimators, c.model);
+  EXPECT_EQ(e.u2, Vec3::Zero());
+  EXPECT_EQ(e.u3, Vec3::Zero());
+  EXPECT_NE(e.u3_accel.x(), 0.0);
+  const std::vector<double> times{2520.0, 5040.0};
+  const auto flight = [&](Scheme scheme, const TruthRun& test) {
+    return run_truth_scheme(scheme, setup, sample, times, {}, &test).flight.position_error_ap_m[1];
+  };
+  EXPECT_EQ(flight(Scheme::k5_2, sloped), flight(Scheme::k5_2, zero));
+  EXPECT_GT((flight(Scheme::k5_3, sloped) - flight(Scheme::k5_3, zero)).norm(), 1.0);
+}
+
+TEST(TruthCompensation, Scheme54WithSettledAlignmentLoopsEqualsTheSteadyState) {
+  // 5.4 measures what the alignment saw: with the loops simulated for 3 h
+  // their averaged commands are the steady state's, and so is the flight.
+  for (System s : {System::kTheodolite, System::kGyrocompass}) {
+    const Case c = make_case(s);
+    TruthOptions o;
+    o.system = s;
+    o.dv_pulse_mps = 0.0;
+    TruthOptions loops = o;
+    loops.alignment_loops = AlignmentLoopSettings{};
+    loops.alignment_loops->duration_s = 3 * 3600.0;
+    TruthSchemeSample sample;
+    sample.x = within_bounds(4);
+    sample.realigned_x = sample.x;
+    const std::vector<double> times{2520.0, 3780.0, 5040.0};
+    const TruthSchemeRun a = run_truth_scheme(Scheme::k5_4, TruthSchemeSetup(o, c.test, c.estimators), sample, times);
+    const TruthSchemeRun b = run_truth_scheme(Scheme::k5_4, TruthSchemeSetup(loops, c.test, c.estimators), sample, times);
+    for (std::size_t k = 0; k < times.size(); ++k)
+      EXPECT_LT((a.flight.position_error_ap_m[k] - b.flight.position_error_ap_m[k]).norm(), 0.1) << times[k];
+  }
+}
+
 TEST(TruthCompensation, ResetSetsTheComputerToItsStationaryValues) {
   // With every uncertainty zero except the initial velocity wiggle (u)V, the
   // uncompensated run oscillates at the Schuler period; a reset at T sets the
