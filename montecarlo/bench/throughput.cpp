@@ -15,9 +15,9 @@ namespace insmc::mc {
 using bench::keep;
 using bench::seconds_since;
 
-StudyConfig benchmark_study(std::uint64_t samples, int threads) {
+StudyConfig benchmark_study(std::uint64_t samples, int threads, Fidelity fidelity) {
   StudyConfig c;
-  c.fidelity = Fidelity::kPaper;
+  c.fidelity = fidelity;
   c.samples = samples;
   c.threads = threads;
   c.with_grid = false;

@@ -21,7 +21,7 @@ struct ThroughputResult {
 
 /// The uncompensated paper-level study at the report times (no grid),
 /// systems 1 and 2: 33 uncertainties → 30 map rows → 24 outputs.
-StudyConfig benchmark_study(std::uint64_t samples, int threads);
+StudyConfig benchmark_study(std::uint64_t samples, int threads, Fidelity fidelity = Fidelity::kPaper);
 
 ThroughputResult measure_throughput(const StudyConfig& config);
 

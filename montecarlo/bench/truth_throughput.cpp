@@ -7,20 +7,13 @@
 #include "montecarlo/bench/timing.h"
 #include "montecarlo/bench/truth_reference.h"
 #include "montecarlo/engine/engine.h"
+#include "montecarlo/bench/throughput.h"
 #include "montecarlo/random/philox.h"
 #include "montecarlo/sampler/sampler.h"
 
 namespace insmc::mc {
 
-StudyConfig truth_study(std::uint64_t samples, int threads) {
-  StudyConfig c;
-  c.fidelity = Fidelity::kTruth;
-  c.samples = samples;
-  c.threads = threads;
-  c.with_grid = false;
-  c.schemes = {Scheme::kNone};
-  return c;
-}
+StudyConfig truth_study(std::uint64_t samples, int threads) { return benchmark_study(samples, threads, Fidelity::kTruth); }
 
 TruthThroughput measure_truth_throughput(const StudyConfig& c) {
   const StudyLayout layout = make_layout(c);

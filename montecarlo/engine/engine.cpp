@@ -57,11 +57,11 @@ void truth_rows(const StudyConfig& c, const StudyMap& map, const Sampler& sample
                 std::uint64_t first, std::size_t n, const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
   const std::vector<double>& times = map.layout().times_s;
   const double T = c.test.duration_s;
+  // One test run per sample serves every scheme that uses it.
+  const bool any_test = std::any_of(c.schemes.begin(), c.schemes.end(), uses_test_run);
   for (std::size_t s = 0; s < n; ++s) {
     const Eigen::Index si = static_cast<Eigen::Index>(s);
     const TruthSchemeSample sample = draw_truth_sample(sampler, c.seed, first + s, x.col(si));
-    // One test run serves every scheme that uses it.
-    const bool any_test = std::any_of(c.schemes.begin(), c.schemes.end(), uses_test_run);
     const TruthRun test = any_test ? run_truth_test(setup, sample) : TruthRun{};
     for (std::size_t i = 0; i < c.schemes.size(); ++i) {
       const Scheme scheme = c.schemes[i];

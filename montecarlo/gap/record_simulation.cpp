@@ -83,11 +83,9 @@ RecordRun simulate_record_run(const TruthOptions& truth, const Sampler& sampler,
                               const RecordRunSpec& spec) {
   if (spec.scheme != Scheme::kNone) return scheme_record_run(sampler, seed, run, times_s, spec);
   TruthOptions o = truth;
-  double phases[3];
-  fill_uniform01(seed, Stream::PulsePhase, run, 3, 1, phases);
-  o.pulse_phase = Vec3(phases[0] - 0.5, phases[1] - 0.5, phases[2] - 0.5);
-  const UncertaintyVector x = sampler.draw(seed, run);
-  const TruthRun r = simulate_truth(o, x, times_s, philox_normals(seed, run));
+  const TruthSchemeSample sample = draw_truth_sample(sampler, seed, run, sampler.draw(seed, run));
+  o.pulse_phase = sample.pulse_phase;
+  const TruthRun r = simulate_truth(o, sample.x, times_s, philox_normals(seed, run));
   RecordRun out;
   out.id = static_cast<std::int64_t>(run);
   for (std::size_t k = 0; k < r.t_s.size(); ++k) out.rows.push_back(record_row(out.id, r.t_s[k], r, k, spec, truth.model));

@@ -85,6 +85,17 @@ RecordFile simulate_file(const std::vector<EffectSpec>& effects, std::uint64_t s
   return without_truth(std::move(file));  // the diagnosis is blind
 }
 
+bool selected(const ValidationOptions& options, const std::string& effect) {
+  return options.effects.empty() ||
+         std::find(options.effects.begin(), options.effects.end(), effect) != options.effects.end();
+}
+
+/// Effect files' seeds lie above any null file's (at most 10⁴ of them) and
+/// depend only on where the file sits in the full study.
+std::uint64_t effect_file_seed(std::uint64_t seed, std::size_t effect, std::size_t magnitude, int file) {
+  return seed + 100'000 + 10'000 * effect + 100 * magnitude + static_cast<std::uint64_t>(file);
+}
+
 }  // namespace
 
 ValidationOptions ValidationOptions::quick_subset() {
@@ -103,20 +114,23 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
   d.alpha = options.alpha;
   d.max_selected = 1;
   const double model_pulse = TruthOptions{}.dv_pulse_mps;
-  std::uint64_t file_seed = options.seed;
   // Null data: the model itself, with its pulses.
   for (int i = 0; i < options.null_files; ++i) {
-    const Diagnosis g = diagnose(simulate_file({}, file_seed++, options.runs_per_file), d);
+    const Diagnosis g = diagnose(simulate_file({}, options.seed + static_cast<std::uint64_t>(i), options.runs_per_file), d);
     result.cases.push_back({"none", 0.0, i, g.significant, g.significant ? g.top : "", !g.significant, 0.0, 0.0, g.gap, g.p_value});
     result.null_files++;
     result.false_alarms += g.significant;
   }
-  for (const EffectInfo& info : effect_registry()) {
+  const auto& registry = effect_registry();
+  for (std::size_t e = 0; e < registry.size(); ++e) {
+    const EffectInfo& info = registry[e];
     const std::string name(info.name);
-    for (double m : options.magnitudes) {
+    if (!selected(options, name)) continue;
+    for (std::size_t mi = 0; mi < options.magnitudes.size(); ++mi) {
+      const double m = options.magnitudes[mi];
       for (int s = 0; s < options.seeds; ++s) {
         const EffectSpec spec = scaled_effect(info.kind, m, model_pulse);
-        const Diagnosis g = diagnose(simulate_file({spec}, file_seed++, options.runs_per_file), d);
+        const Diagnosis g = diagnose(simulate_file({spec}, effect_file_seed(options.seed, e, mi, s), options.runs_per_file), d);
         ValidationCase c{name, m, s, g.significant, g.top, false, 0.0, 0.0, g.gap, g.p_value};
         c.identified = g.significant && names_effect(g.top, name);
         if (g.significant && !g.ranking.empty()) c.shrink = g.ranking.front().shrink;
@@ -133,6 +147,7 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
   }
   std::vector<double> all_shrinks;
   for (const EffectInfo& info : effect_registry()) {
+    if (!selected(options, std::string(info.name))) continue;
     EffectScore sc{std::string(info.name)};
     std::vector<double> shrinks, ratios;
     std::map<double, std::pair<int, int>> by_magnitude;  // identified, files

@@ -20,6 +20,10 @@ struct ValidationOptions {
   int null_files = 100;                             ///< files with no effect
   double alpha = 0.01;
   std::uint64_t seed = 1000;
+  /// Effects to validate (names of the registry); empty: every effect. A
+  /// file's seed depends only on (seed, effect, magnitude, file), so a
+  /// subset reproduces the full study's files.
+  std::vector<std::string> effects;
   /// The quick CI subset: 10-run files, one dominant magnitude (10x), one seed, 4 null files.
   static ValidationOptions quick_subset();
 };

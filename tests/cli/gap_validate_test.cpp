@@ -26,6 +26,34 @@ TEST(GapValidate, QuickSubsetScoresEveryEffectBlind) {
   const std::string json = read_file(std::filesystem::path(out) / "validation.json");
   EXPECT_TRUE(has(json, "\"false_alarms\": 0")) << json.substr(0, 300);
   EXPECT_EQ(run_insmc("gap-validate --seeds 0").exit_code, 2);
+
+  // One effect alone diagnoses the very file the whole study did: a file's
+  // seed depends on its place in the study, not on what else is validated.
+  const std::string one = (dir.path() / "one").string();
+  const auto s = run_insmc("gap-validate --quick --null-files 0 --effect sway --out " + one);
+  ASSERT_TRUE(s.exit_code == 0 || s.exit_code == 1) << s.err;
+  const auto sway_row = [](const std::string& md) {
+    const std::size_t at = md.find("\n| sway ", md.find("## Every file"));
+    std::string row = at == std::string::npos ? std::string() : md.substr(at, md.find('\n', at + 1) - at);
+    std::erase(row, ' ');  // column widths follow the table's widest cell
+    return row;
+  };
+  const std::string full_row = sway_row(read_file(std::filesystem::path(out) / "validation.md"));
+  EXPECT_FALSE(full_row.empty());
+  EXPECT_EQ(sway_row(read_file(std::filesystem::path(one) / "validation.md")), full_row);
+  const std::string one_json = read_file(std::filesystem::path(one) / "validation.json");
+  EXPECT_TRUE(has(one_json, "\"sway\"")) << one_json;
+  EXPECT_FALSE(has(one_json, "\"quantization\"")) << one_json;  // scored: only what was asked
+}
+
+TEST(GapValidate, BadSubsetIsAnInputError) {
+  const auto e = run_insmc("gap-validate --effect no_such_effect");
+  EXPECT_EQ(e.exit_code, 2);
+  EXPECT_TRUE(has(e.err, "--effect")) << e.err;
+  const auto m = run_insmc("gap-validate --magnitudes 1,0");
+  EXPECT_EQ(m.exit_code, 2);
+  EXPECT_TRUE(has(m.err, "--magnitudes")) << m.err;
+  EXPECT_EQ(run_insmc("gap-validate --magnitudes 1,x").exit_code, 2);
 }
 
 }  // namespace

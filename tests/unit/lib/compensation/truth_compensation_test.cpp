@@ -39,6 +39,14 @@ namespace {
 using testing::minutes_1_to_90;
 using testing::within_bounds;
 
+/// Truth options with continuous outputs (no ΔV pulses) for system s.
+TruthOptions continuous(System s) {
+  TruthOptions o;
+  o.system = s;
+  o.dv_pulse_mps = 0.0;
+  return o;
+}
+
 struct Case {
   ModelOptions model;
   TestRunOptions test;
@@ -91,9 +99,7 @@ TEST(TruthCompensation, EverySchemeAgreesWithTheLinearLevelRunByRun) {
   const std::vector<double> times = minutes_1_to_90();
   for (System s : {System::kTheodolite, System::kGyrocompass}) {
     const Case c = make_case(s);
-    TruthOptions o;
-    o.system = s;
-    o.dv_pulse_mps = 0.0;
+    TruthOptions o = continuous(s);
     o.filter_interval_s = c.test.filter_interval_s;
     const double epsilon =
         1.0 - simulate_truth(o, UncertaintyVector::Zero(), {60.0}).site_gravity_mps2 / c.model.gravity_mps2;
@@ -140,9 +146,7 @@ TEST(TruthCompensation, TestRunEstimatesAgreeWithTheLinearLevel) {
   // The estimates the schemes use, from truth data, against the linear data's.
   for (System s : {System::kTheodolite, System::kGyrocompass}) {
     const Case c = make_case(s);
-    TruthOptions o;
-    o.system = s;
-    o.dv_pulse_mps = 0.0;
+    TruthOptions o = continuous(s);
     const UncertaintyVector x = within_bounds(7);
     const TruthRun plus = simulate_truth(o, x, uniform_times(c.test.duration_s, c.test.filter_interval_s));
     const TruthRun minus = simulate_truth(o, -x, uniform_times(c.test.duration_s, c.test.filter_interval_s));
@@ -168,8 +172,7 @@ TEST(TruthCompensation, EachSchemeUsesItsOwnEstimates) {
   // carry a slope: 5.3 (accelerometer data, (5.10)–(5.12)) must react to it,
   // 5.2 (position data, (5.8)) must not — both against all-zero data.
   const Case c = make_case(System::kTheodolite);
-  TruthOptions o;
-  o.dv_pulse_mps = 0.0;
+  TruthOptions o = continuous(System::kTheodolite);
   const TruthSchemeSetup setup(o, c.test, c.estimators);
   TruthSchemeSample sample;
   sample.x = within_bounds(3);
@@ -196,9 +199,7 @@ TEST(TruthCompensation, Scheme54WithSettledAlignmentLoopsEqualsTheSteadyState) {
   // their averaged commands are the steady state's, and so is the flight.
   for (System s : {System::kTheodolite, System::kGyrocompass}) {
     const Case c = make_case(s);
-    TruthOptions o;
-    o.system = s;
-    o.dv_pulse_mps = 0.0;
+    TruthOptions o = continuous(s);
     TruthOptions loops = o;
     loops.alignment_loops = AlignmentLoopSettings{};
     loops.alignment_loops->duration_s = 3 * 3600.0;
@@ -218,8 +219,7 @@ TEST(TruthCompensation, ResetSetsTheComputerToItsStationaryValues) {
   // uncompensated run oscillates at the Schuler period; a reset at T sets the
   // computer's velocity without the wiggle, so the error after T is the
   // (zero) error of a stationary computer: below a millimetre.
-  TruthOptions o;
-  o.dv_pulse_mps = 0.0;
+  TruthOptions o = continuous(System::kTheodolite);
   UncertaintyVector x = UncertaintyVector::Zero();
   x.segment<3>(ux::kInitialVelocity) = default_bounds().segment<3>(ux::kInitialVelocity);
   const std::vector<double> times{600.0, 900.0, 1200.0, 3600.0};
@@ -234,8 +234,7 @@ TEST(TruthCompensation, ResetSetsTheComputerToItsStationaryValues) {
 TEST(TruthCompensation, PointTwoStepIsABiasTheAlignmentNeverSaw) {
   // A compensation step c at point 2 from t = 0 acts on the computer like an
   // accelerometer bias after switch-over: x error (1 − cos ω_s t) c_x / ω_s².
-  TruthOptions o;
-  o.dv_pulse_mps = 0.0;
+  TruthOptions o = continuous(System::kTheodolite);
   o.accel_compensation.step_mps2 = Vec3(1e-4, 0.0, 0.0);
   const double ws = o.model.schuler_radps(), t = 1800.0;
   const TruthRun run = simulate_truth(o, UncertaintyVector::Zero(), {t});
