@@ -47,11 +47,12 @@ std::vector<double> knots(const Layout& layout, double spacing_s) {
   return k;
 }
 
-/// Knot spacing for a process of correlation time tau (0: random walk):
-/// a third of tau resolves a Gauss–Markov process, within bounds that keep
-/// the model small.
+/// Knot spacing for a process of correlation time tau (0: random walk): a
+/// Gauss–Markov process is resolved by knots a correlation time apart (the
+/// bridge modes below carry what lies between), within bounds that keep the
+/// model small.
 double knot_spacing(double tau) {
-  return tau > 0 ? std::clamp(tau / 3.0, kMinKnotSpacingS, kKnotSpacingS) : kKnotSpacingS;
+  return tau > 0 ? std::clamp(tau, kMinKnotSpacingS, kKnotSpacingS) : kMinKnotSpacingS;
 }
 
 /// Hat function of knot t_j (spacing d) and its integral from 0 to t.
@@ -71,54 +72,84 @@ double change_covariance(double s, double t, double tau) {
   return std::exp(-std::abs(s - t) / tau) - std::exp(-s / tau) - std::exp(-t / tau) + 1.0;
 }
 
+/// Diffusion of a unit process: a random walk's 1/(1 h); a Gauss–Markov
+/// process is locally one with 2σ²/τ.
+double unit_diffusion(double tau) { return tau > 0 ? 2.0 / tau : 1.0 / 3600.0; }
+
+/// Between two knots a process is a bridge B (zero at both knots). Its
+/// Karhunen–Loève modes on an interval of Δ are sin(mπu/Δ) with variances
+/// 2qΔ/(mπ)²: the first carries 8/π⁴ ≈ 98.5 % of the variance of ∫B (an
+/// impulse through (3.24) on every later r row) and is a column (kBridgeModes
+/// of them per interval); the rest, qΔ(1/6 − Σ 1/(mπ)²) on average, is seen
+/// by the f rows and enters them as noise. Checked against truth runs with
+/// 150 s knots (tests/unit/lib/gap): a velocity random walk, which r sees
+/// through one integration only, is the most demanding.
+constexpr int kBridgeModes = 1;
+double bridge_rest_share(int modes) {
+  double share = 1.0 / 6.0;
+  for (int m = 1; m <= modes; ++m) share -= 1.0 / (m * m * std::numbers::pi * std::numbers::pi);
+  return share;
+}
+
 enum class Drive { kAccel, kAngle, kRate, kVelocity };
 
-/// Unit response (rows × 3K) of a process on the knots, per axis, already
-/// multiplied by the Cholesky factor of its knot covariance: the coefficients
-/// are independent with variance σ².
+/// Unit response of a process on the knots, per axis k: columns 3j + k (j <
+/// K) the knot values, mixed by the Cholesky factor of their covariance, and
+/// 3(K(m + 1) + j) + k bridge mode m (0-based) of interval j; every
+/// coefficient is independent with variance σ².
 Eigen::MatrixXd process_columns(const LayoutContext& ctx, Drive drive, double tau) {
   const std::string key = "process" + std::to_string(static_cast<int>(drive)) + ":" + std::to_string(tau);
   if (auto it = ctx.cache.find(key); it != ctx.cache.end()) return it->second;
   const double d = knot_spacing(tau);
   const std::vector<double> tk = knots(*ctx.layout, d);
-  const int K = static_cast<int>(tk.size());
+  const int K = static_cast<int>(tk.size()), M = kBridgeModes;
   Eigen::MatrixXd cov(K, K);
   for (int i = 0; i < K; ++i)
     for (int j = 0; j < K; ++j) cov(i, j) = change_covariance(tk[i], tk[j], tau);
   cov.diagonal().array() += 1e-12 * cov.diagonal().maxCoeff();
   const Eigen::MatrixXd L = cov.llt().matrixL();
+  const double pi = std::numbers::pi;
+  const double unit_std = std::sqrt(2.0 * unit_diffusion(tau) * d) / pi;  // of mode 1
   InputSignal in;
-  in.columns = 3 * K;
-  // A velocity walk is seen by f too: the filtered f is its increment over τ,
-  // so the knot slopes and the white part of f are one process (modelled as
-  // independent, the test-run fit would read the walk as a bias).
-  in.f_responds = true;
-  in.at = [&, drive, K, d](double t, Columns3& accel, Columns3& angle) {
+  in.columns = 3 * K * (1 + M);
+  in.at = [&, drive, K, M, d](double t, Columns3& accel, Columns3& angle) {
     accel.setZero();
     angle.setZero();
+    Columns3& out = drive == Drive::kAccel || drive == Drive::kVelocity ? accel : angle;
     for (int j = 0; j < K; ++j) {
-      double v = 0.0;
+      const double u = t - (tk[j] - d);  // time into interval j
+      double knot = 0.0;
       switch (drive) {
-        case Drive::kAccel: case Drive::kAngle: v = hat(t, tk[j], d); break;
-        case Drive::kRate: v = hat_integral(t, tk[j], d); break;  // θ = ∫ ω
-        case Drive::kVelocity:  // a = dv/dt of the hat
-          v = (t > tk[j] - d && t <= tk[j]) ? 1.0 / d : (t > tk[j] && t <= tk[j] + d) ? -1.0 / d : 0.0;
+        case Drive::kAccel: case Drive::kAngle: knot = hat(t, tk[j], d); break;
+        case Drive::kRate: knot = hat_integral(t, tk[j], d); break;  // θ = ∫ ω
+        case Drive::kVelocity:  // a = dv/dt
+          knot = (t > tk[j] - d && t <= tk[j]) ? 1.0 / d : (t > tk[j] && t <= tk[j] + d) ? -1.0 / d : 0.0;
           break;
       }
-      for (int k = 0; k < 3; ++k) (drive == Drive::kAccel || drive == Drive::kVelocity ? accel : angle)(k, 3 * j + k) = v;
+      for (int k = 0; k < 3; ++k) out(k, 3 * j + k) = knot;
+      if (u <= 0) continue;
+      for (int m = 1; m <= M; ++m) {
+        const double w = m * pi / d;
+        double mode = 0.0;
+        switch (drive) {
+          case Drive::kAccel: case Drive::kAngle: mode = u < d ? std::sin(w * u) : 0.0; break;
+          case Drive::kRate: mode = (1.0 - std::cos(w * std::min(u, d))) / w; break;
+          case Drive::kVelocity: mode = u < d ? w * std::cos(w * u) : 0.0; break;
+        }
+        for (int k = 0; k < 3; ++k) out(k, 3 * (K * m + j) + k) = unit_std / m * mode;
+      }
     }
   };
   Eigen::MatrixXd r = input_response(*ctx.layout, *ctx.site, in);
-  // Columns per axis k: r(:, 3j + k); mix the knots by L.
-  Eigen::MatrixXd out(r.rows(), 3 * K);
+  // Knot columns per axis k: r(:, 3j + k); mix the knots by L.
   for (int k = 0; k < 3; ++k) {
     Eigen::MatrixXd axis(r.rows(), K);
     for (int j = 0; j < K; ++j) axis.col(j) = r.col(3 * j + k);
     const Eigen::MatrixXd mixed = axis * L;
-    for (int j = 0; j < K; ++j) out.col(3 * j + k) = mixed.col(j);
+    for (int j = 0; j < K; ++j) r.col(3 * j + k) = mixed.col(j);
   }
-  ctx.cache[key] = out;
-  return out;
+  ctx.cache[key] = r;
+  return r;
 }
 
 /// Noise added to the f rows (per axis weight) [ (m/s²)² ].
@@ -132,7 +163,7 @@ Eigen::VectorXd f_noise(const LayoutContext& ctx, const Eigen::Vector3d& var) {
 }
 
 /// A random process on the knots with σ = params[0], τ = params[1].
-Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma, double tau, bool tilt_noise) {
+Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma, double tau) {
   Extension e;
   // A Gauss–Markov process has its stationary σ already at switch-over: the
   // alignment takes that value for δf or ω_do, beyond Table 3.1's.
@@ -140,36 +171,12 @@ Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma,
   if (tau > 0 && drive == Drive::kRate) e.x_var_add.segment<3>(ux::kGyroDrift).setConstant(sigma * sigma);
   e.columns = process_columns(ctx, drive, tau);
   e.column_var = Eigen::VectorXd::Constant(e.columns.cols(), sigma * sigma);
-  // The part of the process faster than the knots, seen by the f rows as
-  // noise: a random walk's bridge between knots has mean variance q Δ/6
-  // (q = σ²/1 h; a Gauss–Markov process is locally one with q = 2σ²/τ).
-  const double q = tau <= 0 ? sigma * sigma / 3600.0 : 2.0 * sigma * sigma / tau;
-  const double d = knot_spacing(tau), nugget = q * d / 6.0;
+  // The bridges' higher modes, seen by the f rows only: of the process
+  // itself (accelerometer) or of g × θ (a tilt on the horizontal axes).
+  const double rest = bridge_rest_share(kBridgeModes) * sigma * sigma * unit_diffusion(tau) * knot_spacing(tau);
   const double g = ctx.site->model.gravity_mps2;
-  if (drive == Drive::kAccel) e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(nugget));
-  if (drive == Drive::kAngle && tilt_noise) e.noise_var_add = f_noise(ctx, Eigen::Vector3d(g * g * nugget, g * g * nugget, 0.0));
-  if (drive == Drive::kRate) return e;
-  // The r rows see the bridges too: the bridge B of interval j integrates to
-  // an impulse at its middle m_j, which the Schuler loop (3.24) turns into
-  // sin(ω_s (t − m_j))/ω_s of position (accelerometer error, tilt × g) or
-  // cos(ω_s (t − m_j)) (velocity). Over the first u of an interval of Δ,
-  // Var ∫B = q (u³/3 − u⁴/(4Δ)) (Brownian bridge; q Δ³/12 for a whole
-  // interval). Independent between intervals: their variances add.
-  if (e.noise_var_add.size() == 0) e.noise_var_add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));
-  const Eigen::Vector3d gain = drive == Drive::kAngle ? Eigen::Vector3d(g * g, g * g, 0.0) : Eigen::Vector3d::Ones();
-  const double ws = ctx.site->model.schuler_radps();
-  for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
-    const ObservationRow& row = ctx.layout->rows[i];
-    if (row.quantity != Quantity::kR) continue;
-    double sum = 0.0;
-    for (double start = 0.0; start < row.t_s; start += d) {
-      const double u = std::min(d, row.t_s - start);  // a partly elapsed interval
-      const double lag = row.t_s - (start + 0.5 * u);
-      const double h = drive == Drive::kVelocity ? std::cos(ws * lag) : std::sin(ws * lag) / ws;
-      sum += h * h * q * (u * u * u / 3.0 - u * u * u * u / (4.0 * d));
-    }
-    e.noise_var_add[static_cast<Eigen::Index>(i)] += gain[row.axis] * sum;
-  }
+  if (drive == Drive::kAccel) e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(rest));
+  if (drive == Drive::kAngle) e.noise_var_add = f_noise(ctx, Eigen::Vector3d(g * g * rest, g * g * rest, 0.0));
   return e;
 }
 
@@ -220,13 +227,12 @@ Candidate bounds() {
 
 Candidate quantization() {
   return {"quantization",
-          "ΔV pulses coarser than the model's: counting noise w²/(6τ²) in f and a pulse-phase velocity error w²/12",
+          "ΔV pulses of another weight than the model's: counting noise w²/(6τ²) in f, and in r the pulse phase and "
+          "the slow sawtooth of the counters' velocity error (pulse_counting.h)",
           {{"dv_pulse", Dimension::kVelocity, log_grid(0.02, 5, 1.0)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             Extension e;
-            const double w0 = ctx.site->dv_pulse_mps, w = std::max(p[0], w0), tau = ctx.site->filter_interval_s;
-            e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant((w * w - w0 * w0) / (6 * tau * tau)));
-            e.x_var_add.segment<3>(ux::kInitialVelocity).setConstant((w * w - w0 * w0) / 12.0);
+            e.counting = pulse_counting(*ctx.layout, *ctx.site, p[0], ctx.base->x_var, ctx.base->noise_var.cwiseSqrt());
             return e;
           }};
 }
@@ -263,7 +269,7 @@ Candidate accel_bias_instability() {
           {{"sigma", Dimension::kAcceleration, log_grid(2, 2000, kUg)},
            {"tau", Dimension::kTime, {0.0, 300.0, 1200.0, 3600.0}}},
           [](const LayoutContext& ctx, std::span<const double> p) {
-            return process_extension(ctx, Drive::kAccel, p[0], p[1], false);
+            return process_extension(ctx, Drive::kAccel, p[0], p[1]);
           }};
 }
 
@@ -273,7 +279,7 @@ Candidate gyro_drift_instability() {
           {{"sigma", Dimension::kAngularRate, log_grid(0.1, 100, kMeruToRadps)},
            {"tau", Dimension::kTime, {0.0, 300.0, 1200.0, 3600.0}}},
           [](const LayoutContext& ctx, std::span<const double> p) {
-            return process_extension(ctx, Drive::kRate, p[0], p[1], false);
+            return process_extension(ctx, Drive::kRate, p[0], p[1]);
           }};
 }
 
@@ -281,7 +287,7 @@ Candidate angle_random_walk() {
   return {"angle_random_walk", "white gyro rate noise: the platform angle walks (σ after 1 h)",
           {{"angle_1h", Dimension::kAngle, log_grid(0.005, 10, kMradToRad)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
-            return process_extension(ctx, Drive::kAngle, p[0], 0.0, true);
+            return process_extension(ctx, Drive::kAngle, p[0], 0.0);
           }};
 }
 
@@ -290,9 +296,11 @@ Candidate velocity_random_walk() {
           "white accelerometer noise: white in f (q/τ), a velocity random walk in r (σ after 1 h)",
           {{"velocity_1h", Dimension::kVelocity, log_grid(0.01, 10, 1.0)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
-            Extension e = process_extension(ctx, Drive::kVelocity, p[0], 0.0, false);
+            // The walk's increments over τ that the knots and bridge modes
+            // do not carry are white in f: q/τ.
+            Extension e = process_extension(ctx, Drive::kVelocity, p[0], 0.0);
             const double q = p[0] * p[0] / 3600.0;
-            e.noise_var_add += f_noise(ctx, Eigen::Vector3d::Constant(q / ctx.site->filter_interval_s));
+            e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(q / ctx.site->filter_interval_s));
             return e;
           }};
 }

@@ -57,10 +57,11 @@ struct Candidate {
 /// Every candidate, in a fixed order.
 const std::vector<Candidate>& candidate_registry();
 
-/// Largest and smallest knot spacing of the random-process bases [s]: coarse
-/// enough to keep the model small; the faster part of a process enters the
-/// f rows as noise.
+/// Knot spacing of the random-process bases [s]: random walks at the
+/// smallest, Gauss–Markov processes a correlation time apart within these
+/// bounds; between knots the bridge's first mode is a column and the faster
+/// part enters the f rows as noise.
 inline constexpr double kKnotSpacingS = 420.0;
-inline constexpr double kMinKnotSpacingS = 100.0;
+inline constexpr double kMinKnotSpacingS = 150.0;
 
 }  // namespace insmc::gap

@@ -1,9 +1,17 @@
 #include "lib/gap/gap_metric.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace insmc::gap {
+
+NullCalibration NullCalibration::from_null(const GroupSums& s) {
+  NullCalibration c;
+  for (int g = 0; g < kGroupCount; ++g)
+    c.floor_share[g] = s.floor[g] > 1e-9 * s.count[g] ? std::max(0.0, (s.z2[g] - s.expected[g]) / s.floor[g]) : 1.0;
+  return c;
+}
 
 GroupValues group_power(const GroupSums& sums) {
   GroupValues p;
@@ -12,13 +20,30 @@ GroupValues group_power(const GroupSums& sums) {
   return p;
 }
 
-GroupValues log_power_ratio(const GroupSums& sums, const GroupValues& reference_power) {
-  const GroupValues p = group_power(sums);
+namespace {
+
+/// The calibrated expected Σ z².
+double expected_sum(const GroupSums& s, const NullCalibration& c, int g) {
+  return s.expected[g] + c.floor_share[g] * s.floor[g];
+}
+
+}  // namespace
+
+GroupValues expected_power(const GroupSums& sums, const NullCalibration& calibration) {
+  GroupValues p;
+  for (int g = 0; g < kGroupCount; ++g)
+    p[g] = sums.count[g] > 0 ? expected_sum(sums, calibration, g) / sums.count[g]
+                             : std::numeric_limits<double>::quiet_NaN();
+  return p;
+}
+
+GroupValues log_power_ratio(const GroupSums& sums, const NullCalibration& calibration) {
   GroupValues l;
   for (int g = 0; g < kGroupCount; ++g) {
+    const double expected = expected_sum(sums, calibration, g);
     // A floor keeps a group that is fitted exactly from counting as infinite.
-    l[g] = std::isfinite(p[g]) && reference_power[g] > 0
-               ? std::log(std::max(p[g], 1e-12) / reference_power[g])
+    l[g] = sums.count[g] > 0 && expected > 0
+               ? std::log(std::max(sums.z2[g], 1e-12 * sums.count[g]) / expected)
                : std::numeric_limits<double>::quiet_NaN();
   }
   return l;

@@ -9,40 +9,46 @@ BaseModel make_base_model(const Layout& layout, const RecordSite& site, const Un
   BaseModel base;
   base.H_x = uncertainty_response(layout, site);
   base.x_var = x_var;
-  const double w = site.dv_pulse_mps, tau = site.filter_interval_s, q = site.position_resolution_m;
-  // The pulse phase ρ0 ~ U(−½, ½) pulses is an initial velocity error ρ0 w (simulator.h).
-  base.x_var.segment<3>(ux::kInitialVelocity).array() += w * w / 12.0;
+  const double q = site.position_resolution_m;
   const auto n = static_cast<Eigen::Index>(layout.rows.size());
   base.prior_std = (base.H_x.array().square().rowwise() * base.x_var.transpose().array()).rowwise().sum().sqrt();
   base.noise_var.resize(n);
+  base.actual_noise_var.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     if (layout.rows[static_cast<std::size_t>(i)].quantity == Quantity::kF) {
-      // Δf over τ from pulses: (ρ_start − ρ_end) w/τ, two independent U(−½, ½).
-      base.noise_var[i] = w * w / (6.0 * tau * tau) + kFNoiseFloorMps2 * kFNoiseFloorMps2;
+      base.actual_noise_var[i] = 0.0;
+      base.noise_var[i] = kFNoiseFloorMps2 * kFNoiseFloorMps2;
     } else {
       const double floor = kAbsoluteModelErrorM + kRelativeModelError * base.prior_std[i];
-      base.noise_var[i] = q * q / 12.0 + floor * floor;
+      base.actual_noise_var[i] = q * q / 12.0;
+      base.noise_var[i] = base.actual_noise_var[i] + floor * floor;
     }
   }
+  base.counting = pulse_counting(layout, site, site.dv_pulse_mps, x_var, base.noise_var.cwiseSqrt());
   return base;
 }
 
 GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>& extensions) {
   UncertaintyVector x_var = base.x_var;
+  const PulseCounting* counting = &base.counting;
   Eigen::Index extra = 0;
   for (const Extension* e : extensions) {
     x_var = x_var.cwiseProduct(e->x_var_scale) + e->x_var_add;
     extra += e->columns.cols();
+    if (e->counting) counting = &*e->counting;
   }
-  const Eigen::Index n = base.H_x.rows();
+  const Eigen::Index n = base.H_x.rows(), kc = counting->columns.cols();
   GaussianModel m;
-  m.H.resize(n, ux::kDim + extra);
-  m.prior_var.resize(ux::kDim + extra);
+  m.H.resize(n, ux::kDim + kc + extra);
+  m.prior_var.resize(ux::kDim + kc + extra);
   m.H.leftCols(ux::kDim) = base.H_x;
   m.prior_var.head(ux::kDim) = x_var;
-  m.noise_var = base.noise_var;
+  m.H.middleCols(ux::kDim, kc) = counting->columns;
+  m.prior_var.segment(ux::kDim, kc).setOnes();
+  m.noise_var = base.noise_var + counting->noise_var;
+  m.actual_noise_var = base.actual_noise_var + counting->noise_var;
   m.mean = Eigen::VectorXd::Zero(n);
-  Eigen::Index at = ux::kDim;
+  Eigen::Index at = ux::kDim + kc;
   for (const Extension* e : extensions) {
     INSMC_ASSERT(e->columns.rows() == n || e->columns.cols() == 0, "extension rows {}", e->columns.rows());
     const Eigen::Index k = e->columns.cols();
@@ -51,7 +57,10 @@ GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>
       m.prior_var.segment(at, k) = e->column_var;
     }
     at += k;
-    if (e->noise_var_add.size() == n) m.noise_var += e->noise_var_add;
+    if (e->noise_var_add.size() == n) {
+      m.noise_var += e->noise_var_add;
+      m.actual_noise_var += e->noise_var_add;
+    }
     if (e->mean.size() == n) m.mean += e->mean;
   }
   return m;

@@ -9,7 +9,10 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include <optional>
+
 #include "lib/gap/layout.h"
+#include "lib/gap/pulse_counting.h"
 #include "lib/uncertainty/uncertainty_vector.h"
 
 namespace insmc::gap {
@@ -18,7 +21,15 @@ struct GaussianModel {
   Eigen::VectorXd mean;       ///< rows: E y (deterministic effects, same in every run)
   Eigen::MatrixXd H;          ///< rows × columns
   Eigen::VectorXd prior_var;  ///< columns
-  Eigen::VectorXd noise_var;  ///< rows, > 0
+  /// rows, > 0: the noise the fit weights the rows by (with the model-error
+  /// floor, so that the fit does not lean on sub-metre position detail the
+  /// linear level does not promise).
+  Eigen::VectorXd noise_var;
+  /// rows, ≥ 0: the noise the data really carry (pulse counting, position
+  /// resolution, a candidate's own noise; no floor). The expected squares the
+  /// gap compares with come from this one (run_analysis.h); what the null
+  /// shows beyond it is calibrated per group (gap_metric.h).
+  Eigen::VectorXd actual_noise_var;
 };
 
 /// Share of the predicted position error the model-error floor allows for:
@@ -32,15 +43,17 @@ inline constexpr double kAbsoluteModelErrorM = 1.0;
 /// (dv_pulse 0) still has a finite weight.
 inline constexpr double kFNoiseFloorMps2 = 1e-6;
 
-/// The base model of a layout: x with `x_var`, the pulse phase (an initial
-/// velocity error uniform within ±w/2, simulator.h) added to (u)V, f noise
-/// of pulse counting w²/(6τ²) (two independent remainders per window), r
-/// noise of the position resolution q²/12 and the model-error floor.
+/// The base model of a layout: x with `x_var`, the counting of the record's
+/// ΔV pulses (pulse_counting.h: f counting noise, the pulse phase and the
+/// slow-axis sawtooth in r), r noise of the position resolution q²/12 and the
+/// model-error floor.
 struct BaseModel {
   Eigen::MatrixXd H_x;             ///< rows × 33
-  UncertaintyVector x_var;         ///< with the pulse phase
-  Eigen::VectorXd noise_var;       ///< rows
+  UncertaintyVector x_var;
+  Eigen::VectorXd noise_var;       ///< rows: fit weights (resolution and the model-error floor)
+  Eigen::VectorXd actual_noise_var;  ///< rows: the position resolution alone
   Eigen::VectorXd prior_std;       ///< rows: predicted std of each row from x alone
+  PulseCounting counting;          ///< of the record's pulse weight
 };
 BaseModel make_base_model(const Layout& layout, const RecordSite& site, const UncertaintyVector& x_var);
 
@@ -50,16 +63,20 @@ struct Extension {
   Eigen::VectorXd column_var;       ///< m
   UncertaintyVector x_var_scale = UncertaintyVector::Ones();  ///< multiplies x_var
   UncertaintyVector x_var_add = UncertaintyVector::Zero();    ///< then added
-  Eigen::VectorXd noise_var_add;    ///< rows, or empty
+  /// rows, or empty: noise the effect adds to the data (added to the fit
+  /// weights and to the actual noise alike).
+  Eigen::VectorXd noise_var_add;
   /// rows, or empty: a deterministic signature, the same in every run (a
   /// design or site effect), subtracted from the data before the fit.
   Eigen::VectorXd mean;
+  /// Pulse counting that replaces the base model's (pulses of another weight).
+  std::optional<PulseCounting> counting;
 
   /// True when the extension only moves the mean (the covariance, hence the
   /// fit, is the one without it).
   bool mean_only() const {
     return columns.cols() == 0 && noise_var_add.size() == 0 && (x_var_scale.array() == 1.0).all() &&
-           (x_var_add.array() == 0.0).all();
+           (x_var_add.array() == 0.0).all() && !counting;
   }
 };
 

@@ -114,7 +114,8 @@ std::vector<RunData> extract_runs(const RecordFile& file, const RecordSite& site
       const int window = test ? 0 : nav_window(row.t_s, T);
       for (int k = 0; k < 3; ++k) {
         // A window must lie after switch-over and not overlap the last one.
-        if (!row.f_mps2[k] || row.t_s < tau * (1 - 1e-9) || row.t_s - last_f[k] < tau * (1 - 1e-6)) continue;
+        const double spacing = test ? tau : std::max(tau, options.nav_f_spacing_s);
+        if (!row.f_mps2[k] || row.t_s < tau * (1 - 1e-9) || row.t_s - last_f[k] < spacing * (1 - 1e-6)) continue;
         last_f[k] = row.t_s;
         rows.push_back({row.t_s, Quantity::kF, k, group_of(stage, Quantity::kF, k, window)});
         values.push_back(*row.f_mps2[k]);

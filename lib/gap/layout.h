@@ -69,6 +69,9 @@ struct ExtractionOptions {
   /// r rows closer than this to the last kept one are skipped: r is smooth,
   /// and the model's cost grows with the rows [s].
   double r_spacing_s = 30.0;
+  /// Navigation f rows closer than this to the last kept one are skipped
+  /// (the test-run f rows are all kept: the fit uses them) [s].
+  double nav_f_spacing_s = 30.0;
 };
 
 /// Reads the site from the header. `default_pulse_mps` applies when the

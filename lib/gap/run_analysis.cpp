@@ -27,13 +27,15 @@ RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model)
   const Eigen::Index nt = test_rows_;
   weighted_test_ = H_.topRows(nt).array().colwise() / model.noise_var.head(nt).array();
   // Information form: (P⁻¹ + Hᵀ R⁻¹ H)⁻¹ = P⁺. Scaling by the prior std keeps
-  // it well conditioned across causes of very different units.
+  // it well conditioned across causes of very different units: c = S u,
+  // u ~ (0, I), P⁺ = S Π S with Π = (I + S Hᵀ R⁻¹ H S)⁻¹.
   const Eigen::VectorXd s = prior.cwiseSqrt();
   Eigen::MatrixXd info = (s.asDiagonal() * (H_.topRows(nt).transpose() * weighted_test_) * s.asDiagonal());
   info.diagonal().array() += 1.0;
+  Eigen::MatrixXd pi;
   const Eigen::LLT<Eigen::MatrixXd> llt(info);
   if (llt.info() == Eigen::Success) {
-    posterior_ = s.asDiagonal() * llt.solve(Eigen::MatrixXd::Identity(d, d)) * s.asDiagonal();
+    pi = llt.solve(Eigen::MatrixXd::Identity(d, d));
   } else {
     // Priors many orders wider than the data (a candidate's widened bounds)
     // leave round-off in the huge entries; info = I + (PSD) has every
@@ -41,24 +43,45 @@ RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model)
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(info);
     INSMC_ASSERT(eig.info() == Eigen::Success, "information matrix not decomposable ({} causes)", d);
     const Eigen::VectorXd inv = eig.eigenvalues().cwiseMax(1.0).cwiseInverse();
-    posterior_ = s.asDiagonal() * (eig.eigenvectors() * inv.asDiagonal() * eig.eigenvectors().transpose()) *
-                 s.asDiagonal();
+    pi = eig.eigenvectors() * inv.asDiagonal() * eig.eigenvectors().transpose();
   }
-  const Eigen::VectorXd q = ((H_ * posterior_).array() * H_.array()).rowwise().sum();
-  expected_.resize(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double r = model.noise_var[i];
-    expected_[i] = i < nt ? std::max(r - q[i], 1e-6 * r) : q[i] + r;
-  }
+  posterior_ = s.asDiagonal() * pi * s.asDiagonal();
+  // The actual test noise through the fit's gain, scaled: J = S Hₜᵀ R⁻¹ R_a R⁻¹ Hₜ S;
+  // then A + B = S Π (I + J) Π S.
+  const Eigen::ArrayXd actual_share = model.actual_noise_var.head(nt).array() / model.noise_var.head(nt).array();
+  Eigen::MatrixXd spread = s.asDiagonal() *
+                           (weighted_test_.transpose() * (H_.topRows(nt).array().colwise() * actual_share).matrix()) *
+                           s.asDiagonal();
+  spread.diagonal().array() += 1.0;
+  const Eigen::MatrixXd around = pi * spread * pi;
+  const Eigen::MatrixXd HS = H_ * s.asDiagonal();
+  const Eigen::VectorXd q = ((HS * pi).array() * HS.array()).rowwise().sum();
+  const Eigen::VectorXd ab = ((HS * around).array() * HS.array()).rowwise().sum();
   for (Eigen::Index a = 0; a < d; ++a) {
     const Eigen::Index j = active[static_cast<std::size_t>(a)];
-    const double reduced = prior[a] - posterior_(a, a);
-    if (j < ux::kDim && reduced > kResolvedShare * prior[a]) estimate_columns_.push_back(static_cast<int>(a));
+    if (j < ux::kDim && 1.0 - pi(a, a) > kResolvedShare) estimate_columns_.push_back(static_cast<int>(a));
   }
-  estimate_var_.resize(static_cast<Eigen::Index>(estimate_columns_.size()));
-  for (std::size_t k = 0; k < estimate_columns_.size(); ++k) {
-    const int a = estimate_columns_[k];
-    estimate_var_[static_cast<Eigen::Index>(k)] = prior[a] - posterior_(a, a);
+  const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
+  expected_.resize(n);
+  actual_.resize(n + m);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double r = model.noise_var[i], ra = model.actual_noise_var[i];
+    expected_[i] = i < nt ? std::max(r - q[i], 1e-6 * r) : q[i] + r;
+    actual_[i] = std::max(0.0, i < nt ? ab[i] + ra * (1.0 - 2.0 * q[i] / r) : ab[i] + ra);
+  }
+  estimate_var_.resize(m);
+  for (Eigen::Index k = 0; k < m; ++k) {
+    const int a = estimate_columns_[static_cast<std::size_t>(k)];
+    // P − P⁺ and P − 2P⁺ + A + B, over the prior (scaled).
+    estimate_var_[k] = prior[a] * (1.0 - pi(a, a));
+    actual_[n + k] = std::max(0.0, (1.0 - 2.0 * pi(a, a) + around(a, a)) / (1.0 - pi(a, a)));
+  }
+  for (Eigen::Index i = 0; i < n + m; ++i) {
+    const int g = i < n ? layout.rows[static_cast<std::size_t>(i)].group : kEstimatesGroup;
+    const double share = std::min(1.0, i < n ? actual_[i] / expected_[i] : actual_[i]);
+    constant_.count[g] += 1.0;
+    constant_.expected[g] += share;
+    constant_.floor[g] += 1.0 - share;
   }
 }
 
@@ -84,16 +107,11 @@ Eigen::VectorXd RunAnalyser::normalized_linear(const Eigen::VectorXd& y) const {
 }
 
 GroupSums RunAnalyser::sums_of(const Eigen::VectorXd& v) const {
-  GroupSums sums;
+  GroupSums sums = constant_;
   const auto n = static_cast<Eigen::Index>(layout_->rows.size());
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const int g = layout_->rows[static_cast<std::size_t>(i)].group;
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    const int g = i < n ? layout_->rows[static_cast<std::size_t>(i)].group : kEstimatesGroup;
     sums.z2[g] += v[i] * v[i];
-    sums.count[g] += 1.0;
-  }
-  for (Eigen::Index k = n; k < v.size(); ++k) {
-    sums.z2[kEstimatesGroup] += v[k] * v[k];
-    sums.count[kEstimatesGroup] += 1.0;
   }
   return sums;
 }

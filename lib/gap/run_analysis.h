@@ -10,6 +10,20 @@
 ///   estimates:  ĉ_j of x,               E ĉ_j² = P_jj − P⁺_jj,
 /// P⁺ the posterior covariance. Sums per report group (layout.h) are what the
 /// gap metric aggregates over runs.
+///
+/// The fit weights rows by the model's noise_var, which carries a
+/// model-error floor (gaussian_model.h); the data carry only
+/// actual_noise_var. So each row also gets the expectation of its square
+/// under the actual noise with that same (floor-weighted) fit, E_i: with
+/// A = P⁺P⁻¹P⁺, B = K R_a Kᵀ, K = P⁺Hₜᵀ R⁻¹ (the fit's gain), q = h P⁺ hᵀ,
+///   test rows:  E_i = h (A + B) hᵀ + R_a,i (1 − 2 q_i / R_i),
+///   nav rows:   E_i = h (A + B) hᵀ + R_a,i,
+///   estimates:  E_j = P_jj − 2 P⁺_jj + A_jj + B_jj,
+/// which reduce to the normalizers above when R_a = R. E_i is affine in the
+/// noise, so e_i − E_i ≥ 0 is what the floor alone contributes. The group
+/// sums carry Σ E_i/e_i and Σ (1 − E_i/e_i): the metric compares Σ z² with
+/// the first plus the share of the second that the null shows to be real
+/// model error (gap_metric.h).
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <array>
@@ -19,12 +33,17 @@
 
 namespace insmc::gap {
 
-/// Σ z² and the number of terms per group.
+/// Per group, over its terms i (rows, or estimates): Σ z², their number,
+/// Σ E_i/e_i (the expected Σ z² under the actual noise) and Σ (1 − E_i/e_i)
+/// (what the model-error floor adds to it).
 struct GroupSums {
   std::array<double, kGroupCount> z2{};
   std::array<double, kGroupCount> count{};
+  std::array<double, kGroupCount> expected{};
+  std::array<double, kGroupCount> floor{};
   GroupSums& operator+=(const GroupSums& o) {
-    for (int g = 0; g < kGroupCount; ++g) z2[g] += o.z2[g], count[g] += o.count[g];
+    for (int g = 0; g < kGroupCount; ++g)
+      z2[g] += o.z2[g], count[g] += o.count[g], expected[g] += o.expected[g], floor[g] += o.floor[g];
     return *this;
   }
 };
@@ -50,8 +69,12 @@ class RunAnalyser {
   /// Group sums of normalized values.
   GroupSums sums_of(const Eigen::VectorXd& normalized_values) const;
 
-  /// Expected square of each row's residual (test) or innovation (nav).
+  /// Expected square of each row's residual (test) or innovation (nav)
+  /// under the model's own noise: the normalizer e_i.
   const Eigen::VectorXd& expected_square() const { return expected_; }
+  /// The same under the actual noise, E_i (rows, then resolved estimates
+  /// over their normalizers).
+  const Eigen::VectorXd& actual_square() const { return actual_; }
 
  private:
   const Layout* layout_;
@@ -60,8 +83,10 @@ class RunAnalyser {
   Eigen::MatrixXd weighted_test_; // test rows of H / σ², rows × active
   Eigen::MatrixXd posterior_;     // P⁺
   Eigen::VectorXd expected_;      // rows
+  Eigen::VectorXd actual_;        // rows + estimates
   std::vector<int> estimate_columns_;  // active indices of resolved x
   Eigen::VectorXd estimate_var_;
+  GroupSums constant_;            // the data-independent parts of the sums
   int test_rows_ = 0;
 };
 

@@ -115,7 +115,7 @@ gap::GroupSums run_sums(const CandidateSums& s, const Choice& choice, int r) {
   return s.fit[L]->sums_of(s.normalized[ri] - Z * choice.amplitude);
 }
 
-Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::GroupValues& m0) {
+Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0) {
   Choice best;
   double best_gap = std::numeric_limits<double>::infinity();
   std::vector<gap::GroupSums> sums(s.amplitudes ? s.normalized.size() : 0);

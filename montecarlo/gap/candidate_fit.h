@@ -63,8 +63,8 @@ CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
 /// Run r's group sums under a choice.
 gap::GroupSums run_sums(const CandidateSums& s, const Choice& choice, int r);
 
-/// The choice of least G on `runs` (m0: the null's group powers).
-Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::GroupValues& m0);
+/// The choice of least G on `runs` (m0: the null's calibration).
+Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0);
 
 /// The candidate's parameter values of a choice (grid values and amplitudes).
 std::vector<double> parameter_values(const gap::Candidate& c, const Choice& choice);

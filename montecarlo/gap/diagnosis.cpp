@@ -62,7 +62,7 @@ double quantile(std::vector<double> v, double q) {
 
 /// Everything the candidate search needs from the null calibration.
 struct Null {
-  GroupValues power{};               // m0_g
+  gap::NullCalibration calibration;  // δ_g
   std::vector<double> gaps;          // G of the null files
   std::vector<GroupValues> log_ratios;  // ℓ of the null files
 };
@@ -82,7 +82,7 @@ struct Scored {
 
 /// 2-fold cross-validation (runs alternate between the halves in file order),
 /// the full-data fit and its resampled 16–84 % range.
-Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, const GroupValues& m0,
+Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0,
              std::uint64_t seed) {
   Scored out;
   out.heldout.resize(n);
@@ -113,7 +113,7 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
 }
 
 std::vector<Scored> rank_candidates(const Prepared& p, const std::vector<std::vector<gap::Extension>>& selected,
-                                    const std::vector<std::string>& exclude, const GroupValues& m0,
+                                    const std::vector<std::string>& exclude, const gap::NullCalibration& m0,
                                     std::uint64_t seed) {
   const auto& registry = gap::candidate_registry();
   std::vector<Scored> scored(registry.size());
@@ -176,13 +176,13 @@ Null calibrate(Prepared& p, const RecordFile& file, const DiagnosisOptions& opti
     sums[j] = analysers[static_cast<std::size_t>(layout_of[j])].analyse(run_values(sim[j]), z[j]);
   });
   Null null;
-  null.power = gap::group_power(gap::pooled(sums, all_runs(sums.size())));
+  null.calibration = gap::NullCalibration::from_null(gap::pooled(sums, all_runs(sums.size())));
   const int n = static_cast<int>(p.runs.size());
   null.gaps.resize(static_cast<std::size_t>(options.bootstrap));
   null.log_ratios.resize(static_cast<std::size_t>(options.bootstrap));
   tbb::parallel_for(0, options.bootstrap, [&](int b) {
     const GroupSums s = gap::pooled(sums, resample(options.seed, static_cast<std::uint64_t>(b), n, runs));
-    null.log_ratios[static_cast<std::size_t>(b)] = gap::log_power_ratio(s, null.power);
+    null.log_ratios[static_cast<std::size_t>(b)] = gap::log_power_ratio(s, null.calibration);
     null.gaps[static_cast<std::size_t>(b)] = gap::gap_value(null.log_ratios[static_cast<std::size_t>(b)]);
   });
   return null;
@@ -260,7 +260,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
   const std::vector<GroupSums> base = sums_under(p, [](int) { return std::vector<const gap::Extension*>{}; });
   const Null null = calibrate(p, file, options, ncal, null_sums, null_z, null_layout);
   const GroupSums observed = gap::pooled(base, all_runs(p.runs.size()));
-  const GroupValues l = gap::log_power_ratio(observed, null.power);
+  const GroupValues l = gap::log_power_ratio(observed, null.calibration);
   d.gap = gap::gap_value(l);
   d.p_value = p_value_of(d.gap, null.gaps);
   d.significant = d.p_value < options.alpha;
@@ -271,7 +271,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
                                        "up to G = {:.3g} at alpha = {})", n, n, d.null_gap_critical, options.alpha));
 
   // Where it lies.
-  d.groups = group_results(observed, null.power, null.log_ratios);
+  d.groups = group_results(observed, null.calibration, null.log_ratios);
   d.by_axis = shares_by(d.groups, [](int g) { return g == gap::kEstimatesGroup ? std::string("estimates")
                                                                              : std::string(1, "xyz"[gap::group_axis(g)]); });
   d.by_stage = shares_by(d.groups, [](int g) { return gap::group_stage(g); });
@@ -311,14 +311,14 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
   d.heldout_gap_before = d.gap;
   double before = d.gap;
   for (int step = 0; step < std::max(1, options.max_selected); ++step) {
-    const std::vector<Scored> ranked = rank_candidates(p, selected, taken, null.power, options.seed);
+    const std::vector<Scored> ranked = rank_candidates(p, selected, taken, null.calibration, options.seed);
     if (ranked.empty()) break;
     if (step == 0) {
       d.ranked = true;
       for (const Scored& s : ranked) {
         const gap::Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
         d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before,
-                             gap::log_power_ratio(gap::pooled(s.heldout, all_runs(s.heldout.size())), null.power)});
+                             gap::log_power_ratio(gap::pooled(s.heldout, all_runs(s.heldout.size())), null.calibration)});
       }
       d.top = d.ranking.front().effect;
       if (ranked.size() > 1) {
@@ -327,8 +327,8 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
         std::vector<double> margins;
         for (int b = 0; b < kResamples; ++b) {
           const std::vector<int> idx = resample(options.seed, 2'000'000 + static_cast<std::uint64_t>(b), n, n);
-          margins.push_back(gap::gap_value(gap::pooled(ranked[1].heldout, idx), null.power) -
-                            gap::gap_value(gap::pooled(ranked[0].heldout, idx), null.power));
+          margins.push_back(gap::gap_value(gap::pooled(ranked[1].heldout, idx), null.calibration) -
+                            gap::gap_value(gap::pooled(ranked[0].heldout, idx), null.calibration));
         }
         d.runner_up_margin = ranked[1].heldout_gap - ranked[0].heldout_gap;
         const double mean = std::accumulate(margins.begin(), margins.end(), 0.0) / kResamples;

@@ -47,7 +47,7 @@ struct GroupResult {
   int group = 0;
   double count = 0;        ///< terms over all runs
   double power = 0;        ///< observed mean z²
-  double null_power = 0;   ///< m0_g
+  double null_power = 0;   ///< the model's expected mean z², calibrated on the null
   double log_ratio = 0;    ///< ℓ_g
   double p_value = 1;      ///< of |ℓ_g| against the null files
   double share = 0;        ///< ℓ_g² / Σ ℓ²

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
+#include <optional>
+#include <tbb/parallel_for.h>
 
 #include "lib/truth/effect.h"
 #include "lib/units/units.h"
@@ -114,36 +116,56 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
   d.alpha = options.alpha;
   d.max_selected = 1;
   const double model_pulse = TruthOptions{}.dv_pulse_mps;
-  // Null data: the model itself, with its pulses.
-  for (int i = 0; i < options.null_files; ++i) {
-    const Diagnosis g = diagnose(simulate_file({}, options.seed + static_cast<std::uint64_t>(i), options.runs_per_file), d);
-    result.cases.push_back({"none", 0.0, i, g.significant, g.significant ? g.top : "", !g.significant, 0.0, 0.0, g.gap, g.p_value});
-    result.null_files++;
-    result.false_alarms += g.significant;
-  }
+  // Every file of the study, in report order: null data (the model itself,
+  // with its pulses), then each effect by magnitude and seed. A file's data
+  // depend only on its place, so the files are diagnosed in parallel.
+  struct Job {
+    std::string effect = "none";
+    std::optional<EffectSpec> spec;
+    double magnitude = 0.0;
+    int seed = 0;
+    std::uint64_t file_seed = 0;
+  };
+  std::vector<Job> jobs;
+  for (int i = 0; i < options.null_files; ++i)
+    jobs.push_back({"none", std::nullopt, 0.0, i, options.seed + static_cast<std::uint64_t>(i)});
   const auto& registry = effect_registry();
   for (std::size_t e = 0; e < registry.size(); ++e) {
-    const EffectInfo& info = registry[e];
-    const std::string name(info.name);
+    const std::string name(registry[e].name);
     if (!selected(options, name)) continue;
-    for (std::size_t mi = 0; mi < options.magnitudes.size(); ++mi) {
-      const double m = options.magnitudes[mi];
-      for (int s = 0; s < options.seeds; ++s) {
-        const EffectSpec spec = scaled_effect(info.kind, m, model_pulse);
-        const Diagnosis g = diagnose(simulate_file({spec}, effect_file_seed(options.seed, e, mi, s), options.runs_per_file), d);
-        ValidationCase c{name, m, s, g.significant, g.top, false, 0.0, 0.0, g.gap, g.p_value};
-        c.identified = g.significant && names_effect(g.top, name);
-        if (g.significant && !g.ranking.empty()) c.shrink = g.ranking.front().shrink;
-        for (const CandidateResult& r : g.ranking) {
-          if (r.effect != name) continue;
-          for (const ParameterEstimate& p : r.parameters)
-            for (std::size_t i = 0; i < info.parameters.size(); ++i)
-              if (info.parameters[i].name == p.name && spec.values_si[i] != 0)
-                c.recovered_ratio = p.value / spec.values_si[i];
-        }
-        result.cases.push_back(c);
+    for (std::size_t mi = 0; mi < options.magnitudes.size(); ++mi)
+      for (int s = 0; s < options.seeds; ++s)
+        jobs.push_back({name, scaled_effect(registry[e].kind, options.magnitudes[mi], model_pulse),
+                        options.magnitudes[mi], s, effect_file_seed(options.seed, e, mi, s)});
+  }
+  result.cases.resize(jobs.size());
+  tbb::parallel_for(std::size_t{0}, jobs.size(), [&](std::size_t j) {
+    const Job& job = jobs[j];
+    std::vector<EffectSpec> effects;
+    if (job.spec) effects.push_back(*job.spec);
+    const Diagnosis g = diagnose(simulate_file(effects, job.file_seed, options.runs_per_file), d);
+    ValidationCase c{job.effect, job.magnitude, job.seed, g.significant, g.top, false, 0.0, 0.0, g.gap, g.p_value};
+    if (!job.spec) {
+      c.top = g.significant ? g.top : "";
+      c.identified = !g.significant;
+    } else {
+      c.identified = g.significant && names_effect(g.top, job.effect);
+      if (g.significant && !g.ranking.empty()) c.shrink = g.ranking.front().shrink;
+      const EffectInfo& info = effect_info(job.spec->kind);
+      for (const CandidateResult& r : g.ranking) {
+        if (r.effect != job.effect) continue;
+        for (const ParameterEstimate& p : r.parameters)
+          for (std::size_t i = 0; i < info.parameters.size(); ++i)
+            if (info.parameters[i].name == p.name && job.spec->values_si[i] != 0)
+              c.recovered_ratio = p.value / job.spec->values_si[i];
       }
     }
+    result.cases[j] = c;
+  });
+  for (const ValidationCase& c : result.cases) {
+    if (c.effect != "none") continue;
+    result.null_files++;
+    result.false_alarms += c.significant;
   }
   std::vector<double> all_shrinks;
   for (const EffectInfo& info : effect_registry()) {

@@ -6,10 +6,11 @@
 
 namespace insmc::mc {
 
-std::vector<GroupResult> group_results(const gap::GroupSums& observed, const gap::GroupValues& null_power,
+std::vector<GroupResult> group_results(const gap::GroupSums& observed, const gap::NullCalibration& calibration,
                                        const std::vector<gap::GroupValues>& null_log_ratios) {
   const gap::GroupValues power = gap::group_power(observed);
-  const gap::GroupValues l = gap::log_power_ratio(observed, null_power);
+  const gap::GroupValues l = gap::log_power_ratio(observed, calibration);
+  const gap::GroupValues null_power = gap::expected_power(observed, calibration);
   double total = 0;
   for (double v : l)
     if (std::isfinite(v)) total += v * v;

@@ -10,9 +10,9 @@
 
 namespace insmc::mc {
 
-/// Per group: power, null power, ℓ_g, its p-value against the null files'
+/// Per group: power, the calibrated expected power, ℓ_g, its p-value against the null files'
 /// |ℓ_g|, and its share of Σ ℓ².
-std::vector<GroupResult> group_results(const gap::GroupSums& observed, const gap::GroupValues& null_power,
+std::vector<GroupResult> group_results(const gap::GroupSums& observed, const gap::NullCalibration& calibration,
                                        const std::vector<gap::GroupValues>& null_log_ratios);
 
 /// Σ of the groups' shares under each key (key order of first appearance).

@@ -5,12 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
+#include <tuple>
 
 #include "lib/gap/candidates.h"
+#include "lib/gap/pulse_counting.h"
 #include "lib/gap/gap_metric.h"
 #include "lib/gap/response.h"
 #include "lib/gap/run_analysis.h"
+#include "lib/truth/simulator.h"
 #include "lib/uncertainty/uncertainty_model.h"
 #include "lib/units/units.h"
 
@@ -131,16 +135,135 @@ TEST(GapAnalysis, NormalizedSquaresAverageOneOnDataDrawnFromTheModel) {
   }
 }
 
-TEST(GapMetric, IsTheRmsOfTheGroupsLogPowerRatios) {
+TEST(GapAnalysis, ActualSquaresAverageWhatDrawsWithTheActualNoiseGive) {
+  // The fit weights rows with the model-error floor; data drawn with only
+  // the actual noise (position resolution, counting) must average the
+  // expected squares E_i/e_i of run_analysis.h, group by group (4.5
+  // standard errors of the per-run group means).
+  const Layout l = layout(3600.0);
+  RecordSite s = site();
+  s.position_resolution_m = 3 * kFtToM;
+  const BaseModel base = make_base_model(l, s, UncertaintyModel{}.variance());
+  const GaussianModel m = combine(base, {});
+  const RunAnalyser a(l, m);
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> n01;
+  constexpr int kRuns = 400;
+  std::vector<GroupValues> means;
+  GroupSums one;
+  for (int r = 0; r < kRuns; ++r) {
+    Eigen::VectorXd c(m.prior_var.size()), e(m.noise_var.size());
+    for (Eigen::Index j = 0; j < c.size(); ++j) c[j] = std::sqrt(m.prior_var[j]) * n01(rng);
+    for (Eigen::Index i = 0; i < e.size(); ++i) e[i] = std::sqrt(m.actual_noise_var[i]) * n01(rng);
+    one = a.analyse(m.H * c + e);
+    means.push_back(group_power(one));
+  }
+  int checked = 0;
+  for (int g = 0; g < kGroupCount; ++g) {
+    if (!std::isfinite(means[0][g])) continue;
+    double sum = 0, sq = 0;
+    for (const GroupValues& v : means) sum += v[g], sq += v[g] * v[g];
+    const double mean = sum / kRuns, sd = std::sqrt((sq - kRuns * mean * mean) / (kRuns - 1));
+    const double want = one.expected[g] / one.count[g];
+    EXPECT_LT(std::abs(mean - want), 4.5 * sd / std::sqrt(kRuns)) << group_name(g) << " mean " << mean << " want " << want;
+    checked += want < 0.5;  // groups where the floor, not the data, sets the normalizer
+  }
+  EXPECT_GE(checked, 3);  // the test-run r groups at least: the check is not the trivial E = e
+}
+
+TEST(GapMetric, IsTheRmsOfTheGroupsLogPowerRatiosAgainstTheCalibratedExpectation) {
   GroupSums s;
-  GroupValues ref;
-  ref.fill(std::nan(""));
-  for (int g = 0; g < 4; ++g) s.z2[g] = 10.0, s.count[g] = 10.0, ref[g] = 1.0;
-  EXPECT_DOUBLE_EQ(gap_value(s, ref), 0.0);
+  for (int g = 0; g < 4; ++g) s.z2[g] = 10.0, s.count[g] = 10.0, s.expected[g] = 10.0;
+  NullCalibration none;
+  EXPECT_DOUBLE_EQ(gap_value(s, none), 0.0);
   s.z2[0] = 10.0 * std::exp(2.0);  // one group of four off by e² in power
-  EXPECT_NEAR(gap_value(s, ref), std::sqrt(4.0 / 4.0), 1e-12);
+  EXPECT_NEAR(gap_value(s, none), std::sqrt(4.0 / 4.0), 1e-12);
   s.z2[1] = 10.0 * std::exp(-2.0);  // too little scatter counts as much as too much
-  EXPECT_NEAR(gap_value(s, ref), std::sqrt(8.0 / 4.0), 1e-12);
+  EXPECT_NEAR(gap_value(s, none), std::sqrt(8.0 / 4.0), 1e-12);
+  // The floor's share: a group whose actual expectation is 2 of 10 and
+  // whose floor adds 8 expects 2 + κ 8.
+  GroupSums f;
+  f.z2[0] = 6.0, f.count[0] = 10.0, f.expected[0] = 2.0, f.floor[0] = 8.0;
+  NullCalibration half;
+  half.floor_share[0] = 0.5;
+  EXPECT_NEAR(log_power_ratio(f, half)[0], 0.0, 1e-12);
+  // Calibrated on null sums that show half of the floor.
+  EXPECT_NEAR(NullCalibration::from_null(f).floor_share[0], 0.5, 1e-12);
+}
+
+TEST(GapPulseCounting, TheSawtoothIntegralIsExact) {
+  // ∫ e dt over a step on which V is linear, against a fine midpoint sum.
+  const double w = 0.3;
+  for (const auto& [v0, v1, phase] : {std::tuple{0.0, 0.05, 0.2}, std::tuple{-0.4, 2.7, -0.45},
+                                      std::tuple{5.0, 4.1, 0.0}, std::tuple{1.0, 1.0, 0.3}}) {
+    const double h = 5.0;
+    constexpr int kSteps = 200000;
+    double sum = 0.0;
+    for (int i = 0; i < kSteps; ++i) {
+      const double u = (i + 0.5) / kSteps;
+      sum += counting_velocity_error(v0 + u * (v1 - v0), phase, w) * h / kSteps;
+    }
+    // The midpoint sum errs by at most a pulse over one sub-step at each of
+    // the |Δv|/w + 1 jumps of the sawtooth.
+    const double jumps = std::abs(v1 - v0) / w + 1.0;
+    EXPECT_NEAR(counting_velocity_error_integral(v0, v1, h, phase, w), sum, jumps * w * h / kSteps) << v0 << " " << v1;
+  }
+  EXPECT_DOUBLE_EQ(counting_velocity_error(0.0, 0.37, w), 0.0);  // no pulse, no error
+}
+
+TEST(GapPulseCounting, PositionScatterMatchesTheTruthSimulatorsCounters) {
+  // Truth runs with pulses of w less the same runs with a continuous output
+  // isolate what the counters do to r: on x an offset that switches on
+  // minutes into the run, on y and z at once. Their variance per axis and
+  // window against the model's (columns² + rest), as a log ratio; bound 4.5
+  // standard errors of the log of two variance estimates from N truth runs
+  // and the model's 256 draws, sqrt(2/N + 2/256).
+  Layout l;
+  for (double t = 30.0; t <= 2700.0; t += 30.0)
+    for (int k = 0; k < 3; ++k) l.rows.push_back({t, Quantity::kR, k, group_of(Stage::kTest, Quantity::kR, k, 0)});
+  l.test_rows = static_cast<int>(l.rows.size());
+  RecordSite s = site();
+  const double w = 0.5;
+  s.dv_pulse_mps = w;
+  const UncertaintyModel prior;
+  const PulseCounting pc =
+      pulse_counting(l, s, w, prior.variance(), Eigen::VectorXd::Ones(static_cast<Eigen::Index>(l.rows.size())));
+  const Eigen::VectorXd model = pc.columns.rowwise().squaredNorm() + pc.noise_var;
+  TruthOptions o;
+  o.model = s.model;
+  o.system = s.system;
+  std::vector<double> times;
+  for (double t = 30.0; t <= 2700.0; t += 30.0) times.push_back(t);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  constexpr int kRuns = 300;
+  Eigen::VectorXd truth = Eigen::VectorXd::Zero(model.size());
+  for (int r = 0; r < kRuns; ++r) {
+    UncertaintyVector x;  // uniform with the priors' variance
+    for (int j = 0; j < ux::kDim; ++j) x[j] = std::sqrt(3.0 * prior.variance()[j]) * (2.0 * u01(rng) - 1.0);
+    TruthOptions pulsed = o, continuous = o;
+    pulsed.dv_pulse_mps = w;
+    for (int k = 0; k < 3; ++k) pulsed.pulse_phase[k] = u01(rng) - 0.5;
+    continuous.dv_pulse_mps = 0.0;
+    const TruthRun a = simulate_truth(pulsed, x, times), b = simulate_truth(continuous, x, times);
+    for (std::size_t i = 0; i < l.rows.size(); ++i) {
+      const auto k = static_cast<std::size_t>(i / 3);
+      const double d = a.position_error_ap_m[k][l.rows[i].axis] - b.position_error_ap_m[k][l.rows[i].axis];
+      truth[static_cast<Eigen::Index>(i)] += d * d / kRuns;
+    }
+  }
+  const double bound = 4.5 * std::sqrt(2.0 / kRuns + 2.0 / 256.0);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const auto& [from, to] : {std::pair{30.0, 600.0}, std::pair{600.0, 1200.0}, std::pair{1200.0, 2700.0}}) {
+      double m = 0, t = 0;
+      for (std::size_t i = 0; i < l.rows.size(); ++i)
+        if (l.rows[i].axis == axis && l.rows[i].t_s >= from && l.rows[i].t_s <= to)
+          m += model[static_cast<Eigen::Index>(i)], t += truth[static_cast<Eigen::Index>(i)];
+      std::printf("counting axis %d %4.0f-%4.0f s: model/truth %.3f\n", axis, from, to, m / t);
+      EXPECT_LT(std::abs(std::log(m / t)), bound) << "axis " << axis << " " << from << "-" << to << " s: model " << m
+                                                  << " truth " << t;
+    }
+  }
 }
 
 TEST(GapCandidates, EveryGridPointBuildsAConsistentExtension) {
