@@ -239,14 +239,15 @@ Candidate quantization() {
 
 Candidate sway() {
   return {"sway",
-          "vehicle sway of periods 2-20 s: residual acceleration in f after the τ box filter, and its "
-          "velocity at switch-over",
+          "vehicle sway of periods 2-20 s: residual acceleration in f after the τ box filter, its velocity and "
+          "displacement at switch-over, and the counters cycling from the start",
           {{"accel_rms", Dimension::kAcceleration, log_grid(0.2, 200, kMgToMps2)}},
           [](const LayoutContext& ctx, std::span<const double> p) {
             // Log-uniform periods in [2, 20] s: mean power gain of the box
-            // filter sinc²(π τ/P) and mean 1/ω² for the velocity.
+            // filter sinc²(π τ/P), mean 1/ω² for the velocity and 1/ω⁴ for
+            // the displacement.
             constexpr double p1 = 2.0, p2 = 20.0, vertical = 0.3;
-            const double tau = ctx.site->filter_interval_s;
+            const double tau = ctx.site->filter_interval_s, two_pi = 2.0 * std::numbers::pi;
             double gain = 0.0;
             constexpr int n = 200;
             for (int i = 0; i < n; ++i) {
@@ -254,11 +255,28 @@ Candidate sway() {
               const double x = std::numbers::pi * tau / period;
               gain += std::pow(std::sin(x) / x, 2) / n;
             }
-            const double inv_w2 = (p2 * p2 - p1 * p1) / (2 * std::log(p2 / p1)) / (4 * std::numbers::pi * std::numbers::pi);
+            const double inv_w2 = (p2 * p2 - p1 * p1) / (2 * std::log(p2 / p1)) / std::pow(two_pi, 2);
+            const double inv_w4 = (std::pow(p2, 4) - std::pow(p1, 4)) / (4 * std::log(p2 / p1)) / std::pow(two_pi, 4);
             const double a2 = p[0] * p[0];
+            const Eigen::Vector3d axes(1, 1, vertical * vertical);
             Extension e;
-            e.noise_var_add = f_noise(ctx, a2 * gain * Eigen::Vector3d(1, 1, vertical * vertical));
-            e.x_var_add.segment<3>(ux::kInitialVelocity) = a2 * inv_w2 * Eigen::Vector3d(1, 1, vertical * vertical);
+            e.noise_var_add = f_noise(ctx, a2 * gain * axes);
+            e.x_var_add.segment<3>(ux::kInitialVelocity) = a2 * inv_w2 * axes;
+            // The displacement at switch-over is an initial position error the
+            // computer does not know: r = r0 cos(ω_s t) (3.24). Table 3.1 has
+            // one north (δL0) and down (δh), none east.
+            e.columns = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()), 3);
+            const double ws = ctx.site->model.schuler_radps();
+            for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
+              const ObservationRow& row = ctx.layout->rows[i];
+              if (row.quantity == Quantity::kR) e.columns(static_cast<Eigen::Index>(i), row.axis) = std::cos(ws * row.t_s);
+            }
+            e.column_var = a2 * inv_w4 * axes;
+            // The counters count the sway too (pulse_counting.h).
+            CountedMotion motion;
+            motion.velocity_rms_mps = p[0] * std::sqrt(inv_w2) * axes.cwiseSqrt();
+            e.counting = pulse_counting(*ctx.layout, *ctx.site, ctx.site->dv_pulse_mps, ctx.base->x_var,
+                                        ctx.base->noise_var.cwiseSqrt(), motion);
             return e;
           }};
 }

@@ -59,7 +59,8 @@ double counting_velocity_error_integral(double v0, double v1, double h, double p
 }
 
 PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, double w,
-                             const UncertaintyVector& x_var, const Eigen::VectorXd& row_scale) {
+                             const UncertaintyVector& x_var, const Eigen::VectorXd& row_scale,
+                             const CountedMotion& motion) {
   const auto n = static_cast<Eigen::Index>(layout.rows.size());
   PulseCounting out;
   out.noise_var = Eigen::VectorXd::Zero(n);
@@ -127,7 +128,8 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
       const Vec3 v = nominal[g] + own[g] * x;
       const double h = grid[g] - grid[g - 1];
       for (int k = 0; k < 3; ++k) {
-        const double e = counting_velocity_error_integral(v_prev[k], v[k], h, phase[k], w);
+        const double e = motion.velocity_rms_mps[k] >= 0.5 * w ? w * phase[k] * h  // cycling from the start
+                                                                 : counting_velocity_error_integral(v_prev[k], v[k], h, phase[k], w);
         cos_sum[k] += cos_mid[g] * e;
         sin_sum[k] += sin_mid[g] * e;
       }

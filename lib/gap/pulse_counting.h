@@ -32,6 +32,16 @@
 
 namespace insmc::gap {
 
+/// Motion of the vehicle the counters count besides the specific force at
+/// rest (sway): its velocity RMS per axis. Where that is at least half a
+/// pulse, the counters move back and forth from the start, so the pulse
+/// phase is an offset w ρ0 from t = 0 and the sawtooth averages out of the
+/// position, instead of switching on when the nominal increment reaches a
+/// pulse.
+struct CountedMotion {
+  Eigen::Vector3d velocity_rms_mps = Eigen::Vector3d::Zero();
+};
+
 struct PulseCounting {
   Eigen::MatrixXd columns;    ///< rows × k, each coefficient of unit variance
   Eigen::VectorXd noise_var;  ///< rows: f counting noise, r rest
@@ -42,7 +52,8 @@ struct PulseCounting {
 /// the r-row covariance are kept as columns: those worth at least half a
 /// row's scale² in total. Deterministic (a fixed internal stream).
 PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, double pulse_mps,
-                             const UncertaintyVector& x_var, const Eigen::VectorXd& row_scale);
+                             const UncertaintyVector& x_var, const Eigen::VectorXd& row_scale,
+                             const CountedMotion& motion = {});
 
 /// Velocity error of the counters [m/s]: w round(ρ0 + V/w) − V.
 double counting_velocity_error(double velocity_mps, double phase, double pulse_mps);
