@@ -1,53 +1,75 @@
 #pragma once
-/// The gap metric (issue 7): scale-free, per report group g the log ratio of
-/// the observed Σ z² (run_analysis.h) to what the model predicts for it,
+/// The gap metric (issue 7): scale-free, one log ratio per group of what
+/// the data show to what the model predicts for them, and their RMS.
+///
+/// Scatter groups g (layout.h: axis × stage × window), over the runs' terms i:
 ///   ℓ_g = ln( Σ z²  /  (Σ E_i/e_i + κ_g Σ (1 − E_i/e_i)) ),
-///   G   = sqrt(mean over groups ℓ_g²),
 /// E_i the expected square of a term under the actual noise, e_i its
-/// normalizer (with the model-error floor), and κ_g the share of the floor's
+/// normalizer (with the model-error floor), κ_g the share of the floor's
 /// contribution that the model's own null really shows (the truth level's
-/// second-order terms and g_s, which the floor stands for): measured once on
-/// null truth runs (diagnosis.h) and kept when a candidate changes the model.
-/// A candidate's own variance is then compared as itself, not as a multiple
-/// of a floor ten times looser than the null (κ ≈ 0.01 in the test-run r
-/// groups).
-/// G = 0: the data scatter exactly as the model predicts in every group;
-/// G = 1: by a factor e^{±1} ≈ 2.7 in power on average. Too much scatter
-/// (an unmodelled effect) and too little (a model wider than the data) both
-/// count, so a candidate cannot remove the gap by widening everything.
+/// second-order terms and g_s, which the floor stands for).
+///
+/// Coherent groups c (what every run shares): with m runs,
+///   C_c = (1/m) Σ_keys (Σ_runs z)²  =  m |mean z|²,
+///   E[C_c] = (1/m) Σ_runs |z_run|²  (the runs' own scatter, as observed)
+///            + (m − 1)/m λ_c Σ_runs Σ (1 − E_i/e_i),
+///   ℓ_c = ln( max(C_c, E[C_c]) / E[C_c] ),
+/// λ_c the systematic share of the floor the null shows in common (the
+/// second-order terms have a sign). Independent runs share nothing beyond
+/// that whatever their scatter, so a random effect leaves these groups
+/// alone; a design or site effect (the same signature μ in every run)
+/// raises C_c by (m − 1)|μ|², where it adds |μ|² once to the scatter
+/// groups. One-sided: runs that share less than independent runs carry no
+/// signature, only sampling scatter.
+///
+/// G = sqrt(mean over the groups present of ℓ²). G = 0: the data scatter
+/// and share exactly what the model predicts; G = 1: off by a factor e^{±1}
+/// ≈ 2.7 in power on average. Too much scatter (an unmodelled effect) and
+/// too little (a model wider than the data) both count, so a candidate
+/// cannot remove a gap by widening everything. κ and λ are measured once on
+/// null truth runs (diagnosis.h) and kept when a candidate changes the
+/// model: a candidate's own variance is compared as itself, not as a
+/// multiple of a floor ten times looser than the null (κ ≈ 0.01 in the
+/// test-run r groups).
 #include <array>
 #include <span>
 
-#include "lib/gap/run_analysis.h"
+#include "lib/gap/run_set.h"
 
 namespace insmc::gap {
 
 using GroupValues = std::array<double, kGroupCount>;
 
-/// κ_g per group: the share of the floor's contribution to Σ z² that the
-/// null runs show beyond the actual noise (≥ 0; 1 where the floor adds nothing).
 struct NullCalibration {
-  GroupValues floor_share{};
-  /// From the pooled sums of the null runs under the base model.
-  static NullCalibration from_null(const GroupSums& null_sums);
+  GroupValues floor_share{};    ///< κ_g ≥ 0 (1 where the floor adds nothing)
+  CoherentValues systematic{};  ///< λ_c ≥ 0
+  /// From the null runs under the base model.
+  static NullCalibration from_null(const RunSet& null);
 };
 
-/// Mean z² per group (NaN where a group has no terms).
+/// ℓ of the scatter groups and of the coherent groups (NaN where no terms).
+struct LogRatios {
+  GroupValues scatter{};
+  CoherentValues coherent{};
+};
+
+/// Mean z² per scatter group (NaN where a group has no terms).
 GroupValues group_power(const GroupSums& sums);
-
-/// The calibrated expected mean z² per group (NaN where no terms).
+/// The calibrated expected mean z² per scatter group.
 GroupValues expected_power(const GroupSums& sums, const NullCalibration& calibration);
+/// C_c / m and its calibrated expectation / m per coherent group.
+CoherentValues coherent_power(const Pooled& pooled);
+CoherentValues expected_coherent_power(const Pooled& pooled, const NullCalibration& calibration);
 
-/// ℓ_g (NaN where a group has no terms).
-GroupValues log_power_ratio(const GroupSums& sums, const NullCalibration& calibration);
+LogRatios log_ratios(const Pooled& pooled, const NullCalibration& calibration);
 
-/// G from the ℓ_g present.
-double gap_value(const GroupValues& log_ratio);
-inline double gap_value(const GroupSums& sums, const NullCalibration& calibration) {
-  return gap_value(log_power_ratio(sums, calibration));
+/// G from the ℓ present.
+double gap_value(const LogRatios& l);
+inline double gap_value(const Pooled& pooled, const NullCalibration& calibration) {
+  return gap_value(log_ratios(pooled, calibration));
 }
-
-/// Σ of the runs' sums picked by `runs` (indices into `per_run`).
-GroupSums pooled(std::span<const GroupSums> per_run, std::span<const int> runs);
+inline double gap_value(const RunSet& set, std::span<const int> runs, const NullCalibration& calibration) {
+  return gap_value(pool(set, runs), calibration);
+}
 
 }  // namespace insmc::gap

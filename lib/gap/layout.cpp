@@ -55,6 +55,20 @@ int nav_window(double t_s, double test_duration_s) {
   return 3;
 }
 
+int coherent_group_of(int g) {
+  if (g == kEstimatesGroup) return kCoherentCount - 1;
+  return g < 9 ? g : 9 + g % 3;
+}
+
+std::string coherent_group_name(int c) {
+  if (c == kCoherentCount - 1) return "common estimates";
+  const std::string axis = kAxis[static_cast<std::size_t>(c % 3)];
+  const char* what[] = {"test f_", "test r_", "nav f_", "nav r_"};
+  return std::string("common ") + what[c / 3] + axis;
+}
+
+int coherent_representative(int c) { return c == kCoherentCount - 1 ? kEstimatesGroup : c; }
+
 double median_f_spacing(const RecordFile& file) {
   std::vector<double> spacings;
   for (const RecordRun& run : file.runs) {

@@ -31,6 +31,15 @@ std::string group_window(int group);    ///< "test", "0-42 min", ..., "" for the
 /// Window of a navigation time: minutes after the end of the test run T.
 int nav_window(double t_s, double test_duration_s);
 
+/// Coherent groups: what every run shares (a design or site effect, the same
+/// signature in each run), per axis for the test-run f and r, the
+/// post-test f and r (all windows), and the estimates.
+inline constexpr int kCoherentCount = 13;
+int coherent_group_of(int group);
+std::string coherent_group_name(int coherent);  ///< e.g. "common nav r_y"
+/// A report group inside a coherent group (for its stage and axis).
+int coherent_representative(int coherent);
+
 /// One observed value: a component of f or r at a time.
 struct ObservationRow {
   double t_s = 0.0;

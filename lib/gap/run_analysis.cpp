@@ -59,7 +59,10 @@ RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model)
   const Eigen::VectorXd ab = ((HS * around).array() * HS.array()).rowwise().sum();
   for (Eigen::Index a = 0; a < d; ++a) {
     const Eigen::Index j = active[static_cast<std::size_t>(a)];
-    if (j < ux::kDim && 1.0 - pi(a, a) > kResolvedShare) estimate_columns_.push_back(static_cast<int>(a));
+    if (j < ux::kDim && 1.0 - pi(a, a) > kResolvedShare) {
+      estimate_columns_.push_back(static_cast<int>(a));
+      estimate_x_.push_back(static_cast<int>(j));
+    }
   }
   const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
   expected_.resize(n);

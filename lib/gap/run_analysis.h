@@ -75,6 +75,9 @@ class RunAnalyser {
   /// The same under the actual noise, E_i (rows, then resolved estimates
   /// over their normalizers).
   const Eigen::VectorXd& actual_square() const { return actual_; }
+  /// The x column (catalogue index) of each resolved estimate, in the order
+  /// the normalized values list them after the rows.
+  const std::vector<int>& estimate_x_columns() const { return estimate_x_; }
 
  private:
   const Layout* layout_;
@@ -85,6 +88,7 @@ class RunAnalyser {
   Eigen::VectorXd expected_;      // rows
   Eigen::VectorXd actual_;        // rows + estimates
   std::vector<int> estimate_columns_;  // active indices of resolved x
+  std::vector<int> estimate_x_;        // their catalogue indices
   Eigen::VectorXd estimate_var_;
   GroupSums constant_;            // the data-independent parts of the sums
   int test_rows_ = 0;

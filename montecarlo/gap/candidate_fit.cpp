@@ -1,6 +1,8 @@
 #include "montecarlo/gap/candidate_fit.h"
 
+#include <algorithm>
 #include <limits>
+#include <map>
 
 namespace insmc::mc {
 
@@ -9,11 +11,27 @@ int PreparedRuns::layout_index(const gap::Layout& layout) {
     if (layouts[i] == layout) return static_cast<int>(i);
   layouts.push_back(layout);
   bases.push_back(gap::make_base_model(layout, site, x_var));
+  keys.add_layout(layout);
   return static_cast<int>(layouts.size() - 1);
 }
 
 Eigen::VectorXd run_values(const gap::RunData& run) {
   return Eigen::Map<const Eigen::VectorXd>(run.values.data(), static_cast<Eigen::Index>(run.values.size()));
+}
+
+Evaluated evaluate_runs(const std::vector<gap::RunData>& runs, const std::vector<int>& layout_of,
+                        const std::vector<const gap::RunAnalyser*>& analysers, const gap::KeySpace& keys) {
+  Evaluated e;
+  e.sums.resize(runs.size());
+  e.keyed.resize(keys.size(), static_cast<Eigen::Index>(runs.size()));
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const int L = layout_of[r];
+    const gap::RunAnalyser& a = *analysers[static_cast<std::size_t>(L)];
+    const Eigen::VectorXd v = a.normalized(run_values(runs[r]));
+    e.sums[r] = a.sums_of(v);
+    e.keyed.col(static_cast<Eigen::Index>(r)) = gap::keyed_values(v, a, L, keys);
+  }
+  return e;
 }
 
 namespace {
@@ -33,18 +51,19 @@ CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
                                const std::vector<std::vector<gap::Extension>>& selected,
                                std::vector<gap::LayoutContext>& ctx) {
   CandidateSums out;
-  out.at.resize(static_cast<std::size_t>(c.grid_size()));
+  out.keys = &p.keys;
   for (int k = 0; k < c.grid_size(); ++k) {
     const std::vector<double> theta = c.grid_point(k);
-    std::vector<gap::GroupSums>& sums = out.at[static_cast<std::size_t>(k)];
-    sums.resize(p.runs.size());
+    std::vector<std::optional<gap::RunAnalyser>> analysers(p.layouts.size());
+    std::vector<const gap::RunAnalyser*> pointers_to(p.layouts.size(), nullptr);
     for (std::size_t L = 0; L < p.layouts.size(); ++L) {
       if (!used(p, L)) continue;
       const gap::Extension e = c.build(ctx[L], theta);
-      const gap::RunAnalyser analyser(p.layouts[L], gap::combine(p.bases[L], pointers(selected[L], &e)));
-      for (std::size_t r = 0; r < p.runs.size(); ++r)
-        if (p.layout_of[r] == static_cast<int>(L)) sums[r] = analyser.analyse(run_values(p.runs[r]));
+      analysers[L].emplace(p.layouts[L], gap::combine(p.bases[L], pointers(selected[L], &e)));
+      pointers_to[L] = &*analysers[L];
     }
+    out.at.push_back(evaluate_runs(p.runs, p.layout_of, pointers_to, p.keys));
+    out.sets.push_back(out.at.back().set(p.keys));
   }
   return out;
 }
@@ -54,6 +73,7 @@ CandidateSums evaluate_amplitudes(const PreparedRuns& p, const gap::Candidate& c
                                   std::vector<gap::LayoutContext>& ctx) {
   CandidateSums out;
   out.amplitudes = true;
+  out.keys = &p.keys;
   out.layout_of = p.layout_of;
   out.fit.resize(p.layouts.size());
   for (std::size_t L = 0; L < p.layouts.size(); ++L)
@@ -73,7 +93,7 @@ CandidateSums evaluate_amplitudes(const PreparedRuns& p, const gap::Candidate& c
       for (std::size_t j = 0; j < amp.size(); ++j) {
         // The signature of amplitude j alone, at unit size (SI).
         std::vector<double> theta = c.grid_point(k);
-        theta[static_cast<std::size_t>(amp[j])] = 1.0;  // unit size (SI)
+        theta[static_cast<std::size_t>(amp[j])] = 1.0;
         const gap::Extension e = c.build(ctx[L], theta);
         const Eigen::VectorXd z = out.fit[L]->normalized_linear(e.mean);
         if (Z.size() == 0) Z.resize(z.size(), static_cast<Eigen::Index>(amp.size()));
@@ -84,17 +104,23 @@ CandidateSums evaluate_amplitudes(const PreparedRuns& p, const gap::Candidate& c
   return out;
 }
 
+const Eigen::MatrixXd& signature_of(const CandidateSums& s, int k, int r) {
+  return s.signature[static_cast<std::size_t>(k)][static_cast<std::size_t>(s.layout_of[static_cast<std::size_t>(r)])];
+}
+
+/// Least squares over the multiset `runs` of the normalized values on the
+/// signature columns; beyond its limit a signature is held at the limit (and flagged).
 Eigen::VectorXd least_squares_amplitudes(const CandidateSums& s, int k, const std::vector<int>& runs) {
-  const Eigen::Index m = s.signature[static_cast<std::size_t>(k)][static_cast<std::size_t>(s.layout_of[static_cast<std::size_t>(runs.front())])].cols();
+  const Eigen::Index m = signature_of(s, k, runs.front()).cols();
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(m, m);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(m);
   for (int r : runs) {
-    const Eigen::MatrixXd& Z = s.signature[static_cast<std::size_t>(k)][static_cast<std::size_t>(s.layout_of[static_cast<std::size_t>(r)])];
+    const Eigen::MatrixXd& Z = signature_of(s, k, r);
     A += Z.transpose() * Z;
     b += Z.transpose() * s.normalized[static_cast<std::size_t>(r)];
   }
   // A signature the layout cannot see (a zero column) gets amplitude 0.
-  return A.completeOrthogonalDecomposition().solve(b);
+  return A.completeOrthogonalDecomposition().solve(b).cwiseMax(-s.amplitude_limit).cwiseMin(s.amplitude_limit);
 }
 
 }  // namespace
@@ -107,28 +133,49 @@ CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
                                        : evaluate_amplitudes(p, c, selected, ctx);
 }
 
-gap::GroupSums run_sums(const CandidateSums& s, const Choice& choice, int r) {
-  const auto ri = static_cast<std::size_t>(r);
-  if (!s.amplitudes) return s.at[static_cast<std::size_t>(choice.grid)][ri];
-  const auto L = static_cast<std::size_t>(s.layout_of[ri]);
-  const Eigen::MatrixXd& Z = s.signature[static_cast<std::size_t>(choice.grid)][L];
-  return s.fit[L]->sums_of(s.normalized[ri] - Z * choice.amplitude);
+gap::RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices) {
+  std::vector<gap::GroupSums> sums(runs.size());
+  Eigen::MatrixXd keyed(s.keys->size(), static_cast<Eigen::Index>(runs.size()));
+  for (std::size_t j = 0; j < runs.size(); ++j) {
+    const auto r = static_cast<std::size_t>(runs[j]);
+    const Choice& choice = choices[j];
+    if (!s.amplitudes) {
+      const Evaluated& e = s.at[static_cast<std::size_t>(choice.grid)];
+      sums[j] = e.sums[r];
+      keyed.col(static_cast<Eigen::Index>(j)) = e.keyed.col(static_cast<Eigen::Index>(r));
+      continue;
+    }
+    const int L = s.layout_of[r];
+    const gap::RunAnalyser& a = *s.fit[static_cast<std::size_t>(L)];
+    const Eigen::VectorXd v = s.normalized[r] - signature_of(s, choice.grid, runs[j]) * choice.amplitude;
+    sums[j] = a.sums_of(v);
+    keyed.col(static_cast<Eigen::Index>(j)) = gap::keyed_values(v, a, L, *s.keys);
+  }
+  return gap::make_run_set(std::move(sums), keyed, *s.keys);
 }
 
 Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0) {
   Choice best;
   double best_gap = std::numeric_limits<double>::infinity();
-  std::vector<gap::GroupSums> sums(s.amplitudes ? s.normalized.size() : 0);
+  // Amplitude candidates: the distinct runs of the multiset and where each
+  // entry of the multiset sits among them.
+  std::vector<int> distinct, at;
+  if (s.amplitudes) {
+    std::map<int, int> index;
+    for (int r : runs) {
+      auto [it, added] = index.emplace(r, static_cast<int>(distinct.size()));
+      if (added) distinct.push_back(r);
+      at.push_back(it->second);
+    }
+  }
   for (int k = 0; k < s.grid_size(); ++k) {
-    double g = 0;
     Choice here{k, {}};
+    double g = 0;
     if (s.amplitudes) {
-      // Beyond its limit a signature is held at the limit (and flagged).
-      here.amplitude = least_squares_amplitudes(s, k, runs).cwiseMax(-s.amplitude_limit).cwiseMin(s.amplitude_limit);
-      for (int r : runs) sums[static_cast<std::size_t>(r)] = run_sums(s, here, r);
-      g = gap::gap_value(gap::pooled(sums, runs), m0);
+      here.amplitude = least_squares_amplitudes(s, k, runs);
+      g = gap::gap_value(run_set_under(s, distinct, std::vector<Choice>(distinct.size(), here)), at, m0);
     } else {
-      g = gap::gap_value(gap::pooled(s.at[static_cast<std::size_t>(k)], runs), m0);
+      g = gap::gap_value(s.sets[static_cast<std::size_t>(k)], runs, m0);
     }
     if (g < best_gap) best_gap = g, best = here;
   }

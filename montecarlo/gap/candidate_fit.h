@@ -16,6 +16,7 @@
 #include "lib/gap/gaussian_model.h"
 #include "lib/gap/layout.h"
 #include "lib/gap/run_analysis.h"
+#include "lib/gap/run_set.h"
 
 namespace insmc::mc {
 
@@ -27,18 +28,32 @@ struct PreparedRuns {
   std::vector<int> layout_of;  // per run
   std::vector<gap::BaseModel> bases;
   UncertaintyVector x_var;
+  gap::KeySpace keys;          // over every layout
 
-  /// Index of `layout`, added (with its base model) when new.
+  /// Index of `layout`, added (with its base model and keys) when new.
   int layout_index(const gap::Layout& layout);
 };
 
 Eigen::VectorXd run_values(const gap::RunData& run);
 
+/// Runs under one model: each run's group sums and its normalized values in
+/// the key space (columns).
+struct Evaluated {
+  std::vector<gap::GroupSums> sums;
+  Eigen::MatrixXd keyed;  ///< keys × runs
+  gap::RunSet set(const gap::KeySpace& keys) const { return gap::make_run_set(sums, keyed, keys); }
+};
+
+/// `runs` (with their layouts) under the analysers of each layout.
+Evaluated evaluate_runs(const std::vector<gap::RunData>& runs, const std::vector<int>& layout_of,
+                        const std::vector<const gap::RunAnalyser*>& analysers, const gap::KeySpace& keys);
+
 /// One candidate evaluated on every run, before any choice of parameters.
 struct CandidateSums {
   bool amplitudes = false;
-  /// Without amplitudes: the runs' group sums at every grid point [grid][run].
-  std::vector<std::vector<gap::GroupSums>> at;
+  /// Without amplitudes: every run at every grid point, and its run set.
+  std::vector<Evaluated> at;
+  std::vector<gap::RunSet> sets;
   /// With amplitudes: the fit without the candidate per layout, the runs'
   /// normalized values under it, and the normalized signature columns
   /// [grid][layout] (rows × amplitudes).
@@ -47,6 +62,7 @@ struct CandidateSums {
   std::vector<std::vector<Eigen::MatrixXd>> signature;
   std::vector<int> layout_of;
   Eigen::VectorXd amplitude_limit;  ///< the largest magnitude covered, per amplitude
+  const gap::KeySpace* keys = nullptr;
   int grid_size() const { return amplitudes ? static_cast<int>(signature.size()) : static_cast<int>(at.size()); }
 };
 
@@ -60,10 +76,11 @@ struct Choice {
 CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
                                  const std::vector<std::vector<gap::Extension>>& selected);
 
-/// Run r's group sums under a choice.
-gap::GroupSums run_sums(const CandidateSums& s, const Choice& choice, int r);
+/// Each run of `runs` under its own choice (e.g. the held-out runs of two
+/// folds, each under the other fold's fit), as a run set in that order.
+gap::RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices);
 
-/// The choice of least G on `runs` (m0: the null's calibration).
+/// The choice of least G on the multiset `runs` (m0: the null's calibration).
 Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0);
 
 /// The candidate's parameter values of a choice (grid values and amplitudes).

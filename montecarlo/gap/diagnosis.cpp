@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <map>
 #include <numeric>
+#include <optional>
 
 #include "lib/common/input_error.h"
 #include "lib/gap/response.h"
@@ -23,18 +24,16 @@ using gap::GroupValues;
 
 using Prepared = PreparedRuns;
 
-/// Per-run sums of every run under base + extensions (built per layout by `build`).
+/// Every run under base + extensions (built per layout by `build`).
 template <class Build>
-std::vector<GroupSums> sums_under(const Prepared& p, const Build& build) {
-  std::vector<GroupSums> out(p.runs.size());
+Evaluated evaluate_under(const Prepared& p, const Build& build, std::vector<std::optional<gap::RunAnalyser>>& analysers) {
+  analysers.assign(p.layouts.size(), std::nullopt);
+  std::vector<const gap::RunAnalyser*> pointers(p.layouts.size(), nullptr);
   for (std::size_t L = 0; L < p.layouts.size(); ++L) {
-    if (std::find(p.layout_of.begin(), p.layout_of.end(), static_cast<int>(L)) == p.layout_of.end()) continue;
-    const std::vector<const gap::Extension*> ext = build(static_cast<int>(L));
-    const gap::RunAnalyser analyser(p.layouts[L], gap::combine(p.bases[L], ext));
-    for (std::size_t r = 0; r < p.runs.size(); ++r)
-      if (p.layout_of[r] == static_cast<int>(L)) out[r] = analyser.analyse(run_values(p.runs[r]));
+    analysers[L].emplace(p.layouts[L], gap::combine(p.bases[L], build(static_cast<int>(L))));
+    pointers[L] = &*analysers[L];
   }
-  return out;
+  return evaluate_runs(p.runs, p.layout_of, pointers, p.keys);
 }
 
 std::vector<int> all_runs(std::size_t n) {
@@ -62,9 +61,9 @@ double quantile(std::vector<double> v, double q) {
 
 /// Everything the candidate search needs from the null calibration.
 struct Null {
-  gap::NullCalibration calibration;  // δ_g
-  std::vector<double> gaps;          // G of the null files
-  std::vector<GroupValues> log_ratios;  // ℓ of the null files
+  gap::NullCalibration calibration;        // κ_g, λ_c
+  std::vector<double> gaps;                // G of the null files
+  std::vector<gap::LogRatios> log_ratios;  // ℓ of the null files
 };
 
 double p_value_of(double observed, const std::vector<double>& null) {
@@ -75,7 +74,7 @@ double p_value_of(double observed, const std::vector<double>& null) {
 struct Scored {
   int candidate = 0;
   double heldout_gap = 0;
-  std::vector<GroupSums> heldout;  // per run, at the other half's fit
+  gap::RunSet heldout;  // every run at the other half's fit
   Choice full_fit;
   std::vector<ParameterEstimate> parameters;
 };
@@ -85,14 +84,15 @@ struct Scored {
 Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0,
              std::uint64_t seed) {
   Scored out;
-  out.heldout.resize(n);
+  std::vector<Choice> heldout_choice(n);
   for (int fold = 0; fold < 2; ++fold) {
     std::vector<int> train, test;
     for (std::size_t r = 0; r < n; ++r) (static_cast<int>(r % 2) == fold ? test : train).push_back(static_cast<int>(r));
     const Choice k = choose(s, train, m0);
-    for (int r : test) out.heldout[static_cast<std::size_t>(r)] = run_sums(s, k, r);
+    for (int r : test) heldout_choice[static_cast<std::size_t>(r)] = k;
   }
-  out.heldout_gap = gap::gap_value(gap::pooled(out.heldout, all_runs(n)), m0);
+  out.heldout = run_set_under(s, all_runs(n), heldout_choice);
+  out.heldout_gap = gap::gap_value(out.heldout, all_runs(n), m0);
   out.full_fit = choose(s, all_runs(n), m0);
   const std::vector<double> best = parameter_values(c, out.full_fit);
   constexpr int kResamples = 200;
@@ -148,9 +148,12 @@ Prepared prepare(const RecordFile& file, const DiagnosisOptions& options) {
   return p;
 }
 
+/// The model's own null: truth runs like the records' (their times, f rows,
+/// site, pulses), their run set under the base model, the calibration, and
+/// the G of 2000 bootstrap files of the records' size. `z` and `layout_of`
+/// keep each null run's row values and layout (for the Allan curves).
 Null calibrate(Prepared& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
-               std::vector<gap::GroupSums>& sums, std::vector<Eigen::VectorXd>& z,
-               std::vector<int>& layout_of) {
+               std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of) {
   TruthOptions truth;
   truth.model = p.site.model;
   truth.system = p.site.system;
@@ -169,20 +172,25 @@ Null calibrate(Prepared& p, const RecordFile& file, const DiagnosisOptions& opti
   layout_of.resize(sim.size());
   for (std::size_t j = 0; j < sim.size(); ++j) layout_of[j] = p.layout_index(sim[j].layout);
   std::vector<gap::RunAnalyser> analysers;
-  for (std::size_t L = 0; L < p.layouts.size(); ++L) analysers.emplace_back(p.layouts[L], gap::combine(p.bases[L], {}));
-  sums.resize(sim.size());
+  std::vector<const gap::RunAnalyser*> pointers;
+  analysers.reserve(p.layouts.size());
+  for (std::size_t L = 0; L < p.layouts.size(); ++L) {
+    analysers.emplace_back(p.layouts[L], gap::combine(p.bases[L], {}));
+    pointers.push_back(&analysers.back());
+  }
+  const gap::RunSet set = evaluate_runs(sim, layout_of, pointers, p.keys).set(p.keys);
   z.resize(sim.size());
   tbb::parallel_for(std::size_t{0}, sim.size(), [&](std::size_t j) {
-    sums[j] = analysers[static_cast<std::size_t>(layout_of[j])].analyse(run_values(sim[j]), z[j]);
+    analysers[static_cast<std::size_t>(layout_of[j])].analyse(run_values(sim[j]), z[j]);
   });
   Null null;
-  null.calibration = gap::NullCalibration::from_null(gap::pooled(sums, all_runs(sums.size())));
+  null.calibration = gap::NullCalibration::from_null(set);
   const int n = static_cast<int>(p.runs.size());
   null.gaps.resize(static_cast<std::size_t>(options.bootstrap));
   null.log_ratios.resize(static_cast<std::size_t>(options.bootstrap));
   tbb::parallel_for(0, options.bootstrap, [&](int b) {
-    const GroupSums s = gap::pooled(sums, resample(options.seed, static_cast<std::uint64_t>(b), n, runs));
-    null.log_ratios[static_cast<std::size_t>(b)] = gap::log_power_ratio(s, null.calibration);
+    const gap::Pooled s = gap::pool(set, resample(options.seed, static_cast<std::uint64_t>(b), n, runs));
+    null.log_ratios[static_cast<std::size_t>(b)] = gap::log_ratios(s, null.calibration);
     null.gaps[static_cast<std::size_t>(b)] = gap::gap_value(null.log_ratios[static_cast<std::size_t>(b)]);
   });
   return null;
@@ -251,17 +259,17 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
     d.statements.push_back(fmt::format("{} of {} runs stop at or before the end of the test: they count only in "
                                        "the test-run groups", n - with_nav, n));
 
-  // Gap against the null of the model itself.
-  std::vector<GroupSums> null_sums;
+  // Gap against the null of the model itself (its layouts join the key
+  // space before any run is placed in it).
   std::vector<Eigen::VectorXd> null_z;
   std::vector<int> null_layout;
   const int ncal = options.calibration_runs > 0 ? options.calibration_runs : std::max(200, 10 * n);
   d.calibration_runs = ncal;
-  const std::vector<GroupSums> base = sums_under(p, [](int) { return std::vector<const gap::Extension*>{}; });
-  const Null null = calibrate(p, file, options, ncal, null_sums, null_z, null_layout);
-  const GroupSums observed = gap::pooled(base, all_runs(p.runs.size()));
-  const GroupValues l = gap::log_power_ratio(observed, null.calibration);
-  d.gap = gap::gap_value(l);
+  const Null null = calibrate(p, file, options, ncal, null_z, null_layout);
+  std::vector<std::optional<gap::RunAnalyser>> analysers;
+  const Evaluated base = evaluate_under(p, [](int) { return std::vector<const gap::Extension*>{}; }, analysers);
+  const gap::Pooled observed = gap::pool(base.set(p.keys), all_runs(p.runs.size()));
+  d.gap = gap::gap_value(observed, null.calibration);
   d.p_value = p_value_of(d.gap, null.gaps);
   d.significant = d.p_value < options.alpha;
   d.null_gap_median = quantile(null.gaps, 0.5);
@@ -272,24 +280,32 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
 
   // Where it lies.
   d.groups = group_results(observed, null.calibration, null.log_ratios);
-  d.by_axis = shares_by(d.groups, [](int g) { return g == gap::kEstimatesGroup ? std::string("estimates")
-                                                                             : std::string(1, "xyz"[gap::group_axis(g)]); });
-  d.by_stage = shares_by(d.groups, [](int g) { return gap::group_stage(g); });
-  d.by_window = shares_by(d.groups, [](int g) { return g == gap::kEstimatesGroup ? std::string("estimates") : gap::group_window(g); });
+  d.by_kind = shares_by(d.groups, [](const GroupResult& g) {
+    return std::string(g.coherent ? "common to all runs" : "run-to-run scatter");
+  });
+  d.by_axis = shares_by(d.groups, [](const GroupResult& g) {
+    const int axis = gap::group_axis(g.representative());
+    return axis < 0 ? std::string("estimates") : std::string(1, "xyz"[axis]);
+  });
+  d.by_stage = shares_by(d.groups, [](const GroupResult& g) { return gap::group_stage(g.representative()); });
+  d.by_window = shares_by(d.groups, [](const GroupResult& g) {
+    if (g.representative() == gap::kEstimatesGroup) return std::string("estimates");
+    return g.coherent && gap::group_stage(g.representative()) != "test-run fit" ? std::string("after test (all windows)")
+                                                                               : gap::group_window(g.group);
+  });
   {
-    std::vector<gap::RunAnalyser> analysers;
-    for (std::size_t L = 0; L < p.layouts.size(); ++L) analysers.emplace_back(p.layouts[L], gap::combine(p.bases[L], {}));
     std::vector<Eigen::VectorXd> z(p.runs.size());
     std::vector<const gap::Layout*> layouts, null_layouts;
     std::vector<const Eigen::VectorXd*> expected, null_expected;
     for (std::size_t r = 0; r < p.runs.size(); ++r) {
-      analysers[static_cast<std::size_t>(p.layout_of[r])].analyse(run_values(p.runs[r]), z[r]);
+      const gap::RunAnalyser& a = *analysers[static_cast<std::size_t>(p.layout_of[r])];
+      a.analyse(run_values(p.runs[r]), z[r]);
       layouts.push_back(&p.layouts[static_cast<std::size_t>(p.layout_of[r])]);
-      expected.push_back(&analysers[static_cast<std::size_t>(p.layout_of[r])].expected_square());
+      expected.push_back(&a.expected_square());
     }
     for (std::size_t j = 0; j < null_z.size(); ++j) {
       null_layouts.push_back(&p.layouts[static_cast<std::size_t>(null_layout[j])]);
-      null_expected.push_back(&analysers[static_cast<std::size_t>(null_layout[j])].expected_square());
+      null_expected.push_back(&analysers[static_cast<std::size_t>(null_layout[j])]->expected_square());
     }
     d.time_functions = time_function_shares(layouts, z, p.site);
     d.allan = allan_curves(layouts, z, expected, null_layouts, null_z, null_expected, p.site.filter_interval_s);
@@ -318,7 +334,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
       for (const Scored& s : ranked) {
         const gap::Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
         d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before,
-                             gap::log_power_ratio(gap::pooled(s.heldout, all_runs(s.heldout.size())), null.calibration)});
+                             gap::log_ratios(gap::pool(s.heldout, all_runs(p.runs.size())), null.calibration)});
       }
       d.top = d.ranking.front().effect;
       if (ranked.size() > 1) {
@@ -327,8 +343,8 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
         std::vector<double> margins;
         for (int b = 0; b < kResamples; ++b) {
           const std::vector<int> idx = resample(options.seed, 2'000'000 + static_cast<std::uint64_t>(b), n, n);
-          margins.push_back(gap::gap_value(gap::pooled(ranked[1].heldout, idx), null.calibration) -
-                            gap::gap_value(gap::pooled(ranked[0].heldout, idx), null.calibration));
+          margins.push_back(gap::gap_value(ranked[1].heldout, idx, null.calibration) -
+                            gap::gap_value(ranked[0].heldout, idx, null.calibration));
         }
         d.runner_up_margin = ranked[1].heldout_gap - ranked[0].heldout_gap;
         const double mean = std::accumulate(margins.begin(), margins.end(), 0.0) / kResamples;

@@ -44,13 +44,17 @@ struct DiagnosisOptions {
 };
 
 struct GroupResult {
-  int group = 0;
+  bool coherent = false;   ///< a coherent group (what all runs share), else a scatter group
+  int group = 0;           ///< index among its kind (layout.h)
   double count = 0;        ///< terms over all runs
-  double power = 0;        ///< observed mean z²
-  double null_power = 0;   ///< the model's expected mean z², calibrated on the null
-  double log_ratio = 0;    ///< ℓ_g
-  double p_value = 1;      ///< of |ℓ_g| against the null files
-  double share = 0;        ///< ℓ_g² / Σ ℓ²
+  double power = 0;        ///< observed mean z² (coherent: m |mean z|² per term)
+  double null_power = 0;   ///< the model's expectation of it, calibrated on the null
+  double log_ratio = 0;    ///< ℓ
+  double p_value = 1;      ///< of |ℓ| against the null files
+  double share = 0;        ///< ℓ² / Σ ℓ²
+  /// The scatter group whose stage, axis and window this group reports.
+  int representative() const { return coherent ? gap::coherent_representative(group) : group; }
+  std::string name() const { return coherent ? gap::coherent_group_name(group) : gap::group_name(group); }
 };
 
 struct Share {
@@ -87,7 +91,7 @@ struct CandidateResult {
   std::vector<ParameterEstimate> parameters;
   double heldout_gap_after = 0;
   double shrink = 0;
-  gap::GroupValues heldout_log_ratios{};  ///< ℓ_g on held-out runs with the effect added
+  gap::LogRatios heldout_log_ratios{};  ///< ℓ on held-out runs with the effect added
 };
 
 struct GreedyStep {
@@ -105,7 +109,7 @@ struct Diagnosis {
   bool significant = false;
   double null_gap_median = 0, null_gap_critical = 0;  ///< quantiles 0.5 and 1 − α
   std::vector<GroupResult> groups;
-  std::vector<Share> by_axis, by_stage, by_window;
+  std::vector<Share> by_kind, by_axis, by_stage, by_window;
   std::vector<TimeFunctionShares> time_functions;
   std::vector<AllanCurve> allan;
   bool ranked = false;

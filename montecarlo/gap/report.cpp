@@ -59,16 +59,19 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   g["null_median"] = d.null_gap_median;
   g["null_critical"] = d.null_gap_critical;
   g["calibration_runs"] = d.calibration_runs;
-  g["metric"] = "G = sqrt(mean over groups of ln(observed/null mean normalized square)^2)";
+  g["metric"] = "G = sqrt(mean over groups of ln(observed/expected)^2): scatter groups (mean normalized square per "
+                "run) and coherent groups (what all runs share, one-sided), expectations calibrated on the null";
   j["gap"] = g;
   Json where = Json::object();
+  where["by_kind"] = shares_json(d.by_kind);
   where["by_axis"] = shares_json(d.by_axis);
   where["by_stage"] = shares_json(d.by_stage);
   where["by_window"] = shares_json(d.by_window);
   Json groups = Json::array();
   for (const GroupResult& r : d.groups) {
     Json e = Json::object();
-    e["group"] = gap::group_name(r.group);
+    e["group"] = r.name();
+    e["kind"] = r.coherent ? "coherent" : "scatter";
     e["terms"] = r.count;
     e["power"] = r.power;
     e["null_power"] = r.null_power;
@@ -104,7 +107,10 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
     e["shrink"] = c.shrink;
     Json left = Json::object();
     for (int g = 0; g < gap::kGroupCount; ++g)
-      if (std::isfinite(c.heldout_log_ratios[g])) left[gap::group_name(g)] = c.heldout_log_ratios[g];
+      if (std::isfinite(c.heldout_log_ratios.scatter[g])) left[gap::group_name(g)] = c.heldout_log_ratios.scatter[g];
+    for (int k = 0; k < gap::kCoherentCount; ++k)
+      if (std::isfinite(c.heldout_log_ratios.coherent[static_cast<std::size_t>(k)]))
+        left[gap::coherent_group_name(k)] = c.heldout_log_ratios.coherent[static_cast<std::size_t>(k)];
     e["heldout_log_ratios"] = left;
     ranking.push_back(e);
   }
@@ -143,14 +149,16 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                     "critical G {:.3g}.\n\n",
                     d.gap, d.p_value, d.alpha, d.significant ? "significant gap" : "no significant gap", d.runs,
                     d.null_gap_median, d.null_gap_critical);
-  md += "G is the RMS over report groups of ln(observed / null mean normalized square): 0 when the data scatter "
-        "as the model predicts, 1 for a factor e ≈ 2.7 in power (too much or too little).\n\n";
+  md += "G is the RMS over report groups of ln(observed / expected): per run, how the data scatter about the "
+        "model's prediction (scatter groups), and what all runs share (coherent groups: a design or site effect, "
+        "one-sided); 0 when the data match the model, 1 for a factor e ≈ 2.7 in power (too much or too little). "
+        "The expectations are the model's own, calibrated on its null runs.\n\n";
   for (const std::string& s : d.statements) md += "- " + s + "\n";
   if (!d.statements.empty()) md += "\n";
   md += "## 2. Where it lies\n\n";
   Table t({"group", "terms", "observed", "null", "ln ratio", "p", "share"});
   for (const GroupResult& r : d.groups)
-    t.add_row({gap::group_name(r.group), fmt::format("{:.0f}", r.count), fmt::format("{:.3g}", r.power),
+    t.add_row({r.name(), fmt::format("{:.0f}", r.count), fmt::format("{:.3g}", r.power),
                fmt::format("{:.3g}", r.null_power), fmt::format("{:+.3f}", r.log_ratio), fmt::format("{:.3g}", r.p_value),
                pct(r.share)});
   md += render_markdown(t) + "\n";
@@ -159,7 +167,8 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
     for (std::size_t i = 0; i < s.size(); ++i) line += (i ? ", " : "") + s[i].name + " " + pct(s[i].share);
     return line + "\n";
   };
-  md += share_line("by axis", d.by_axis) + share_line("by stage", d.by_stage) + share_line("by window", d.by_window);
+  md += share_line("by kind", d.by_kind) + share_line("by axis", d.by_axis) + share_line("by stage", d.by_stage) +
+        share_line("by window", d.by_window);
   md += "\nPost-test position innovations on the error's time functions (share of the normalized energy, fitted in "
         "this order):\n\n";
   Table tf({"axis", "function", "share"});
@@ -193,7 +202,7 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
   }
   std::vector<PlotSeries> bars;
   PlotSeries l{"ln(observed/null)", {}, {}, {}, {}, 0, false};
-  for (const GroupResult& r : d.groups) l.x.push_back(r.group), l.y.push_back(r.log_ratio);
+  for (std::size_t i = 0; i < d.groups.size(); ++i) l.x.push_back(static_cast<double>(i)), l.y.push_back(d.groups[i].log_ratio);
   bars.push_back(l);
   std::vector<PlotSeries> allan;
   for (const AllanCurve& c : d.allan) {
@@ -207,7 +216,7 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
     allan.push_back(n);
   }
   return {{"gap.md", md},
-          {"gap_groups.svg", svg_line_plot("ln(observed/null) per group (index as in gap.json)", "group index",
+          {"gap_groups.svg", svg_line_plot("ln(observed/expected) per group (order as in gap.json)", "group",
                                            "ln ratio", bars)},
           {"gap_allan.svg", svg_line_plot("Allan deviation of the f residuals", "log10 cluster time [s]",
                                           "log10 ADEV [m/s^2]", allan)}};

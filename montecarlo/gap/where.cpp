@@ -6,31 +6,51 @@
 
 namespace insmc::mc {
 
-std::vector<GroupResult> group_results(const gap::GroupSums& observed, const gap::NullCalibration& calibration,
-                                       const std::vector<gap::GroupValues>& null_log_ratios) {
-  const gap::GroupValues power = gap::group_power(observed);
-  const gap::GroupValues l = gap::log_power_ratio(observed, calibration);
-  const gap::GroupValues null_power = gap::expected_power(observed, calibration);
+std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::NullCalibration& calibration,
+                                       const std::vector<gap::LogRatios>& null_log_ratios) {
+  const gap::LogRatios l = gap::log_ratios(observed, calibration);
+  const gap::GroupValues power = gap::group_power(observed.power);
+  const gap::GroupValues null_power = gap::expected_power(observed.power, calibration);
+  const gap::CoherentValues coherent = gap::coherent_power(observed);
+  const gap::CoherentValues null_coherent = gap::expected_coherent_power(observed, calibration);
   double total = 0;
-  for (double v : l)
+  for (double v : l.scatter)
     if (std::isfinite(v)) total += v * v;
+  for (double v : l.coherent)
+    if (std::isfinite(v)) total += v * v;
+  const auto p_value = [&](const auto& pick, double value) {
+    std::size_t above = 0;
+    for (const gap::LogRatios& nl : null_log_ratios) {
+      const double v = pick(nl);
+      if (!std::isfinite(v) || std::abs(v) >= std::abs(value)) ++above;
+    }
+    return (1.0 + static_cast<double>(above)) / (1.0 + static_cast<double>(null_log_ratios.size()));
+  };
   std::vector<GroupResult> out;
   for (int g = 0; g < gap::kGroupCount; ++g) {
-    if (!std::isfinite(l[g])) continue;
-    std::size_t above = 0;
-    for (const gap::GroupValues& nl : null_log_ratios)
-      if (!std::isfinite(nl[g]) || std::abs(nl[g]) >= std::abs(l[g])) ++above;
-    out.push_back({g, observed.count[g], power[g], null_power[g], l[g],
-                   (1.0 + static_cast<double>(above)) / (1.0 + static_cast<double>(null_log_ratios.size())),
-                   total > 0 ? l[g] * l[g] / total : 0.0});
+    if (!std::isfinite(l.scatter[g])) continue;
+    out.push_back({false, g, observed.power.count[g], power[g], null_power[g], l.scatter[g],
+                   p_value([g](const gap::LogRatios& nl) { return nl.scatter[g]; }, l.scatter[g]),
+                   total > 0 ? l.scatter[g] * l.scatter[g] / total : 0.0});
+  }
+  for (int c = 0; c < gap::kCoherentCount; ++c) {
+    const auto k = static_cast<std::size_t>(c);
+    if (!std::isfinite(l.coherent[k])) continue;
+    double count = 0;
+    for (int g = 0; g < gap::kGroupCount; ++g)
+      if (gap::coherent_group_of(g) == c) count += observed.power.count[g];
+    out.push_back({true, c, count, coherent[k], null_coherent[k], l.coherent[k],
+                   p_value([k](const gap::LogRatios& nl) { return nl.coherent[k]; }, l.coherent[k]),
+                   total > 0 ? l.coherent[k] * l.coherent[k] / total : 0.0});
   }
   return out;
 }
 
-std::vector<Share> shares_by(const std::vector<GroupResult>& groups, const std::function<std::string(int)>& key) {
+std::vector<Share> shares_by(const std::vector<GroupResult>& groups,
+                             const std::function<std::string(const GroupResult&)>& key) {
   std::vector<Share> out;
   for (const GroupResult& g : groups) {
-    const std::string k = key(g.group);
+    const std::string k = key(g);
     auto it = std::find_if(out.begin(), out.end(), [&](const Share& s) { return s.name == k; });
     if (it == out.end()) out.push_back({k, g.share});
     else it->share += g.share;

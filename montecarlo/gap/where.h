@@ -10,13 +10,14 @@
 
 namespace insmc::mc {
 
-/// Per group: power, the calibrated expected power, ℓ_g, its p-value against the null files'
-/// |ℓ_g|, and its share of Σ ℓ².
-std::vector<GroupResult> group_results(const gap::GroupSums& observed, const gap::NullCalibration& calibration,
-                                       const std::vector<gap::GroupValues>& null_log_ratios);
+/// Per scatter and coherent group: power, the calibrated expected power, ℓ,
+/// its p-value against the null files' |ℓ|, and its share of Σ ℓ².
+std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::NullCalibration& calibration,
+                                       const std::vector<gap::LogRatios>& null_log_ratios);
 
 /// Σ of the groups' shares under each key (key order of first appearance).
-std::vector<Share> shares_by(const std::vector<GroupResult>& groups, const std::function<std::string(int)>& key);
+std::vector<Share> shares_by(const std::vector<GroupResult>& groups,
+                             const std::function<std::string(const GroupResult&)>& key);
 
 /// Per axis: the share of the post-test r innovation energy (normalized, all
 /// runs) explained by, in this order, the Schuler terms sin/cos ω_s t, the

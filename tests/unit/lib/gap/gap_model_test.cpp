@@ -171,24 +171,63 @@ TEST(GapAnalysis, ActualSquaresAverageWhatDrawsWithTheActualNoiseGive) {
   EXPECT_GE(checked, 3);  // the test-run r groups at least: the check is not the trivial E = e
 }
 
-TEST(GapMetric, IsTheRmsOfTheGroupsLogPowerRatiosAgainstTheCalibratedExpectation) {
-  GroupSums s;
-  for (int g = 0; g < 4; ++g) s.z2[g] = 10.0, s.count[g] = 10.0, s.expected[g] = 10.0;
+TEST(GapMetric, IsTheRmsOfTheGroupsLogRatiosAgainstTheCalibratedExpectation) {
+  // One run: what it shares with itself is its own scatter (coherent ℓ = 0).
+  Pooled one;
+  one.runs = 1;
+  for (int g = 0; g < 4; ++g) one.power.z2[g] = 10.0, one.power.count[g] = 10.0, one.power.expected[g] = 10.0;
+  for (int g = 0; g < 4; ++g) one.coherent[static_cast<std::size_t>(coherent_group_of(g))] += one.power.z2[g];
   NullCalibration none;
-  EXPECT_DOUBLE_EQ(gap_value(s, none), 0.0);
-  s.z2[0] = 10.0 * std::exp(2.0);  // one group of four off by e² in power
-  EXPECT_NEAR(gap_value(s, none), std::sqrt(4.0 / 4.0), 1e-12);
-  s.z2[1] = 10.0 * std::exp(-2.0);  // too little scatter counts as much as too much
-  EXPECT_NEAR(gap_value(s, none), std::sqrt(8.0 / 4.0), 1e-12);
+  EXPECT_DOUBLE_EQ(gap_value(one, none), 0.0);
+  const int present = 4 + 4;  // four scatter groups and the four coherent groups they fall in
+  one.power.z2[0] = 10.0 * std::exp(2.0);  // one group off by e² in power
+  one.coherent[0] = one.power.z2[0];
+  EXPECT_NEAR(gap_value(one, none), std::sqrt(4.0 / present), 1e-12);
+  one.power.z2[1] = 10.0 * std::exp(-2.0);  // too little scatter counts as much as too much
+  one.coherent[1] = one.power.z2[1];
+  EXPECT_NEAR(gap_value(one, none), std::sqrt(8.0 / present), 1e-12);
   // The floor's share: a group whose actual expectation is 2 of 10 and
   // whose floor adds 8 expects 2 + κ 8.
-  GroupSums f;
-  f.z2[0] = 6.0, f.count[0] = 10.0, f.expected[0] = 2.0, f.floor[0] = 8.0;
+  Pooled f;
+  f.runs = 1;
+  f.power.z2[0] = 6.0, f.power.count[0] = 10.0, f.power.expected[0] = 2.0, f.power.floor[0] = 8.0;
   NullCalibration half;
   half.floor_share[0] = 0.5;
-  EXPECT_NEAR(log_power_ratio(f, half)[0], 0.0, 1e-12);
-  // Calibrated on null sums that show half of the floor.
-  EXPECT_NEAR(NullCalibration::from_null(f).floor_share[0], 0.5, 1e-12);
+  EXPECT_NEAR(log_ratios(f, half).scatter[0], 0.0, 1e-12);
+}
+
+TEST(GapMetric, CoherentGroupsSeeOnlyWhatRunsShareBeyondIndependence) {
+  // Two runs with the same values in a group share all of it: C = 2 D, ℓ = ln 2;
+  // opposite values share nothing positive: one-sided, ℓ = 0.
+  KeySpace keys;
+  Layout l;
+  for (int k = 0; k < 3; ++k) l.rows.push_back({60.0, Quantity::kR, k, group_of(Stage::kTest, Quantity::kR, k, 0)});
+  l.test_rows = 3;
+  keys.add_layout(l);
+  Eigen::MatrixXd same = Eigen::MatrixXd::Zero(keys.size(), 2), opposite = same;
+  same(0, 0) = same(0, 1) = 1.5;
+  opposite(0, 0) = 1.5, opposite(0, 1) = -1.5;
+  GroupSums run;
+  const int g = group_of(Stage::kTest, Quantity::kR, 0, 0), c = coherent_group_of(g);
+  run.z2[g] = 2.25, run.count[g] = 1.0, run.expected[g] = 2.25;
+  const std::vector<int> both = {0, 1};
+  const NullCalibration none;
+  EXPECT_NEAR(log_ratios(pool(make_run_set({run, run}, same, keys), both), none).coherent[static_cast<std::size_t>(c)],
+              std::log(2.0), 1e-12);
+  EXPECT_NEAR(log_ratios(pool(make_run_set({run, run}, opposite, keys), both), none).coherent[static_cast<std::size_t>(c)],
+              0.0, 1e-12);
+  // A multiset counts a repeated run twice: three copies share 3 D.
+  EXPECT_NEAR(log_ratios(pool(make_run_set({run, run}, same, keys), std::vector<int>{0, 0, 1}), none)
+                  .coherent[static_cast<std::size_t>(c)],
+              std::log(3.0), 1e-12);
+  // Null runs that share a systematic part calibrate it away: λ from their
+  // pairs over the floor one run contributes.
+  GroupSums floored = run;
+  floored.floor[g] = 2.25;
+  const RunSet null = make_run_set({floored, floored}, same, keys);
+  const NullCalibration cal = NullCalibration::from_null(null);
+  EXPECT_NEAR(cal.systematic[static_cast<std::size_t>(c)], 1.0, 1e-12);  // pairs 2.25 over floor 2.25
+  EXPECT_NEAR(log_ratios(pool(null, both), cal).coherent[static_cast<std::size_t>(c)], 0.0, 1e-12);
 }
 
 TEST(GapPulseCounting, TheSawtoothIntegralIsExact) {
