@@ -14,13 +14,13 @@ namespace insmc::app {
 
 int run_gap_validate(const Args& args) {
   po::options_description opts("Options");
-  opts.add_options()("quick", "the CI subset (10-run files, magnitude 10x the defaults, 4 null files)")(
+  opts.add_options()("quick", "the CI subset (10-run files, magnitude 30x the defaults, 4 null files)")(
       "out", po::value<std::string>(), "folder for validation.md, confusion.md/csv, validation.json")(
       "seed", po::value<std::uint64_t>()->default_value(1000), "seed of the first simulated file")(
       "null-files", po::value<int>(), "null files (default 100, quick 4)")(
-      "seeds", po::value<int>(), "files per effect and magnitude (default 2, quick 1)")(
+      "seeds", po::value<int>(), "files per effect and magnitude (default 3, quick 1)")(
       "effect", po::value<std::vector<std::string>>(), "validate only this effect (repeatable; names: insmc effects)")(
-      "magnitudes", po::value<std::string>(), "factors on the effects' defaults, comma list (default 1,3,10,30; quick 10)");
+      "magnitudes", po::value<std::string>(), "factors on the effects' defaults, comma list (default 1,3,10,30; quick 30)");
   const auto vm = parse_args(args, "gap-validate", "[--quick] [--out DIR]", opts);
   if (!vm) return 0;
   mc::ValidationOptions options = vm->count("quick") ? mc::ValidationOptions::quick_subset() : mc::ValidationOptions{};

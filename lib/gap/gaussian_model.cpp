@@ -12,20 +12,24 @@ BaseModel make_base_model(const Layout& layout, const RecordSite& site, const Un
   const double q = site.position_resolution_m;
   const auto n = static_cast<Eigen::Index>(layout.rows.size());
   base.prior_std = (base.H_x.array().square().rowwise() * base.x_var.transpose().array()).rowwise().sum().sqrt();
-  base.noise_var.resize(n);
   base.actual_noise_var.resize(n);
+  base.relative_floor.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (layout.rows[static_cast<std::size_t>(i)].quantity == Quantity::kF) {
-      base.actual_noise_var[i] = 0.0;
-      base.noise_var[i] = kFNoiseFloorMps2 * kFNoiseFloorMps2;
-    } else {
-      const double floor = kAbsoluteModelErrorM + kRelativeModelError * base.prior_std[i];
-      base.actual_noise_var[i] = q * q / 12.0;
-      base.noise_var[i] = base.actual_noise_var[i] + floor * floor;
-    }
+    const bool f = layout.rows[static_cast<std::size_t>(i)].quantity == Quantity::kF;
+    base.actual_noise_var[i] = f ? 0.0 : q * q / 12.0;
+    base.relative_floor[i] = f ? 0.0 : kRelativeModelError;
   }
+  base.noise_var = base.actual_noise_var + model_error_floor(base, x_var);
   base.counting = pulse_counting(layout, site, site.dv_pulse_mps, x_var, base.noise_var.cwiseSqrt());
   return base;
+}
+
+Eigen::VectorXd model_error_floor(const BaseModel& base, const UncertaintyVector& x_var) {
+  const Eigen::ArrayXd spread = (base.H_x.array().square().rowwise() * x_var.transpose().array()).rowwise().sum().sqrt();
+  const Eigen::ArrayXd absolute =
+      (base.relative_floor.array() > 0).select(Eigen::ArrayXd::Constant(spread.size(), kAbsoluteModelErrorM),
+                                               Eigen::ArrayXd::Constant(spread.size(), kFNoiseFloorMps2));
+  return (absolute + base.relative_floor.array() * spread).square().matrix();
 }
 
 GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>& extensions) {
@@ -45,7 +49,10 @@ GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>
   m.prior_var.head(ux::kDim) = x_var;
   m.H.middleCols(ux::kDim, kc) = counting->columns;
   m.prior_var.segment(ux::kDim, kc).setOnes();
-  m.noise_var = base.noise_var + counting->noise_var;
+  // The floor follows the priors (unchanged unless a candidate widens them).
+  m.noise_var = base.actual_noise_var + counting->noise_var +
+                ((x_var.array() == base.x_var.array()).all() ? (base.noise_var - base.actual_noise_var).eval()
+                                                             : model_error_floor(base, x_var));
   m.actual_noise_var = base.actual_noise_var + counting->noise_var;
   m.mean = Eigen::VectorXd::Zero(n);
   Eigen::Index at = ux::kDim + kc;

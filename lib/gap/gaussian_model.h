@@ -53,6 +53,7 @@ struct BaseModel {
   Eigen::VectorXd noise_var;       ///< rows: fit weights (resolution and the model-error floor)
   Eigen::VectorXd actual_noise_var;  ///< rows: the position resolution alone
   Eigen::VectorXd prior_std;       ///< rows: predicted std of each row from x alone
+  Eigen::VectorXd relative_floor;  ///< rows: kRelativeModelError on r rows, 0 on f rows
   PulseCounting counting;          ///< of the record's pulse weight
 };
 BaseModel make_base_model(const Layout& layout, const RecordSite& site, const UncertaintyVector& x_var);
@@ -79,6 +80,11 @@ struct Extension {
            (x_var_add.array() == 0.0).all() && !counting;
   }
 };
+
+/// The model-error floor² of each row for priors x_var: an absolute part and
+/// a share of the row's predicted spread (second-order terms grow with the
+/// uncertainties: a candidate that widens the priors widens the floor too).
+Eigen::VectorXd model_error_floor(const BaseModel& base, const UncertaintyVector& x_var);
 
 /// The base model with every extension applied.
 GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>& extensions);

@@ -135,7 +135,8 @@ std::vector<RunData> extract_runs(const RecordFile& file, const RecordSite& site
         values.push_back(*row.f_mps2[k]);
       }
       last_r_row = &row;
-      if (!row.r_ap_m || row.t_s - last_r < options.r_spacing_s * (1 - 1e-9)) continue;
+      const double r_spacing = test ? options.r_spacing_s : options.nav_r_spacing_s;
+      if (!row.r_ap_m || row.t_s - last_r < r_spacing * (1 - 1e-9)) continue;
       last_r = row.t_s;
       for (int k = 0; k < 3; ++k) {
         rows.push_back({row.t_s, Quantity::kR, k, group_of(stage, Quantity::kR, k, window)});

@@ -78,6 +78,9 @@ struct ExtractionOptions {
   /// r rows closer than this to the last kept one are skipped: r is smooth,
   /// and the model's cost grows with the rows [s].
   double r_spacing_s = 30.0;
+  /// The same for the navigation r rows: 72 per Schuler period still
+  /// resolve what is smooth on that scale [s].
+  double nav_r_spacing_s = 60.0;
   /// Navigation f rows closer than this to the last kept one are skipped
   /// (the test-run f rows are all kept: the fit uses them) [s].
   double nav_f_spacing_s = 30.0;

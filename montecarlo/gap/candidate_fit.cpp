@@ -49,10 +49,15 @@ bool used(const PreparedRuns& p, std::size_t L) {
 
 CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
                                const std::vector<std::vector<gap::Extension>>& selected,
-                               std::vector<gap::LayoutContext>& ctx) {
+                               std::vector<gap::LayoutContext>& ctx, const gap::NullCalibration& m0) {
   CandidateSums out;
   out.keys = &p.keys;
-  for (int k = 0; k < c.grid_size(); ++k) {
+  const int K = c.grid_size();
+  out.at.resize(static_cast<std::size_t>(K));
+  out.sets.resize(static_cast<std::size_t>(K));
+  out.evaluated.assign(static_cast<std::size_t>(K), false);
+  const auto evaluate = [&](int k) {
+    if (out.evaluated[static_cast<std::size_t>(k)]) return;
     const std::vector<double> theta = c.grid_point(k);
     std::vector<std::optional<gap::RunAnalyser>> analysers(p.layouts.size());
     std::vector<const gap::RunAnalyser*> pointers_to(p.layouts.size(), nullptr);
@@ -62,8 +67,24 @@ CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
       analysers[L].emplace(p.layouts[L], gap::combine(p.bases[L], pointers(selected[L], &e)));
       pointers_to[L] = &*analysers[L];
     }
-    out.at.push_back(evaluate_runs(p.runs, p.layout_of, pointers_to, p.keys));
-    out.sets.push_back(out.at.back().set(p.keys));
+    out.at[static_cast<std::size_t>(k)] = evaluate_runs(p.runs, p.layout_of, pointers_to, p.keys);
+    out.sets[static_cast<std::size_t>(k)] = out.at[static_cast<std::size_t>(k)].set(p.keys);
+    out.evaluated[static_cast<std::size_t>(k)] = true;
+  };
+  // Grid index = first-parameter index × rest + rest index (grid_point).
+  const int first = static_cast<int>(c.parameters.front().grid.size()), rest = K / first;
+  std::vector<int> all(p.runs.size());
+  for (std::size_t r = 0; r < all.size(); ++r) all[r] = static_cast<int>(r);
+  for (int j = 0; j < rest; ++j) {
+    int best = -1;
+    double best_gap = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < first; i += 2) {
+      evaluate(i * rest + j);
+      const double g = gap::gap_value(out.sets[static_cast<std::size_t>(i * rest + j)], all, m0);
+      if (g < best_gap) best_gap = g, best = i;
+    }
+    for (int i : {best - 1, best + 1})
+      if (i >= 0 && i < first) evaluate(i * rest + j);
   }
   return out;
 }
@@ -126,10 +147,11 @@ Eigen::VectorXd least_squares_amplitudes(const CandidateSums& s, int k, const st
 }  // namespace
 
 CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
-                                 const std::vector<std::vector<gap::Extension>>& selected) {
+                                 const std::vector<std::vector<gap::Extension>>& selected,
+                                 const gap::NullCalibration& m0) {
   std::vector<gap::LayoutContext> ctx(p.layouts.size());
   for (std::size_t L = 0; L < p.layouts.size(); ++L) ctx[L] = {&p.layouts[L], &p.site, &p.bases[L], {}};
-  return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, ctx)
+  return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, ctx, m0)
                                        : evaluate_amplitudes(p, c, selected, ctx);
 }
 
@@ -175,6 +197,7 @@ Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::N
       here.amplitude = least_squares_amplitudes(s, k, runs);
       g = gap::gap_value(run_set_under(s, distinct, std::vector<Choice>(distinct.size(), here)), at, m0);
     } else {
+      if (!s.evaluated[static_cast<std::size_t>(k)]) continue;
       g = gap::gap_value(s.sets[static_cast<std::size_t>(k)], runs, m0);
     }
     if (g < best_gap) best_gap = g, best = here;

@@ -51,9 +51,11 @@ Evaluated evaluate_runs(const std::vector<gap::RunData>& runs, const std::vector
 /// One candidate evaluated on every run, before any choice of parameters.
 struct CandidateSums {
   bool amplitudes = false;
-  /// Without amplitudes: every run at every grid point, and its run set.
+  /// Without amplitudes: every run at each grid point evaluated, and its
+  /// run set (empty where the coarse-to-fine search skipped the point).
   std::vector<Evaluated> at;
   std::vector<gap::RunSet> sets;
+  std::vector<bool> evaluated;
   /// With amplitudes: the fit without the candidate per layout, the runs'
   /// normalized values under it, and the normalized signature columns
   /// [grid][layout] (rows × amplitudes).
@@ -72,9 +74,13 @@ struct Choice {
   Eigen::VectorXd amplitude;
 };
 
-/// `c` on every run of `p`, on top of the effects already selected (per layout).
+/// `c` on every run of `p`, on top of the effects already selected (per
+/// layout). The first parameter of a grid candidate is searched coarse to
+/// fine: every other value, then the two values next to the best on all runs
+/// (m0) for each setting of the other parameters.
 CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
-                                 const std::vector<std::vector<gap::Extension>>& selected);
+                                 const std::vector<std::vector<gap::Extension>>& selected,
+                                 const gap::NullCalibration& m0);
 
 /// Each run of `runs` under its own choice (e.g. the held-out runs of two
 /// folds, each under the other fold's fit), as a run set in that order.

@@ -120,7 +120,7 @@ std::vector<Scored> rank_candidates(const Prepared& p, const std::vector<std::ve
   std::vector<bool> used(registry.size(), false);
   tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
     if (std::find(exclude.begin(), exclude.end(), registry[c].name) != exclude.end()) return;
-    scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected), p.runs.size(), m0, seed);
+    scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected, m0), p.runs.size(), m0, seed);
     scored[c].candidate = static_cast<int>(c);
     used[c] = true;
   });

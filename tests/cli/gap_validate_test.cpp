@@ -15,11 +15,9 @@ TEST(GapValidate, QuickSubsetScoresEveryEffectBlind) {
   TempDir dir;
   const std::string out = (dir.path() / "v").string();
   const auto r = run_insmc("gap-validate --quick --out " + out);
-  // 0 when every target holds, 1 when one fails (named on stderr).
-  ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.err;
-  if (r.exit_code == 1) {
-    EXPECT_TRUE(has(r.err, "target not met")) << r.err;
-  }
+  // 0 when every target holds, 1 when one fails (named on stderr). At 30x
+  // every effect it detects in 10-run files must be named (fixed seed).
+  EXPECT_EQ(r.exit_code, 0) << r.err;
   const std::string csv = read_file(std::filesystem::path(out) / "confusion.csv");
   for (const char* e : {"none", "quantization", "sway", "accel_bias_instability", "switch_transient"})
     EXPECT_TRUE(has(csv, e)) << e;
