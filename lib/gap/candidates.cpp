@@ -100,6 +100,19 @@ enum class Drive { kAccel, kAngle, kRate, kVelocity };
 Eigen::MatrixXd process_columns(const LayoutContext& ctx, Drive drive, double tau) {
   const std::string key = "process" + std::to_string(static_cast<int>(drive)) + ":" + std::to_string(tau);
   if (auto it = ctx.cache.find(key); it != ctx.cache.end()) return it->second;
+  const Layout& layout = *ctx.layout;
+  if (layout.nav == NavSegment::kRestart && layout.test_rows < static_cast<int>(layout.rows.size())) {
+    // After a realignment the process is taken from the new switch-over,
+    // independent of what the test run saw: columns of its own.
+    const Layout test = layout.test_part(), nav = layout.restarted_part();
+    const Eigen::MatrixXd a = process_columns({&test, ctx.site, ctx.base, {}}, drive, tau);
+    const Eigen::MatrixXd b = process_columns({&nav, ctx.site, ctx.base, {}}, drive, tau);
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(layout.rows.size()), a.cols() + b.cols());
+    out.topLeftCorner(a.rows(), a.cols()) = a;
+    out.bottomRightCorner(b.rows(), b.cols()) = b;
+    ctx.cache[key] = out;
+    return out;
+  }
   const double d = knot_spacing(tau);
   const std::vector<double> tk = knots(*ctx.layout, d);
   const int K = static_cast<int>(tk.size()), M = kBridgeModes;
@@ -265,13 +278,19 @@ Candidate sway() {
             // The displacement at switch-over is an initial position error the
             // computer does not know: r = r0 cos(ω_s t) (3.24). Table 3.1 has
             // one north (δL0) and down (δh), none east.
-            e.columns = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()), 3);
+            // After a reset the computer takes its stationary position again;
+            // after a realignment a new displacement is its own cause.
+            const Layout& l = *ctx.layout;
+            const bool restart = l.nav == NavSegment::kRestart;
+            e.columns = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(l.rows.size()), restart ? 6 : 3);
             const double ws = ctx.site->model.schuler_radps();
-            for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
-              const ObservationRow& row = ctx.layout->rows[i];
-              if (row.quantity == Quantity::kR) e.columns(static_cast<Eigen::Index>(i), row.axis) = std::cos(ws * row.t_s);
+            for (std::size_t i = 0; i < l.rows.size(); ++i) {
+              const ObservationRow& row = l.rows[i];
+              const bool nav = static_cast<int>(i) >= l.test_rows;
+              if (row.quantity != Quantity::kR || (nav && l.nav == NavSegment::kReset)) continue;
+              e.columns(static_cast<Eigen::Index>(i), row.axis + (l.restarted(i) ? 3 : 0)) = std::cos(ws * l.clock_s(i));
             }
-            e.column_var = a2 * inv_w4 * axes;
+            e.column_var = (a2 * inv_w4 * axes).replicate(restart ? 2 : 1, 1);
             // The counters count the sway too (pulse_counting.h).
             CountedMotion motion;
             motion.velocity_rms_mps = p[0] * std::sqrt(inv_w2) * axes.cwiseSqrt();

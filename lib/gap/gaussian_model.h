@@ -55,6 +55,13 @@ struct BaseModel {
   Eigen::VectorXd prior_std;       ///< rows: predicted std of each row from x alone
   Eigen::VectorXd relative_floor;  ///< rows: kRelativeModelError on r rows, 0 on f rows
   PulseCounting counting;          ///< of the record's pulse weight
+  /// After a scheme (scheme_rows.h): further causes (prior: the combined
+  /// x variance of slot scheme_x_index, or scheme_variance where −1) and
+  /// what the test-run estimates add to each row (taken off the data).
+  Eigen::MatrixXd scheme_columns;
+  std::vector<int> scheme_x_index;
+  Eigen::VectorXd scheme_variance;
+  Eigen::MatrixXd estimate_map;
 };
 BaseModel make_base_model(const Layout& layout, const RecordSite& site, const UncertaintyVector& x_var);
 

@@ -55,6 +55,26 @@ int nav_window(double t_s, double test_duration_s) {
   return 3;
 }
 
+NavSegment nav_segment_of(Scheme scheme) {
+  return realigns(scheme) ? NavSegment::kRestart : resets_at_test_end(scheme) ? NavSegment::kReset : NavSegment::kContinue;
+}
+
+Layout Layout::test_part() const {
+  Layout l;
+  l.rows.assign(rows.begin(), rows.begin() + test_rows);
+  l.test_rows = test_rows;
+  return l;
+}
+
+Layout Layout::restarted_part() const {
+  Layout l;
+  for (std::size_t i = static_cast<std::size_t>(test_rows); i < rows.size(); ++i) {
+    l.rows.push_back(rows[i]);
+    l.rows.back().t_s = clock_s(i);
+  }
+  return l;
+}
+
 int coherent_group_of(int g) {
   if (g == kEstimatesGroup) return kCoherentCount - 1;
   return g < 9 ? g : 9 + g % 3;
@@ -91,6 +111,21 @@ RecordSite read_site(const RecordHeader& header, double default_pulse_mps) {
   site.test_duration_s = header.test_duration_s();
   site.dv_pulse_mps = header.dv_pulse_mps().value_or(default_pulse_mps);
   site.position_resolution_m = header.position_resolution_m().value_or(0.0);
+  site.scheme = header.scheme();
+  if (realigns(site.scheme)) {
+    const std::optional<double> start = header.nav_start_s();
+    if (!start)
+      throw InputError("header nav_start_s", "(missing)",
+                       fmt::format("records after scheme {} need the time of the second switch-over after the "
+                                   "realignment, > test_duration_s", to_string(site.scheme)));
+    if (!(*start > site.test_duration_s))
+      throw InputError("header nav_start_s", fmt::format("{}", *start),
+                       fmt::format("must be > test_duration_s = {} (the realignment follows the test run)",
+                                   site.test_duration_s));
+    site.nav_start_s = *start;
+  } else if (resets_at_test_end(site.scheme)) {
+    site.nav_start_s = site.test_duration_s;
+  }
   if (const std::string* tau = header.find("filter_interval_s")) {
     double v = 0.0;
     if (records_detail::parse_double(*tau, v) != records_detail::NumberStatus::kOk || !(v > 0))
@@ -109,27 +144,43 @@ std::vector<RunData> extract_runs(const RecordFile& file, const RecordSite& site
                                   const ExtractionOptions& options) {
   INSMC_ASSERT(site.filter_interval_s > 0, "filter interval {}", site.filter_interval_s);
   const double T = site.test_duration_s, tau = site.filter_interval_s;
+  const NavSegment segment = nav_segment_of(site.scheme);
+  // f rows the model does not describe: after 5.4 the torquers turn the
+  // platform from switch-over, after a realignment the second navigation's
+  // platform is torqued or newly aligned (r rows alone are modelled there).
   std::vector<RunData> runs;
   for (const RecordRun& record : file.runs) {
     RunData run;
     run.id = record.id;
+    run.layout.nav = segment;
+    run.layout.nav_start_s = site.nav_start_s;
     std::vector<ObservationRow> test_rows, nav_rows;
     std::vector<double> test_values, nav_values;
     std::array<double, 3> last_f = {-1e300, -1e300, -1e300};
     double last_r = -1e300;
     const RecordRow* last_r_row = nullptr;
+    const auto window_of = [&](double t) {
+      return segment == NavSegment::kRestart ? nav_window(t - site.nav_start_s + T, T) : nav_window(t, T);
+    };
     for (const RecordRow& row : record.rows) {
       if (row.phase == Phase::kAlign) continue;
       run.end_s = row.t_s;
       const bool test = row.phase == Phase::kTest;
+      if (!test && segment == NavSegment::kRestart && row.t_s <= site.nav_start_s)
+        throw InputError(fmt::format("records run {} t_s", record.id), fmt::format("{}", row.t_s),
+                         fmt::format("after scheme {} the nav rows are the navigation after the realignment: t_s > "
+                                     "nav_start_s = {}", to_string(site.scheme), site.nav_start_s));
       auto& rows = test ? test_rows : nav_rows;
       auto& values = test ? test_values : nav_values;
       const Stage stage = test ? Stage::kTest : Stage::kNav;
-      const int window = test ? 0 : nav_window(row.t_s, T);
-      for (int k = 0; k < 3; ++k) {
+      const int window = test ? 0 : window_of(row.t_s);
+      // Time since the switch-over that started this row's navigation.
+      const double clock = !test && segment == NavSegment::kRestart ? row.t_s - site.nav_start_s : row.t_s;
+      const bool f_modelled = site.scheme != Scheme::k5_4 && (test || segment != NavSegment::kRestart);
+      for (int k = 0; k < 3 && f_modelled; ++k) {
         // A window must lie after switch-over and not overlap the last one.
         const double spacing = test ? tau : std::max(tau, options.nav_f_spacing_s);
-        if (!row.f_mps2[k] || row.t_s < tau * (1 - 1e-9) || row.t_s - last_f[k] < spacing * (1 - 1e-6)) continue;
+        if (!row.f_mps2[k] || clock < tau * (1 - 1e-9) || row.t_s - last_f[k] < spacing * (1 - 1e-6)) continue;
         last_f[k] = row.t_s;
         rows.push_back({row.t_s, Quantity::kF, k, group_of(stage, Quantity::kF, k, window)});
         values.push_back(*row.f_mps2[k]);
@@ -147,7 +198,7 @@ std::vector<RunData> extract_runs(const RecordFile& file, const RecordSite& site
     if (last_r_row && last_r_row->r_ap_m && last_r_row->t_s > last_r) {
       const bool test = last_r_row->phase == Phase::kTest;
       const Stage stage = test ? Stage::kTest : Stage::kNav;
-      const int window = test ? 0 : nav_window(last_r_row->t_s, T);
+      const int window = test ? 0 : window_of(last_r_row->t_s);
       for (int k = 0; k < 3; ++k) {
         (test ? test_rows : nav_rows)
             .push_back({last_r_row->t_s, Quantity::kR, k, group_of(stage, Quantity::kR, k, window)});

@@ -5,11 +5,13 @@
 /// the groups by which the gap is reported (axis × stage × time window).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "lib/common/model_options.h"
 #include "lib/common/system.h"
+#include "lib/preflight/test_run.h"
 #include "lib/records/record.h"
 
 namespace insmc::gap {
@@ -49,11 +51,31 @@ struct ObservationRow {
   bool operator==(const ObservationRow&) const = default;
 };
 
+/// How a record's navigation rows follow its test run (the header's scheme,
+/// DESIGN.md §3).
+enum class NavSegment {
+  kContinue,  ///< none, 5.4: one navigation from switch-over
+  kReset,     ///< 5.2, 5.3: position and velocity reset at T; instruments, platform and counters go on
+  kRestart,   ///< 5.1.1, 5.1.2, combined: realigned and switched over again at nav_start_s
+};
+NavSegment nav_segment_of(Scheme scheme);
+
 /// The rows of a run in model order: test rows, then navigation rows.
 struct Layout {
   std::vector<ObservationRow> rows;
   int test_rows = 0;
+  NavSegment nav = NavSegment::kContinue;
+  double nav_start_s = 0.0;  ///< T after a reset, the second switch-over after a restart
   bool operator==(const Layout&) const = default;
+
+  /// Row i belongs to the navigation after a realignment (its own clock).
+  bool restarted(std::size_t i) const { return nav == NavSegment::kRestart && static_cast<int>(i) >= test_rows; }
+  /// Time of row i on the clock of its navigation.
+  double clock_s(std::size_t i) const { return restarted(i) ? rows[i].t_s - nav_start_s : rows[i].t_s; }
+  /// The same layout with only the test rows, or only the navigation rows
+  /// on their own clock (a restarted navigation as a layout of its own).
+  Layout test_part() const;
+  Layout restarted_part() const;
 };
 
 /// What the header says about the runs (non-`truth.` keys only).
@@ -64,6 +86,11 @@ struct RecordSite {
   double filter_interval_s = 10.0;    ///< τ of f (header filter_interval_s, else the f spacing)
   double dv_pulse_mps = 0.0;          ///< 0: continuous f
   double position_resolution_m = 0.0;
+  Scheme scheme = Scheme::kNone;      ///< applied after the test run
+  double nav_start_s = 0.0;           ///< second switch-over (realigning schemes)
+  /// The scheme's least-squares estimators (set by the diagnosis for a
+  /// scheme that uses the test run, scheme_rows.h).
+  std::optional<TestRunEstimators> estimators;
 };
 
 /// One run: its layout and observed values (same order).

@@ -62,6 +62,20 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
                              const UncertaintyVector& x_var, const Eigen::VectorXd& row_scale,
                              const CountedMotion& motion) {
   const auto n = static_cast<Eigen::Index>(layout.rows.size());
+  if (layout.nav == NavSegment::kRestart && layout.test_rows < n) {
+    // After a realignment the second navigation has counters of its own.
+    const Layout test = layout.test_part(), nav = layout.restarted_part();
+    const auto nt = static_cast<Eigen::Index>(layout.test_rows);
+    const PulseCounting a = pulse_counting(test, site, w, x_var, row_scale.head(nt), motion);
+    const PulseCounting b = pulse_counting(nav, site, w, x_var, row_scale.tail(n - nt), motion);
+    PulseCounting out;
+    out.columns = Eigen::MatrixXd::Zero(n, a.columns.cols() + b.columns.cols());
+    out.columns.topLeftCorner(nt, a.columns.cols()) = a.columns;
+    out.columns.bottomRightCorner(n - nt, b.columns.cols()) = b.columns;
+    out.noise_var.resize(n);
+    out.noise_var << a.noise_var, b.noise_var;
+    return out;
+  }
   PulseCounting out;
   out.noise_var = Eigen::VectorXd::Zero(n);
   out.columns.resize(n, 0);
@@ -84,6 +98,10 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
   std::vector<double> grid;
   for (double t = 0.0; t < end; t += kStepS) grid.push_back(t);
   for (Eigen::Index i : r_rows) grid.push_back(layout.rows[static_cast<std::size_t>(i)].t_s);
+  // After a reset at T the position integral starts again there (the
+  // counters go on).
+  const bool reset = layout.nav == NavSegment::kReset;
+  if (reset) grid.push_back(layout.nav_start_s);
   std::sort(grid.begin(), grid.end());
   grid.erase(std::unique(grid.begin(), grid.end(), [](double a, double b) { return b - a < 1e-9; }), grid.end());
   const std::size_t G = grid.size();
@@ -106,10 +124,15 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
     const double m = 0.5 * (grid[g - 1] + grid[g]);
     cos_mid[g] = std::cos(ws * m), sin_mid[g] = std::sin(ws * m);
   }
+  const std::size_t reset_at = reset ? static_cast<std::size_t>(std::lower_bound(grid.begin(), grid.end(),
+                                                                                 layout.nav_start_s - 1e-9) - grid.begin())
+                                     : G;
   // r rows ending at each grid point, per axis.
   std::vector<std::vector<std::pair<int, int>>> at(G);  // (axis, index into r_rows)
+  std::vector<bool> after_reset(r_rows.size(), false);
   for (std::size_t j = 0; j < r_rows.size(); ++j) {
     const ObservationRow& row = layout.rows[static_cast<std::size_t>(r_rows[j])];
+    after_reset[j] = reset && r_rows[j] >= layout.test_rows;
     const auto g = static_cast<std::size_t>(
         std::lower_bound(grid.begin(), grid.end(), row.t_s - 1e-9) - grid.begin());
     at[g].emplace_back(row.axis, static_cast<int>(j));
@@ -124,6 +147,7 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
     Vec3 phase;
     for (int k = 0; k < 3; ++k) phase[k] = draws.uniform() - 0.5;
     Vec3 v_prev = Vec3::Zero(), cos_sum = Vec3::Zero(), sin_sum = Vec3::Zero();
+    Vec3 cos_at_reset = Vec3::Zero(), sin_at_reset = Vec3::Zero();
     for (std::size_t g = 1; g < G; ++g) {
       const Vec3 v = nominal[g] + own[g] * x;
       const double h = grid[g] - grid[g - 1];
@@ -134,9 +158,14 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
         sin_sum[k] += sin_mid[g] * e;
       }
       v_prev = v;
-      // (3.24): r(t) = ∫ cos(ω_s (t − s)) e(s) ds.
+      if (g == reset_at) cos_at_reset = cos_sum, sin_at_reset = sin_sum;
+      // (3.24): r(t) = ∫ cos(ω_s (t − s)) e(s) ds, from T after a reset.
       const double c = std::cos(ws * grid[g]), sn = std::sin(ws * grid[g]);
-      for (const auto& [k, j] : at[g]) Q(j, s) = c * cos_sum[k] + sn * sin_sum[k];
+      for (const auto& [k, j] : at[g]) {
+        const bool from_reset = after_reset[static_cast<std::size_t>(j)];
+        Q(j, s) = c * (cos_sum[k] - (from_reset ? cos_at_reset[k] : 0.0)) +
+                  sn * (sin_sum[k] - (from_reset ? sin_at_reset[k] : 0.0));
+      }
     }
     for (const auto& [k, j] : at[0]) Q(j, s) = 0.0;  // rows at t = 0
   }

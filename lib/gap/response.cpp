@@ -1,6 +1,7 @@
 #include "lib/gap/response.h"
 
 #include <algorithm>
+#include <array>
 
 #include "lib/frames/frames.h"
 #include "lib/propagation/linear_model.h"
@@ -12,16 +13,26 @@ namespace {
 /// smooth forcing to ~1e-9 relative for τ = 10 s against the earth rate.
 constexpr double kSimpson[5] = {1.0 / 12, 4.0 / 12, 2.0 / 12, 4.0 / 12, 1.0 / 12};
 
-/// Fills `out` (rows × cols) from a forcing t -> 3 × cols map.
+/// Fills `out` (rows × cols) from a forcing t -> 3 × cols map: f rows the
+/// window mean of the forcing, r rows the Schuler loop (3.24) from the
+/// initial maps at switch-over. After a scheme (layout.h) the navigation
+/// rows start their own loop: from a zero state at T after a reset (the
+/// forcing goes on), from switch-over on their own clock after a restart.
 template <class Map, class Forcing>
 void fill_rows(const Layout& layout, const RecordSite& site, const Forcing& forcing, bool f_responds,
                const Map& zero, const Map& r0, const Map& v0, Eigen::MatrixXd& out) {
   const double tau = site.filter_interval_s;
-  std::vector<double> r_times;
+  // r rows per loop: 0 from switch-over, 1 from the reset at T, 2 the restarted navigation.
+  std::array<std::vector<double>, 3> r_times;
+  const auto loop_of = [&](std::size_t i) {
+    if (static_cast<int>(i) < layout.test_rows || layout.nav == NavSegment::kContinue) return 0;
+    return layout.nav == NavSegment::kReset ? 1 : 2;
+  };
   for (std::size_t i = 0; i < layout.rows.size(); ++i) {
     const ObservationRow& row = layout.rows[i];
+    const double t = layout.clock_s(i);
     if (row.quantity == Quantity::kR) {
-      r_times.push_back(row.t_s);
+      r_times[static_cast<std::size_t>(loop_of(i))].push_back(t);
       continue;
     }
     if (!f_responds) {
@@ -29,18 +40,25 @@ void fill_rows(const Layout& layout, const RecordSite& site, const Forcing& forc
       continue;
     }
     Map mean = zero;
-    for (int j = 0; j < 5; ++j) mean += kSimpson[j] * forcing(row.t_s - tau + 0.25 * tau * j);
+    for (int j = 0; j < 5; ++j) mean += kSimpson[j] * forcing(t - tau + 0.25 * tau * j);
     out.row(static_cast<Eigen::Index>(i)) = mean.row(row.axis);
   }
-  std::sort(r_times.begin(), r_times.end());
-  r_times.erase(std::unique(r_times.begin(), r_times.end()), r_times.end());
-  const std::vector<Map> r = integrate_schuler_maps<Map>(forcing, r0, v0, r_times,
-                                                         site.model.schuler_radps(), 2.0);
+  std::array<std::vector<Map>, 3> r;
+  for (std::size_t loop = 0; loop < 3; ++loop) {
+    std::vector<double>& times = r_times[loop];
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+    if (times.empty()) continue;
+    const bool reset = loop == 1;
+    r[loop] = integrate_schuler_maps<Map>(forcing, reset ? zero : r0, reset ? zero : v0, times,
+                                          site.model.schuler_radps(), 2.0, reset ? layout.nav_start_s : 0.0);
+  }
   for (std::size_t i = 0; i < layout.rows.size(); ++i) {
     const ObservationRow& row = layout.rows[i];
     if (row.quantity != Quantity::kR) continue;
-    const auto k = std::lower_bound(r_times.begin(), r_times.end(), row.t_s) - r_times.begin();
-    out.row(static_cast<Eigen::Index>(i)) = r[static_cast<std::size_t>(k)].row(row.axis);
+    const auto loop = static_cast<std::size_t>(loop_of(i));
+    const auto k = std::lower_bound(r_times[loop].begin(), r_times[loop].end(), layout.clock_s(i)) - r_times[loop].begin();
+    out.row(static_cast<Eigen::Index>(i)) = r[loop][static_cast<std::size_t>(k)].row(row.axis);
   }
 }
 

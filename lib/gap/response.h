@@ -27,10 +27,16 @@ struct InputSignal {
   bool f_responds = true;
 };
 
-/// Rows × 33: the observations per unit of each uncertainty (linear level).
+/// Rows × 33: the observations per unit of each uncertainty (linear level),
+/// uncompensated (the navigation rows after a scheme: scheme_rows.h).
 Eigen::MatrixXd uncertainty_response(const Layout& layout, const RecordSite& site);
 
 /// Rows × input.columns: the observations per unit of each input column.
+/// After a reset (5.2, 5.3) the navigation rows start a zero state at T with
+/// the input going on; after a realignment they are a new navigation on
+/// their own clock with the input starting again (the same signature for a
+/// design effect; a random process needs its own columns there:
+/// Layout::restarted_part).
 Eigen::MatrixXd input_response(const Layout& layout, const RecordSite& site, const InputSignal& input);
 
 /// C(t) g_e: gravitation (down at t = 0) in a' at time t [m/s²] (3.24).

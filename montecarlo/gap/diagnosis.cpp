@@ -10,7 +10,9 @@
 #include <optional>
 
 #include "lib/common/input_error.h"
+#include "lib/common/assert.h"
 #include "lib/gap/response.h"
+#include "lib/gap/scheme_rows.h"
 #include "montecarlo/gap/candidate_fit.h"
 #include "montecarlo/gap/record_simulation.h"
 #include "montecarlo/gap/where.h"
@@ -131,20 +133,74 @@ std::vector<Scored> rank_candidates(const Prepared& p, const std::vector<std::ve
   return out;
 }
 
-Prepared prepare(const RecordFile& file, const DiagnosisOptions& options) {
-  Prepared p;
+/// The records as the diagnosis uses them, and its site. After a scheme
+/// that uses the test run, each run's estimates are recomputed from its test
+/// rows (scheme_rows.h): the test rows kept are the filter grid τ..T the
+/// estimates use; when a run lacks part of that grid, the navigation rows
+/// cannot be conditioned on the estimates and only the test run (still
+/// uncompensated) is diagnosed.
+struct Records {
+  RecordFile file;
+  gap::RecordSite site;
+  std::vector<gap::SchemeEstimates> estimates;  // per run, for a scheme that uses the test run
+};
+
+Records records_for_diagnosis(const RecordFile& file, const DiagnosisOptions& options,
+                              std::vector<std::string>& statements) {
+  Records r{file, {}, {}};
   const RecordHeader header = file.header.without_truth();
-  p.site = gap::read_site(header, options.default_pulse_mps);
-  if (header.scheme() != Scheme::kNone)
-    throw InputError("header scheme", std::string(to_string(header.scheme())),
-                     "the diagnosis models uncompensated runs so far: only scheme=none records are accepted");
-  if (!(p.site.filter_interval_s > 0)) {
+  r.site = gap::read_site(header, options.default_pulse_mps);
+  if (!(r.site.filter_interval_s > 0)) {
     const double spacing = gap::median_f_spacing(file);
-    p.site.filter_interval_s = spacing > 0 ? spacing : 10.0;
+    r.site.filter_interval_s = spacing > 0 ? spacing : 10.0;
   }
+  const Scheme scheme = r.site.scheme;
+  if (!uses_test_run(scheme)) return r;
+  const TestRunOptions test = gap::record_test_options(r.site);
+  validate(test);
+  const Resolvability resolvable = resolvable_terms(r.site.system, r.site.model, test, options.prior);
+  r.site.estimators = make_estimators(test, r.site.model, resolvable.u3, resolvable.u4);
+  for (const RecordRun& run : file.runs) {
+    const std::optional<gap::SchemeEstimates> u = gap::record_estimates(run, r.site, *r.site.estimators);
+    if (!u) {
+      statements.push_back(fmt::format(
+          "run {} lacks part of the test run's filter grid (f and r at every {:g} s up to T = {:g} s), from which "
+          "the scheme's estimates are recomputed: the navigation rows after scheme {} cannot be modelled, so only "
+          "the test runs are diagnosed", run.id, r.site.filter_interval_s, r.site.test_duration_s, to_string(scheme)));
+      for (RecordRun& kept : r.file.runs)
+        std::erase_if(kept.rows, [](const RecordRow& row) { return row.phase != Phase::kTest; });
+      r.file.header.set(std::string(kKeyScheme), std::string(to_string(Scheme::kNone)));
+      r.site.scheme = Scheme::kNone;
+      r.site.estimators.reset();
+      r.estimates.clear();
+      return r;
+    }
+    r.estimates.push_back(*u);
+  }
+  // The test rows the estimates used, and no others (the null runs are
+  // simulated on the same rows).
+  const double tau = r.site.filter_interval_s;
+  for (RecordRun& run : r.file.runs)
+    std::erase_if(run.rows, [&](const RecordRow& row) {
+      const double k = row.t_s / tau;
+      return row.phase == Phase::kTest && std::abs(k - std::round(k)) > 1e-6;
+    });
+  return r;
+}
+
+Prepared prepare(const Records& records, const DiagnosisOptions& options) {
+  Prepared p;
+  p.site = records.site;
   p.x_var = options.prior.variance();
-  p.runs = gap::extract_runs(file, p.site, options.extraction);
-  for (const gap::RunData& run : p.runs) p.layout_of.push_back(p.layout_index(run.layout));
+  p.runs = gap::extract_runs(records.file, p.site, options.extraction);
+  for (std::size_t r = 0; r < p.runs.size(); ++r) {
+    const int L = p.layout_index(p.runs[r].layout);
+    p.layout_of.push_back(L);
+    if (records.estimates.empty()) continue;
+    // Take the scheme's use of this run's estimates off its rows.
+    Eigen::Map<Eigen::VectorXd>(p.runs[r].values.data(), static_cast<Eigen::Index>(p.runs[r].values.size())) -=
+        p.bases[static_cast<std::size_t>(L)].estimate_map * records.estimates[r];
+  }
   return p;
 }
 
@@ -160,17 +216,33 @@ Null calibrate(Prepared& p, const RecordFile& file, const DiagnosisOptions& opti
   truth.dv_pulse_mps = p.site.dv_pulse_mps;
   truth.filter_interval_s = p.site.filter_interval_s;
   const Sampler sampler(options.prior);
-  const RecordRunSpec spec{p.site.test_duration_s, p.site.position_resolution_m};
+  // The null after the records' scheme, with the estimators the diagnosis uses.
+  const TestRunOptions test = gap::record_test_options(p.site);
+  const TruthSchemeSetup setup(truth, test, p.site.estimators ? *p.site.estimators : TestRunEstimators{});
+  const RecordRunSpec spec{p.site.test_duration_s, p.site.position_resolution_m, p.site.scheme, &setup,
+                           p.site.nav_start_s};
   std::vector<gap::RunData> sim(static_cast<std::size_t>(runs));
+  std::vector<gap::SchemeEstimates> estimates(static_cast<std::size_t>(runs));
   tbb::parallel_for(0, runs, [&](int j) {
     const RecordRun& pattern = file.runs[static_cast<std::size_t>(j) % file.runs.size()];
     RecordFile one;
     one.header = file.header;
     one.runs.push_back(simulate_like(pattern, truth, sampler, options.seed, static_cast<std::uint64_t>(j), spec));
     sim[static_cast<std::size_t>(j)] = std::move(gap::extract_runs(one, p.site, options.extraction).front());
+    if (p.site.estimators) {
+      const std::optional<gap::SchemeEstimates> u = gap::record_estimates(one.runs.front(), p.site, *p.site.estimators);
+      INSMC_ASSERT(u.has_value(), "null run {} lacks its test grid", j);
+      estimates[static_cast<std::size_t>(j)] = *u;
+    }
   });
   layout_of.resize(sim.size());
-  for (std::size_t j = 0; j < sim.size(); ++j) layout_of[j] = p.layout_index(sim[j].layout);
+  for (std::size_t j = 0; j < sim.size(); ++j) {
+    layout_of[j] = p.layout_index(sim[j].layout);
+    // The null run's own estimates, taken off its rows as the records' are.
+    if (p.site.estimators)
+      Eigen::Map<Eigen::VectorXd>(sim[j].values.data(), static_cast<Eigen::Index>(sim[j].values.size())) -=
+          p.bases[static_cast<std::size_t>(layout_of[j])].estimate_map * estimates[j];
+  }
   std::vector<gap::RunAnalyser> analysers;
   std::vector<const gap::RunAnalyser*> pointers;
   analysers.reserve(p.layouts.size());
@@ -243,8 +315,9 @@ void honest_statements(Diagnosis& d) {
 }  // namespace
 
 Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
-  Prepared p = prepare(file, options);
   Diagnosis d;
+  const Records records = records_for_diagnosis(file, options, d.statements);
+  Prepared p = prepare(records, options);
   d.alpha = options.alpha;
   d.runs = static_cast<int>(p.runs.size());
   const int n = d.runs;
@@ -265,7 +338,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
   std::vector<int> null_layout;
   const int ncal = options.calibration_runs > 0 ? options.calibration_runs : std::max(200, 10 * n);
   d.calibration_runs = ncal;
-  const Null null = calibrate(p, file, options, ncal, null_z, null_layout);
+  const Null null = calibrate(p, records.file, options, ncal, null_z, null_layout);
   std::vector<std::optional<gap::RunAnalyser>> analysers;
   const Evaluated base = evaluate_under(p, [](int) { return std::vector<const gap::Extension*>{}; }, analysers);
   const gap::Pooled observed = gap::pool(base.set(p.keys), all_runs(p.runs.size()));
@@ -390,10 +463,10 @@ RecordFile merge_record_files(const std::vector<RecordFile>& files, const std::v
     const RecordHeader& h0 = files.front().header;
     if (h.latitude_deg() != h0.latitude_deg() || h.system() != h0.system() ||
         h.test_duration_s() != h0.test_duration_s() || h.scheme() != h0.scheme() ||
-        h.dv_pulse_mps() != h0.dv_pulse_mps())
+        h.dv_pulse_mps() != h0.dv_pulse_mps() || h.nav_start_s() != h0.nav_start_s())
       throw InputError("--records " + names[f], "header",
                        "all record files of one diagnosis must share latitude_deg, system, test_duration_s, "
-                       "scheme and dv_pulse_mps with " + names.front());
+                       "scheme, nav_start_s and dv_pulse_mps with " + names.front());
     for (RecordRun r : files[f].runs) {
       if (ids.count(r.id)) r.id = next;
       for (RecordRow& row : r.rows) row.run = r.id;
