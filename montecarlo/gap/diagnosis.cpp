@@ -143,6 +143,7 @@ struct Records {
   RecordFile file;
   gap::RecordSite site;
   std::vector<gap::SchemeEstimates> estimates;  // per run, for a scheme that uses the test run
+  bool navigation_dropped = false;              // the scheme's estimates could not be recomputed
 };
 
 Records records_for_diagnosis(const RecordFile& file, const DiagnosisOptions& options,
@@ -173,6 +174,7 @@ Records records_for_diagnosis(const RecordFile& file, const DiagnosisOptions& op
       r.site.scheme = Scheme::kNone;
       r.site.estimators.reset();
       r.estimates.clear();
+      r.navigation_dropped = true;
       return r;
     }
     r.estimates.push_back(*u);
@@ -328,7 +330,8 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
   }
   if (with_test == 0)
     throw InputError("records", "no test rows", "the diagnosis needs the test run (phase test, 0 <= t_s <= T)");
-  if (with_nav < n)
+  d.scheme = std::string(to_string(file.header.scheme()));
+  if (with_nav < n && !records.navigation_dropped)
     d.statements.push_back(fmt::format("{} of {} runs stop at or before the end of the test: they count only in "
                                        "the test-run groups", n - with_nav, n));
 

@@ -103,6 +103,7 @@ struct GreedyStep {
 
 struct Diagnosis {
   int runs = 0;
+  std::string scheme = "none";  ///< the records' scheme (header)
   int calibration_runs = 0;
   std::vector<std::string> statements;  ///< what the data cannot support, plainly
   double gap = 0, p_value = 1, alpha = 0.01;

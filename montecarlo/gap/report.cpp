@@ -51,6 +51,7 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   for (const std::string& f : record_files) files.push_back(f);
   j["records"] = files;
   j["runs"] = d.runs;
+  j["scheme"] = d.scheme;
   Json g = Json::object();
   g["value"] = d.gap;
   g["significant"] = d.significant;
@@ -142,8 +143,9 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
 std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosis& d,
                                                                   const std::vector<std::string>& record_files) {
   std::string md = "# Sim-to-real gap diagnosis\n\n";
-  md += fmt::format("Records: {} ({} runs). Null: {} truth-level runs of the model itself at the records' "
-                    "times, pulse weight and site.\n\n", fmt::join(record_files, ", "), d.runs, d.calibration_runs);
+  md += fmt::format("Records: {} ({} runs, scheme {}). Null: {} truth-level runs of the model itself at the "
+                    "records' times, pulse weight, site and scheme.\n\n",
+                    fmt::join(record_files, ", "), d.runs, d.scheme, d.calibration_runs);
   md += "## 1. The gap\n\n";
   md += fmt::format("G = **{:.3g}** (p = {:.3g}, alpha = {}): **{}**. Null files of {} runs: median G {:.3g}, "
                     "critical G {:.3g}.\n\n",

@@ -92,13 +92,16 @@ TEST(Gap, TooFewRunsGiveAStatementNotARanking) {
   EXPECT_TRUE(has(r.out, "too few to fit candidate effects")) << r.out;
 }
 
-TEST(Gap, RecordsAfterEachSchemeOfTheModelItselfShowNoSignificantGap) {
+TEST(Gap, RecordsAfterEachKindOfSchemeOfTheModelItselfShowNoSignificantGap) {
   // The navigation after a scheme follows the scheme's maps, with each run's
   // estimates recomputed from its own test rows: records of the model itself
-  // after any scheme score no significant gap (these fixed seeds are among
-  // the 99 % of files the false-alarm rate alpha = 1 % leaves).
+  // after a scheme score no significant gap (these fixed seeds are among the
+  // 99 % of files the false-alarm rate alpha = 1 % leaves). One scheme per
+  // kind of navigation: realigned with torquer rates (5.1.2), reset with the
+  // accelerometer estimates (5.3), compensated from switch-over (5.4); 5.2
+  // below. 60 files after 5.2, 5.1.1 and 5.4: docs/gap.md.
   TempDir dir;
-  for (const char* scheme : {"5.1.1", "5.1.2", "combined", "5.2", "5.3", "5.4"}) {
+  for (const char* scheme : {"5.1.2", "5.3", "5.4"}) {
     const std::string records = simulate(dir, std::string("null_") + scheme + ".csv",
                                          std::string("--seed 15 --scheme ") + scheme + " --system 2");
     const auto r = run_insmc("gap --records " + records + " --format json");

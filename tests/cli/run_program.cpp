@@ -43,7 +43,12 @@ ProgramResult run_shell(const std::string& command) {
   return r;
 }
 
-ProgramResult run_insmc(const std::string& args) { return run_shell(insmc_path() + " " + args); }
+ProgramResult run_insmc(const std::string& args) {
+  std::string command = insmc_path();  // (not a temporary + literal: GCC 12's -Warray-bounds false positive)
+  command += ' ';
+  command += args;
+  return run_shell(command);
+}
 
 BackgroundProgram::BackgroundProgram(const std::string& command) {
   const std::string cmd = "exec " + command + " >" + (io_.path() / "out").string() + " 2>" +
