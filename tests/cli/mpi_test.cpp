@@ -5,6 +5,8 @@
 // bytes of an uninterrupted single-process run.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <csignal>
 
 #include "tests/cli/checkpoint_helpers.h"
@@ -15,8 +17,7 @@ namespace {
 
 // --oversubscribe: more ranks than cores on a CI machine; root in containers.
 std::string mpirun(int ranks) {
-  return std::string(INSMC_MPIEXEC) + " -n " + std::to_string(ranks) + " --oversubscribe --allow-run-as-root " +
-         insmc_path();
+  return fmt::format("{} -n {} --oversubscribe --allow-run-as-root {}", INSMC_MPIEXEC, ranks, insmc_path());
 }
 
 const std::string kStudy = " --scheme none,5.2 --grid-step 30min --seed 23";
