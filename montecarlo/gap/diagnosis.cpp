@@ -11,6 +11,7 @@
 
 #include "lib/common/input_error.h"
 #include "lib/common/assert.h"
+#include "lib/gap/filter_windows.h"
 #include "lib/gap/response.h"
 #include "lib/gap/scheme_rows.h"
 #include "montecarlo/gap/candidate_fit.h"
@@ -154,6 +155,27 @@ Records records_for_diagnosis(const RecordFile& file, const DiagnosisOptions& op
   if (!(r.site.filter_interval_s > 0)) {
     const double spacing = gap::median_f_spacing(file);
     r.site.filter_interval_s = spacing > 0 ? spacing : 10.0;
+  }
+  // After a scheme that uses the test run, the windows stay as recorded:
+  // its estimates came from them, and an estimator of longer windows can
+  // differ by a window's counting noise (5.3's Δf̂(T)).
+  if (uses_test_run(r.site.scheme) && r.site.filter_interval_s < options.min_filter_interval_s)
+    statements.push_back(fmt::format(
+        "f is recorded over {:g} s windows and kept so: scheme {}'s estimates were made from them (the diagnosis "
+        "takes longer than with windows of {:g} s or more)",
+        r.site.filter_interval_s, to_string(r.site.scheme), options.min_filter_interval_s));
+  const gap::FilterWindows windows =
+      uses_test_run(r.site.scheme) ? gap::FilterWindows{r.site.filter_interval_s, 1, 0}
+                                   : gap::coarsen_filter_windows(r.file, r.site.filter_interval_s,
+                                                                 r.site.test_duration_s, options.min_filter_interval_s);
+  if (windows.factor > 1) {
+    statements.push_back(fmt::format(
+        "f is recorded over {:g} s windows: they are summed {} at a time into {:g} s windows (what a {:g} s filter "
+        "box counts; nothing the model looks for lies above {:g} Hz){}",
+        r.site.filter_interval_s, windows.factor, windows.tau_s, windows.tau_s, 0.5 / windows.tau_s,
+        windows.dropped > 0 ? fmt::format("; {} f values in blocks with a gap are left out", windows.dropped) : ""));
+    r.site.filter_interval_s = windows.tau_s;
+    r.file.header.set("filter_interval_s", windows.tau_s);
   }
   const Scheme scheme = r.site.scheme;
   if (!uses_test_run(scheme)) return r;

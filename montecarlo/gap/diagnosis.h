@@ -40,6 +40,9 @@ struct DiagnosisOptions {
   /// Pulse weight assumed when the header has no dv_pulse_mps [m/s].
   double default_pulse_mps = 0.1 * kFtpsToMps;
   gap::ExtractionOptions extraction;
+  /// f windows shorter than this are summed into windows of at least this
+  /// length before anything else (lib/gap/filter_windows.h) [s].
+  double min_filter_interval_s = 1.0;
   int minimum_runs = 5;             ///< for a ranking (two halves of ≥ 2 runs)
 };
 
