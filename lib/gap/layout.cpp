@@ -174,13 +174,12 @@ std::vector<RunData> extract_runs(const RecordFile& file, const RecordSite& site
       auto& values = test ? test_values : nav_values;
       const Stage stage = test ? Stage::kTest : Stage::kNav;
       const int window = test ? 0 : window_of(row.t_s);
-      // Time since the switch-over that started this row's navigation.
-      const double clock = !test && segment == NavSegment::kRestart ? row.t_s - site.nav_start_s : row.t_s;
+      // (f rows modelled are on the first navigation's clock, t_s.)
       const bool f_modelled = site.scheme != Scheme::k5_4 && (test || segment != NavSegment::kRestart);
       for (int k = 0; k < 3 && f_modelled; ++k) {
         // A window must lie after switch-over and not overlap the last one.
         const double spacing = test ? tau : std::max(tau, options.nav_f_spacing_s);
-        if (!row.f_mps2[k] || clock < tau * (1 - 1e-9) || row.t_s - last_f[k] < spacing * (1 - 1e-6)) continue;
+        if (!row.f_mps2[k] || row.t_s < tau * (1 - 1e-9) || row.t_s - last_f[k] < spacing * (1 - 1e-6)) continue;
         last_f[k] = row.t_s;
         rows.push_back({row.t_s, Quantity::kF, k, group_of(stage, Quantity::kF, k, window)});
         values.push_back(*row.f_mps2[k]);

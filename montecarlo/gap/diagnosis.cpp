@@ -22,9 +22,6 @@
 namespace insmc::mc {
 namespace {
 
-using gap::GroupSums;
-using gap::GroupValues;
-
 using Prepared = PreparedRuns;
 
 /// Every run under base + extensions (built per layout by `build`).
@@ -212,6 +209,13 @@ Records records_for_diagnosis(const RecordFile& file, const DiagnosisOptions& op
   return r;
 }
 
+/// Takes the scheme's use of a run's own test-run estimates off its rows
+/// (scheme_rows.h): exact, whatever moved the estimates.
+void take_off_estimates(gap::RunData& run, const gap::BaseModel& base, const gap::SchemeEstimates& estimates) {
+  Eigen::Map<Eigen::VectorXd>(run.values.data(), static_cast<Eigen::Index>(run.values.size())) -=
+      base.estimate_map * estimates;
+}
+
 Prepared prepare(const Records& records, const DiagnosisOptions& options) {
   Prepared p;
   p.site = records.site;
@@ -220,10 +224,8 @@ Prepared prepare(const Records& records, const DiagnosisOptions& options) {
   for (std::size_t r = 0; r < p.runs.size(); ++r) {
     const int L = p.layout_index(p.runs[r].layout);
     p.layout_of.push_back(L);
-    if (records.estimates.empty()) continue;
-    // Take the scheme's use of this run's estimates off its rows.
-    Eigen::Map<Eigen::VectorXd>(p.runs[r].values.data(), static_cast<Eigen::Index>(p.runs[r].values.size())) -=
-        p.bases[static_cast<std::size_t>(L)].estimate_map * records.estimates[r];
+    if (!records.estimates.empty())
+      take_off_estimates(p.runs[r], p.bases[static_cast<std::size_t>(L)], records.estimates[r]);
   }
   return p;
 }
@@ -263,9 +265,7 @@ Null calibrate(Prepared& p, const RecordFile& file, const DiagnosisOptions& opti
   for (std::size_t j = 0; j < sim.size(); ++j) {
     layout_of[j] = p.layout_index(sim[j].layout);
     // The null run's own estimates, taken off its rows as the records' are.
-    if (p.site.estimators)
-      Eigen::Map<Eigen::VectorXd>(sim[j].values.data(), static_cast<Eigen::Index>(sim[j].values.size())) -=
-          p.bases[static_cast<std::size_t>(layout_of[j])].estimate_map * estimates[j];
+    if (p.site.estimators) take_off_estimates(sim[j], p.bases[static_cast<std::size_t>(layout_of[j])], estimates[j]);
   }
   std::vector<gap::RunAnalyser> analysers;
   std::vector<const gap::RunAnalyser*> pointers;

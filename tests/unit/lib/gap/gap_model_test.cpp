@@ -228,6 +228,12 @@ TEST(GapMetric, CoherentGroupsSeeOnlyWhatRunsShareBeyondIndependence) {
   const RunSet null = make_run_set({floored, floored}, same, keys);
   const NullCalibration cal = NullCalibration::from_null(null);
   EXPECT_NEAR(cal.systematic[static_cast<std::size_t>(c)], 1.0, 1e-12);  // pairs 2.25 over floor 2.25
+  EXPECT_NEAR(cal.floor_share[g], 0.0, 1e-12);  // z² = the actual expectation: the floor adds nothing
+  // κ: the share of the floor the null's z² shows, (z² − expected) / floor.
+  GroupSums half_floored = floored;
+  half_floored.z2[g] = 2.25 + 0.5 * 2.25;
+  EXPECT_NEAR(NullCalibration::from_null(make_run_set({half_floored, half_floored}, same, keys)).floor_share[g], 0.5,
+              1e-12);
   EXPECT_NEAR(log_ratios(pool(null, both), cal).coherent[static_cast<std::size_t>(c)], 0.0, 1e-12);
 }
 
