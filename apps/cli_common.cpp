@@ -8,7 +8,6 @@
 #include "lib/common/input_error.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
-#include "montecarlo/write/atomic_file.h"
 
 namespace insmc::app {
 
@@ -70,14 +69,6 @@ ModelOptions read_model_options(const po::variables_map& vm, bool system2_used) 
   if (!(o.leveling_gain_ratio > 0) || !std::isfinite(o.leveling_gain_ratio))
     throw InputError("--leveling-gain", fmt::format("{}", o.leveling_gain_ratio), "must be a finite number > 0");
   return o;
-}
-
-void write_output_files(const std::filesystem::path& dir, const OutputFiles& files) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
-    throw InputError("--out", dir.string(), "cannot create the folder: " + ec.message());
-  for (const auto& [name, contents] : files) mc::write_file_atomically(dir / name, contents);
 }
 
 }  // namespace insmc::app

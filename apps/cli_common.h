@@ -1,8 +1,8 @@
 #pragma once
 /// What every subcommand shares: option parsing (command line, then an INI
 /// file given by --config; the command line wins), --help, the output
-/// format, --out DIR, and writing all output files only after everything
-/// has been computed (so a failure leaves no partial output).
+/// format and the files of --out DIR (checked before the work and written
+/// as one set after it: apps/output_paths.h).
 #include <boost/program_options.hpp>
 #include <filesystem>
 #include <optional>
@@ -31,10 +31,8 @@ po::options_description model_options_description();
 /// Reads them; `system2_used` enables the |L0| < 90° check of (2.16).
 ModelOptions read_model_options(const po::variables_map& vm, bool system2_used);
 
-/// Files to write into an output folder: (file name, contents).
+/// Files to write into an output folder: (file name, contents); written
+/// as one set by apps/output_paths.h.
 using OutputFiles = std::vector<std::pair<std::string, std::string>>;
-
-/// Creates `dir` if needed and writes each file atomically.
-void write_output_files(const std::filesystem::path& dir, const OutputFiles& files);
 
 }  // namespace insmc::app

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli_common.h"
+#include "apps/output_paths.h"
 #include "apps/study_options.h"
 #include "montecarlo/study/study_map.h"
 
@@ -20,14 +21,16 @@ int run_covariance(const Args& args) {
   const mc::StudyConfig config = read_study_config(*vm, false);
   const OutputFormat format = parse_output_format((*vm)["format"].as<std::string>());
   const mc::LengthUnit unit = read_length_unit(*vm);
+  std::optional<OutputFolderOption> out = prepare_output_folder(
+      *vm, "covariance", {"covariance.csv", "covariance_grid.csv", "budget.csv", "covariance.md"});
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
   const mc::CovarianceFiles files = mc::render_covariance(config, layout, map, unit);
   mc::Json json = mc::Json::object();
   json["settings"] = mc::settings_json(config);
   json["covariance"] = files.covariance_json;
-  if (vm->count("out")) {
-    write_output_files((*vm)["out"].as<std::string>(), {{"covariance.csv", files.covariance_csv},
+  if (out) {
+    out->write({{"covariance.csv", files.covariance_csv},
                                                         {"covariance_grid.csv", files.covariance_grid_csv},
                                                         {"budget.csv", files.budget_csv},
                                                         {"covariance.md", files.covariance_md}});

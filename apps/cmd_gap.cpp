@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli_common.h"
+#include "apps/output_paths.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
 #include "lib/records/record_io.h"
@@ -42,6 +43,7 @@ int run_gap(const Args& args) {
   if (options.max_selected < 1 || options.max_selected > 5)
     throw InputError("--max-effects", std::to_string(options.max_selected), "must lie in [1, 5]");
   options.prior = read_uncertainty_model(*vm);
+  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "gap");
 
   const std::vector<std::string> names = (*vm)["records"].as<std::vector<std::string>>();
   std::vector<RecordFile> files;
@@ -51,10 +53,10 @@ int run_gap(const Args& args) {
 
   const std::string json = mc::diagnosis_json(d, names).dump(2) + "\n";
   std::vector<std::pair<std::string, std::string>> report = mc::diagnosis_report(d, names);
-  if (vm->count("out")) {
+  if (out) {
     OutputFiles files_out(report.begin(), report.end());
     files_out.emplace_back("gap.json", json);
-    write_output_files((*vm)["out"].as<std::string>(), files_out);
+    out->write(files_out);
   }
   fmt::print("{}", format == OutputFormat::kJson ? json : report.front().second);
   return 0;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli_common.h"
+#include "apps/output_paths.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
 #include "lib/truth/effect.h"
@@ -51,9 +52,10 @@ int run_gap_validate(const Args& args) {
       options.magnitudes.push_back(m);
     }
   }
+  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "gap-validate");
   const mc::ValidationResult r = mc::validate_diagnosis(options);
   const auto files = mc::validation_report(r, options);
-  if (vm->count("out")) write_output_files((*vm)["out"].as<std::string>(), OutputFiles(files.begin(), files.end()));
+  if (out) out->write(OutputFiles(files.begin(), files.end()));
   fmt::print("{}", files.front().second);
   for (const std::string& f : r.failures) fmt::print(stderr, "gap-validate: target not met: {}\n", f);
   return r.failures.empty() ? 0 : 1;

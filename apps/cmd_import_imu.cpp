@@ -8,13 +8,13 @@
 #include <sstream>
 
 #include "apps/cli_common.h"
+#include "apps/output_paths.h"
 #include "lib/common/input_error.h"
 #include "lib/imu/imu_samples.h"
 #include "lib/imu/strapdown.h"
 #include "lib/records/record_io.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
-#include "montecarlo/write/atomic_file.h"
 
 namespace insmc::app {
 namespace {
@@ -122,6 +122,7 @@ int run_import_imu(const Args& args) {
   nav.gyro_bias = parse_gyro_bias_mode((*vm)["gyro-bias"].as<std::string>(), "--gyro-bias");
   if (auto e = validate(nav)) throw *e;
   const RunsFrom runs_from = parse_runs_from((*vm)["runs-from"].as<std::string>());
+  const OutputFileOption out_file("--out", (*vm)["out"].as<std::string>());  // checked and locked before the work
 
   RecordFile file;
   file.header = RecordHeader::make(nav.latitude_rad / kDegToRad, System::kTheodolite, nav.test_duration_s, Scheme::kNone);
@@ -176,7 +177,7 @@ int run_import_imu(const Args& args) {
       file.runs.push_back(std::move(out));
     }
   }
-  mc::write_file_atomically((*vm)["out"].as<std::string>(), write_record_file(file));
+  out_file.write(write_record_file(file));
   return 0;
 }
 

@@ -13,6 +13,7 @@
 #include "apps/checkpoint.h"
 #include "apps/cli_common.h"
 #include "apps/interrupt.h"
+#include "apps/output_paths.h"
 #include "apps/ranks.h"
 #include "apps/study_options.h"
 #include "apps/study_runner.h"
@@ -24,7 +25,6 @@
 #include "montecarlo/engine/engine.h"
 #include "lib/compensation/extended_vector.h"
 #include "montecarlo/sampler/sampler.h"
-#include "montecarlo/write/atomic_file.h"
 #include "montecarlo/write/csv.h"
 
 namespace insmc::app {
@@ -92,6 +92,22 @@ void on_root_or_fail_everywhere(Ranks& ranks, const std::string& field, const st
   }
   error = ranks.broadcast(error);
   if (!error.empty()) throw InputError(field, value, error);
+}
+
+/// Runs `f` (the checks of the output paths) on rank 0; its InputError
+/// becomes the same one-line error on every rank.
+template <class F>
+void on_root_input_errors(Ranks& ranks, F&& f) {
+  std::string error;
+  if (ranks.root()) {
+    try {
+      f();
+    } catch (const InputError& e) {
+      error = e.what();
+    }
+  }
+  error = ranks.broadcast(error);
+  if (!error.empty()) throw InputError(error);
 }
 
 /// --resume FILE: read on rank 0 and sent to the others (no shared file
@@ -188,6 +204,20 @@ int run_command(const Args& args, Ranks& ranks) {
   const double checkpoint_every_s = parse_quantity(every_text, Dimension::kTime, "--checkpoint-every");
   if (!(checkpoint_every_s > 0)) throw InputError("--checkpoint-every", every_text, "must be > 0");
   const std::vector<SweepAxis> sweeps = find_sweeps(*vm);
+  // Every output path is checked and locked now, before any work: a path
+  // the user can fix costs no computing (docs/outputs.md).
+  std::optional<OutputFolderOption> out;
+  std::optional<OutputFileOption> checkpoint_file;
+  if (!vm->count("replay")) {
+    on_root_input_errors(ranks, [&] {
+      const std::vector<std::string> names =
+          sweeps.empty() ? std::vector<std::string>{"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.svg",
+                                                    "run.json"}
+                         : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.svg"};
+      out = prepare_output_folder(*vm, "run", names);
+      if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path);
+    });
+  }
   if (!sweeps.empty()) {
     if (vm->count("replay")) throw InputError("--replay", (*vm)["replay"].as<std::string>(), "cannot be combined with a sweep");
     if (!checkpoint_path.empty())
@@ -201,9 +231,8 @@ int run_command(const Args& args, Ranks& ranks) {
           return run_study_blocks(c, m, ranks, StudyProgress{{}, mc::StudyAccumulator(m)}, plan).progress.state;
         });
     if (!ranks.root()) return 0;
-    if (vm->count("out"))
-      write_output_files((*vm)["out"].as<std::string>(), {{"sweep.csv", files.sweep_csv}, {"sweep.md", files.summary_md},
-                                                          {"sweep.svg", files.plot_svg}});
+    if (out)
+      out->write({{"sweep.csv", files.sweep_csv}, {"sweep.md", files.summary_md}, {"sweep.svg", files.plot_svg}});
     fmt::print("{}", format == OutputFormat::kCsv ? files.sweep_csv : files.summary_md);
     return 0;
   }
@@ -241,13 +270,13 @@ int run_command(const Args& args, Ranks& ranks) {
     ck.samples = config.samples;
     plan.checkpoint_every_s = checkpoint_every_s;
     plan.stop_on_signals = true;
-    plan.write_checkpoint = [ck = std::move(ck), &checkpoint_path](const StudyProgress& p) mutable {
+    plan.write_checkpoint = [ck = std::move(ck), &checkpoint_file](const StudyProgress& p) mutable {
       ck.done = p.done;
       ck.state = p.state.serialize();
-      mc::write_file_atomically(checkpoint_path, encode_checkpoint(ck));
+      checkpoint_file->write(encode_checkpoint(ck));
     };
     // A path that cannot be written fails now, not after the first stretch of work.
-    on_root_or_fail_everywhere(ranks, "--checkpoint", checkpoint_path, [&] { plan.write_checkpoint(start); });
+    on_root_input_errors(ranks, [&] { plan.write_checkpoint(start); });
   }
 
   const auto started = std::chrono::steady_clock::now();
@@ -288,12 +317,12 @@ int run_command(const Args& args, Ranks& ranks) {
   run["envelope"] = files.envelope_json;
   const std::string run_json = run.dump();
 
-  if (vm->count("out")) {
-    write_output_files((*vm)["out"].as<std::string>(), {{"envelope.csv", files.envelope_csv},
-                                                        {"envelope_grid.csv", files.envelope_grid_csv},
-                                                        {"envelope.md", files.envelope_md},
-                                                        {"envelope.svg", files.envelope_svg},
-                                                        {"run.json", run_json}});
+  if (out) {
+    out->write({{"envelope.csv", files.envelope_csv},
+                {"envelope_grid.csv", files.envelope_grid_csv},
+                {"envelope.md", files.envelope_md},
+                {"envelope.svg", files.envelope_svg},
+                {"run.json", run_json}});
   }
   switch (format) {
     case OutputFormat::kCsv: fmt::print("{}", files.envelope_csv); break;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli_common.h"
+#include "apps/output_paths.h"
 #include "apps/study_options.h"
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
@@ -15,7 +16,6 @@
 #include "lib/units/units.h"
 #include "montecarlo/gap/record_simulation.h"
 #include "montecarlo/sampler/sampler.h"
-#include "montecarlo/write/atomic_file.h"
 
 namespace insmc::app {
 
@@ -57,6 +57,7 @@ int run_simulate(const Args& args) {
   if (vm->count("effect"))
     for (const auto& e : (*vm)["effect"].as<std::vector<std::string>>()) truth.effects.push_back(parse_effect(e, "--effect"));
   if (const auto err = validate(truth)) throw *err;
+  const OutputFileOption out("--out", (*vm)["out"].as<std::string>());  // checked and locked before the work
   // The scheme's estimators: the same resolvable terms as `insmc run` fits.
   const Resolvability resolvable = resolvable_terms(system, model, test, uncertainties);
   const TruthSchemeSetup setup(truth, test, make_estimators(test, model, resolvable.u3, resolvable.u4));
@@ -80,7 +81,7 @@ int run_simulate(const Args& args) {
   const mc::RecordRunSpec spec{T, test.position_resolution_m, scheme, &setup, nav_start_s};
   for (int run = 0; run < runs; ++run)
     file.runs.push_back(mc::simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(run), times, spec));
-  mc::write_file_atomically((*vm)["out"].as<std::string>(), write_record_file(file));
+  out.write(write_record_file(file));
   return 0;
 }
 

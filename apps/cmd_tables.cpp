@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli_common.h"
+#include "apps/output_paths.h"
 #include "lib/common/input_error.h"
 #include "montecarlo/write/csv.h"
 #include "montecarlo/write/markdown.h"
@@ -61,10 +62,11 @@ int run_tables(const Args& args) {
   const tables::TableConvention conv =
       tables::parse_table_convention((*vm)["convention"].as<std::string>(), "--convention");
   const ModelOptions model = read_model_options(*vm, true);
+  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "tables", {"tables.md", "tables.csv"});
   const std::vector<tables::TableCell> cells = tables::compute_tables(model, conv);
   const std::string csv = mc::render_csv(cells_table(cells, true));
   const std::string md = render_markdown_report(cells, conv);
-  if (vm->count("out")) write_output_files((*vm)["out"].as<std::string>(), {{"tables.md", md}, {"tables.csv", csv}});
+  if (out) out->write({{"tables.md", md}, {"tables.csv", csv}});
   fmt::print("{}", format == OutputFormat::kCsv ? csv : md);
   return 0;
 }

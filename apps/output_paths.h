@@ -1,0 +1,49 @@
+#pragma once
+/// The output paths of the subcommands (--out DIR, --out FILE,
+/// --checkpoint FILE): checked and locked before any work, so that a path
+/// the user can fix is refused at once with exit code 2 (InputError naming
+/// the option and the path), and written at the end as a whole
+/// (montecarlo/write/output_set.h, output_file.h; docs/outputs.md).
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "apps/cli_common.h"
+#include "montecarlo/write/output_file.h"
+#include "montecarlo/write/output_set.h"
+
+namespace insmc::app {
+
+/// An output folder (`--out DIR`), checked and locked.
+class OutputFolderOption {
+ public:
+  /// `command`: the subcommand (recorded in the set's manifest);
+  /// `expected_files`: the names the set will hold, when known before the work.
+  OutputFolderOption(std::string option, std::string path, const std::string& command,
+                     const std::vector<std::string>& expected_files = {});
+  /// Writes the whole set (a failure the user can fix: InputError).
+  void write(const OutputFiles& files);
+
+ private:
+  std::string option_, text_;
+  std::optional<mc::OutputFolder> folder_;
+};
+
+/// The folder of option "out" when it was given.
+std::optional<OutputFolderOption> prepare_output_folder(const po::variables_map& vm, const std::string& command,
+                                                        const std::vector<std::string>& expected_files = {});
+
+/// One output file (`--out FILE`, `--checkpoint FILE`), checked and locked.
+class OutputFileOption {
+ public:
+  OutputFileOption(std::string option, std::string path);
+  /// Replaces the file atomically (a failure the user can fix: InputError).
+  void write(std::string_view contents) const;
+
+ private:
+  std::string option_, text_;
+  std::optional<mc::OutputFile> file_;
+};
+
+}  // namespace insmc::app
