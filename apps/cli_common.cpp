@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "lib/common/input_error.h"
+#include "lib/units/physical_range.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
 
@@ -49,7 +50,7 @@ po::options_description model_options_description() {
   d.add_options()("latitude", po::value<std::string>()->default_value("45deg"),
                   "latitude L0 of the stationary vehicle (e.g. 45deg, 0.7854rad)")(
       "leveling-gain", po::value<double>()->default_value(500.0),
-      "system-1 leveling-loop DC gain F(0) in units of earth rate (§2.1), > 0");
+      "system-1 leveling-loop DC gain F(0) in units of earth rate (§2.1), in [10, 1e5]");
   return d;
 }
 
@@ -66,8 +67,8 @@ ModelOptions read_model_options(const po::variables_map& vm, bool system2_used) 
   }
   if (!(abs_lat <= 90.0 * kDegToRad)) throw InputError("--latitude", lat, "must lie within ±90deg");
   o.leveling_gain_ratio = vm["leveling-gain"].as<double>();
-  if (!(o.leveling_gain_ratio > 0) || !std::isfinite(o.leveling_gain_ratio))
-    throw InputError("--leveling-gain", fmt::format("{}", o.leveling_gain_ratio), "must be a finite number > 0");
+  require_in_range("--leveling-gain", o.leveling_gain_ratio, Dimension::kDimensionless,
+                   {ModelOptions::kMinLevelingGainRatio, ModelOptions::kMaxLevelingGainRatio}, "F(0)/ω_ie");
   return o;
 }
 

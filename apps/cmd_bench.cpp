@@ -80,9 +80,11 @@ int run_bench(const Args& args) {
   int threads = (*vm)["threads"].as<int>();
   for (const auto& [name, n] : {std::pair{"--samples", samples}, std::pair{"--pipeline-samples", pipeline_samples},
                                 std::pair{"--truth-samples", truth_samples}})
-    if (n < mc::kBlockSize) throw InputError(name, std::to_string(n), "must be >= 1024");
+    if (n < mc::kBlockSize || n > mc::kMaxSamples)
+      throw InputError(name, std::to_string(n), fmt::format("must lie in [1024, {}]", mc::kMaxSamples));
   if (rounds < 1 || rounds > 50) throw InputError("--rounds", std::to_string(rounds), "must lie in [1, 50]");
-  if (threads < 0) throw InputError("--threads", std::to_string(threads), "must be >= 0");
+  if (threads < 0 || threads > mc::kMaxThreads)
+    throw InputError("--threads", std::to_string(threads), fmt::format("must lie in [0, {}]", mc::kMaxThreads));
   if (threads == 0) threads = static_cast<int>(std::thread::hardware_concurrency());
   std::vector<Round> results;
   for (int i = 0; i < rounds; ++i)

@@ -19,6 +19,7 @@
 #include "apps/study_runner.h"
 #include "apps/sweep.h"
 #include "lib/common/input_error.h"
+#include "lib/units/physical_range.h"
 #include "lib/common/version.h"
 #include "lib/units/quantity.h"
 #include "lib/uncertainty/catalogue.h"
@@ -162,7 +163,7 @@ int run_command(const Args& args, Ranks& ranks) {
       "checkpoint", po::value<std::string>(),
       "write FILE (every setting and the merged state of the finished samples) every --checkpoint-every of work, "
       "at the end (the file is kept) and on SIGINT/SIGTERM, which then exit 130/143")(
-      "checkpoint-every", po::value<std::string>()->default_value("10s"), "work between two checkpoints, > 0")(
+      "checkpoint-every", po::value<std::string>()->default_value("10s"), "work between two checkpoints, in [10ms, 24h]")(
       "resume", po::value<std::string>(),
       "continue the run of checkpoint FILE to the same result, byte for byte; no other option is needed, and only "
       "--out, --format, --threads, --checkpoint (default FILE) and --checkpoint-every may be given");
@@ -202,7 +203,8 @@ int run_command(const Args& args, Ranks& ranks) {
   const std::string checkpoint_path = vm->count("checkpoint") ? (*vm)["checkpoint"].as<std::string>() : "";
   const std::string every_text = (*vm)["checkpoint-every"].as<std::string>();
   const double checkpoint_every_s = parse_quantity(every_text, Dimension::kTime, "--checkpoint-every");
-  if (!(checkpoint_every_s > 0)) throw InputError("--checkpoint-every", every_text, "must be > 0");
+  // From 10 ms (each checkpoint is written atomically; tests use 0.1 s) to a day.
+  require_in_range("--checkpoint-every", checkpoint_every_s, Dimension::kTime, {0.01, 24 * 3600.0});
   const std::vector<SweepAxis> sweeps = find_sweeps(*vm);
   // Every output path is checked and locked now, before any work: a path
   // the user can fix costs no computing (docs/outputs.md).

@@ -18,6 +18,9 @@
 #include "montecarlo/sampler/sampler.h"
 
 namespace insmc::app {
+namespace {
+constexpr int kMaxSimulatedRuns = 10000;
+}  // namespace
 
 int run_simulate(const Args& args) {
   po::options_description opts("Options");
@@ -37,7 +40,9 @@ int run_simulate(const Args& args) {
   if (!vm) return 0;
   if (!vm->count("out")) throw InputError("--out", "(missing)", "give the record file to write");
   const int runs = (*vm)["runs"].as<int>();
-  if (runs < 1 || runs > 100000) throw InputError("--runs", std::to_string(runs), "must lie in [1, 100000]");
+  // The record reader's own cap: every file simulate writes can be read back.
+  if (runs < 1 || runs > kMaxSimulatedRuns)
+    throw InputError("--runs", std::to_string(runs), fmt::format("must lie in [1, {}]", kMaxSimulatedRuns));
   const std::uint64_t seed = (*vm)["seed"].as<std::uint64_t>();
   const System system = parse_system((*vm)["system"].as<std::string>(), "--system");
   const Scheme scheme = parse_scheme((*vm)["scheme"].as<std::string>());

@@ -6,7 +6,8 @@ po::options_description uncertainty_options_description() {
   po::options_description d("Uncertainties (names: insmc params)");
   d.add_options()("bound", po::value<std::vector<std::string>>()->composing(),
                   "NAME=VALUE with unit, e.g. gyro_drift=3meru, accel_bias_x=0.5mg; NAME is a "
-                  "catalogue name, a group or all; repeatable")(
+                  "catalogue name, a group or all; repeatable. Physical ranges: angles 100mrad, rates 10000meru, "
+                  "accelerations 100mg, velocities 10mps, scale factors 0.1, altitude 10km")(
       "dist", po::value<std::vector<std::string>>()->composing(),
       "NAME=uniform|normal:K|fixed:VALUE|zero (bound = K sigma for normal); repeatable, applied "
       "in order, e.g. --dist all=zero --dist gyro_drift_z=fixed:10meru");
@@ -66,14 +67,14 @@ po::options_description study_options_description(bool monte_carlo) {
       "fidelity", po::value<std::string>()->default_value("linear"),
       "paper (the report's closed forms as printed), linear (full linear model, report errors corrected) or "
       "truth (the nonlinear simulator per sample, every scheme through its injection points)")(
-      "confidence", po::value<double>()->default_value(0.95), "confidence level of the RMS intervals, in (0, 1)")(
+      "confidence", po::value<double>()->default_value(0.95), "confidence level of the RMS intervals, in [0.5, 0.999999]")(
       "units", po::value<std::string>()->default_value("si"), "si (metres, _m columns) or paper (feet, _ft columns)")(
       "grid-step", po::value<std::string>()->default_value("2min"), "envelope time-grid step")(
       "grid-end", po::value<std::string>()->default_value("90min"), "envelope time-grid end");
   if (monte_carlo) {
-    d.add_options()("samples", po::value<std::string>()->default_value("100000"), "Monte Carlo samples, >= 2")(
+    d.add_options()("samples", po::value<std::string>()->default_value("100000"), "Monte Carlo samples, in [2, 2^40]")(
         "seed", po::value<std::string>()->default_value("1"), "seed of the counter-based random streams")(
-        "threads", po::value<int>()->default_value(0), "worker threads (0 = all cores); never changes results");
+        "threads", po::value<int>()->default_value(0), "worker threads (0 = all cores, at most 1024); never changes results");
   }
   d.add(model_options_description());
   d.add(test_run_options_description());
@@ -84,27 +85,27 @@ po::options_description study_options_description(bool monte_carlo) {
 po::options_description test_run_options_description() {
   po::options_description d("Preflight test run, measurements and realignment (chapters 4, 5)");
   d.add_options()("test-duration", po::value<std::string>()->default_value("15min"),
-                  "test-run length T on the stationary base (a whole number of filter intervals)")(
-      "filter-interval", po::value<std::string>()->default_value("10s"), "filter-box counting interval tau (fig. 5.2)")(
+                  "test-run length T on the stationary base, in (0, 2h] (a whole number of filter intervals, 4 to 1800 of them)")(
+      "filter-interval", po::value<std::string>()->default_value("10s"), "filter-box counting interval tau (fig. 5.2), >= 0.1s")(
       "dv-pulse", po::value<std::string>()->default_value("0.1ftps"),
-      "accelerometer pulse weight (velocity increment); 0mps = continuous output")(
+      "accelerometer pulse weight (velocity increment), in [0, 1mps]; 0mps = continuous output")(
       "position-resolution", po::value<std::string>()->default_value("3ft"),
-      "resolution of the position computer; 0m = exact")(
+      "resolution of the position computer, in [0, 1km]; 0m = exact")(
       "fit-u4", po::value<std::string>()->default_value("auto"),
       "fit the U4 (t^2) term: auto (when resolvable by (4.6)), yes (error if not), no")(
       "sway", po::value<std::string>()->default_value("off"),
-      "vehicle sway as VELOCITY_RMS,CORRELATION_TIME (e.g. 5mmps,6s: a parked aircraft in light wind) or off")(
+      "vehicle sway as VELOCITY_RMS,CORRELATION_TIME (e.g. 5mmps,6s: a parked aircraft in light wind; RMS in [0, 1mps], time in [0.1s, 1h]) or off")(
       "realignment-duration", po::value<std::string>()->default_value("10min"),
-      "realignment time of 5.1.1, 5.1.2, combined (adds to ready_time_min)")(
+      "realignment time of 5.1.1, 5.1.2, combined (adds to ready_time_min), in [0, 6h]")(
       "alignment-average", po::value<std::string>()->default_value("10min"),
-      "5.4: averaging time of the alignment-phase torquer commands and accelerometer outputs")(
+      "5.4: averaging time of the alignment-phase torquer commands and accelerometer outputs, in (0, 6h]")(
       "torquer-pulse", po::value<std::string>()->default_value("1arcsec"),
-      "5.4: angle per gyro torquer pulse (resolution of the command measurement); 0rad = exact")(
+      "5.4: angle per gyro torquer pulse (resolution of the command measurement), in [0, 1mrad]; 0rad = exact")(
       "alignment-time", po::value<std::string>()->default_value("steady"),
       "truth level: fine-alignment time with the loops (2.9)/(2.13) simulated in the time domain, or steady "
       "(the loops' steady state)")(
       "coarse-misalignment", po::value<std::string>()->default_value("0.1mrad,0.1mrad,5mrad"),
-      "with --alignment-time: misalignment C_x,C_y,C_z at the start of the fine alignment");
+      "with --alignment-time: misalignment C_x,C_y,C_z at the start of the fine alignment, each within ±0.1rad");
   return d;
 }
 

@@ -42,6 +42,40 @@ SweepAxis axis_of(const std::string& column, const std::string& option, const st
   return a;
 }
 
+/// Every point is a full study: 100 values per quantity and 1000 points in
+/// all (minutes each at the default samples) bound a sweep's run time.
+constexpr std::size_t kMaxSweepValues = 100, kMaxSweepPoints = 1000;
+
+void check_sweep_size(const std::vector<SweepAxis>& axes) {
+  std::size_t points = 1;
+  for (const auto& a : axes) {
+    if (a.texts.size() > kMaxSweepValues)
+      throw InputError(fmt::format("sweep {}", a.column), fmt::format("{} values", a.texts.size()),
+                       fmt::format("at most {} values per swept quantity", kMaxSweepValues));
+    points *= a.texts.size();
+    if (points > kMaxSweepPoints)
+      throw InputError("sweep", fmt::format("more than {} points", kMaxSweepPoints),
+                       fmt::format("at most {} points in the product of the swept quantities", kMaxSweepPoints));
+  }
+}
+
+/// The study of point `p` (row-major over the axes); `idx` gets each axis's value index.
+mc::StudyConfig point_config(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, std::size_t p,
+                             std::vector<std::size_t>& idx) {
+  mc::StudyConfig c = base;
+  c.with_grid = false;
+  if (c.test.fit_u4 == FitU4::kYes) c.test.fit_u4 = FitU4::kAuto;  // each point fits what it can resolve
+  idx.assign(axes.size(), 0);
+  std::size_t rest = p;
+  for (std::size_t i = axes.size(); i-- > 0;) {
+    idx[i] = rest % axes[i].texts.size();
+    rest /= axes[i].texts.size();
+    axes[i].apply(c, idx[i]);
+  }
+  mc::validate(c);
+  return c;
+}
+
 }  // namespace
 
 std::vector<SweepAxis> find_sweeps(const po::variables_map& vm) {
@@ -72,6 +106,7 @@ std::vector<SweepAxis> find_sweeps(const po::variables_map& vm) {
       axes.push_back(std::move(a));
     }
   }
+  check_sweep_size(axes);
   return axes;
 }
 
@@ -91,20 +126,15 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
                                                               mc::format_number(base.report_times_s.back() / 60)),
                      "fitted"});
   std::vector<mc::PlotSeries> plot;
+  check_sweep_size(axes);
   std::size_t points = 1;
   for (const auto& a : axes) points *= a.texts.size();
+  std::vector<std::size_t> idx;
+  // Every point is checked before the first is run: a value out of range
+  // late in the list must not cost the points before it.
+  for (std::size_t p = 0; p < points; ++p) point_config(base, axes, p, idx);
   for (std::size_t p = 0; p < points; ++p) {
-    mc::StudyConfig c = base;
-    c.with_grid = false;
-    if (c.test.fit_u4 == FitU4::kYes) c.test.fit_u4 = FitU4::kAuto;  // each point fits what it can resolve
-    std::vector<std::size_t> idx(axes.size());
-    std::size_t rest = p;
-    for (std::size_t i = axes.size(); i-- > 0;) {
-      idx[i] = rest % axes[i].texts.size();
-      rest /= axes[i].texts.size();
-      axes[i].apply(c, idx[i]);
-    }
-    mc::validate(c);
+    const mc::StudyConfig c = point_config(base, axes, p, idx);
     const mc::StudyLayout layout = mc::make_layout(c);
     const mc::StudyMap map(c, layout);
     const mc::StudyAccumulator acc = run ? run(c, map) : mc::run_blocks(c, map, 0, mc::block_count(c.samples));

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "lib/common/input_error.h"
+#include "lib/units/physical_range.h"
 
 namespace insmc {
 namespace {
@@ -76,16 +77,18 @@ struct Loops {
 }  // namespace
 
 void validate(const AlignmentLoopSettings& s) {
-  const auto positive = [](const char* field, double v) {
-    if (!(v > 0) || !std::isfinite(v)) throw InputError(field, fmt::format("{}s", v), "must be > 0");
-  };
-  positive("--alignment-time", s.duration_s);
-  positive("alignment level_filter_s", s.level_filter_s);
-  positive("alignment level_integral_s", s.level_integral_s);
-  positive("alignment average_s", s.average_s);
-  if (!(s.step_s > 0 && s.step_s <= 5)) throw InputError("alignment step_s", fmt::format("{}s", s.step_s), "must lie in (0, 5]");
-  if (!s.initial_misalignment_rad.allFinite())
-    throw InputError("--coarse-misalignment", "non-finite", "must be finite");
+  // Loop time constants and averaging from a tenth of a second to six hours;
+  // the fine alignment itself up to six hours (the loops settle in minutes).
+  constexpr PhysicalRange kTime{0.1, 6 * 3600.0};
+  require_in_range("--alignment-time", s.duration_s, Dimension::kTime, kTime);
+  require_in_range("alignment level_filter_s", s.level_filter_s, Dimension::kTime, kTime);
+  require_in_range("alignment level_integral_s", s.level_integral_s, Dimension::kTime, kTime);
+  require_in_range("--alignment-average", s.average_s, Dimension::kTime, kTime);
+  require_in_range("alignment step_s", s.step_s, Dimension::kTime, {0.0, 5.0, true});
+  // A coarse alignment leaves milliradians; 0.1 rad keeps the loops' small-angle model.
+  for (int k = 0; k < 3; ++k)
+    require_in_range("--coarse-misalignment", s.initial_misalignment_rad[k], Dimension::kAngle,
+                     {-magnitude_limit(Dimension::kAngle), magnitude_limit(Dimension::kAngle)});
 }
 
 AlignmentLoopRun simulate_alignment_loops(System system, const ModelOptions& m, const AlignmentLoopSettings& s,

@@ -14,6 +14,10 @@ struct ModelOptions {
   /// F(0)/ω_ie, DC gain of the system-1 leveling loops F_1 = F_2 = F(0)
   /// (§2.1: a 10 s low-pass, well damped, gives 500:1). > 0.
   double leveling_gain_ratio = 500.0;
+  /// Its physical range: a loop gain below ten earth rates does not level
+  /// (the tilt it leaves, ω_ie/F(0), is no longer small), and above 1e5 the
+  /// loop is faster than the 10 s filter that shapes it.
+  static constexpr double kMinLevelingGainRatio = 10.0, kMaxLevelingGainRatio = 1e5;
   /// F_T(0)/ω_ie of the system-1 theodolite azimuth loop; +inf (the default,
   /// DESIGN.md §1) makes ψ_ωz(1) = ω_doz/F_T(0) vanish. > 0.
   double azimuth_gain_ratio = std::numeric_limits<double>::infinity();

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <random>
 
+#include "lib/common/input_error.h"
 #include "lib/preflight/test_run.h"
 #include "lib/propagation/linear_model.h"
 
@@ -94,7 +95,12 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
   }
   if (r_rows.empty()) return out;
 
-  // Steps of at most kStepS that land on every r-row time.
+  // Steps of at most kStepS that land on every r-row time. The record
+  // reader holds times within 48 h; the check keeps this loop bounded for
+  // layouts built any other way.
+  if (!(end <= magnitude_limit(Dimension::kTime)))
+    throw InputError("record row time", format_quantity(end, Dimension::kTime),
+                     "must lie within " + format_quantity(magnitude_limit(Dimension::kTime), Dimension::kTime));
   std::vector<double> grid;
   for (double t = 0.0; t < end; t += kStepS) grid.push_back(t);
   for (Eigen::Index i : r_rows) grid.push_back(layout.rows[static_cast<std::size_t>(i)].t_s);

@@ -18,27 +18,28 @@ int TestRunOptions::intervals() const {
 }
 
 void validate(const TestRunOptions& o) {
-  auto fail = [](const char* field, double v, Dimension d, const char* allowed) {
-    throw InputError(field, format_quantity(v, d), allowed);
-  };
-  if (!(o.duration_s > 0) || o.duration_s > 2 * 3600.0)
-    fail("--test-duration", o.duration_s, Dimension::kTime, "must lie in (0, 2h]");
-  if (!(o.filter_interval_s > 0) || o.filter_interval_s > o.duration_s)
-    fail("--filter-interval", o.filter_interval_s, Dimension::kTime, "must lie in (0, test duration]");
+  namespace r = test_run_range;
+  require_in_range("--test-duration", o.duration_s, Dimension::kTime, r::kDuration);
+  require_in_range("--filter-interval", o.filter_interval_s, Dimension::kTime, r::kFilterInterval);
+  if (o.filter_interval_s > o.duration_s)
+    throw InputError("--filter-interval", format_quantity(o.filter_interval_s, Dimension::kTime),
+                     "must not exceed the test duration");
   const double k = o.duration_s / o.filter_interval_s;
   if (std::abs(k - std::round(k)) > 1e-6)
-    fail("--test-duration", o.duration_s, Dimension::kTime, "must be a whole number of filter intervals");
-  if (k < 4) fail("--filter-interval", o.filter_interval_s, Dimension::kTime, "leaves fewer than 4 intervals in the test run");
-  if (!(o.dv_pulse_mps >= 0) || !std::isfinite(o.dv_pulse_mps))
-    fail("--dv-pulse", o.dv_pulse_mps, Dimension::kVelocity, "must be >= 0 (0 = continuous)");
-  if (!(o.position_resolution_m >= 0) || !std::isfinite(o.position_resolution_m))
-    fail("--position-resolution", o.position_resolution_m, Dimension::kLength, "must be >= 0 (0 = exact)");
-  if (!(o.alignment_average_s > 0)) fail("--alignment-average", o.alignment_average_s, Dimension::kTime, "must be > 0");
-  if (!(o.torquer_pulse_rad >= 0)) fail("--torquer-pulse", o.torquer_pulse_rad, Dimension::kAngle, "must be >= 0");
-  if (!(o.realignment_duration_s >= 0) || o.realignment_duration_s > 6 * 3600.0)
-    fail("--realignment-duration", o.realignment_duration_s, Dimension::kTime, "must lie in [0, 6h]");
-  if (!(o.sway.velocity_rms_mps >= 0)) fail("--sway", o.sway.velocity_rms_mps, Dimension::kVelocity, "amplitude must be >= 0");
-  if (!(o.sway.correlation_time_s > 0)) fail("--sway", o.sway.correlation_time_s, Dimension::kTime, "time must be > 0");
+    throw InputError("--test-duration", format_quantity(o.duration_s, Dimension::kTime),
+                     "must be a whole number of filter intervals");
+  if (k < 4 || k > r::kMaxIntervals)
+    throw InputError("--filter-interval", format_quantity(o.filter_interval_s, Dimension::kTime),
+                     fmt::format("gives {:.0f} intervals in the test run; allowed: 4 to {}", k, r::kMaxIntervals));
+  require_in_range("--dv-pulse", o.dv_pulse_mps, Dimension::kVelocity, r::kDvPulse, "0 = continuous");
+  require_in_range("--position-resolution", o.position_resolution_m, Dimension::kLength, r::kPositionResolution,
+                   "0 = exact");
+  require_in_range("--alignment-average", o.alignment_average_s, Dimension::kTime, r::kAlignmentAverage);
+  require_in_range("--torquer-pulse", o.torquer_pulse_rad, Dimension::kAngle, r::kTorquerPulse, "0 = exact");
+  require_in_range("--realignment-duration", o.realignment_duration_s, Dimension::kTime, r::kRealignmentDuration);
+  require_in_range("--sway velocity", o.sway.velocity_rms_mps, Dimension::kVelocity, r::kSwayVelocity);
+  require_in_range("--sway time", o.sway.correlation_time_s, Dimension::kTime, r::kSwayCorrelationTime);
+  if (o.alignment_loops) validate(*o.alignment_loops);
 }
 
 Vec3 nominal_velocity_increment(double t, const ModelOptions& m) {

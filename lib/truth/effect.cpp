@@ -80,6 +80,16 @@ double EffectSpec::value(std::string_view name) const {
   return 0.0;
 }
 
+PhysicalRange physical_range(const EffectParameter& p) {
+  const double limit = p.limit_si > 0 ? p.limit_si : magnitude_limit(p.dimension);
+  switch (p.range) {
+    case ParameterRange::kAny: return {-limit, limit};
+    case ParameterRange::kNonNegative: return {0.0, limit};
+    case ParameterRange::kPositive: return {0.0, limit, true};
+  }
+  return {0.0, limit};
+}
+
 EffectSpec default_effect(EffectKind kind) {
   EffectSpec spec;
   spec.kind = kind;
@@ -94,11 +104,7 @@ void validate_effect(const EffectSpec& spec, std::string_view field) {
     const EffectParameter& p = info.parameters[i];
     const double v = spec.values_si[i];
     const std::string name = fmt::format("{} {}.{}", field, info.name, p.name);
-    if (!std::isfinite(v)) throw InputError(name, format_quantity(v, p.dimension), "must be finite");
-    if (p.range == ParameterRange::kNonNegative && v < 0)
-      throw InputError(name, format_quantity(v, p.dimension), "must be >= 0");
-    if (p.range == ParameterRange::kPositive && !(v > 0))
-      throw InputError(name, format_quantity(v, p.dimension), "must be > 0");
+    require_in_range(name, v, p.dimension, physical_range(p));
   }
   if (spec.kind == EffectKind::kSway) {
     if (spec.value("period_min") > spec.value("period_max"))

@@ -15,6 +15,7 @@
 
 #include "lib/truth/noise.h"
 #include "lib/truth/perturbations.h"
+#include "lib/units/physical_range.h"
 #include "lib/units/quantity.h"
 
 namespace insmc {
@@ -47,7 +48,13 @@ struct EffectParameter {
   double default_si;             ///< default value [SI]
   std::string_view description;  ///< one line
   ParameterRange range = ParameterRange::kNonNegative;
+  /// Physical ceiling of |value|; 0 = magnitude_limit(dimension)
+  /// (lib/units/physical_range.h). validate_effect() refuses values beyond.
+  double limit_si = 0.0;
 };
+
+/// The parameter's allowed values: its sign (range) and |value| <= its limit.
+PhysicalRange physical_range(const EffectParameter& parameter);
 
 /// What the registry says about one effect.
 struct EffectInfo {

@@ -95,17 +95,23 @@ double integral_of_remainder(double a0, double dv, double dw, double h, double w
     }
   }
   const auto a_at = [&](double s) { return a0 + (alpha + beta * s) * s; };
-  int crossings = 0;
-  for (int k = 0; k < n_pieces; ++k)
-    crossings += static_cast<int>(std::abs(q(a_at(pieces[k + 1])) - q(a_at(pieces[k]))));
-  if (crossings > kMaxExactCrossings) return integral_of_remainder_linear(a0, a1, w, h);
+  // Counted in double: a huge or non-finite level count must take the
+  // linear path, never an int conversion that wraps (the level loop below
+  // is bounded by kMaxExactCrossings only through this test).
+  double crossings = 0.0;
+  for (int k = 0; k < n_pieces; ++k) crossings += std::abs(q(a_at(pieces[k + 1])) - q(a_at(pieces[k])));
+  if (!(crossings <= kMaxExactCrossings)) return integral_of_remainder_linear(a0, a1, w, h);
   double integral_q = 0.0;
   for (int k = 0; k < n_pieces; ++k) {
     const double sa = pieces[k], sb = pieces[k + 1];
     const double qa = q(a_at(sa)), qb = q(a_at(sb));
     integral_q += qa * (sb - sa);
     const double direction = qb > qa ? 1.0 : -1.0;
-    for (double level_q = qa; level_q != qb; level_q += direction) {
+    // An integer count (at most kMaxExactCrossings): stepping a double
+    // level by ±1 would stall where the levels exceed 2^53.
+    const int levels = static_cast<int>(std::abs(qb - qa));
+    for (int i = 0; i < levels; ++i) {
+      const double level_q = qa + i * direction;
       // Crossing of the level between level_q and level_q + direction.
       const double level = (level_q + 0.5 * direction) * w;
       // β s² + α s + (a0 − level) = 0, the root in [sa, sb].
@@ -263,11 +269,13 @@ std::optional<InputError> validate(const TruthOptions& o) {
   };
   if (!(std::abs(o.model.latitude_rad) < 0.5 * std::numbers::pi))
     return bad("latitude_rad", o.model.latitude_rad, "must be within (-90°, 90°)");
-  if (!(o.dv_pulse_mps >= 0) || !std::isfinite(o.dv_pulse_mps))
-    return bad("dv_pulse_mps", o.dv_pulse_mps, "must be >= 0 (0 = continuous)");
-  if (!(o.filter_interval_s > 0) || !std::isfinite(o.filter_interval_s))
-    return bad("filter_interval_s", o.filter_interval_s, "must be > 0");
-  if (!(o.step_s > 0 && o.step_s <= 60)) return bad("step_s", o.step_s, "must be in (0, 60]");
+  // Pulse weights up to 10 m/s, filter intervals from 1 ms and steps from
+  // 10 ms: the output and step counts of a 48 h run stay bounded.
+  if (!(o.dv_pulse_mps >= 0 && o.dv_pulse_mps <= magnitude_limit(Dimension::kVelocity)))
+    return bad("dv_pulse_mps", o.dv_pulse_mps, "must lie in [0, 10] m/s (0 = continuous)");
+  if (!(o.filter_interval_s >= 1e-3 && o.filter_interval_s <= magnitude_limit(Dimension::kTime)))
+    return bad("filter_interval_s", o.filter_interval_s, "must lie in [0.001, 172800] s");
+  if (!(o.step_s >= 0.01 && o.step_s <= 60)) return bad("step_s", o.step_s, "must lie in [0.01, 60] s");
   if (!(o.noise_grid_s > 0) || !std::isfinite(o.noise_grid_s))
     return bad("noise_grid_s", o.noise_grid_s, "must be > 0");
   if (!std::isfinite(o.reset_at_s)) return bad("reset_at_s", o.reset_at_s, "must be finite (negative = no reset)");

@@ -86,6 +86,11 @@ std::vector<std::string> uncertainty_groups() {
   return out;
 }
 
+PhysicalRange bound_range(const UncertaintySpec& spec) {
+  if (spec.index == ux::kAltitudeError) return {0.0, 1e4};
+  return non_negative_range(spec.dimension);
+}
+
 UncertaintyVector default_bounds() {
   UncertaintyVector b;
   for (const auto& spec : kCatalogue) b[spec.index] = spec.default_bound_si;

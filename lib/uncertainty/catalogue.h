@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "lib/units/physical_range.h"
 #include "lib/units/quantity.h"
 #include "lib/uncertainty/uncertainty_vector.h"
 
@@ -44,6 +45,12 @@ std::vector<int> select_uncertainties(std::string_view name_or_group);
 
 /// Distinct group names in catalogue order.
 std::vector<std::string> uncertainty_groups();
+
+/// The physical range of an entry's bound (and of a fixed value's
+/// magnitude): [0, magnitude_limit(dimension)] (lib/units/physical_range.h),
+/// except the altitude error, held to 10 km (beyond it the gravity error
+/// 2 g δh / R of the linear model is no longer small).
+PhysicalRange bound_range(const UncertaintySpec& spec);
 
 /// Default bound vector (SI), from the catalogue.
 UncertaintyVector default_bounds();

@@ -88,8 +88,9 @@ void UncertaintyModel::apply_bound(std::string_view assignment) {
   const std::string value = list.substr(0, list.find(','));  // a comma list is a sweep: its first value
   for (int i : indices) {
     const UncertaintySpec& spec = catalogue()[i];
-    const double b = parse_quantity(value, spec.dimension, fmt::format("--bound {}", spec.name));
-    if (b < 0) throw InputError(fmt::format("--bound {}", spec.name), value, "a bound must be >= 0");
+    const std::string field = fmt::format("--bound {}", spec.name);
+    const double b = parse_quantity(value, spec.dimension, field);
+    require_in_range(field, b, spec.dimension, bound_range(spec));
     params_[i].bound_si = b;
   }
 }
@@ -107,12 +108,16 @@ void UncertaintyModel::apply_dist(std::string_view assignment) {
       p.kind = DistributionKind::kZero;
     } else if (spec_text.rfind("normal:", 0) == 0) {
       const double k = parse_quantity(spec_text.substr(7), Dimension::kDimensionless, field);
-      if (!(k > 0)) throw InputError(field, spec_text, allowed);
+      // K beyond 100 is a point mass at the mean in all but name; below 0.1
+      // the truncated normal is a uniform in all but name.
+      require_in_range(field + " K", k, Dimension::kDimensionless, {0.1, 100.0});
       p.kind = DistributionKind::kTruncatedNormal;
       p.sigmas_in_bound = k;
     } else if (spec_text.rfind("fixed:", 0) == 0) {
       p.kind = DistributionKind::kFixed;
       p.fixed_si = parse_quantity(spec_text.substr(6), spec.dimension, field);
+      const PhysicalRange range = bound_range(spec);
+      require_in_range(field, p.fixed_si, spec.dimension, {-range.max_si, range.max_si});
     } else {
       throw InputError(field, spec_text, allowed);
     }

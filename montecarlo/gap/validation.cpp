@@ -138,6 +138,10 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
         jobs.push_back({name, scaled_effect(registry[e].kind, options.magnitudes[mi], model_pulse),
                         options.magnitudes[mi], s, effect_file_seed(options.seed, e, mi, s)});
   }
+  // A magnitude that takes an effect beyond its physical range is refused
+  // before any file is simulated.
+  for (const Job& job : jobs)
+    if (job.spec) validate_effect(*job.spec, fmt::format("--magnitudes {:g} x", job.magnitude));
   result.cases.resize(jobs.size());
   tbb::parallel_for(std::size_t{0}, jobs.size(), [&](std::size_t j) {
     const Job& job = jobs[j];

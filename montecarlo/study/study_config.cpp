@@ -10,10 +10,11 @@ namespace insmc::mc {
 void validate(const StudyConfig& c) {
   if (c.systems.empty()) throw InputError("--system", "(none)", "select system 1, 2 or 1,2");
   if (c.schemes.empty()) throw InputError("--scheme", "(none)", "select at least one scheme");
-  if (c.samples < 2) throw InputError("--samples", fmt::format("{}", c.samples), "must be >= 2");
-  if (!(c.confidence > 0 && c.confidence < 1))
-    throw InputError("--confidence", fmt::format("{}", c.confidence), "must lie strictly between 0 and 1");
-  if (c.threads < 0) throw InputError("--threads", fmt::format("{}", c.threads), "must be >= 0 (0 = all cores)");
+  if (c.samples < 2 || c.samples > kMaxSamples)
+    throw InputError("--samples", fmt::format("{}", c.samples), fmt::format("must lie in [2, {}]", kMaxSamples));
+  require_in_range("--confidence", c.confidence, Dimension::kDimensionless, kConfidenceRange);
+  if (c.threads < 0 || c.threads > kMaxThreads)
+    throw InputError("--threads", fmt::format("{}", c.threads), fmt::format("must lie in [0, {}] (0 = all cores)", kMaxThreads));
   if (!(c.grid_step_s > 0) || !std::isfinite(c.grid_step_s))
     throw InputError("--grid-step", fmt::format("{}s", c.grid_step_s), "must be > 0");
   if (!(c.grid_end_s > 0) || !std::isfinite(c.grid_end_s) || c.grid_end_s > 6 * 3600.0)
@@ -31,8 +32,8 @@ void validate(const StudyConfig& c) {
   validate(c.test);
   for (int i = 0; i < ux::kDim; ++i) {
     const auto& p = c.uncertainties.at(i);
-    if (!std::isfinite(p.bound_si) || p.bound_si < 0)
-      throw InputError(fmt::format("--bound {}", catalogue()[i].name), fmt::format("{}", p.bound_si), "must be finite and >= 0");
+    require_in_range(fmt::format("--bound {}", catalogue()[i].name), p.bound_si, catalogue()[i].dimension,
+                     bound_range(catalogue()[i]));
   }
 }
 

@@ -9,6 +9,7 @@
 #include "lib/compensation/scheme.h"
 #include "lib/preflight/test_run.h"
 #include "lib/uncertainty/uncertainty_model.h"
+#include "lib/units/physical_range.h"
 
 namespace insmc::mc {
 
@@ -41,6 +42,14 @@ struct StudyConfig {
   /// Compute the time grid (envelope_grid.csv) as well as the report times.
   bool with_grid = true;
 };
+
+/// 2^40 ≈ 1.1e12 samples (about a week of the linear path on one core): far
+/// beyond any study, and block counts and index arithmetic stay exact.
+inline constexpr std::uint64_t kMaxSamples = std::uint64_t{1} << 40;
+/// Beyond 1 − 1e-6 the interval's quantiles leave double precision for the
+/// smallest sample counts; below one half an interval says nothing.
+inline constexpr PhysicalRange kConfidenceRange{0.5, 0.999999};
+inline constexpr int kMaxThreads = 1024;
 
 /// Throws InputError naming the first field that is out of range.
 void validate(const StudyConfig& config);

@@ -11,14 +11,14 @@ namespace {
 
 constexpr EffectParameter kParameters[] = {
     {"accel_rms", Dimension::kAcceleration, 5.0 * kMgToMps2,
-     "RMS of the horizontal sway acceleration per axis", ParameterRange::kNonNegative},
-    {"period_min", Dimension::kTime, 2.0, "shortest sway period", ParameterRange::kPositive},
-    {"period_max", Dimension::kTime, 20.0, "longest sway period", ParameterRange::kPositive},
+     "RMS of the horizontal sway acceleration per axis", ParameterRange::kNonNegative, kGravityMps2},
+    {"period_min", Dimension::kTime, 2.0, "shortest sway period", ParameterRange::kPositive, 3600.0},
+    {"period_max", Dimension::kTime, 20.0, "longest sway period", ParameterRange::kPositive, 3600.0},
     {"vertical_ratio", Dimension::kDimensionless, 0.3,
-     "vertical sway amplitude relative to the horizontal", ParameterRange::kNonNegative},
+     "vertical sway amplitude relative to the horizontal", ParameterRange::kNonNegative, 10.0},
     {"components", Dimension::kDimensionless, 4.0,
      "sinusoids per axis (periods log-uniform in [period_min, period_max], random phases)",
-     ParameterRange::kPositive},
+     ParameterRange::kPositive, 64.0},
 };
 
 void realize(const EffectSpec& spec, const EffectContext&, NormalDraws& draws, Perturbations& p) {
