@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
 #include "lib/common/version.h"
 #include "montecarlo/aggregate/byte_io.h"
 
@@ -31,7 +32,7 @@ class FieldReader {
     return s;
   }
   std::size_t position() const { return pos_; }
-  [[noreturn]] void fail(const std::string& why) const { throw InputError("--resume", path_, why); }
+  [[noreturn]] void fail(const std::string& why) const { throw InputError("--resume", echo_input(path_, 256), why); }
 
  private:
   std::uint64_t number(int size) {
@@ -82,7 +83,8 @@ std::string encode_checkpoint(const Checkpoint& c) {
 }
 
 Checkpoint decode_checkpoint(std::string_view bytes, const std::string& path) {
-  if (bytes.substr(0, kMagic.size()) != kMagic) throw InputError("--resume", path, "not an insmc checkpoint file");
+  if (bytes.substr(0, kMagic.size()) != kMagic)
+    throw InputError("--resume", echo_input(path, 256), "not an insmc checkpoint file");
   // The format number and the version come first and never move, so that a
   // checkpoint of another insmc is named as such rather than as corrupt.
   FieldReader r(bytes.substr(kMagic.size()), path);
@@ -101,11 +103,15 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& path) {
   if (bytes.size() < kMagic.size() + 8 || fnv1a64(body) != FieldReader(bytes.substr(body.size()), path).u64())
     r.fail("the checkpoint is corrupt (checksum mismatch)");
   const std::uint64_t argc = r.u64();
+  if (argc > kMaxCheckpointArgs)
+    r.fail(fmt::format("the checkpoint is corrupt ({} arguments; at most {})", argc, kMaxCheckpointArgs));
   for (std::uint64_t i = 0; i < argc; ++i) c.args.push_back(r.string());
   c.settings = r.string();
   c.fingerprint = r.u64();
   c.samples = r.u64();
   const std::uint64_t ranges = r.u64();
+  if (ranges > kMaxCheckpointRanges)
+    r.fail(fmt::format("the checkpoint is corrupt ({} block ranges; at most {})", ranges, kMaxCheckpointRanges));
   for (std::uint64_t i = 0; i < ranges; ++i) {
     mc::BlockRange range;
     range.begin = r.u64();
@@ -117,6 +123,10 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& path) {
   r.u64();  // the checksum, verified above
   if (kMagic.size() + r.position() != bytes.size()) r.fail("the checkpoint is corrupt (trailing bytes)");
   return c;
+}
+
+std::string read_checkpoint_file(const std::string& path) {
+  return read_file_capped(path, kMaxCheckpointFileBytes, "checkpoint");
 }
 
 std::vector<GivenOption> given_options(const Args& args, const po::options_description& options) {

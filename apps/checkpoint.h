@@ -23,6 +23,15 @@ namespace insmc::app {
 
 inline constexpr std::uint32_t kCheckpointFormat = 1;
 
+/// Caps of the reader. The state is one histogram and a few sums per output
+/// (~33 KB each): a run with the time grid (49 times × 7 schemes × 2
+/// systems × 4 axes) holds ~90 MB; 1 GiB leaves ten times that. A command
+/// line has tens of arguments; a run's finished blocks merge into a few
+/// ranges (one per rank and interruption).
+inline constexpr std::uint64_t kMaxCheckpointFileBytes = std::uint64_t{1} << 30;
+inline constexpr std::uint64_t kMaxCheckpointArgs = 10'000;
+inline constexpr std::uint64_t kMaxCheckpointRanges = 1'000'000;
+
 struct Checkpoint {
   std::string version;            ///< the insmc that wrote it; --resume needs the same
   Args args;                      ///< the run's arguments without --checkpoint and --resume
@@ -36,8 +45,13 @@ struct Checkpoint {
 std::string encode_checkpoint(const Checkpoint& checkpoint);
 
 /// Throws InputError naming `path` and what is wrong: not a checkpoint,
-/// another format or program version, truncated or corrupt (checksum).
+/// another format or program version, truncated or corrupt (checksum), more
+/// arguments or ranges than the caps above.
 Checkpoint decode_checkpoint(std::string_view bytes, const std::string& path);
+
+/// The bytes of checkpoint file `path`, at most kMaxCheckpointFileBytes; a
+/// directory, an unreadable file or a read error is an InputError.
+std::string read_checkpoint_file(const std::string& path);
 
 /// 64-bit FNV-1a over the bytes (the checksum and fingerprint: detects
 /// corruption, not tampering).

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "apps/config_file.h"
 #include "lib/common/input_error.h"
 #include "lib/units/physical_range.h"
 #include "lib/units/quantity.h"
@@ -35,12 +36,7 @@ std::optional<po::variables_map> parse_args(const Args& args, const std::string&
     std::cout << all << std::flush;
     return std::nullopt;
   }
-  if (vm.count("config")) {
-    const std::string path = vm["config"].as<std::string>();
-    std::ifstream in(path);
-    if (!in) throw InputError("--config", path, "cannot open the file");
-    po::store(po::parse_config_file(in, all, /*allow_unregistered=*/false), vm);
-  }
+  if (vm.count("config")) store_config_file(vm["config"].as<std::string>(), all, vm);
   po::notify(vm);
   return vm;
 }

@@ -2,10 +2,8 @@
 // the bounds need and exits 1 naming every bound whose upper confidence
 // limit of the RMS exceeds it, 0 when all hold, 2 for a malformed file.
 #include <fmt/format.h>
-#include <fstream>
-#include <map>
-#include <sstream>
 
+#include "apps/bounds_file.h"
 #include "apps/cli_common.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
@@ -14,79 +12,6 @@
 #include "montecarlo/write/csv.h"
 
 namespace insmc::app {
-namespace {
-
-struct Bound {
-  int line;
-  std::string text;
-  Scheme scheme;
-  System system;
-  mc::Axis axis;
-  double t_s;
-  double rms_limit_m;
-  std::optional<double> confidence;
-};
-
-mc::Axis parse_axis(const std::string& s, const std::string& where) {
-  for (mc::Axis a : mc::kAllAxes)
-    if (to_string(a) == s) return a;
-  throw InputError(where + " axis", s, "must be x, y, z or horizontal");
-}
-
-std::vector<Bound> read_bounds(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("--bounds", path, "cannot open the file");
-  std::vector<Bound> out;
-  std::string line;
-  for (int n = 1; std::getline(in, line); ++n) {
-    const auto hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    std::istringstream tokens(line);
-    std::map<std::string, std::string> kv;
-    std::optional<double> limit_m;
-    const std::string where = fmt::format("{}:{}:", path, n);
-    for (std::string tok; tokens >> tok;) {
-      for (const char* unit : {"rms_m<=", "rms_ft<="}) {
-        if (tok.rfind(unit, 0) == 0) {
-          const std::string v = tok.substr(std::string(unit).size());
-          char* end = nullptr;
-          const double x = std::strtod(v.c_str(), &end);
-          if (v.empty() || *end != '\0' || !(x >= 0) || !std::isfinite(x))
-            throw InputError(where + " bound", tok, "expected rms_m<=NUMBER or rms_ft<=NUMBER with NUMBER >= 0");
-          limit_m = unit[4] == 'f' ? x * kFtToM : x;
-        }
-      }
-      if (tok.rfind("rms_", 0) == 0) continue;
-      const auto eq = tok.find('=');
-      if (eq == std::string::npos || eq == 0)
-        throw InputError(where + " token", tok, "expected key=value (scheme, system, axis, t_min, confidence) or rms_m<=N");
-      kv[tok.substr(0, eq)] = tok.substr(eq + 1);
-    }
-    if (kv.empty() && !limit_m) continue;  // blank or comment line
-    for (const char* key : {"scheme", "system", "axis", "t_min"})
-      if (!kv.count(key)) throw InputError(where + " " + key, "(missing)", "each bound needs scheme, system, axis, t_min and rms_m<=N");
-    if (!limit_m) throw InputError(where + " rms", "(missing)", "each bound needs rms_m<=N or rms_ft<=N");
-    for (const auto& [k, v] : kv)
-      if (k != "scheme" && k != "system" && k != "axis" && k != "t_min" && k != "confidence")
-        throw InputError(where + " key", k, "unknown; allowed: scheme, system, axis, t_min, confidence");
-    Bound b{n, line, parse_scheme(kv["scheme"], where + " scheme"), parse_system(kv["system"], where + " system"),
-            parse_axis(kv["axis"], where), 0, *limit_m, std::nullopt};
-    char* end = nullptr;
-    b.t_s = std::strtod(kv["t_min"].c_str(), &end) * 60.0;
-    if (*end != '\0' || !(b.t_s >= 0) || b.t_s > 6 * 3600.0)
-      throw InputError(where + " t_min", kv["t_min"], "must be a number of minutes in [0, 360]");
-    if (kv.count("confidence")) {
-      const double c = std::strtod(kv["confidence"].c_str(), &end);
-      if (*end != '\0' || !(c > 0 && c < 1)) throw InputError(where + " confidence", kv["confidence"], "must lie in (0, 1)");
-      b.confidence = c;
-    }
-    out.push_back(b);
-  }
-  if (out.empty()) throw InputError("--bounds", path, "holds no bound");
-  return out;
-}
-
-}  // namespace
 
 int run_check(const Args& args) {
   po::options_description opts("Options");
@@ -97,7 +22,7 @@ int run_check(const Args& args) {
   const auto vm = parse_args(args, "check", "--bounds FILE [study options]", opts);
   if (!vm) return 0;
   if (!vm->count("bounds")) throw InputError("--bounds", "(missing)", "give the file of bounds to check");
-  const std::vector<Bound> bounds = read_bounds((*vm)["bounds"].as<std::string>());
+  const std::vector<Bound> bounds = read_bounds_file((*vm)["bounds"].as<std::string>());
   mc::StudyConfig config = read_study_config(*vm, true);
   // Run exactly what the bounds need: their systems, schemes and times.
   config.systems.clear();

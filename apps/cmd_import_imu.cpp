@@ -10,6 +10,7 @@
 #include "apps/cli_common.h"
 #include "apps/output_paths.h"
 #include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
 #include "lib/imu/imu_samples.h"
 #include "lib/imu/strapdown.h"
 #include "lib/records/record_io.h"
@@ -122,6 +123,16 @@ int run_import_imu(const Args& args) {
   nav.gyro_bias = parse_gyro_bias_mode((*vm)["gyro-bias"].as<std::string>(), "--gyro-bias");
   if (auto e = validate(nav)) throw *e;
   const RunsFrom runs_from = parse_runs_from((*vm)["runs-from"].as<std::string>());
+  // What the record file can hold (lib/records/record.h): a run of at most
+  // 48 h, a filter interval in [0.1 ms, 1 h].
+  if (nav.test_duration_s + nav.nav_duration_s > kMaxRunDurationS)
+    throw InputError("--nav-duration", format_quantity(nav.nav_duration_s, Dimension::kTime),
+                     fmt::format("the test run and the navigation together may last at most {} h (a record's run)",
+                                 kMaxRunDurationS / 3600));
+  if (!(nav.output_interval_s >= kMinFilterIntervalS && nav.output_interval_s <= kMaxFilterIntervalS))
+    throw InputError("--interval", format_quantity(nav.output_interval_s, Dimension::kTime),
+                     fmt::format("must lie in [{}s, {}s] (a record's filter interval)", kMinFilterIntervalS,
+                                 kMaxFilterIntervalS));
   const OutputFileOption out_file("--out", (*vm)["out"].as<std::string>());  // checked and locked before the work
 
   RecordFile file;
@@ -154,7 +165,7 @@ int run_import_imu(const Args& args) {
     for (int j = 0; j < runs; ++j, ++run_id) {
       const StrapdownRun r = run_strapdown(samples, j * nav.run_duration_s(), nav);
       const std::string key = fmt::format("imu.run{}.", run_id);
-      file.header.set(key + "source", input);
+      file.header.set(key + "source", one_line_value(input));  // escaped: a path may hold any byte
       file.header.set(key + "switch_time_s", r.switch_time_s);
       const StrapdownAlignment& a = r.alignment;
       for (int k = 0; k < 3; ++k)

@@ -19,6 +19,7 @@
 #include "apps/study_runner.h"
 #include "apps/sweep.h"
 #include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
 #include "lib/units/physical_range.h"
 #include "lib/common/version.h"
 #include "lib/units/quantity.h"
@@ -116,12 +117,11 @@ void on_root_input_errors(Ranks& ranks, F&& f) {
 Checkpoint load_checkpoint(const std::string& path, Ranks& ranks) {
   std::string bytes;
   on_root_or_fail_everywhere(ranks, "--resume", path, [&] {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot open the file");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (!in.good() && !in.eof()) throw std::runtime_error("cannot read the file");
-    bytes = std::move(ss).str();
+    try {  // capped; a directory or a read error is an error
+      bytes = read_checkpoint_file(path);
+    } catch (const FileReadError& e) {
+      throw std::runtime_error(e.why());  // named "--resume = PATH" below
+    }
   });
   return decode_checkpoint(ranks.broadcast(std::move(bytes)), path);
 }

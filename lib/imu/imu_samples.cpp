@@ -11,6 +11,7 @@
 #include <iterator>
 #include <set>
 
+#include "lib/common/input_text.h"
 #include "lib/records/number_text.h"
 #include "lib/units/units.h"
 
@@ -63,7 +64,7 @@ struct WantedColumn {
 class Parser {
  public:
   Parser(std::string_view text, std::string_view source, const ImuCsvOptions& o)
-      : text_(text), source_(source), options_(o) {}
+      : text_(text), source_(echo_input(source, 256)), options_(o) {}
 
   ImuSamples parse() {
     if (text_.starts_with("\xEF\xBB\xBF")) text_.remove_prefix(3);  // UTF-8 byte-order mark
@@ -90,27 +91,50 @@ class Parser {
         fail(column, fmt::format("{} fields, but the header (line {}) has {}", fields.size(), header_line_,
                                  header_count_));
       }
+      if (out.t_s.size() >= kMaxImuSamples)
+        fail(1, fmt::format("more than {} samples: an IMU file may hold at most {} (11 h at 1 kHz); split it",
+                            kMaxImuSamples, kMaxImuSamples));
       double values[7];
       for (std::size_t c = 0; c < wanted_.size(); ++c) {
         const Field& f = fields[index_[c]];
         const NumberStatus status = parse_double(f.text, values[c]);
         if (status != NumberStatus::kOk)
-          fail(f.column, fmt::format("{} = '{}': {}", wanted_[c].name, f.text, describe(status)));
+          fail(f.column, fmt::format("{} = '{}': {}", echo_input(wanted_[c].name), echo_input(f.text),
+                                     describe(status)));
+        if (c < 6) {
+          const bool gyro = c < 3;
+          const double si = (gyro ? gyro_si : accel_si) * values[c];
+          const double cap = gyro ? kMaxImuGyroRadps : kMaxImuAccelMps2;
+          const std::string_view unit = gyro ? to_string(options_.gyro_unit) : to_string(options_.accel_unit);
+          if (!(std::abs(si) <= cap))
+            fail(f.column, fmt::format("{} = '{}' {}: |{}| must be at most {:g} {} ({:g} {}); is the unit right?",
+                                       echo_input(wanted_[c].name), echo_input(f.text), unit,
+                                       gyro ? "gyro" : "accel", cap / (gyro ? gyro_si : accel_si), unit, cap,
+                                       gyro ? "rad/s" : "m/s2"));
+        }
       }
       double t = 0.0;
       if (timed) {
         t = values[6] * options_.time_unit_s;
+        if (!(std::abs(t) <= kMaxImuAbsTimeS))
+          fail(fields[index_[6]].column,
+               fmt::format("{} = '{}': a time must lie within ±{} s", echo_input(wanted_[6].name),
+                           echo_input(fields[index_[6]].text), kMaxImuAbsTimeS));
         if (out.t_s.empty()) first_time = t;
         t -= first_time;
         if (!out.t_s.empty() && !(t > previous_time)) {
           fail(fields[index_[6]].column,
-               fmt::format("{} = '{}': time must increase strictly (line {} has {})", wanted_[6].name,
-                           fields[index_[6]].text, previous_line, previous_text_));
+               fmt::format("{} = '{}': time must increase strictly (line {} has {})", echo_input(wanted_[6].name),
+                           echo_input(fields[index_[6]].text), previous_line, echo_input(previous_text_)));
         }
         previous_text_ = std::string(fields[index_[6]].text);
       } else {
         t = static_cast<double>(out.t_s.size()) / options_.rate_hz;
       }
+      if (!(t <= kMaxImuDurationS))
+        fail(timed ? fields[index_[6]].column : 1,
+             fmt::format("sample at {} s after the first: an IMU file may cover at most {} s (14 days)", t,
+                         kMaxImuDurationS));
       previous_time = t;
       previous_line = line_number_;
       out.t_s.push_back(t);
@@ -120,7 +144,7 @@ class Parser {
     if (!have_header)
       throw InputError(fmt::format("{}: no header line: the first line that is not blank or '#' must name the "
                                    "columns (e.g. {})",
-                                   source_, fmt::join(column_names(), ",")));
+                                   source_, echo_input(fmt::format("{}", fmt::join(column_names(), ",")), 200)));
     if (out.t_s.size() < 2)
       throw InputError(fmt::format("{}: {} data row(s) after the header (line {}): at least 2 samples are needed",
                                    source_, out.t_s.size(), header_line_));
@@ -154,20 +178,20 @@ class Parser {
         if (fields[i].text != wanted_[c].name) continue;
         if (found)
           fail(fields[i].column, fmt::format("duplicate column '{}' (also column {} of the header)",
-                                             wanted_[c].name, fields[*found].column));
+                                             echo_input(wanted_[c].name), fields[*found].column));
         found = i;
       }
       if (found)
         index_[c] = *found;
       else
-        missing.push_back(fmt::format("'{}' ({})", wanted_[c].name, wanted_[c].option));
+        missing.push_back(fmt::format("'{}' ({})", echo_input(wanted_[c].name), wanted_[c].option));
     }
     if (!missing.empty()) {
       std::vector<std::string_view> have;
       for (const Field& f : fields) have.push_back(f.text);
       fail(1, fmt::format("missing column(s) {}: the header has {}; name the columns with --gyro-columns, "
                           "--accel-columns (x,y,z) and --time-column",
-                          fmt::join(missing, ", "), fmt::join(have, ",")));
+                          fmt::join(missing, ", "), echo_input(fmt::format("{}", fmt::join(have, ",")), 200)));
     }
   }
 
@@ -175,10 +199,13 @@ class Parser {
     if (pos_ >= text_.size()) return false;
     const std::size_t end = text_.find('\n', pos_);
     const std::size_t stop = end == std::string_view::npos ? text_.size() : end;
+    ++line_number_;
+    if (stop - pos_ > kMaxImuLineBytes)
+      fail(kMaxImuLineBytes + 1, fmt::format("line of {} bytes: an IMU CSV line may hold at most {} bytes",
+                                             stop - pos_, kMaxImuLineBytes));
     line = text_.substr(pos_, stop - pos_);
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     pos_ = stop + 1;
-    ++line_number_;
     return true;
   }
 
@@ -187,7 +214,7 @@ class Parser {
   }
 
   std::string_view text_;
-  std::string_view source_;
+  std::string source_;  ///< the file name, escaped for messages
   const ImuCsvOptions& options_;
   std::size_t pos_ = 0, line_number_ = 0;
   std::size_t header_line_ = 0, header_count_ = 0;
@@ -245,17 +272,21 @@ double parse_rate_hz(std::string_view text, std::string_view field) {
   char* end = nullptr;
   errno = 0;
   const double number = std::strtod(begin, &end);
-  if (s.empty() || end == begin) throw InputError(std::string(field), s, fmt::format("not a number; expected {}", allowed));
+  if (s.empty() || end == begin || s.find('\0') != std::string::npos)
+    throw InputError(std::string(field), echo_input(s), fmt::format("not a number; expected {}", allowed));
   std::string_view unit(end);
   while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
   double factor = 0.0;
   if (unit == "Hz") factor = 1.0;
   else if (unit == "kHz") factor = 1e3;
-  else if (unit.empty()) throw InputError(std::string(field), s, fmt::format("a unit is required; expected {}", allowed));
-  else throw InputError(std::string(field), s, fmt::format("unknown unit '{}'; expected {}", unit, allowed));
+  else if (unit.empty()) throw InputError(std::string(field), echo_input(s), fmt::format("a unit is required; expected {}", allowed));
+  else throw InputError(std::string(field), echo_input(s), fmt::format("unknown unit '{}'; expected {}", echo_input(unit), allowed));
   const double rate = number * factor;
   if (errno == ERANGE || !std::isfinite(rate) || !(rate > 0))
-    throw InputError(std::string(field), s, fmt::format("must be finite and > 0; expected {}", allowed));
+    throw InputError(std::string(field), echo_input(s), fmt::format("must be finite and > 0; expected {}", allowed));
+  if (!(rate >= kMinImuRateHz && rate <= kMaxImuRateHz))
+    throw InputError(std::string(field), echo_input(s),
+                     fmt::format("must lie in [{}Hz, {}kHz]", kMinImuRateHz, kMaxImuRateHz / 1e3));
   return rate;
 }
 
@@ -264,17 +295,27 @@ std::optional<InputError> validate(const ImuCsvOptions& o) {
   if (!timed && !(o.rate_hz > 0 && std::isfinite(o.rate_hz)))
     return InputError("--rate", fmt::format("{}Hz", o.rate_hz),
                       "give a finite sample rate > 0 (e.g. 100Hz), or a time column with --time-column");
+  if (!timed && !(o.rate_hz >= kMinImuRateHz && o.rate_hz <= kMaxImuRateHz))
+    return InputError("--rate", fmt::format("{}Hz", o.rate_hz),
+                      fmt::format("must lie in [{}Hz, {}kHz]", kMinImuRateHz, kMaxImuRateHz / 1e3));
   if (timed && o.rate_hz != 0.0)
     return InputError("--rate", fmt::format("{}Hz", o.rate_hz),
                       "give either --rate or --time-column, not both");
-  if (!(o.time_unit_s > 0 && std::isfinite(o.time_unit_s)))
-    return InputError("--time-unit", fmt::format("{}s", o.time_unit_s), "must be a finite time > 0");
+  if (!(o.time_unit_s >= 1e-9 && o.time_unit_s <= 86400.0))
+    return InputError("--time-unit", fmt::format("{}s", o.time_unit_s), "must lie in [1ns, 1 day]");
   std::set<std::string> seen;
   const auto check = [&](const std::string& name, const char* option) -> std::optional<InputError> {
     if (name.empty()) return InputError(option, "''", "column names must not be empty");
     if (name.find(',') != std::string::npos || name.front() == '#')
-      return InputError(option, name, "a column name cannot contain ',' or start with '#'");
-    if (!seen.insert(name).second) return InputError(option, name, "each column may be used once");
+      return InputError(option, echo_input(name), "a column name cannot contain ',' or start with '#'");
+    // The reader trims the header's fields and the name goes into the
+    // record header: blanks at its ends or control bytes could never match.
+    if (is_blank(name.front()) || is_blank(name.back()))
+      return InputError(option, "'" + echo_input(name) + "'", "a column name cannot start or end with a blank");
+    for (const char ch : name)
+      if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7F)
+        return InputError(option, echo_input(name), "a column name cannot contain control characters");
+    if (!seen.insert(name).second) return InputError(option, echo_input(name), "each column may be used once");
     return std::nullopt;
   };
   for (const auto& n : o.gyro_columns)
@@ -293,14 +334,11 @@ ImuSamples parse_imu_csv(std::string_view text, std::string_view source_name, co
 
 ImuSamples read_imu_csv(const std::filesystem::path& path, const ImuCsvOptions& options) {
   if (auto e = validate(options)) throw *e;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open the IMU file: {}", path.string(), std::strerror(errno)));
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw InputError(fmt::format("{}: cannot read the IMU file", path.string()));
+  const std::string text = read_file_capped(path, kMaxImuFileBytes, "IMU file");
   if (text.size() >= 2 && static_cast<unsigned char>(text[0]) == 0x1f && static_cast<unsigned char>(text[1]) == 0x8b)
     throw InputError(fmt::format("{}: gzip-compressed; import-imu reads plain CSV: unpack it first "
                                  "(gzip -dc {} > FILE.csv) and give FILE.csv",
-                                 path.string(), path.string()));
+                                 echo_input(path.string(), 256), echo_input(path.string(), 256)));
   return parse_imu_csv(text, path.string(), options);
 }
 

@@ -15,6 +15,7 @@
 /// command that unpacks it.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -25,6 +26,30 @@
 #include "lib/frames/frames.h"
 
 namespace insmc {
+
+/// Caps of the reader, far beyond any real recording so that a user never
+/// meets them, and stated so that a broken or hostile file is refused before
+/// it fills the memory (each sample costs ~60 bytes in memory, more in the
+/// strapdown run that follows).
+/// Samples in one file: 40 million (11 h at 1 kHz; 2.4 GB in memory).
+inline constexpr std::size_t kMaxImuSamples = 40'000'000;
+/// The file: 4 GiB (40 million rows of ~100 bytes).
+inline constexpr std::uint64_t kMaxImuFileBytes = std::uint64_t{4} << 30;
+/// One line: 64 KiB (loggers write tens of columns; the wanted ones are 7).
+inline constexpr std::size_t kMaxImuLineBytes = 64 * 1024;
+/// Sample rate: [1 Hz, 100 kHz] (navigation IMUs log at 100 Hz to 2 kHz).
+inline constexpr double kMinImuRateHz = 1.0;
+inline constexpr double kMaxImuRateHz = 1e5;
+/// Time covered by one file: 14 days (a file holds consecutive runs of at
+/// most 48 h each); a time-column value, times its unit, lies within
+/// ±1e10 s (Unix time in seconds is 1.8e9 s).
+inline constexpr double kMaxImuDurationS = 14 * 86400.0;
+inline constexpr double kMaxImuAbsTimeS = 1e10;
+/// Per component: |gyro| ≤ 100 rad/s (5730 deg/s: MEMS full scales reach
+/// 4000 deg/s), |accel| ≤ 10,000 m/s² (1000 g: full scales reach 400 g).
+/// A value beyond is a unit or column mistake, or corrupt data.
+inline constexpr double kMaxImuGyroRadps = 100.0;
+inline constexpr double kMaxImuAccelMps2 = 1e4;
 
 /// Units of the gyro columns.
 enum class GyroUnit { kDegPerS, kRadPerS, kDegPerH };
@@ -43,7 +68,8 @@ double to_si(GyroUnit u);
 double to_si(AccelUnit u);
 
 /// A sample rate with its unit, "100Hz" or "0.1kHz" [Hz]; throws InputError
-/// naming `field` on a missing unit, a malformed number or a rate ≤ 0.
+/// naming `field` on a missing unit, a malformed number or a rate outside
+/// [kMinImuRateHz, kMaxImuRateHz].
 double parse_rate_hz(std::string_view text, std::string_view field);
 
 /// How to read an IMU CSV file.
@@ -65,7 +91,8 @@ struct ImuCsvOptions {
 };
 
 /// Checks every constraint on the options (one source of time, distinct
-/// non-empty column names, positive rate and time unit); nullopt if valid.
+/// non-empty column names, rate within its caps, positive time unit);
+/// nullopt if valid.
 std::optional<InputError> validate(const ImuCsvOptions& options);
 
 /// The samples of one file, SI, times relative to the first sample.
@@ -88,7 +115,9 @@ struct ImuSamples {
 /// Parses CSV text: optional UTF-8 byte-order mark, blank lines and `#`
 /// comment lines anywhere, then a header line naming the columns (any order,
 /// extra columns ignored), then one row per sample. CRLF line endings and
-/// blanks around fields are accepted. At least two samples are required.
+/// blanks around fields are accepted. At least two samples are required; the
+/// caps above hold (sample count, line length, duration, each value's
+/// magnitude, with file:line:column and the cap in the message).
 /// `source_name` stands for the file name in messages.
 ImuSamples parse_imu_csv(std::string_view text, std::string_view source_name, const ImuCsvOptions& options);
 

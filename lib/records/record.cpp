@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "lib/common/input_error.h"
@@ -59,7 +60,8 @@ Phase parse_phase(std::string_view text, std::string_view field) {
 
 std::optional<std::string> header_value_problem(std::string_view key, std::string_view value) {
   const bool known = key == kKeyLatitudeDeg || key == kKeySystem || key == kKeyTestDurationS ||
-                     key == kKeyDvPulseMps || key == kKeyPositionResolutionM || key == kKeyNavStartS;
+                     key == kKeyDvPulseMps || key == kKeyPositionResolutionM || key == kKeyNavStartS ||
+                     key == kKeyFilterIntervalS;
   if (key == kKeyScheme) {
     for (Scheme s : all_schemes()) {
       if (to_string(s) == value) return std::nullopt;
@@ -70,12 +72,59 @@ std::optional<std::string> header_value_problem(std::string_view key, std::strin
   double v = 0.0;
   const NumberStatus status = parse_double(value, v);
   if (status != NumberStatus::kOk) return fmt::format("must be a finite number ({})", describe(status));
+  const double max_h = kMaxRunDurationS / 3600.0;
   if (key == kKeyLatitudeDeg && !(v >= -90.0 && v <= 90.0)) return "must be in [-90, 90] (degrees)";
   if (key == kKeySystem && v != 1.0 && v != 2.0) return "must be 1 (theodolite azimuth) or 2 (gyrocompassing)";
-  if (key == kKeyTestDurationS && !(v > 0.0)) return "must be > 0 (seconds)";
-  if (key == kKeyDvPulseMps && !(v >= 0.0)) return "must be >= 0 (m/s; 0 means a continuous output)";
-  if (key == kKeyPositionResolutionM && !(v >= 0.0)) return "must be >= 0 (m)";
-  if (key == kKeyNavStartS && !(v >= 0.0)) return "must be >= 0 (seconds since the first switch-over)";
+  if (key == kKeyTestDurationS && !(v > 0.0 && v <= kMaxRunDurationS))
+    return fmt::format("must be in (0, {}] (seconds: a run lasts at most {} h)", kMaxRunDurationS, max_h);
+  if (key == kKeyDvPulseMps && !(v == 0.0 || (v >= kMinDvPulseMps && v <= kMaxDvPulseMps)))
+    return fmt::format("must be 0 (a continuous output) or in [{}, {}] (m/s)", kMinDvPulseMps, kMaxDvPulseMps);
+  if (key == kKeyPositionResolutionM &&
+      !(v == 0.0 || (v >= kMinPositionResolutionM && v <= kMaxPositionResolutionM)))
+    return fmt::format("must be 0 (exact) or in [{}, {}] (m)", kMinPositionResolutionM, kMaxPositionResolutionM);
+  if (key == kKeyNavStartS && !(v >= 0.0 && v <= kMaxRunDurationS))
+    return fmt::format("must be in [0, {}] (seconds since the first switch-over: a run lasts at most {} h)",
+                       kMaxRunDurationS, max_h);
+  if (key == kKeyFilterIntervalS && !(v >= kMinFilterIntervalS && v <= kMaxFilterIntervalS))
+    return fmt::format("must be in [{}, {}] (seconds)", kMinFilterIntervalS, kMaxFilterIntervalS);
+  return std::nullopt;
+}
+
+std::optional<HeaderProblem> header_consistency_problem(const RecordHeader& h) {
+  for (std::string_view key : kRequiredHeaderKeys)
+    if (h.find(key) == nullptr) return HeaderProblem{std::string(key), "required header key is missing"};
+  const double T = h.test_duration_s();
+  const Scheme scheme = h.scheme();
+  const std::optional<double> nav_start = h.nav_start_s(), tau = h.filter_interval_s();
+  if (realigns(scheme) && !nav_start)
+    return HeaderProblem{std::string(kKeyNavStartS),
+                         fmt::format("missing: records after scheme {} need the time of the second switch-over "
+                                     "after the realignment (> test_duration_s = {})",
+                                     to_string(scheme), T)};
+  if (realigns(scheme) && !(*nav_start > T))
+    return HeaderProblem{std::string(kKeyNavStartS),
+                         fmt::format("nav_start_s = {}: must be > test_duration_s = {} (the realignment follows "
+                                     "the test run)",
+                                     *nav_start, T)};
+  if (tau && !(*tau <= T))
+    return HeaderProblem{std::string(kKeyFilterIntervalS),
+                         fmt::format("filter_interval_s = {}: must be no longer than test_duration_s = {}", *tau, T)};
+  if (uses_test_run(scheme)) {
+    if (T > kMaxEstimatingTestDurationS)
+      return HeaderProblem{std::string(kKeyTestDurationS),
+                           fmt::format("test_duration_s = {}: must be at most {} s (2 h) for scheme {}, which "
+                                       "estimates from the test run",
+                                       T, kMaxEstimatingTestDurationS, to_string(scheme))};
+    if (tau) {
+      const double k = T / *tau;
+      if (std::abs(k - std::round(k)) > 1e-6 || k < kMinTestIntervals - 1e-6)
+        return HeaderProblem{std::string(kKeyFilterIntervalS),
+                             fmt::format("filter_interval_s = {}: test_duration_s = {} must be a whole number (at "
+                                         "least {}) of filter intervals for scheme {}, which estimates from the "
+                                         "test run",
+                                         *tau, T, kMinTestIntervals, to_string(scheme))};
+    }
+  }
   return std::nullopt;
 }
 
@@ -130,6 +179,10 @@ std::optional<double> RecordHeader::position_resolution_m() const {
 }
 
 std::optional<double> RecordHeader::nav_start_s() const { return optional_header_number(*this, kKeyNavStartS); }
+
+std::optional<double> RecordHeader::filter_interval_s() const {
+  return optional_header_number(*this, kKeyFilterIntervalS);
+}
 
 RecordHeader RecordHeader::without_truth() const {
   RecordHeader copy;

@@ -40,16 +40,55 @@ inline constexpr std::string_view kKeyScheme = "scheme";
 inline constexpr std::string_view kKeyDvPulseMps = "dv_pulse_mps";
 inline constexpr std::string_view kKeyPositionResolutionM = "position_resolution_m";
 inline constexpr std::string_view kKeyNavStartS = "nav_start_s";
+inline constexpr std::string_view kKeyFilterIntervalS = "filter_interval_s";
 inline constexpr std::string_view kTruthKeyPrefix = "truth.";
 
 /// Required keys, in the order the writer's factory puts them.
 inline constexpr std::array<std::string_view, 4> kRequiredHeaderKeys = {
     kKeyLatitudeDeg, kKeySystem, kKeyTestDurationS, kKeyScheme};
 
+/// Physical ranges of the header values, checked by the reader (with the
+/// range in the message) and asserted by the writer. Generous: far beyond
+/// any real preflight test, tight enough that no value can make a consumer
+/// loop for ever or overflow (a pulse weight of 1e-300 m/s would make the
+/// truth simulator count pulses for ever).
+/// A run (alignment, test run and navigation) lasts at most 48 h: the
+/// report's flights last 84 min, a long test campaign a working day; every
+/// row's |t_s| and every duration in the header is capped by it.
+inline constexpr double kMaxRunDurationS = 48 * 3600.0;
+/// Accelerometer pulse weight: 0 (continuous) or [1 µm/s, 10 m/s]; the
+/// report's is 0.1 ft/s = 0.03 m/s, navigation-grade ones 1e-4..1e-2 m/s.
+inline constexpr double kMinDvPulseMps = 1e-6;
+inline constexpr double kMaxDvPulseMps = 10.0;
+/// Position-computer resolution: 0 (exact) or [1 µm, 10 km]; the report's is 3 ft.
+inline constexpr double kMinPositionResolutionM = 1e-6;
+inline constexpr double kMaxPositionResolutionM = 1e4;
+/// Filter (output) interval: [0.1 ms, 1 h]; 0.1 ms is a 10 kHz IMU's sample.
+inline constexpr double kMinFilterIntervalS = 1e-4;
+inline constexpr double kMaxFilterIntervalS = 3600.0;
+/// Test run of a scheme that estimates from it (5.1.x, combined, 5.2, 5.3):
+/// what the study's test run allows (preflight/test_run.h validate): at most
+/// 2 h, a whole number of filter intervals, at least 4 of them.
+inline constexpr double kMaxEstimatingTestDurationS = 2 * 3600.0;
+inline constexpr int kMinTestIntervals = 4;
+
 /// Checks the value of a known header key (required or optional); returns
 /// what is allowed when `value` is impossible (e.g. "must be in [-90, 90]"),
 /// std::nullopt when it is fine or the key is not one of the known keys.
 std::optional<std::string> header_value_problem(std::string_view key, std::string_view value);
+
+struct RecordHeader;
+
+/// A problem between header values (each alone in range): the key to blame
+/// and what is wrong. E.g. nav_start_s missing or not after test_duration_s
+/// for a scheme that realigns; filter_interval_s longer than the test run.
+struct HeaderProblem {
+  std::string key;
+  std::string message;
+};
+/// Checks the header's values together; std::nullopt when consistent.
+/// Precondition: every known key present passes header_value_problem.
+std::optional<HeaderProblem> header_consistency_problem(const RecordHeader& header);
 
 /// The header of a record file: key/value pairs kept in the order given.
 /// Keys beginning `truth.` belong to the simulator that wrote the file; they
@@ -88,6 +127,8 @@ struct RecordHeader {
   /// Time of the second switch-over after a realignment (s, ≥ 0, same time
   /// origin as t_s).
   std::optional<double> nav_start_s() const;
+  /// The filter interval of `f` (s).
+  std::optional<double> filter_interval_s() const;
 
   /// A copy without the `truth.` keys: all the diagnosis may see.
   RecordHeader without_truth() const;

@@ -14,6 +14,7 @@
 
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
 #include "lib/records/number_text.h"
 
 namespace insmc {
@@ -34,6 +35,9 @@ constexpr std::array<std::string_view, kColumnCount> kColumnNames = {
 constexpr int kRequiredColumnCount = kWx;  // run … r_z
 constexpr std::string_view kRequiredColumnsText = "run,t_s,phase,f_x,f_y,f_z,r_x,r_y,r_z";
 
+/// File names in messages: shown whole up to this length (escaped).
+constexpr std::size_t kMaxShownPathBytes = 256;
+
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 std::string_view trim_left(std::string_view s) {
@@ -46,15 +50,9 @@ std::string_view trim_right(std::string_view s) {
 }
 std::string_view trim(std::string_view s) { return trim_right(trim_left(s)); }
 
-/// A field's text, cut to a readable length with control bytes replaced, so
+/// A field's text, cut to a readable length with control bytes escaped, so
 /// that every message stays on one line.
-std::string quote(std::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  std::string out;
-  for (char c : text.substr(0, kMaxShown)) out.push_back(static_cast<unsigned char>(c) < 0x20 ? '?' : c);
-  if (text.size() > kMaxShown) out += "...";
-  return fmt::format("'{}'", out);
-}
+std::string quote(std::string_view text) { return fmt::format("'{}'", echo_input(text)); }
 
 /// What is wrong with a row, and in which column (for the reader's column
 /// number); shared by the reader and the writer's precondition check.
@@ -68,6 +66,10 @@ class RunChecker {
  public:
   std::optional<RowProblem> check(const RecordRow& row, double test_duration_s) {
     if (!std::isfinite(row.t_s)) return RowProblem{kT, fmt::format("t_s = {}: not finite", row.t_s)};
+    if (!(std::abs(row.t_s) <= kMaxRunDurationS)) {
+      return RowProblem{kT, fmt::format("t_s = {}: must lie in [-{}, {}] (a run lasts at most {} h)", row.t_s,
+                                        kMaxRunDurationS, kMaxRunDurationS, kMaxRunDurationS / 3600)};
+    }
     if (seen_ && static_cast<int>(row.phase) < static_cast<int>(last_phase_)) {
       return RowProblem{kPhase, fmt::format("phase '{}' after '{}' in run {}: phases must come in the order "
                                             "align, test, nav",
@@ -102,10 +104,17 @@ class RunChecker {
       return RowProblem{kRx, fmt::format("r_x, r_y, r_z are empty on a {} row: r is required on test and nav rows",
                                          to_string(row.phase))};
     }
+    const auto beyond = [&](Column c, double v, double cap, const char* unit) {
+      return RowProblem{c, fmt::format("{} = {}: |{}| must be at most {} ({})", kColumnNames[c], v,
+                                       kColumnNames[c].substr(0, 1), cap, unit)};
+    };
     for (int k = 0; k < 3; ++k) {
-      if (row.f_mps2[k] && !std::isfinite(*row.f_mps2[k])) return RowProblem{Column(kFx + k), "f not finite"};
-      if (row.w_radps[k] && !std::isfinite(*row.w_radps[k])) return RowProblem{Column(kWx + k), "w not finite"};
-      if (row.r_ap_m && !std::isfinite((*row.r_ap_m)[k])) return RowProblem{Column(kRx + k), "r not finite"};
+      if (row.f_mps2[k] && !(std::abs(*row.f_mps2[k]) <= kMaxRecordAbsFMps2))
+        return beyond(Column(kFx + k), *row.f_mps2[k], kMaxRecordAbsFMps2, "m/s2");
+      if (row.w_radps[k] && !(std::abs(*row.w_radps[k]) <= kMaxRecordAbsWRadps))
+        return beyond(Column(kWx + k), *row.w_radps[k], kMaxRecordAbsWRadps, "rad/s");
+      if (row.r_ap_m && !(std::abs((*row.r_ap_m)[k]) <= kMaxRecordAbsRM))
+        return beyond(Column(kRx + k), (*row.r_ap_m)[k], kMaxRecordAbsRM, "m");
     }
     seen_ = true;
     last_t_s_ = row.t_s;
@@ -145,7 +154,8 @@ void split_fields(std::string_view line, std::vector<Field>& out) {
 
 class Parser {
  public:
-  Parser(std::string_view text, std::string_view source_name) : text_(text), name_(source_name) {
+  Parser(std::string_view text, std::string_view source_name)
+      : text_(text), name_(echo_input(source_name, kMaxShownPathBytes)) {
     if (text_.starts_with(kBom)) text_.remove_prefix(kBom.size());
   }
 
@@ -161,6 +171,7 @@ class Parser {
         continue;
       }
       check_required_keys(file.header);
+      check_consistency(file.header);
       parse_column_header(line);
       have_columns = true;
       break;
@@ -192,9 +203,14 @@ class Parser {
     if (pos_ >= text_.size()) return false;
     const std::size_t nl = text_.find('\n', pos_);
     const std::size_t end = nl == std::string_view::npos ? text_.size() : nl;
+    ++line_number_;
+    if (end - pos_ > kMaxRecordLineBytes) {
+      fail(line_number_, kMaxRecordLineBytes + 1,
+           fmt::format("line of {} bytes: a record line may hold at most {} bytes", end - pos_,
+                       kMaxRecordLineBytes));
+    }
     line_ = trim_right(text_.substr(pos_, end - pos_));
     pos_ = nl == std::string_view::npos ? text_.size() : nl + 1;
-    ++line_number_;
     line = line_;
     return true;
   }
@@ -227,14 +243,19 @@ class Parser {
     const std::string_view key = trim_right(content.substr(0, eq));
     const std::string_view value = trim(content.substr(eq + 1));
     if (key.empty()) fail(line_number_, column_of(content), "header line has an empty key before '='");
+    if (header_lines_.size() >= kMaxRecordHeaderLines) {
+      fail(line_number_, 1,
+           fmt::format("more than {} header lines: a record file may hold at most {}", kMaxRecordHeaderLines,
+                       kMaxRecordHeaderLines));
+    }
     const auto [it, inserted] = header_lines_.emplace(std::string(key), line_number_);
     if (!inserted) {
       fail(line_number_, column_of(key),
-           fmt::format("duplicate header key '{}' (first given on line {})", key, it->second));
+           fmt::format("duplicate header key {} (first given on line {})", quote(key), it->second));
     }
     if (auto problem = header_value_problem(key, value)) {
       fail(line_number_, value.empty() ? column_of(content) + eq + 1 : column_of(value),
-           fmt::format("{} = {}: {}", key, quote(value), *problem));
+           fmt::format("header {} = {}: {}", echo_input(key), quote(value), *problem));
     }
     header.set(key, std::string(value));
   }
@@ -247,6 +268,16 @@ class Parser {
                          "required: latitude_deg, system, test_duration_s, scheme)",
                          key, key));
       }
+    }
+  }
+
+  /// Values that are each in range but impossible together: blamed on the
+  /// line of the key at fault.
+  void check_consistency(const RecordHeader& header) const {
+    if (const std::optional<HeaderProblem> p = header_consistency_problem(header)) {
+      const auto it = header_lines_.find(p->key);
+      fail(it != header_lines_.end() ? it->second : line_number_, 1,
+           fmt::format("header {}: {}", p->key, p->message));
     }
   }
 
@@ -353,6 +384,7 @@ class Parser {
     };
     std::unordered_map<std::int64_t, std::size_t> run_index;
     std::vector<RunState> states;
+    std::size_t total_rows = 0;
     std::string_view line;
     while (next_line(line)) {
       if (line.empty()) continue;
@@ -362,7 +394,22 @@ class Parser {
                          columns_line_));
       }
       RecordRow row = parse_row(line);
+      if (++total_rows > kMaxRecordRows) {
+        fail(line_number_, 1,
+             fmt::format("more than {} data rows: a record file may hold at most {} (split it into several files)",
+                         kMaxRecordRows, kMaxRecordRows));
+      }
       const auto [it, inserted] = run_index.emplace(row.run, file.runs.size());
+      if (inserted && file.runs.size() >= kMaxRecordRuns) {
+        fail(line_number_, field(kRun)->column,
+             fmt::format("run {} is run number {} of the file: a record file may hold at most {} runs", row.run,
+                         file.runs.size() + 1, kMaxRecordRuns));
+      }
+      if (!inserted && file.runs[it->second].rows.size() >= kMaxRecordRowsPerRun) {
+        fail(line_number_, field(kRun)->column,
+             fmt::format("run {} has more than {} rows: a run may hold at most {}", row.run, kMaxRecordRowsPerRun,
+                         kMaxRecordRowsPerRun));
+      }
       if (inserted) {
         file.runs.push_back(RecordRun{row.run, {}});
         states.push_back(RunState{RunChecker{}, line_number_, field(kRun)->column});
@@ -417,6 +464,9 @@ void assert_writable(const RecordFile& file) {
   for (std::string_view key : kRequiredHeaderKeys) {
     INSMC_ASSERT(file.header.find(key) != nullptr, "required header key '{}' missing", key);
   }
+  const std::optional<HeaderProblem> consistency = header_consistency_problem(file.header);
+  INSMC_ASSERT(!consistency, "header {}: {}", consistency ? consistency->key : "",
+               consistency ? consistency->message : "");
   INSMC_ASSERT(!file.runs.empty(), "a record file needs at least one run");
   const double test_duration_s = file.header.test_duration_s();
   std::unordered_map<std::int64_t, int> ids;
@@ -444,12 +494,8 @@ RecordFile parse_record_text(std::string_view text, std::string_view source_name
 }
 
 RecordFile read_record_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open the record file: {}", path.string(), std::strerror(errno)));
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) throw InputError(fmt::format("{}: cannot read the record file", path.string()));
-  return parse_record_text(content.view(), path.string());
+  const std::string text = read_file_capped(path, kMaxRecordFileBytes, "record file");
+  return parse_record_text(text, path.string());
 }
 
 std::string write_record_file(const RecordFile& file, TruthKeys truth) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
 #include "lib/units/units.h"
 
 namespace insmc {
@@ -76,24 +77,35 @@ std::vector<std::string> accepted_units(Dimension d) {
 }
 
 double parse_quantity(std::string_view text, Dimension dimension, std::string_view field) {
-  const std::string s(text);
   const std::string allowed = accepted_list(dimension);
+  if (text.size() > kMaxQuantityTextBytes)
+    throw InputError(std::string(field), echo_input(text),
+                     fmt::format("{} bytes: a value holds at most {} bytes; expected {}", text.size(),
+                                 kMaxQuantityTextBytes, allowed));
+  const std::string s(text);
+  const std::string shown = echo_input(text);
   if (s.empty()) throw InputError(std::string(field), "''", "expected " + allowed);
+  // strtod stops at a NUL byte, which would hide what follows it.
+  if (s.find('\0') != std::string::npos) throw InputError(std::string(field), shown, "not a number; expected " + allowed);
   const char* begin = s.c_str();
   char* end = nullptr;
   errno = 0;
   const double number = std::strtod(begin, &end);
-  if (end == begin) throw InputError(std::string(field), s, "not a number; expected " + allowed);
+  if (end == begin) throw InputError(std::string(field), shown, "not a number; expected " + allowed);
   if (errno == ERANGE || !std::isfinite(number))
-    throw InputError(std::string(field), s, "must be finite; expected " + allowed);
+    throw InputError(std::string(field), shown, "must be finite; expected " + allowed);
   std::string unit(end);
   while (!unit.empty() && unit.front() == ' ') unit.erase(unit.begin());
   for (const auto& u : units_of(dimension)) {
-    if (unit == u.name) return number * u.to_si;
+    if (unit == u.name) {
+      const double si = number * u.to_si;
+      if (!std::isfinite(si)) throw InputError(std::string(field), shown, "must be finite; expected " + allowed);
+      return si;
+    }
   }
   if (unit.empty())
-    throw InputError(std::string(field), s, "a unit is required; expected " + allowed);
-  throw InputError(std::string(field), s, "unknown unit '" + unit + "'; expected " + allowed);
+    throw InputError(std::string(field), shown, "a unit is required; expected " + allowed);
+  throw InputError(std::string(field), shown, "unknown unit '" + echo_input(unit) + "'; expected " + allowed);
 }
 
 std::string format_quantity(double value_si, Dimension dimension) {

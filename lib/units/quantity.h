@@ -3,6 +3,7 @@
 /// "1mg", "0.3mps", "100m", "1mrad", "20arcsec", "45deg", "50ppm"), parsed by
 /// one function into SI. A dimensional value without a unit is refused with
 /// the list of accepted units; dimensionless values are bare (or "ppm").
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,9 +27,15 @@ std::string_view si_suffix(Dimension d);
 /// The unit spellings accepted for a dimension, e.g. {"m","ft","km","nmi"}.
 std::vector<std::string> accepted_units(Dimension d);
 
+/// The longest value text parse_quantity reads: a number with its unit is
+/// ~30 bytes; 256 leaves room for any spelling of one.
+inline constexpr std::size_t kMaxQuantityTextBytes = 256;
+
 /// Parses `text` as a number followed by a unit of `dimension`; returns SI.
 /// Throws InputError naming `field` on a missing or wrong unit, a malformed
-/// number, or a non-finite value.
+/// number, a non-finite value (also after conversion to SI), or a text
+/// longer than kMaxQuantityTextBytes; the text is echoed escaped and cut
+/// (lib/common/input_text.h).
 double parse_quantity(std::string_view text, Dimension dimension, std::string_view field);
 
 /// Formats an SI value in the most natural accepted unit for messages,

@@ -99,12 +99,20 @@ void expect_bit_identical(const RecordFile& a, const RecordFile& b) {
   }
 }
 
-/// Any finite double, drawn from its bit pattern (all exponents equally
-/// likely: tiny, subnormal, huge, negative, ±0).
+/// Any finite double within the reader's caps on row values (|v| <= 1000,
+/// the smallest: w), drawn from its bit pattern (all exponents below the cap
+/// equally likely: tiny, subnormal, negative, ±0); a larger one keeps its
+/// mantissa and sign with an exponent below 10.
 double random_finite(std::mt19937_64& rng) {
   while (true) {
-    const double v = std::bit_cast<double>(rng());
-    if (std::isfinite(v)) return v;
+    double v = std::bit_cast<double>(rng());
+    if (!std::isfinite(v)) continue;
+    if (std::abs(v) > kMaxRecordAbsWRadps) {
+      int e = 0;
+      const double m = std::frexp(v, &e);
+      v = std::ldexp(m, e % 10);
+    }
+    return v;
   }
 }
 
@@ -125,8 +133,8 @@ RecordFile random_file(std::mt19937_64& rng) {
   const std::int64_t ids[] = {7, -3, 0, 1'000'000'007, std::numeric_limits<std::int64_t>::min(),
                               std::numeric_limits<std::int64_t>::max()};
   const double specials[] = {0.0, -0.0, 5e-324, -5e-324, std::numeric_limits<double>::min(),
-                             std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-                             1e-300, -1e300, 0.1, 1.0 / 3.0, 45.0};
+                             kMaxRecordAbsWRadps, -kMaxRecordAbsWRadps, std::nextafter(kMaxRecordAbsWRadps, 0.0),
+                             1e-300, -999.9999999999999, 0.1, 1.0 / 3.0, 45.0};
   for (std::int64_t id : ids) {
     RecordRun run{id, {}};
     auto value = [&]() {
@@ -360,10 +368,10 @@ TEST(RecordIo, BadFilesGiveFileLineColumn) {
       {"latitude_nan", with_line(2, "# latitude_deg=nan"), 2, 16, "not finite"},
       {"latitude_text", with_line(2, "# latitude_deg=45N"), 2, 16, "not a number"},
       {"system", with_line(3, "# system=3"), 3, 10, "must be 1 (theodolite azimuth) or 2"},
-      {"duration_negative", with_line(4, "# test_duration_s=-900"), 4, 19, "must be > 0"},
+      {"duration_negative", with_line(4, "# test_duration_s=-900"), 4, 19, "must be in (0, 172800]"},
       {"duration_empty", with_line(4, "# test_duration_s="), 4, 19, "not a number"},
       {"scheme", with_line(5, "# scheme=5.9"), 5, 10, "must be one of: none, 5.1.1"},
-      {"dv_pulse_negative", with_inserted(6, "# dv_pulse_mps=-0.1"), 6, 16, "dv_pulse_mps = '-0.1': must be >= 0"},
+      {"dv_pulse_negative", with_inserted(6, "# dv_pulse_mps=-0.1"), 6, 16, "dv_pulse_mps = '-0.1': must be 0 (a continuous output) or in [1e-06, 10]"},
       {"nav_start_text", with_inserted(6, "# nav_start_s=soon"), 6, 15, "nav_start_s = 'soon': must be a finite"},
       {"missing_column", with_line(6, "run,t_s,phase,f_x,f_y,f_z,r_x,r_y"), 6, 1, "missing column(s) r_z"},
       {"missing_columns", with_line(6, "run,t_s,f_x,f_y,f_z,r_x,r_y"), 6, 1, "missing column(s) phase, r_z"},

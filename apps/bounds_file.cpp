@@ -1,0 +1,187 @@
+#include "apps/bounds_file.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+#include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
+#include "lib/records/number_text.h"
+#include "lib/units/units.h"
+
+namespace insmc::app {
+namespace {
+
+constexpr std::string_view kKeys = "scheme, system, axis, t_min, confidence";
+constexpr std::string_view kLimitForms = "rms_m<=NUMBER or rms_ft<=NUMBER (NUMBER >= 0)";
+constexpr std::array<std::pair<std::string_view, mc::Axis>, 4> kAxes = {
+    {{"x", mc::Axis::kX}, {"y", mc::Axis::kY}, {"z", mc::Axis::kZ}, {"horizontal", mc::Axis::kHorizontal}}};
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+/// One whitespace-separated token and its 1-based column.
+struct Token {
+  std::string_view text;
+  std::size_t column;
+};
+
+class BoundsParser {
+ public:
+  BoundsParser(std::string_view text, std::string_view source) : text_(text), source_(echo_input(source, 256)) {}
+
+  std::vector<Bound> parse() {
+    if (text_.starts_with("\xEF\xBB\xBF")) text_.remove_prefix(3);  // UTF-8 byte-order mark
+    std::vector<Bound> out;
+    std::vector<double> times;
+    std::size_t pos = 0;
+    for (line_ = 1; pos < text_.size(); ++line_) {
+      const std::size_t nl = text_.find('\n', pos);
+      const std::size_t end = nl == std::string_view::npos ? text_.size() : nl;
+      if (end - pos > kMaxBoundsLineBytes)
+        fail(kMaxBoundsLineBytes + 1, fmt::format("line of {} bytes: a bounds line may hold at most {} bytes",
+                                                  end - pos, kMaxBoundsLineBytes));
+      std::string_view line = text_.substr(pos, end - pos);
+      pos = end + 1;
+      if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+      std::optional<Bound> b = parse_line(line);
+      if (!b) continue;
+      if (out.size() >= kMaxBounds)
+        fail(1, fmt::format("more than {} bounds: a bounds file may hold at most {}", kMaxBounds, kMaxBounds));
+      if (std::find(times.begin(), times.end(), b->t_s) == times.end()) {
+        if (times.size() >= kMaxBoundsReportTimes)
+          fail(time_column_, fmt::format("more than {} distinct t_min values: a bounds file may ask for at most {} "
+                                         "report times",
+                                         kMaxBoundsReportTimes, kMaxBoundsReportTimes));
+        times.push_back(b->t_s);
+      }
+      out.push_back(*b);
+    }
+    if (out.empty()) throw InputError(fmt::format("{}: holds no bound (one a line: {})", source_, kExample));
+    return out;
+  }
+
+ private:
+  static constexpr std::string_view kExample = "scheme=none system=2 axis=horizontal t_min=84 rms_m<=9000";
+
+  [[noreturn]] void fail(std::size_t column, const std::string& message) const {
+    throw InputError(fmt::format("{}:{}:{}: {}", source_, line_, column, message));
+  }
+
+  std::optional<Bound> parse_line(std::string_view line) {
+    std::vector<Token> tokens;
+    for (std::size_t i = 0; i < line.size();) {
+      while (i < line.size() && is_blank(line[i])) ++i;
+      const std::size_t start = i;
+      while (i < line.size() && !is_blank(line[i])) ++i;
+      if (i > start) tokens.push_back({line.substr(start, i - start), start + 1});
+    }
+    if (tokens.empty()) return std::nullopt;  // blank or comment line
+    std::map<std::string_view, Token> kv;
+    std::optional<Token> limit;
+    Bound b;
+    b.line = static_cast<int>(line_);
+    for (const Token& t : tokens) {
+      if (t.text.starts_with("rms_")) {
+        if (limit)
+          fail(t.column, fmt::format("a second limit {} (the first at column {}): one rms_m<=N or rms_ft<=N a line",
+                                     quote(t.text), limit->column));
+        b.rms_limit_m = parse_limit(t);
+        limit = t;
+        continue;
+      }
+      const std::size_t eq = t.text.find('=');
+      if (eq == std::string_view::npos || eq == 0)
+        fail(t.column, fmt::format("token {}: expected key=value ({}) or {}", quote(t.text), kKeys, kLimitForms));
+      const std::string_view key = t.text.substr(0, eq);
+      if (key != "scheme" && key != "system" && key != "axis" && key != "t_min" && key != "confidence")
+        fail(t.column, fmt::format("unknown key {}; allowed: {}", quote(key), kKeys));
+      const auto [it, inserted] = kv.emplace(key, Token{t.text.substr(eq + 1), t.column + eq + 1});
+      if (!inserted)
+        fail(t.column, fmt::format("{} given twice on one line (first at column {})", key, it->second.column - eq - 1));
+    }
+    for (std::string_view key : {"scheme", "system", "axis", "t_min"})
+      if (!kv.count(key))
+        fail(1, fmt::format("missing {}: each bound needs scheme, system, axis, t_min and rms_m<=N", key));
+    if (!limit) fail(1, "missing the limit: each bound needs rms_m<=N or rms_ft<=N");
+    b.scheme = parse_scheme_token(kv.at("scheme"));
+    b.system = parse_system_token(kv.at("system"));
+    b.axis = parse_axis_token(kv.at("axis"));
+    const Token& t_min = kv.at("t_min");
+    const double minutes = number(t_min, "t_min");
+    if (!(minutes >= 0 && minutes <= 360))
+      fail(t_min.column, fmt::format("t_min = {}: must be a number of minutes in [0, 360]", quote(t_min.text)));
+    b.t_s = minutes * 60.0;
+    time_column_ = t_min.column;
+    if (const auto c = kv.find("confidence"); c != kv.end()) {
+      const double v = number(c->second, "confidence");
+      if (!(v > 0 && v < 1)) fail(c->second.column, fmt::format("confidence = {}: must lie in (0, 1)", quote(c->second.text)));
+      b.confidence = v;
+    }
+    return b;
+  }
+
+  /// Exactly rms_m<=N or rms_ft<=N: anything else that starts rms_ (rms_m>=5,
+  /// rms_km<=5, rms_m=5) would otherwise read as no limit at all.
+  double parse_limit(const Token& t) const {
+    for (const std::string_view prefix : {std::string_view("rms_m<="), std::string_view("rms_ft<=")}) {
+      if (!t.text.starts_with(prefix)) continue;
+      const Token value{t.text.substr(prefix.size()), t.column + prefix.size()};
+      const double x = number(value, prefix.substr(0, prefix.size() - 2));
+      if (!(x >= 0)) fail(value.column, fmt::format("{}: the limit must be >= 0", quote(t.text)));
+      const double m = prefix == "rms_ft<=" ? x * kFtToM : x;
+      return m;
+    }
+    fail(t.column, fmt::format("limit {}: expected {}", quote(t.text), kLimitForms));
+  }
+
+  double number(const Token& t, std::string_view what) const {
+    double v = 0.0;
+    const auto status = records_detail::parse_double(t.text, v);
+    if (status != records_detail::NumberStatus::kOk)
+      fail(t.column, fmt::format("{} = {}: {}", what, quote(t.text), records_detail::describe(status)));
+    return v;
+  }
+
+  Scheme parse_scheme_token(const Token& t) const {
+    std::string names;
+    for (Scheme s : all_schemes()) {
+      if (to_string(s) == t.text) return s;
+      names += (names.empty() ? "" : ", ") + std::string(to_string(s));
+    }
+    fail(t.column, fmt::format("scheme = {}: must be one of: {}", quote(t.text), names));
+  }
+
+  System parse_system_token(const Token& t) const {
+    if (t.text == "1") return System::kTheodolite;
+    if (t.text == "2") return System::kGyrocompass;
+    fail(t.column, fmt::format("system = {}: must be 1 (theodolite) or 2 (gyrocompassing)", quote(t.text)));
+  }
+
+  mc::Axis parse_axis_token(const Token& t) const {
+    for (const auto& [name, axis] : kAxes)
+      if (name == t.text) return axis;
+    fail(t.column, fmt::format("axis = {}: must be x, y, z or horizontal", quote(t.text)));
+  }
+
+  static std::string quote(std::string_view text) { return fmt::format("'{}'", echo_input(text)); }
+
+  std::string_view text_;
+  std::string source_;
+  std::size_t line_ = 0;
+  std::size_t time_column_ = 1;
+};
+
+}  // namespace
+
+std::vector<Bound> parse_bounds_text(std::string_view text, std::string_view source) {
+  return BoundsParser(text, source).parse();
+}
+
+std::vector<Bound> read_bounds_file(const std::string& path) {
+  return parse_bounds_text(read_file_capped(path, kMaxBoundsFileBytes, "bounds file"), path);
+}
+
+}  // namespace insmc::app

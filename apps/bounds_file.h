@@ -1,0 +1,46 @@
+#pragma once
+/// The bounds file of `insmc check --bounds FILE`: one bound a line,
+///   scheme=none system=2 axis=horizontal t_min=84 rms_m<=9000 [confidence=0.95]
+/// (rms_ft<=N also accepted; `#` starts a comment). Every mistake is an
+/// InputError whose one-line message starts `FILE:LINE:COLUMN: ` (1-based).
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lib/common/system.h"
+#include "lib/compensation/scheme.h"
+#include "montecarlo/study/output_layout.h"
+
+namespace insmc::app {
+
+/// Caps: a CI job checks tens of bounds (7 schemes × 2 systems × 4 axes × 3
+/// report times = 168 covers every output of the report's figures).
+/// The file: 1 MiB; a line: 1 KiB (a bound is ~70 bytes).
+inline constexpr std::uint64_t kMaxBoundsFileBytes = std::uint64_t{1} << 20;
+inline constexpr std::size_t kMaxBoundsLineBytes = 1024;
+/// Bounds: 2,000. Distinct report times: 100 (each adds an output per
+/// scheme, system and axis to the study, with its histogram; a run's
+/// default grid has 49).
+inline constexpr std::size_t kMaxBounds = 2'000;
+inline constexpr std::size_t kMaxBoundsReportTimes = 100;
+
+struct Bound {
+  int line = 0;
+  Scheme scheme = Scheme::kNone;
+  System system = System::kTheodolite;
+  mc::Axis axis = mc::Axis::kHorizontal;
+  double t_s = 0.0;
+  double rms_limit_m = 0.0;
+  std::optional<double> confidence;
+};
+
+/// Parses the text of a bounds file; `source` names it in messages.
+std::vector<Bound> parse_bounds_text(std::string_view text, std::string_view source);
+
+/// Reads (at most kMaxBoundsFileBytes) and parses the file.
+std::vector<Bound> read_bounds_file(const std::string& path);
+
+}  // namespace insmc::app
