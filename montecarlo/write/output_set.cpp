@@ -226,7 +226,10 @@ SetPlacement OutputFolder::write(const OutputSetFiles& files) {
     throw OutputError(target_, "exists and is " + describe_file_type(st.st_mode) + ", not a folder", ENOTDIR);
   }
 
-  const bool swappable = S_ISDIR(st.st_mode) && !same_file(target_, fs::current_path()) &&
+  // Swapped only where the lock file could be made beside it (the parent
+  // is writable; otherwise the folder itself is locked and must stay), and
+  // never the working directory (the shell would be left in a removed one).
+  const bool swappable = S_ISDIR(st.st_mode) && !lock_->lock_file().empty() && !same_file(target_, ".") &&
                          holds_only_a_set_like(open_folder(target_, parent_fd.get(), name_.c_str(), false).get(),
                                                target_, wanted);
   if (swappable) {
