@@ -3,7 +3,8 @@
 # Idempotent and quiet on success; run as root (no sudo needed or used).
 #   scripts/install-deps.sh          build + run dependencies
 #   scripts/install-deps.sh --test   also GoogleTest, Random123 (test oracle),
-#                                    Open MPI (the MPI build's tests)
+#                                    Open MPI (the MPI build's tests), clang,
+#                                    libFuzzer and ccache (scripts/fuzz.sh)
 set -euo pipefail
 
 packages=(g++ cmake make libeigen3-dev libtbb-dev libboost-program-options-dev libboost-dev libfmt-dev)
@@ -11,6 +12,8 @@ if [[ "${1:-}" == "--test" ]]; then
   # openssh-client: Open MPI's mpirun refuses to start without an rsh/ssh agent,
   # even on one machine (Debian only recommends it).
   packages+=(libgtest-dev librandom123-dev openmpi-bin libopenmpi-dev openssh-client)
+  # scripts/fuzz.sh: clang with libFuzzer (libclang-rt-14-dev), builds through ccache.
+  packages+=(clang libclang-rt-14-dev ccache)
 fi
 
 missing=()

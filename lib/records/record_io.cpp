@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -242,6 +243,18 @@ class Parser {
     }
     const std::string_view key = trim_right(content.substr(0, eq));
     const std::string_view value = trim(content.substr(eq + 1));
+    // A control byte inside a key or value (a lone CR, a NUL) would be a line
+    // break or worse to other tools, and the writer could not keep it.
+    for (const std::string_view part : {key, value}) {
+      const auto bad = std::find_if(part.begin(), part.end(), [](char c) {
+        return (static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7F;
+      });
+      if (bad != part.end()) {
+        fail(line_number_, column_of(part) + static_cast<std::size_t>(bad - part.begin()),
+             fmt::format("control character '{}' in the header line {}: keys and values are text on one line",
+                         echo_input(std::string_view(&*bad, 1)), quote(line)));
+      }
+    }
     if (key.empty()) fail(line_number_, column_of(content), "header line has an empty key before '='");
     if (header_lines_.size() >= kMaxRecordHeaderLines) {
       fail(line_number_, 1,

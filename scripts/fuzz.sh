@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Fuzzes every input reader (tests/fuzz: records, imu, bounds, config,
+# checkpoint, quantity) for SECONDS each with libFuzzer, AddressSanitizer and
+# UndefinedBehaviorSanitizer. Quiet on success; on a crash prints the crash
+# input (kept under build/fuzz/crashes/<target>/) and exits 1.
+#   scripts/fuzz.sh SECONDS
+# Installs clang, libclang-rt-14-dev (libFuzzer) and ccache from Debian's
+# archive if missing (as root), builds only the fuzz targets and the reader
+# libraries into build/fuzz (ccache), and runs each target on a copy of its
+# corpus (tests/fuzz/corpus/<target> + regressions/<target>): the
+# repository's corpus is never written.
+set -euo pipefail
+seconds=${1:?usage: scripts/fuzz.sh SECONDS}
+root=$(cd "$(dirname "$0")/.." && pwd)
+targets=(records imu bounds config checkpoint quantity)
+
+packages=(clang libclang-rt-14-dev ccache cmake make libeigen3-dev libtbb-dev libboost-program-options-dev
+          libboost-dev libfmt-dev)
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then missing+=("$p"); fi
+done
+if [[ ${#missing[@]} -gt 0 ]]; then
+  if [[ $(id -u) -ne 0 ]]; then
+    echo "fuzz: missing Debian packages: ${missing[*]}; run as root to install them" >&2
+    exit 1
+  fi
+  log=$(mktemp)
+  if ! { DEBIAN_FRONTEND=noninteractive apt-get update -q &&
+         DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"; } >"$log" 2>&1; then
+    cat "$log" >&2
+    echo "fuzz: apt-get failed installing: ${missing[*]}" >&2
+    exit 1
+  fi
+  rm -f "$log"
+fi
+
+build=$root/build/fuzz
+fuzz_targets=()
+for t in "${targets[@]}"; do fuzz_targets+=("fuzz_$t"); done
+INSMC_BUILD_TARGETS="${fuzz_targets[*]}" bash "$root/scripts/build.sh" "$build" \
+  -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DINSMC_FUZZ=ON -DBUILD_TESTING=OFF \
+  -DINSMC_WERROR=OFF -DINSMC_PCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1"
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failed=0
+for t in "${targets[@]}"; do
+  corpus=$work/$t/corpus
+  mkdir -p "$corpus" "$work/$t/artifacts"
+  for kind in corpus regressions; do
+    src=$root/tests/fuzz/$kind/$t
+    if [[ -d $src ]] && compgen -G "$src/*" >/dev/null; then cp "$src"/* "$corpus"/; fi
+  done
+  # A crash is anything but a normal return: a sanitizer report, an abort,
+  # an exception other than InputError, more than 5 s on one input or more
+  # than 2 GB of memory.
+  if ! "$build/fuzz_$t" "$corpus" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 \
+       -artifact_prefix="$work/$t/artifacts/" -print_final_stats=1 >"$work/$t/log" 2>&1; then
+    kept=$build/crashes/$t
+    mkdir -p "$kept"
+    echo "fuzz: fuzz_$t crashed; the last lines of its log:" >&2
+    tail -n 40 "$work/$t/log" >&2
+    for crash in "$work/$t/artifacts"/*; do
+      [[ -e $crash ]] || continue
+      cp "$crash" "$kept/"
+      echo "fuzz: crash input: $kept/$(basename "$crash") (replay: $build/fuzz_$t $kept/$(basename "$crash"))" >&2
+    done
+    cp "$work/$t/log" "$kept/log"
+    failed=1
+  fi
+done
+exit $failed

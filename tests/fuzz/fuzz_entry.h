@@ -1,0 +1,40 @@
+#pragma once
+/// One entry per reader for the libFuzzer targets (tests/fuzz/fuzz_<name>.cpp)
+/// and for the corpus test that replays every kept input in the normal build
+/// (tests/fuzz/corpus_test.cpp). An entry returns whether the input was
+/// accepted or refused with an InputError (both normal outcomes); anything
+/// else escapes: another exception, an abort, a sanitizer report. Where a
+/// reader has a writer, an accepted input is also written and read back,
+/// and a difference aborts.
+#include <string_view>
+
+namespace insmc::fuzz {
+
+enum class Outcome { kAccepted, kRefused };
+
+/// parse_record_text; an accepted file must survive write_record_file and
+/// read back equal.
+Outcome records(std::string_view data);
+/// parse_imu_csv; the first byte chooses units, rate or time column, and
+/// column names.
+Outcome imu(std::string_view data);
+/// check's bounds file (apps/bounds_file.h).
+Outcome bounds(std::string_view data);
+/// The --config INI reader (apps/config_file.h) with options of every kind
+/// the subcommands use; then stored and notified as parse_args does.
+Outcome config(std::string_view data);
+/// decode_checkpoint; with the first byte odd, the rest is a body after the
+/// magic line to which a valid checksum is appended (so the fuzzer reaches
+/// the fields behind the checksum).
+Outcome checkpoint(std::string_view data);
+/// parse_quantity; the first byte chooses the dimension (or parse_rate_hz).
+Outcome quantity(std::string_view data);
+
+struct Target {
+  std::string_view name;  ///< tests/fuzz/corpus/<name>, regressions/<name>, fuzz_<name>
+  Outcome (*run)(std::string_view);
+};
+inline constexpr Target kTargets[] = {{"records", records}, {"imu", imu},               {"bounds", bounds},
+                                      {"config", config},   {"checkpoint", checkpoint}, {"quantity", quantity}};
+
+}  // namespace insmc::fuzz

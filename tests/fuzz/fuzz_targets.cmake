@@ -1,0 +1,15 @@
+# libFuzzer targets, one per reader (tests/fuzz/fuzz_<name>.cpp), built with
+# -DINSMC_FUZZ=ON by clang with -fsanitize=fuzzer,address,undefined. Only
+# the readers' libraries (insmc_readers, insmc_app_readers) are needed:
+# `cmake --build DIR --target fuzz_records ...` builds nothing else.
+if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+  message(FATAL_ERROR "INSMC_FUZZ needs clang (libFuzzer): -DCMAKE_CXX_COMPILER=clang++")
+endif()
+add_library(insmc_fuzz_entry STATIC ${CMAKE_CURRENT_LIST_DIR}/fuzz_entry.cpp)
+target_link_libraries(insmc_fuzz_entry PUBLIC insmc_app_readers)
+set(INSMC_FUZZ_TARGETS records imu bounds config checkpoint quantity)
+foreach(name ${INSMC_FUZZ_TARGETS})
+  add_executable(fuzz_${name} ${CMAKE_CURRENT_LIST_DIR}/fuzz_${name}.cpp)
+  target_link_libraries(fuzz_${name} PRIVATE insmc_fuzz_entry)
+  target_link_options(fuzz_${name} PRIVATE -fsanitize=fuzzer)
+endforeach()
