@@ -132,6 +132,21 @@ TEST(Outputs, PathsThatCannotBeWrittenExitTwoBeforeTheWork) {
   EXPECT_TRUE(fs::is_empty(dir.path() / "existing_dir"));
 }
 
+TEST(Outputs, AResumeWithABadOutIsRefusedBeforeTheCheckpointIsTouched) {
+  TempDir dir;
+  const std::string ck = dir.str() + "/x.ck";
+  ASSERT_EQ(run_insmc("run --samples 2000 --checkpoint " + ck).exit_code, 0);
+  struct stat before {};
+  ASSERT_EQ(::stat(ck.c_str(), &before), 0);
+  std::ofstream(dir.path() / "file") << "x";
+  const std::string out = dir.str() + "/file/sub";
+  const std::string args = "run --resume " + ck + " --out " + out;
+  expect_refused(run_insmc(args), "--out", out, args);
+  struct stat after {};
+  ASSERT_EQ(::stat(ck.c_str(), &after), 0);
+  EXPECT_EQ(before.st_ino, after.st_ino) << "the checkpoint was rewritten: the resume had started";
+}
+
 TEST(Outputs, TrailingSlashesAndNewParentsWork) {
   TempDir dir;
   const auto r = run_insmc("run --samples 2000 --out " + dir.str() + "/newdir/ --format csv");
@@ -176,19 +191,21 @@ TEST(Outputs, ASigkillAtAnyMomentLeavesOneWholeSet) {
   // Kills spread over the whole run and most of them near its end, where the
   // set is written; each run writes the other seed's set over what is there.
   std::mt19937 random(12345);
-  std::uniform_real_distribution<double> at(0.3, 1.1);
-  int killed = 0, finished = 0;
+  std::uniform_real_distribution<double> anywhere(0.3, 1.1), near_the_end(0.9, 1.03);
+  int killed = 0, finished = 0, in_write_phase = 0;
   for (int i = 0; i < 16; ++i) {
     const std::string seed = i % 2 == 0 ? "2" : "1";
     BackgroundProgram run(insmc_path() + " run" + study + " --seed " + seed + " --out " + o.string());
-    std::this_thread::sleep_for(std::chrono::duration<double>(at(random) * whole_s));
+    std::this_thread::sleep_for(std::chrono::duration<double>((i % 4 == 0 ? anywhere : near_the_end)(random) * whole_s));
     run.send(SIGKILL);
     const ProgramResult r = run.wait();
     (r.exit_code == 128 + SIGKILL ? killed : finished) += 1;
+    for (const std::string& e : entries(dir.path())) in_write_phase += e.rfind(".o.insmc-tmp-", 0) == 0 ? 1 : 0;
     const bool old_set = holds_the_set_of(o, dir.path() / "ref1"), new_set = holds_the_set_of(o, dir.path() / "ref2");
     ASSERT_TRUE(old_set || new_set) << "kill " << i << ": the folder holds " << ::testing::PrintToString(entries(o));
   }
-  std::cout << "[ kills ] " << killed << " killed, " << finished << " finished before the kill\n";
+  std::cout << "[ kills ] " << killed << " killed (" << in_write_phase
+            << " while a temporary set existed), " << finished << " finished before the kill\n";
   EXPECT_GT(killed, 0);
   // A killed run's temporaries are recognisable and the next run clears them.
   ASSERT_EQ(run_insmc("run" + study + " --seed 2 --out " + o.string()).exit_code, 0);
