@@ -85,7 +85,7 @@ po::options_description study_options_description(bool monte_carlo) {
 po::options_description test_run_options_description() {
   po::options_description d("Preflight test run, measurements and realignment (chapters 4, 5)");
   d.add_options()("test-duration", po::value<std::string>()->default_value("15min"),
-                  "test-run length T on the stationary base, in (0, 2h] (a whole number of filter intervals, 4 to 1800 of them)")(
+                  "test-run length T on the stationary base, in (0, 2h] (a whole number of filter intervals, at least 4; a Monte Carlo study at most 1800)")(
       "filter-interval", po::value<std::string>()->default_value("10s"), "filter-box counting interval tau (fig. 5.2), >= 0.1s")(
       "dv-pulse", po::value<std::string>()->default_value("0.1ftps"),
       "accelerometer pulse weight (velocity increment), in [0, 1mps]; 0mps = continuous output")(

@@ -63,10 +63,6 @@ namespace test_run_range {
 inline constexpr PhysicalRange kDuration{0.0, 2 * 3600.0, true};
 /// A filter box counts over seconds (fig. 5.2): from 0.1 s up to the run itself.
 inline constexpr PhysicalRange kFilterInterval{0.1, 2 * 3600.0};
-/// At most 1800 counting intervals (15 min at 0.5 s, two hours at 4 s; the
-/// report counts 90): the per-thread observation products grow with the
-/// count (measured: 1.7 GB for 1800 intervals, every scheme, 2 threads).
-inline constexpr int kMaxIntervals = 1800;
 /// Pulse weights of real accelerometers lie between 1e-4 and 0.1 m/s; 1 m/s is coarser than any.
 inline constexpr PhysicalRange kDvPulse{0.0, 1.0};
 /// A position computer's least count: from exact (0) to a kilometre.

@@ -30,6 +30,10 @@ void validate(const StudyConfig& c) {
     throw InputError("--alignment-time", fmt::format("{}s", c.test.alignment_loops->duration_s),
                      "the time-domain alignment is simulated at the truth level only: add --fidelity truth or use steady");
   validate(c.test);
+  if (c.test.intervals() > kMaxStudyIntervals)
+    throw InputError("--filter-interval", format_quantity(c.test.filter_interval_s, Dimension::kTime),
+                     fmt::format("gives {} intervals in the test run of a study; allowed: 4 to {}",
+                                 c.test.intervals(), kMaxStudyIntervals));
   for (int i = 0; i < ux::kDim; ++i) {
     const auto& p = c.uncertainties.at(i);
     require_in_range(fmt::format("--bound {}", catalogue()[i].name), p.bound_si, catalogue()[i].dimension,

@@ -7,11 +7,18 @@
 namespace insmc::effects {
 namespace {
 
+// A coarse alignment leaves up to a radian (the truth simulator turns the
+// platform by quaternions, so no small-angle limit applies); the transient
+// decays in the fine alignment.
+constexpr double kCoarseAlignmentLimitRad = 1.0;
+
 constexpr EffectParameter kParameters[] = {
     {"level_initial", Dimension::kAngle, 5.0 * kMradToRad,
-     "1σ level error per axis at the start of the fine alignment", ParameterRange::kNonNegative},
+     "1σ level error per axis at the start of the fine alignment", ParameterRange::kNonNegative,
+     kCoarseAlignmentLimitRad},
     {"azimuth_initial", Dimension::kAngle, 20.0 * kMradToRad,
-     "1σ azimuth error at the start of the fine alignment", ParameterRange::kNonNegative},
+     "1σ azimuth error at the start of the fine alignment", ParameterRange::kNonNegative,
+     kCoarseAlignmentLimitRad},
     {"duration", Dimension::kTime, 600.0, "fine-alignment time", ParameterRange::kPositive},
     {"level_tau", Dimension::kTime, 120.0, "settling time constant of the leveling loops",
      ParameterRange::kPositive},
