@@ -180,6 +180,34 @@ TEST_F(OutputSet, PathsThatCannotWorkAreRefusedBeforeTheWork) {
   EXPECT_EQ(entries(dir_), (std::set<std::string>{"file", "dangling"}));
 }
 
+TEST_F(OutputSet, WithoutWritePermissionTheFolderIsRefusedBeforeTheWork) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root ignores permissions (tests/cli/output_test.cpp uses a path under a file)";
+  fs::create_directories(dir_ / "ro" / "o");
+  fs::permissions(dir_ / "ro" / "o", fs::perms::owner_read | fs::perms::owner_exec);
+  EXPECT_THROW(OutputFolder((dir_ / "ro" / "o").string(), "run"), OutputError) << "the folder itself";
+  fs::permissions(dir_ / "ro", fs::perms::owner_read | fs::perms::owner_exec);
+  EXPECT_THROW(OutputFolder((dir_ / "ro" / "new").string(), "run"), OutputError) << "a folder that cannot be made";
+  EXPECT_THROW(OutputFile((dir_ / "ro" / "runs.csv").string()), OutputError) << "a file that cannot be made";
+  fs::permissions(dir_ / "ro", fs::perms::owner_all);
+  fs::permissions(dir_ / "ro" / "o", fs::perms::owner_all);
+}
+
+TEST_F(OutputSet, AFolderWhoseParentIsNotWritableIsLockedItselfAndWrittenInPlace) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root ignores permissions";
+  fs::create_directories(dir_ / "ro" / "o");
+  fs::permissions(dir_ / "ro", fs::perms::owner_read | fs::perms::owner_exec);
+  SetPlacement placement{};
+  {
+    OutputFolder first((dir_ / "ro" / "o").string(), "run");
+    EXPECT_THROW(OutputFolder((dir_ / "ro" / "o").string(), "run"), OutputError) << "the folder's own lock";
+    placement = first.write(kFirst);
+  }
+  fs::permissions(dir_ / "ro", fs::perms::owner_all);
+  EXPECT_EQ(placement, SetPlacement::kInPlace);
+  EXPECT_EQ(read_all(dir_ / "ro" / "o" / "a.csv"), "first a\n");
+  EXPECT_EQ(entries(dir_ / "ro"), (std::set<std::string>{"o"}));
+}
+
 TEST_F(OutputSet, MissingParentsAreCreatedButNotTheFolder) {
   OutputFolder out((dir_ / "a" / "b" / "o").string(), "run");
   EXPECT_TRUE(fs::is_directory(dir_ / "a" / "b"));
