@@ -7,6 +7,7 @@
 #include "apps/output_paths.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
 #include "lib/records/record_io.h"
 #include "montecarlo/gap/diagnosis.h"
 #include "montecarlo/gap/report.h"
@@ -47,7 +48,19 @@ int run_gap(const Args& args) {
 
   const std::vector<std::string> names = (*vm)["records"].as<std::vector<std::string>>();
   std::vector<RecordFile> files;
-  for (const std::string& name : names) files.push_back(without_truth(read_record_file(name)));
+  std::size_t runs = 0, rows = 0;
+  for (const std::string& name : names) {
+    files.push_back(without_truth(read_record_file(name)));
+    // The caps of one record file hold for all of them together: the
+    // diagnosis keeps every row and simulates ten null runs per run.
+    runs += files.back().runs.size();
+    for (const RecordRun& run : files.back().runs) rows += run.rows.size();
+    if (runs > kMaxRecordRuns || rows > kMaxRecordRows)
+      throw InputError("--records", echo_input(name, 256),
+                       fmt::format("{} runs and {} rows up to this file: the files of one diagnosis may hold at most "
+                                   "{} runs and {} rows in all",
+                                   runs, rows, kMaxRecordRuns, kMaxRecordRows));
+  }
   const RecordFile merged = mc::merge_record_files(files, names);
   const mc::Diagnosis d = mc::diagnose(merged, options);
 

@@ -98,6 +98,17 @@ TEST(Readers, GapNamesTheRecordHeaderNotAnOption) {
   expect_refused(run_insmc("gap --records " + tau), tau + ":6:21: header filter_interval_s = '1e-9': must be in");
 }
 
+TEST(Readers, GapCapsTheRunsOfAllItsFilesTogether) {
+  TempDir dir;
+  std::string rows;
+  for (int run = 0; run < 600; ++run) rows += std::to_string(run) + ",10,test,0,0,0,0,0,0\n";
+  const std::string a = write(dir, "a.csv", record_text("", rows));
+  const std::string b = write(dir, "b.csv", record_text("", rows));
+  expect_refused(run_insmc("gap --records " + a + " --records " + b),
+                 "--records = " + b + ": 1200 runs and 1200 rows up to this file: the files of one diagnosis may hold at "
+                 "most 1000 runs");
+}
+
 std::string write_imu_csv(const TempDir& dir, const std::string& name, double gyro_x_dps = 0.0) {
   SyntheticSite site;
   site.latitude_rad = 51.08 * kDegToRad;
