@@ -97,13 +97,14 @@ mode_t default_folder_mode() {
   return 0777 & ~mask;
 }
 
-/// A temporary folder beside the target holding the whole set, removed by
-/// the destructor unless it has been moved in.
+/// A temporary folder beside the target holding the whole set. The
+/// destructor removes whatever is at its name then: the set itself after a
+/// failure, nothing after a move to a new target, the old set after a swap.
 class TempSet {
  public:
   TempSet(int parent_fd, const fs::path& parent, const std::string& name, mode_t mode,
           const OutputSetFiles& files, const std::string& manifest)
-      : parent_fd_(parent_fd), parent_(parent) {
+      : parent_(parent) {
     for (int attempt = 0; attempt < 100 && name_.empty(); ++attempt) {
       const std::string candidate = temporary_name(name);
       if (::mkdirat(parent_fd, candidate.c_str(), 0700) == 0) name_ = candidate;
@@ -125,15 +126,10 @@ class TempSet {
     fs::remove_all(parent_ / name_, ignored);
   }
   const std::string& name() const { return name_; }
-  /// After the move: the name now holds nothing (kNew) or the old set.
-  void moved_in() { moved_ = true; }
-  bool moved() const { return moved_; }
 
  private:
-  int parent_fd_;
   fs::path parent_;
   std::string name_;
-  bool moved_ = false;
 };
 
 /// Each file replaced on its own, the manifest removed first and written
@@ -151,7 +147,7 @@ void write_in_place(const fs::path& target, const OutputSetFiles& files, const s
     if (::fstatat(fd.get(), n.c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0 && !S_ISREG(st.st_mode))
       throw OutputError(target / n, "is " + describe_file_type(st.st_mode) +
                                         ", not a regular file; insmc replaces regular files only (remove it or "
-                                        "choose another --out)", EEXIST);
+                                        "choose another path)", EEXIST);
   }
   if (::unlinkat(fd.get(), manifest_name.c_str(), 0) != 0 && errno != ENOENT)
     throw_system_error(target / manifest_name, "remove", errno);
@@ -183,7 +179,7 @@ OutputFolder::OutputFolder(const std::string& path, std::string command, const s
       if (::fstatat(fd.get(), f.c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0 && !S_ISREG(st.st_mode))
         throw OutputError(target_ / f, "is " + describe_file_type(st.st_mode) +
                                            ", not a regular file; insmc replaces regular files only (remove it or "
-                                           "choose another --out)", EEXIST);
+                                           "choose another path)", EEXIST);
     }
   } else {
     std::error_code ec;
@@ -208,7 +204,6 @@ SetPlacement OutputFolder::write(const OutputSetFiles& files) {
     if (errno != ENOENT) throw_system_error(target_, "inspect", errno);
     TempSet temp(parent_fd.get(), parent_, name_, default_folder_mode(), files, manifest);
     if (::renameat2(parent_fd.get(), temp.name().c_str(), parent_fd.get(), name_.c_str(), RENAME_NOREPLACE) == 0) {
-      temp.moved_in();
       if (::fsync(parent_fd.get()) != 0) throw_system_error(parent_, "fsync", errno);
       return SetPlacement::kNew;
     }
@@ -235,7 +230,6 @@ SetPlacement OutputFolder::write(const OutputSetFiles& files) {
   if (swappable) {
     TempSet temp(parent_fd.get(), parent_, name_, st.st_mode & 07777, files, manifest);
     if (::renameat2(parent_fd.get(), temp.name().c_str(), parent_fd.get(), name_.c_str(), RENAME_EXCHANGE) == 0) {
-      temp.moved_in();
       if (::fsync(parent_fd.get()) != 0) throw_system_error(parent_, "fsync", errno);
       // `temp` now holds the old set: its destructor removes it, unless a
       // file that is not the set's has appeared in it since the check; then
