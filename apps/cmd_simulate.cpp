@@ -18,9 +18,6 @@
 #include "montecarlo/sampler/sampler.h"
 
 namespace insmc::app {
-namespace {
-constexpr int kMaxSimulatedRuns = 10000;
-}  // namespace
 
 int run_simulate(const Args& args) {
   po::options_description opts("Options");
@@ -41,8 +38,8 @@ int run_simulate(const Args& args) {
   if (!vm->count("out")) throw InputError("--out", "(missing)", "give the record file to write");
   const int runs = (*vm)["runs"].as<int>();
   // The record reader's own cap: every file simulate writes can be read back.
-  if (runs < 1 || runs > kMaxSimulatedRuns)
-    throw InputError("--runs", std::to_string(runs), fmt::format("must lie in [1, {}]", kMaxSimulatedRuns));
+  if (runs < 1 || static_cast<std::size_t>(runs) > kMaxRecordRuns)
+    throw InputError("--runs", std::to_string(runs), fmt::format("must lie in [1, {}]", kMaxRecordRuns));
   const std::uint64_t seed = (*vm)["seed"].as<std::uint64_t>();
   const System system = parse_system((*vm)["system"].as<std::string>(), "--system");
   const Scheme scheme = parse_scheme((*vm)["scheme"].as<std::string>());

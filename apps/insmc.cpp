@@ -5,6 +5,7 @@
 #include <exception>
 #include <fmt/core.h>
 #include <malloc.h>
+#include <new>
 #include <string_view>
 
 #include "apps/subcommands.h"
@@ -75,6 +76,12 @@ int main(int argc, char** argv) {
       return 2;
     } catch (const boost::program_options::error& e) {
       fmt::print(stderr, "insmc {}: {} (see insmc {} --help)\n", sub.name, e.what(), sub.name);
+      return 2;
+    } catch (const std::bad_alloc&) {
+      // Every input is capped (docs/robustness.md), but the caps allow more
+      // than a small machine holds: the user can fix this one.
+      fmt::print(stderr, "insmc {}: not enough memory for this input (fewer samples, threads, runs or rows)\n",
+                 sub.name);
       return 2;
     } catch (const std::exception& e) {
       fmt::print(stderr, "insmc {}: error: {}\n", sub.name, e.what());
