@@ -101,12 +101,12 @@ TEST(Readers, GapNamesTheRecordHeaderNotAnOption) {
 TEST(Readers, GapCapsTheRunsOfAllItsFilesTogether) {
   TempDir dir;
   std::string rows;
-  for (int run = 0; run < 600; ++run) rows += std::to_string(run) + ",10,test,0,0,0,0,0,0\n";
+  for (int run = 0; run < 150; ++run) rows += std::to_string(run) + ",10,test,0,0,0,0,0,0\n";
   const std::string a = write(dir, "a.csv", record_text("", rows));
   const std::string b = write(dir, "b.csv", record_text("", rows));
   expect_refused(run_insmc("gap --records " + a + " --records " + b),
-                 "--records = " + b + ": 1200 runs and 1200 rows up to this file: the files of one diagnosis may hold at "
-                 "most 1000 runs");
+                 "--records = " + b + ": 300 runs and 300 rows up to this file: the files of one diagnosis may hold at "
+                 "most 200 runs");
 }
 
 std::string write_imu_csv(const TempDir& dir, const std::string& name, double gyro_x_dps = 0.0) {
