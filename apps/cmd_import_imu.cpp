@@ -32,7 +32,7 @@ std::array<std::string, 3> parse_three_columns(const std::string& text, const ch
     ++n;
   }
   if (n != 3 || (!text.empty() && text.back() == ','))
-    throw InputError(field, text, "must be three column names X,Y,Z separated by commas");
+    throw InputError(field, echo_input(text), "must be three column names X,Y,Z separated by commas");
   return out;
 }
 
@@ -41,7 +41,7 @@ enum class RunsFrom { kFile, kSplit };
 RunsFrom parse_runs_from(const std::string& text) {
   if (text == "file") return RunsFrom::kFile;
   if (text == "split") return RunsFrom::kSplit;
-  throw InputError("--runs-from", text,
+  throw InputError("--runs-from", echo_input(text),
                    "must be file (one run from the start of each input) or split (consecutive runs of "
                    "alignment + test + navigation from each input)");
 }
@@ -107,7 +107,7 @@ int run_import_imu(const Args& args) {
     try {  // the time units of parse_quantity, named without a number
       csv.time_unit_s = parse_quantity("1" + unit, Dimension::kTime, "--time-unit");
     } catch (const InputError&) {
-      throw InputError("--time-unit", unit, "must be one of: s, min, h, ms");
+      throw InputError("--time-unit", echo_input(unit), "must be one of: s, min, h, ms");
     }
   }
   if (auto e = validate(csv)) throw *e;

@@ -245,13 +245,13 @@ std::string_view to_string(AccelUnit u) {
 GyroUnit parse_gyro_unit(std::string_view text, std::string_view field) {
   for (GyroUnit u : {GyroUnit::kDegPerS, GyroUnit::kRadPerS, GyroUnit::kDegPerH})
     if (to_string(u) == text) return u;
-  throw InputError(std::string(field), std::string(text), std::string(kGyroAllowed));
+  throw InputError(std::string(field), echo_input(text), std::string(kGyroAllowed));
 }
 
 AccelUnit parse_accel_unit(std::string_view text, std::string_view field) {
   for (AccelUnit u : {AccelUnit::kG, AccelUnit::kMps2})
     if (to_string(u) == text) return u;
-  throw InputError(std::string(field), std::string(text), std::string(kAccelAllowed));
+  throw InputError(std::string(field), echo_input(text), std::string(kAccelAllowed));
 }
 
 double to_si(GyroUnit u) {
