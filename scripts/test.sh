@@ -2,7 +2,8 @@
 # README command 2: installs what is missing, builds insmc with its tests
 # (warnings are errors) and runs the whole suite, then once more under
 # AddressSanitizer and UndefinedBehaviorSanitizer, then builds the MPI
-# variant (-DINSMC_MPI=ON) and runs its tests under mpirun (label mpi).
+# variant (-DINSMC_MPI=ON) and runs its tests under mpirun (label mpi), then
+# fuzzes every input reader for 20 s each (scripts/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh --test
@@ -37,3 +38,7 @@ ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 run_suite build/san
 INSMC_BUILD_TARGETS="insmc cli_mpi_test" bash scripts/build.sh build/mpi -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DINSMC_WERROR=ON -DINSMC_MPI=ON "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
 jobs=1 run_suite build/mpi 600 -L mpi
+
+# Every input reader fuzzed (libFuzzer with ASan and UBSan, clang) for 20 s
+# each on its kept corpus; a crash fails CI with its input (scripts/fuzz.sh).
+bash scripts/fuzz.sh 20
