@@ -110,4 +110,17 @@ double gap_value(const LogRatios& l) {
   return n > 0 ? std::sqrt(sum / n) : 0.0;
 }
 
+SignedGap signed_gap(const LogRatios& l) {
+  double above = 0.0, below = 0.0;
+  int n = 0;
+  const auto add = [&](double v) {
+    if (!std::isfinite(v)) return;
+    ++n;
+    (v > 0 ? above : below) += v * v;
+  };
+  for (double v : l.scatter) add(v);
+  for (double v : l.coherent) add(v);
+  return n > 0 ? SignedGap{std::sqrt(above / n), std::sqrt(below / n)} : SignedGap{};
+}
+
 }  // namespace insmc::gap

@@ -72,4 +72,17 @@ inline double gap_value(const RunSet& set, std::span<const int> runs, const Null
   return gap_value(pool(set, runs), calibration);
 }
 
+/// G split by the direction of each group's disagreement, over the same
+/// groups present: G² = G₊² + G₋², G₊ from the groups with ℓ > 0 (more
+/// scatter or more in common than the model: something unmodelled), G₋ from
+/// those with ℓ < 0 (less than the model: an assumption pessimistic, e.g. a
+/// declared pulse weight coarser than the data show, priors wider than the
+/// system). The significance of an unmodelled effect is one-sided, on G₊;
+/// G₋ is a finding of its own (docs/gap.md §2).
+struct SignedGap {
+  double unmodelled = 0.0;   ///< G₊
+  double pessimistic = 0.0;  ///< G₋
+};
+SignedGap signed_gap(const LogRatios& l);
+
 }  // namespace insmc::gap

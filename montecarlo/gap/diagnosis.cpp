@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "lib/gap/scheme_rows.h"
 #include "montecarlo/gap/candidate_fit.h"
 #include "montecarlo/gap/record_simulation.h"
+#include "montecarlo/gap/site_values.h"
 #include "montecarlo/gap/where.h"
 #include "montecarlo/random/philox.h"
 
@@ -63,7 +65,12 @@ double quantile(std::vector<double> v, double q) {
 struct Null {
   gap::NullCalibration calibration;        // κ_g, λ_c
   std::vector<double> gaps;                // G of the null files
+  std::vector<double> unmodelled;          // G₊ of the null files
+  std::vector<double> pessimistic;         // G₋ of the null files
   std::vector<gap::LogRatios> log_ratios;  // ℓ of the null files
+  gap::RunSet set;                         // the null runs under the base model
+  std::vector<gap::RunData> runs;          // the null runs (estimates taken off)
+  std::vector<int> layout_of;              // their layouts
 };
 
 double p_value_of(double observed, const std::vector<double>& null) {
@@ -79,11 +86,9 @@ struct Scored {
   std::vector<ParameterEstimate> parameters;
 };
 
-/// 2-fold cross-validation (runs alternate between the halves in file order),
-/// the full-data fit and its resampled 16–84 % range.
-Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0,
-             std::uint64_t seed) {
-  Scored out;
+/// Every run under the other half's fit (runs alternate between the halves
+/// in file order): 2-fold cross-validation.
+gap::RunSet heldout_set(const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0) {
   std::vector<Choice> heldout_choice(n);
   for (int fold = 0; fold < 2; ++fold) {
     std::vector<int> train, test;
@@ -91,7 +96,15 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
     const Choice k = choose(s, train, m0);
     for (int r : test) heldout_choice[static_cast<std::size_t>(r)] = k;
   }
-  out.heldout = run_set_under(s, all_runs(n), heldout_choice);
+  return run_set_under(s, all_runs(n), heldout_choice);
+}
+
+/// 2-fold cross-validation (runs alternate between the halves in file order),
+/// the full-data fit and its resampled 16–84 % range.
+Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0,
+             std::uint64_t seed) {
+  Scored out;
+  out.heldout = heldout_set(s, n, m0);
   out.heldout_gap = gap::gap_value(out.heldout, all_runs(n), m0);
   out.full_fit = choose(s, all_runs(n), m0);
   const std::vector<double> best = parameter_values(c, out.full_fit);
@@ -145,14 +158,17 @@ struct Records {
 };
 
 Records records_for_diagnosis(const RecordFile& file, const DiagnosisOptions& options,
-                              std::vector<std::string>& statements) {
+                              std::vector<std::string>& statements, std::vector<SiteValue>& site_values) {
   Records r{file, {}, {}};
   const RecordHeader header = file.header.without_truth();
   r.site = gap::read_site(header, options.default_pulse_mps);
-  if (!(r.site.filter_interval_s > 0)) {
-    const double spacing = gap::median_f_spacing(file);
-    r.site.filter_interval_s = spacing > 0 ? spacing : 10.0;
-  }
+  // What the header leaves out is inferred from the rows and said: the null
+  // is simulated with these values.
+  site_values = complete_site(RecordFile{header, file.runs}, r.site, options);
+  for (const SiteValue& v : site_values)
+    if (v.source != "header") statements.push_back(v.reason);
+  r.file.header.set(std::string(kKeyDvPulseMps), r.site.dv_pulse_mps);
+  r.file.header.set(std::string(kKeyPositionResolutionM), r.site.position_resolution_m);
   // After a scheme that uses the test run, the windows stay as recorded:
   // its estimates came from them, and an estimator of longer windows can
   // differ by a window's counting noise (5.3's Δf̂(T)).
@@ -294,14 +310,57 @@ Null calibrate(Prepared& p, const RecordFile& file, const DiagnosisOptions& opti
   Null null;
   null.calibration = gap::NullCalibration::from_null(set);
   const int n = static_cast<int>(p.runs.size());
-  null.gaps.resize(static_cast<std::size_t>(options.bootstrap));
-  null.log_ratios.resize(static_cast<std::size_t>(options.bootstrap));
+  const auto B = static_cast<std::size_t>(options.bootstrap);
+  null.gaps.resize(B);
+  null.unmodelled.resize(B);
+  null.pessimistic.resize(B);
+  null.log_ratios.resize(B);
   tbb::parallel_for(0, options.bootstrap, [&](int b) {
+    const auto i = static_cast<std::size_t>(b);
     const gap::Pooled s = gap::pool(set, resample(options.seed, static_cast<std::uint64_t>(b), n, runs));
-    null.log_ratios[static_cast<std::size_t>(b)] = gap::log_ratios(s, null.calibration);
-    null.gaps[static_cast<std::size_t>(b)] = gap::gap_value(null.log_ratios[static_cast<std::size_t>(b)]);
+    null.log_ratios[i] = gap::log_ratios(s, null.calibration);
+    null.gaps[i] = gap::gap_value(null.log_ratios[i]);
+    const gap::SignedGap signed_gap = gap::signed_gap(null.log_ratios[i]);
+    null.unmodelled[i] = signed_gap.unmodelled;
+    null.pessimistic[i] = signed_gap.pessimistic;
   });
+  null.set = set;
+  null.runs = std::move(sim);
+  null.layout_of = layout_of;
   return null;
+}
+
+/// Each candidate's held-out shrink on `files` null files of the records'
+/// size (consecutive runs of the null calibration, split and fitted as the
+/// records are), the median over the files: what fitting the candidate
+/// gains on noise alone, the reference its shrink on the records is read
+/// against. NaN for a candidate excluded.
+std::vector<double> null_shrinks(const Prepared& p, const Null& null, int files, const gap::NullCalibration& m0) {
+  const auto& registry = gap::candidate_registry();
+  const std::size_t n = p.runs.size();
+  files = std::min(files, static_cast<int>(null.runs.size() / std::max<std::size_t>(n, 1)));
+  std::vector<std::vector<double>> per(registry.size());
+  const std::vector<std::vector<gap::Extension>> none(p.layouts.size());
+  for (int f = 0; f < files; ++f) {
+    Prepared q = p;
+    q.runs.assign(null.runs.begin() + static_cast<std::ptrdiff_t>(f * n),
+                  null.runs.begin() + static_cast<std::ptrdiff_t>((f + 1) * n));
+    q.layout_of.assign(null.layout_of.begin() + static_cast<std::ptrdiff_t>(f * n),
+                       null.layout_of.begin() + static_cast<std::ptrdiff_t>((f + 1) * n));
+    std::vector<int> idx(n);
+    for (std::size_t r = 0; r < n; ++r) idx[r] = static_cast<int>(f * n + r);
+    const double before = gap::gap_value(null.set, idx, m0);
+    std::vector<double> shrink(registry.size());
+    tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
+      const gap::RunSet held = heldout_set(evaluate_candidate(q, registry[c], none, m0), n, m0);
+      shrink[c] = before > 0 ? 1.0 - gap::gap_value(held, all_runs(n), m0) / before : 0.0;
+    });
+    for (std::size_t c = 0; c < registry.size(); ++c) per[c].push_back(shrink[c]);
+  }
+  std::vector<double> out(registry.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t c = 0; c < registry.size(); ++c)
+    if (!per[c].empty()) out[c] = quantile(per[c], 0.5);
+  return out;
 }
 
 std::string fmt_params(const std::vector<ParameterEstimate>& ps) {
@@ -352,7 +411,7 @@ void honest_statements(Diagnosis& d) {
 
 Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
   Diagnosis d;
-  const Records records = records_for_diagnosis(file, options, d.statements);
+  const Records records = records_for_diagnosis(file, options, d.statements, d.site);
   Prepared p = prepare(records, options);
   d.alpha = options.alpha;
   d.runs = static_cast<int>(p.runs.size());
@@ -379,17 +438,28 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
   std::vector<std::optional<gap::RunAnalyser>> analysers;
   const Evaluated base = evaluate_under(p, [](int) { return std::vector<const gap::Extension*>{}; }, analysers);
   const gap::Pooled observed = gap::pool(base.set(p.keys), all_runs(p.runs.size()));
-  d.gap = gap::gap_value(observed, null.calibration);
-  d.p_value = p_value_of(d.gap, null.gaps);
+  const gap::LogRatios observed_ratios = gap::log_ratios(observed, null.calibration);
+  d.gap = gap::gap_value(observed_ratios);
+  // One-sided: an unmodelled effect shows as more scatter or more in common
+  // than the model; less is the model being pessimistic, a finding of its own.
+  const gap::SignedGap signed_gap = gap::signed_gap(observed_ratios);
+  d.unmodelled_gap = signed_gap.unmodelled;
+  d.unmodelled_critical = quantile(null.unmodelled, 1.0 - options.alpha);
+  d.p_value = p_value_of(d.unmodelled_gap, null.unmodelled);
   d.significant = d.p_value < options.alpha;
   d.null_gap_median = quantile(null.gaps, 0.5);
   d.null_gap_critical = quantile(null.gaps, 1.0 - options.alpha);
+  d.pessimistic.value = signed_gap.pessimistic;
+  d.pessimistic.critical = quantile(null.pessimistic, 1.0 - options.alpha);
+  d.pessimistic.p_value = p_value_of(signed_gap.pessimistic, null.pessimistic);
+  d.pessimistic.significant = signed_gap.pessimistic > 0 && d.pessimistic.p_value < options.alpha;
   if (n < 20)
     d.statements.push_back(fmt::format("{} runs: the gap's power is reduced (a null file of {} runs scatters "
                                        "up to G = {:.3g} at alpha = {})", n, n, d.null_gap_critical, options.alpha));
 
   // Where it lies.
-  d.groups = group_results(observed, null.calibration, null.log_ratios);
+  d.groups = group_results(observed, null.calibration, null.log_ratios, options.alpha);
+  if (d.pessimistic.significant) d.pessimistic.where = pessimistic_groups(d.groups, null.log_ratios, options.alpha);
   d.by_kind = shares_by(d.groups, [](const GroupResult& g) {
     return std::string(g.coherent ? "common to all runs" : "run-to-run scatter");
   });
@@ -444,9 +514,15 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
       for (const Scored& s : ranked) {
         const gap::Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
         d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before,
+                             std::numeric_limits<double>::quiet_NaN(),
                              gap::log_ratios(gap::pool(s.heldout, all_runs(p.runs.size())), null.calibration)});
       }
       d.top = d.ranking.front().effect;
+      if (options.null_shrink_files > 0) {
+        const std::vector<double> reference = null_shrinks(p, null, options.null_shrink_files, null.calibration);
+        for (std::size_t i = 0; i < ranked.size(); ++i)
+          d.ranking[i].null_shrink = reference[static_cast<std::size_t>(ranked[i].candidate)];
+      }
       if (ranked.size() > 1) {
         // Runner-up margin and its resampling standard error.
         constexpr int kResamples = 500;
@@ -471,7 +547,9 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
     const Scored& best = ranked.front();
     const gap::Candidate& c = registry[static_cast<std::size_t>(best.candidate)];
     if (step > 0 && best.heldout_gap >= before) break;  // nothing left that helps on held-out runs
-    GreedyStep g{c.name, best.parameters, best.heldout_gap, p_value_of(best.heldout_gap, null.gaps)};
+    const double left = gap::signed_gap(gap::log_ratios(gap::pool(best.heldout, all_runs(p.runs.size())),
+                                                        null.calibration)).unmodelled;
+    GreedyStep g{c.name, best.parameters, best.heldout_gap, p_value_of(left, null.unmodelled)};
     d.greedy.push_back(g);
     d.selected.push_back(step == 0 ? d.top : c.name);
     taken.push_back(c.name);

@@ -20,6 +20,7 @@
 ///    greedily while the held-out gap stays significant.
 /// The diagnosis reads only the records' non-`truth.` keys and the priors.
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,13 +38,18 @@ struct DiagnosisOptions {
   int calibration_runs = 0;         ///< null runs; 0: max(200, 10 × runs)
   int bootstrap = 2000;             ///< null files for the p-values
   int max_selected = 3;             ///< greedy additions at most
-  /// Pulse weight assumed when the header has no dv_pulse_mps [m/s].
+  /// Pulse weight assumed when the header has no dv_pulse_mps and the f
+  /// rows are too few to tell a lattice (site_values.h) [m/s].
   double default_pulse_mps = 0.1 * kFtpsToMps;
   gap::ExtractionOptions extraction;
   /// f windows shorter than this are summed into windows of at least this
   /// length before anything else (lib/gap/filter_windows.h) [s].
   double min_filter_interval_s = 1.0;
   int minimum_runs = 5;             ///< for a ranking (two halves of ≥ 2 runs)
+  /// Null files (of the records' size, from the calibration runs) on which
+  /// each candidate's held-out shrink is measured as the reference of its
+  /// shrink on the records (CandidateResult::null_shrink); 0: not measured.
+  int null_shrink_files = 3;
 };
 
 struct GroupResult {
@@ -55,6 +61,7 @@ struct GroupResult {
   double log_ratio = 0;    ///< ℓ
   double p_value = 1;      ///< of |ℓ| against the null files
   double share = 0;        ///< ℓ² / Σ ℓ²
+  double null_low = 0, null_high = 0;  ///< the null files' ℓ, quantiles α/2 and 1 − α/2
   /// The scatter group whose stage, axis and window this group reports.
   int representative() const { return coherent ? gap::coherent_representative(group) : group; }
   std::string name() const { return coherent ? gap::coherent_group_name(group) : gap::group_name(group); }
@@ -74,6 +81,8 @@ struct AllanPoint {
   double cluster_s = 0;
   double observed = 0;  ///< Allan deviation of the f residuals [m/s²]
   double null = 0;      ///< the same of the null runs
+  /// 5–95 % of the same over null files of the records' size (the null band).
+  double null_low = 0, null_high = 0;
 };
 
 struct AllanCurve {
@@ -94,6 +103,10 @@ struct CandidateResult {
   std::vector<ParameterEstimate> parameters;
   double heldout_gap_after = 0;
   double shrink = 0;
+  /// The same candidate's held-out shrink on null files of the records'
+  /// size (runs of the null calibration split the same way; the median over
+  /// those files): what it gains on noise alone. NaN when not measured.
+  double null_shrink = std::numeric_limits<double>::quiet_NaN();
   gap::LogRatios heldout_log_ratios{};  ///< ℓ on held-out runs with the effect added
 };
 
@@ -101,7 +114,27 @@ struct GreedyStep {
   std::string effect;
   std::vector<ParameterEstimate> parameters;
   double heldout_gap = 0;
-  double p_value = 1;
+  double p_value = 1;  ///< of the held-out G₊ (an unmodelled effect left)
+};
+
+/// A value of the site the null depends on: from the header, inferred from
+/// the rows, or the model's default, and why (said in the report).
+struct SiteValue {
+  std::string key;     ///< header key (dv_pulse_mps, position_resolution_m, filter_interval_s, ...)
+  double value = 0;
+  std::string source;  ///< "header", "inferred" or "default"
+  std::string reason;  ///< one sentence
+};
+
+/// The other direction of the gap (gap_metric.h SignedGap): the data show
+/// less scatter or less in common than the model, with its own critical
+/// value at alpha from the same null files.
+struct PessimisticFinding {
+  double value = 0;        ///< G₋
+  double p_value = 1;      ///< share of null files with G₋ at least this
+  double critical = 0;     ///< G₋ quantile 1 − α of the null files
+  bool significant = false;
+  std::vector<std::string> where;  ///< the groups below the model, most negative ℓ first
 };
 
 struct Diagnosis {
@@ -109,9 +142,14 @@ struct Diagnosis {
   std::string scheme = "none";  ///< the records' scheme (header)
   int calibration_runs = 0;
   std::vector<std::string> statements;  ///< what the data cannot support, plainly
+  std::vector<SiteValue> site;          ///< every value of the site the null uses, with its source
+  /// G (two-sided, what the candidates shrink); p_value and significant are
+  /// those of an unmodelled effect: the one-sided G₊ against the null's.
   double gap = 0, p_value = 1, alpha = 0.01;
   bool significant = false;
-  double null_gap_median = 0, null_gap_critical = 0;  ///< quantiles 0.5 and 1 − α
+  double null_gap_median = 0, null_gap_critical = 0;  ///< of G: quantiles 0.5 and 1 − α
+  double unmodelled_gap = 0, unmodelled_critical = 0;  ///< G₊ and its quantile 1 − α on the null
+  PessimisticFinding pessimistic;
   std::vector<GroupResult> groups;
   std::vector<Share> by_kind, by_axis, by_stage, by_window;
   std::vector<TimeFunctionShares> time_functions;

@@ -5,7 +5,7 @@
 
 #include "lib/units/quantity.h"
 #include "montecarlo/write/markdown.h"
-#include "montecarlo/write/svg_plot.h"
+#include "montecarlo/gap/gap_plots.h"
 
 namespace insmc::mc {
 namespace {
@@ -52,6 +52,15 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   j["records"] = files;
   j["runs"] = d.runs;
   j["scheme"] = d.scheme;
+  Json site = Json::object();
+  for (const SiteValue& v : d.site) {
+    Json e = Json::object();
+    e["value"] = v.value;
+    e["source"] = v.source;
+    e["reason"] = v.reason;
+    site[v.key] = e;
+  }
+  j["site"] = site;
   Json g = Json::object();
   g["value"] = d.gap;
   g["significant"] = d.significant;
@@ -60,6 +69,22 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   g["null_median"] = d.null_gap_median;
   g["null_critical"] = d.null_gap_critical;
   g["calibration_runs"] = d.calibration_runs;
+  Json unmodelled = Json::object();
+  unmodelled["value"] = d.unmodelled_gap;
+  unmodelled["critical"] = d.unmodelled_critical;
+  unmodelled["p_value"] = d.p_value;
+  g["unmodelled"] = unmodelled;
+  Json pessimistic = Json::object();
+  pessimistic["value"] = d.pessimistic.value;
+  pessimistic["significant"] = d.pessimistic.significant;
+  pessimistic["p_value"] = d.pessimistic.p_value;
+  pessimistic["critical"] = d.pessimistic.critical;
+  Json where_less = Json::array();
+  for (const std::string& w : d.pessimistic.where) where_less.push_back(w);
+  pessimistic["where"] = where_less;
+  g["pessimistic"] = pessimistic;
+  g["significance"] = "significant: an unmodelled effect, one-sided: G+ (the groups with ln ratio > 0) against the "
+                      "null files' G+ at alpha; pessimistic: the groups with ln ratio < 0 (G-), the same way";
   g["metric"] = "G = sqrt(mean over groups of ln(observed/expected)^2): scatter groups (mean normalized square per "
                 "run) and coherent groups (what all runs share, one-sided), expectations calibrated on the null";
   j["gap"] = g;
@@ -106,6 +131,7 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
     e["params"] = parameters_json(c.parameters);
     e["heldout_gap_after"] = c.heldout_gap_after;
     e["shrink"] = c.shrink;
+    e["null_shrink"] = std::isfinite(c.null_shrink) ? Json(c.null_shrink) : Json(nullptr);
     Json left = Json::object();
     for (int g = 0; g < gap::kGroupCount; ++g)
       if (std::isfinite(c.heldout_log_ratios.scatter[g])) left[gap::group_name(g)] = c.heldout_log_ratios.scatter[g];
@@ -147,14 +173,29 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                     "records' times, pulse weight, site and scheme.\n\n",
                     fmt::join(record_files, ", "), d.runs, d.scheme, d.calibration_runs);
   md += "## 1. The gap\n\n";
-  md += fmt::format("G = **{:.3g}** (p = {:.3g}, alpha = {}): **{}**. Null files of {} runs: median G {:.3g}, "
-                    "critical G {:.3g}.\n\n",
-                    d.gap, d.p_value, d.alpha, d.significant ? "significant gap" : "no significant gap", d.runs,
-                    d.null_gap_median, d.null_gap_critical);
+  md += fmt::format("G = **{:.3g}** (null files of {} runs: median {:.3g}, critical {:.3g}). More than the model "
+                    "(an unmodelled effect): G+ = {:.3g}, p = {:.3g}, alpha = {}: **{}**. Less than the model: G- = "
+                    "{:.3g}, p = {:.3g} (critical {:.3g}){}.\n\n",
+                    d.gap, d.runs, d.null_gap_median, d.null_gap_critical, d.unmodelled_gap, d.p_value, d.alpha,
+                    d.significant ? "significant gap" : "no significant gap", d.pessimistic.value,
+                    d.pessimistic.p_value, d.pessimistic.critical,
+                    d.pessimistic.significant
+                        ? fmt::format(": **the model is pessimistic about {}**: the data scatter or share less there "
+                                      "than it predicts, so an assumption is wider than the data (a declared pulse "
+                                      "weight or resolution coarser than the data show, priors wider than this "
+                                      "system); no effect is sought for it",
+                                      fmt::join(d.pessimistic.where, ", "))
+                        : ": not beyond the null");
+  md += "Site values (the null is simulated with them):\n\n";
+  Table site({"value", "used", "source", "why"});
+  for (const SiteValue& v : d.site) site.add_row({v.key, fmt::format("{:.6g}", v.value), v.source, v.reason});
+  md += render_markdown(site) + "\n";
   md += "G is the RMS over report groups of ln(observed / expected): per run, how the data scatter about the "
         "model's prediction (scatter groups), and what all runs share (coherent groups: a design or site effect, "
         "one-sided); 0 when the data match the model, 1 for a factor e ≈ 2.7 in power (too much or too little). "
-        "The expectations are the model's own, calibrated on its null runs.\n\n";
+        "G² = G+² + G-²: G+ from the groups above the model (what an effect would add), G- from those below it; "
+        "each is tested one-sided against its own null distribution. The expectations are the model's own, "
+        "calibrated on its null runs.\n\n";
   for (const std::string& s : d.statements) md += "- " + s + "\n";
   if (!d.statements.empty()) md += "\n";
   md += "## 2. Where it lies\n\n";
@@ -183,10 +224,14 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
   } else {
     md += fmt::format("Held-out G before: {:.3g}. Each candidate fitted on one half of the runs, scored on the "
                       "other (2-fold), ranked by held-out G after.\n\n", d.heldout_gap_before);
-    Table r({"rank", "effect", "held-out G after", "shrink", "parameters (16–84 % of resampled fits)"});
+    Table r({"rank", "effect", "held-out G after", "shrink", "shrink on null files", "parameters (16–84 % of resampled fits)"});
     for (std::size_t i = 0; i < d.ranking.size(); ++i)
       r.add_row({std::to_string(i + 1), d.ranking[i].effect, fmt::format("{:.3g}", d.ranking[i].heldout_gap_after),
-                 pct(d.ranking[i].shrink), params_text(d.ranking[i].parameters)});
+                 pct(d.ranking[i].shrink),
+                 std::isfinite(d.ranking[i].null_shrink) ? pct(d.ranking[i].null_shrink) : std::string("—"),
+                 params_text(d.ranking[i].parameters)});
+    md += "The shrink on null files is what the same candidate gains, split and fitted the same way, on null files "
+          "of as many runs (runs of the null calibration): a shrink not above it is noise fitted, not an effect.\n\n";
     md += render_markdown(r) + "\n";
     md += fmt::format("Top: **{}**; runner-up margin {:.3g} ± {:.3g} (resampled runs){}.\n\n", d.top,
                       d.runner_up_margin, d.runner_up_margin_se,
@@ -202,26 +247,9 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                  fmt::format("{:.3g}", d.greedy[i].heldout_gap), fmt::format("{:.3g}", d.greedy[i].p_value)});
     md += fmt::format("From held-out G = {:.3g}:\n\n", d.heldout_gap_before) + render_markdown(g);
   }
-  std::vector<PlotSeries> bars;
-  PlotSeries l{"ln(observed/null)", {}, {}, {}, {}, 0, false};
-  for (std::size_t i = 0; i < d.groups.size(); ++i) l.x.push_back(static_cast<double>(i)), l.y.push_back(d.groups[i].log_ratio);
-  bars.push_back(l);
-  std::vector<PlotSeries> allan;
-  for (const AllanCurve& c : d.allan) {
-    PlotSeries o{std::string("data f_") + "xyz"[c.axis], {}, {}, {}, {}, c.axis, false};
-    PlotSeries n{std::string("null f_") + "xyz"[c.axis], {}, {}, {}, {}, c.axis, true};
-    for (const AllanPoint& p : c.points) {
-      o.x.push_back(std::log10(p.cluster_s)), o.y.push_back(std::log10(std::max(p.observed, 1e-30)));
-      n.x.push_back(std::log10(p.cluster_s)), n.y.push_back(std::log10(std::max(p.null, 1e-30)));
-    }
-    allan.push_back(o);
-    allan.push_back(n);
-  }
   return {{"gap.md", md},
-          {"gap_groups.svg", svg_line_plot("ln(observed/expected) per group (order as in gap.json)", "group",
-                                           "ln ratio", bars)},
-          {"gap_allan.svg", svg_line_plot("Allan deviation of the f residuals", "log10 cluster time [s]",
-                                          "log10 ADEV [m/s^2]", allan)}};
+          {"gap_groups.svg", groups_svg(d)},
+          {"gap_allan.svg", allan_svg(d)}};
 }
 
 }  // namespace insmc::mc

@@ -115,6 +115,7 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
   DiagnosisOptions d;
   d.alpha = options.alpha;
   d.max_selected = 1;
+  d.null_shrink_files = 0;  // the study scores the shrink itself; the reference is for people reading a report
   const double model_pulse = TruthOptions{}.dv_pulse_mps;
   // Every file of the study, in report order: null data (the model itself,
   // with its pulses), then each effect by magnitude and seed. A file's data

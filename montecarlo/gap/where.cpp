@@ -1,13 +1,14 @@
 #include "montecarlo/gap/where.h"
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 #include <map>
 
 namespace insmc::mc {
 
 std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::NullCalibration& calibration,
-                                       const std::vector<gap::LogRatios>& null_log_ratios) {
+                                       const std::vector<gap::LogRatios>& null_log_ratios, double alpha) {
   const gap::LogRatios l = gap::log_ratios(observed, calibration);
   const gap::GroupValues power = gap::group_power(observed.power);
   const gap::GroupValues null_power = gap::expected_power(observed.power, calibration);
@@ -26,12 +27,25 @@ std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::N
     }
     return (1.0 + static_cast<double>(above)) / (1.0 + static_cast<double>(null_log_ratios.size()));
   };
+  // The null files' ℓ of a group, its α/2 and 1 − α/2 quantiles (the band
+  // the groups plot draws).
+  const auto band = [&](const auto& pick, GroupResult& r) {
+    std::vector<double> v;
+    for (const gap::LogRatios& nl : null_log_ratios)
+      if (const double x = pick(nl); std::isfinite(x)) v.push_back(x);
+    if (v.empty()) return;
+    std::sort(v.begin(), v.end());
+    const auto at = [&](double q) { return v[static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)))]; };
+    r.null_low = at(0.5 * alpha);
+    r.null_high = at(1 - 0.5 * alpha);
+  };
   std::vector<GroupResult> out;
   for (int g = 0; g < gap::kGroupCount; ++g) {
     if (!std::isfinite(l.scatter[g])) continue;
     out.push_back({false, g, observed.power.count[g], power[g], null_power[g], l.scatter[g],
                    p_value([g](const gap::LogRatios& nl) { return nl.scatter[g]; }, l.scatter[g]),
-                   total > 0 ? l.scatter[g] * l.scatter[g] / total : 0.0});
+                   total > 0 ? l.scatter[g] * l.scatter[g] / total : 0.0, 0.0, 0.0});
+    band([g](const gap::LogRatios& nl) { return nl.scatter[g]; }, out.back());
   }
   for (int c = 0; c < gap::kCoherentCount; ++c) {
     const auto k = static_cast<std::size_t>(c);
@@ -41,8 +55,29 @@ std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::N
       if (gap::coherent_group_of(g) == c) count += observed.power.count[g];
     out.push_back({true, c, count, coherent[k], null_coherent[k], l.coherent[k],
                    p_value([k](const gap::LogRatios& nl) { return nl.coherent[k]; }, l.coherent[k]),
-                   total > 0 ? l.coherent[k] * l.coherent[k] / total : 0.0});
+                   total > 0 ? l.coherent[k] * l.coherent[k] / total : 0.0, 0.0, 0.0});
+    band([k](const gap::LogRatios& nl) { return nl.coherent[k]; }, out.back());
   }
+  return out;
+}
+
+std::vector<std::string> pessimistic_groups(const std::vector<GroupResult>& groups,
+                                            const std::vector<gap::LogRatios>& null_log_ratios, double alpha) {
+  std::vector<const GroupResult*> below, beyond;
+  for (const GroupResult& g : groups)
+    if (g.log_ratio < 0) below.push_back(&g);
+  std::sort(below.begin(), below.end(), [](const GroupResult* a, const GroupResult* b) { return a->log_ratio < b->log_ratio; });
+  for (const GroupResult* g : below) {
+    std::size_t as_low = 0;
+    for (const gap::LogRatios& nl : null_log_ratios) {
+      const double v = g->coherent ? nl.coherent[static_cast<std::size_t>(g->group)] : nl.scatter[static_cast<std::size_t>(g->group)];
+      if (!std::isfinite(v) || v <= g->log_ratio) ++as_low;
+    }
+    if ((1.0 + static_cast<double>(as_low)) / (1.0 + static_cast<double>(null_log_ratios.size())) < alpha) beyond.push_back(g);
+  }
+  if (beyond.empty() && !below.empty()) beyond.push_back(below.front());
+  std::vector<std::string> out;
+  for (const GroupResult* g : beyond) out.push_back(g->name());
   return out;
 }
 
@@ -136,17 +171,34 @@ std::vector<AllanCurve> allan_curves(const std::vector<const gap::Layout*>& layo
                                      const std::vector<Eigen::VectorXd>& null_z,
                                      const std::vector<const Eigen::VectorXd*>& null_expected,
                                      double filter_interval_s) {
+  // The null band: the same curve of null files as large as the records
+  // (consecutive null runs), 5–95 % over those files.
+  const std::size_t per_file = std::max<std::size_t>(layouts.size(), 1);
+  const std::size_t files = null_layouts.size() / per_file;
   std::vector<AllanCurve> out;
   for (int axis = 0; axis < 3; ++axis) {
     std::map<int, std::pair<double, double>> data, null;
+    std::vector<std::map<int, std::pair<double, double>>> by_file(files);
     for (std::size_t r = 0; r < layouts.size(); ++r) add_allan(*layouts[r], z[r], *expected[r], axis, data);
-    for (std::size_t r = 0; r < null_layouts.size(); ++r) add_allan(*null_layouts[r], null_z[r], *null_expected[r], axis, null);
+    for (std::size_t r = 0; r < null_layouts.size(); ++r) {
+      add_allan(*null_layouts[r], null_z[r], *null_expected[r], axis, null);
+      if (r / per_file < files) add_allan(*null_layouts[r], null_z[r], *null_expected[r], axis, by_file[r / per_file]);
+    }
     AllanCurve c{axis, {}};
     for (const auto& [m, sum] : data) {
       if (sum.second <= 0 || !null.count(m) || null[m].second <= 0) continue;
       // Allan variance ½ ⟨(ȳ_{k+1} − ȳ_k)²⟩.
-      c.points.push_back({m * filter_interval_s, std::sqrt(0.5 * sum.first / sum.second),
-                          std::sqrt(0.5 * null[m].first / null[m].second)});
+      AllanPoint point{m * filter_interval_s, std::sqrt(0.5 * sum.first / sum.second),
+                       std::sqrt(0.5 * null[m].first / null[m].second), 0.0, 0.0};
+      std::vector<double> band;
+      for (const auto& f : by_file)
+        if (const auto it = f.find(m); it != f.end() && it->second.second > 0)
+          band.push_back(std::sqrt(0.5 * it->second.first / it->second.second));
+      std::sort(band.begin(), band.end());
+      point.null_low = band.empty() ? point.null : band[static_cast<std::size_t>(0.05 * static_cast<double>(band.size() - 1))];
+      point.null_high = band.empty() ? point.null
+                                     : band[static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(band.size() - 1)))];
+      c.points.push_back(point);
     }
     out.push_back(c);
   }

@@ -11,9 +11,16 @@
 namespace insmc::mc {
 
 /// Per scatter and coherent group: power, the calibrated expected power, ℓ,
-/// its p-value against the null files' |ℓ|, and its share of Σ ℓ².
+/// its p-value against the null files' |ℓ|, its share of Σ ℓ², and the
+/// null files' ℓ band (quantiles α/2 and 1 − α/2).
 std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::NullCalibration& calibration,
-                                       const std::vector<gap::LogRatios>& null_log_ratios);
+                                       const std::vector<gap::LogRatios>& null_log_ratios, double alpha);
+
+/// The groups where the data show less than the model (ℓ < 0) beyond what
+/// the null files show there (lower-tail p < alpha), most negative first;
+/// when none is beyond alone, the most negative one.
+std::vector<std::string> pessimistic_groups(const std::vector<GroupResult>& groups,
+                                            const std::vector<gap::LogRatios>& null_log_ratios, double alpha);
 
 /// Σ of the groups' shares under each key (key order of first appearance).
 std::vector<Share> shares_by(const std::vector<GroupResult>& groups,
@@ -29,7 +36,8 @@ std::vector<TimeFunctionShares> time_function_shares(const std::vector<const gap
 
 /// Per axis: Allan deviation of the f residuals (all f rows of a run in
 /// time order, non-overlapping clusters of 1, 2, 4, ... rows) of the data
-/// and of the null runs.
+/// and of the null runs, with the null band: 5–95 % over null files of as
+/// many runs as the data (consecutive null runs).
 std::vector<AllanCurve> allan_curves(const std::vector<const gap::Layout*>& layouts,
                                      const std::vector<Eigen::VectorXd>& z,
                                      const std::vector<const Eigen::VectorXd*>& expected,

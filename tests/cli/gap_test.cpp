@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -24,6 +25,32 @@ std::string simulate(const TempDir& dir, const std::string& name, const std::str
 }
 
 bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+
+/// The number after `name="` in `tag` (NaN when absent).
+double attribute(const std::string& tag, const std::string& name) {
+  const auto at = tag.find(" " + name + "=\"");
+  return at == std::string::npos ? std::nan("") : std::stod(tag.substr(at + name.size() + 3));
+}
+
+/// Parses a plot of the diagnosis: its frame and every data point
+/// (`<circle class="point">`) must lie inside it; returns the points.
+int points_inside_frame(const std::string& svg) {
+  const auto frame_at = svg.find("<rect class=\"frame\"");
+  EXPECT_NE(frame_at, std::string::npos);
+  if (frame_at == std::string::npos) return 0;
+  const std::string frame = svg.substr(frame_at, svg.find('>', frame_at) - frame_at);
+  const double x = attribute(frame, "x"), y = attribute(frame, "y");
+  const double w = attribute(frame, "width"), h = attribute(frame, "height");
+  int points = 0;
+  for (auto at = svg.find("<circle class=\"point\""); at != std::string::npos;
+       at = svg.find("<circle class=\"point\"", at + 1)) {
+    const std::string tag = svg.substr(at, svg.find('>', at) - at);
+    const double cx = attribute(tag, "cx"), cy = attribute(tag, "cy");
+    EXPECT_TRUE(cx >= x && cx <= x + w && cy >= y && cy <= y + h) << tag << " outside " << frame;
+    ++points;
+  }
+  return points;
+}
 
 TEST(Gap, RecordsOfTheModelItselfShowNoSignificantGap) {
   // The null is the model itself: the false-alarm rate is alpha = 1 %; with
@@ -49,6 +76,12 @@ TEST(Gap, AWithheldAccelerometerBiasInstabilityIsFoundAndNamed) {
   for (const char* f : {"gap.md", "gap.json", "gap_groups.svg", "gap_allan.svg"})
     EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / f)) << f;
   EXPECT_EQ(read_file(std::filesystem::path(out) / "gap.json"), r.out);
+  // The plots show their data: every group a point inside the frame, named;
+  // the Allan curves (three axes, clusters 10 s and up) inside theirs.
+  const std::string groups = read_file(std::filesystem::path(out) / "gap_groups.svg");
+  EXPECT_GE(points_inside_frame(groups), 22);
+  EXPECT_TRUE(has(groups, "common test f_x")) << groups.substr(0, 400);
+  EXPECT_GE(points_inside_frame(read_file(std::filesystem::path(out) / "gap_allan.svg")), 3 * 4);
 }
 
 TEST(Gap, RecordsOfOtherSoftwareAreDiagnosed) {
