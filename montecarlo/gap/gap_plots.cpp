@@ -6,21 +6,13 @@
 #include <limits>
 #include <vector>
 
+#include "montecarlo/write/svg_plot.h"
+
 namespace insmc::mc {
 namespace {
 
 constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c"};
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
-}
 
 /// A frame in pixels and the data range it shows.
 struct Frame {
@@ -34,7 +26,7 @@ std::string open_svg(double w, double h, const std::string& title) {
   return fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" font-family=\"sans-serif\" "
                      "font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
                      "<text x=\"60\" y=\"22\" font-size=\"14\">{}</text>\n",
-                     w, h, escape(title));
+                     w, h, svg_escape(title));
 }
 
 /// The frame, its clip path (id "frame") and the y label.
@@ -44,7 +36,7 @@ std::string frame_svg(const Frame& f, const std::string& y_label) {
                      "height=\"{:.1f}\" fill=\"none\" stroke=\"black\"/>\n"
                      "<text transform=\"translate(16,{:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>\n",
                      f.left, f.top, f.width, f.height, f.left, f.top, f.width, f.height, f.top + f.height / 2,
-                     escape(y_label));
+                     svg_escape(y_label));
 }
 
 double nice_step(double span) {
@@ -93,7 +85,7 @@ std::string groups_svg(const Diagnosis& d) {
   for (std::size_t i = 0; i < n; ++i) {
     const double x = f.px(static_cast<double>(i) + 0.5);
     svg += fmt::format("<text transform=\"translate({:.1f},{:.1f}) rotate(-60)\" text-anchor=\"end\">{}</text>\n", x + 3,
-                       f.top + f.height + 10, escape(d.groups[i].name()));
+                       f.top + f.height + 10, svg_escape(d.groups[i].name()));
   }
   return svg + "</svg>\n";
 }

@@ -12,16 +12,6 @@ constexpr double kWidth = 760, kHeight = 460, kLeft = 80, kRight = 200, kTop = 4
 constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
                                     "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
-}
 
 /// A "nice" tick step (1, 2 or 5 × 10^k) giving about five ticks.
 double nice_step(double span) {
@@ -33,6 +23,17 @@ double nice_step(double span) {
 }
 
 }  // namespace
+
+std::string svg_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else out += c;
+  }
+  return out;
+}
 
 std::string svg_line_plot(const std::string& title, const std::string& x_label, const std::string& y_label,
                           const std::vector<PlotSeries>& series) {
@@ -53,7 +54,7 @@ std::string svg_line_plot(const std::string& title, const std::string& x_label, 
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" font-family=\"sans-serif\" "
       "font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       "<text x=\"{}\" y=\"24\" font-size=\"15\">{}</text>\n",
-      kWidth, kHeight, kLeft, escape(title));
+      kWidth, kHeight, kLeft, svg_escape(title));
   for (double y = 0; y <= y1 + 1e-9 * y1; y += ystep) {
     svg += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#ddd\"/>"
                        "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{:g}</text>\n",
@@ -67,9 +68,9 @@ std::string svg_line_plot(const std::string& title, const std::string& x_label, 
   svg += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"black\"/>\n",
                      kLeft, kTop, pw, ph);
   svg += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>\n", kLeft + pw / 2,
-                     kHeight - 15, escape(x_label));
+                     kHeight - 15, svg_escape(x_label));
   svg += fmt::format("<text transform=\"translate(18,{:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>\n",
-                     kTop + ph / 2, escape(y_label));
+                     kTop + ph / 2, svg_escape(y_label));
   for (size_t i = 0; i < series.size(); ++i) {
     const auto& s = series[i];
     const char* colour = kColours[static_cast<std::size_t>(s.colour >= 0 ? s.colour : static_cast<int>(i)) % std::size(kColours)];
@@ -87,7 +88,7 @@ std::string svg_line_plot(const std::string& title, const std::string& x_label, 
     svg += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"3\"{}/>"
                        "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
                        kLeft + pw + 12, kTop + 10 + 20.0 * i, kLeft + pw + 36, kTop + 10 + 20.0 * i, colour, dash,
-                       kLeft + pw + 42, kTop + 14 + 20.0 * i, escape(s.name));
+                       kLeft + pw + 42, kTop + 14 + 20.0 * i, svg_escape(s.name));
   }
   svg += "</svg>\n";
   return svg;

@@ -14,6 +14,9 @@ struct PlotSeries {
   bool dashed = false;
 };
 
+/// Text for SVG content and attributes: <, > and & escaped.
+std::string svg_escape(const std::string& text);
+
 std::string svg_line_plot(const std::string& title, const std::string& x_label, const std::string& y_label,
                           const std::vector<PlotSeries>& series);
 

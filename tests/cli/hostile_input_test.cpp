@@ -110,7 +110,7 @@ TEST(HostileInput, ValuesAtTheEdgesOfTheirRangesRun) {
            "run --samples 2048 --bound gyro_drift=10000meru --scheme none,5.2",
            "run --samples 2048 --dist all=zero --leveling-gain 10 --scheme none",
            "run --samples 2048 --dv-pulse 1mps --position-resolution 1km --scheme 5.2,5.3",
-           "run --samples 2048 --filter-interval 4s --test-duration 2h",
+           "run --samples 2048 --filter-interval 4s --test-duration 2h --system 1 --scheme none,5.3",
            "covariance --confidence 0.999999 --bound accel_bias=100mg",
        }) {
     const ProgramResult r = run_bounded(args + " --format csv", 300);
