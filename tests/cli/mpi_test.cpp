@@ -52,7 +52,7 @@ TEST(Mpi, ASweepGivesTheBytesOfTheSingleProcessSweep) {
 TEST(Mpi, BadInputIsReportedOnceWithExitTwo) {
   const auto r = run_shell(mpirun(2) + " run --samples 0");
   EXPECT_EQ(r.exit_code, 2);
-  const std::size_t at = r.err.find("insmc run: --samples = 0: must be");
+  const std::size_t at = r.err.find("insmc run: --samples = 0: must");
   EXPECT_NE(at, std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("insmc run:", at + 1), std::string::npos) << "rank 0 alone reports it\n" << r.err;
 }
