@@ -10,7 +10,7 @@
 #include "lib/common/input_text.h"
 #include "lib/records/record_io.h"
 #include "montecarlo/gap/diagnosis.h"
-#include "montecarlo/gap/report.h"
+#include "montecarlo/gap/report/report.h"
 
 namespace insmc::app {
 namespace {

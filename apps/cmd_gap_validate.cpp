@@ -9,7 +9,7 @@
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
 #include "lib/truth/effect.h"
-#include "montecarlo/gap/validation.h"
+#include "montecarlo/gap/validation/validation.h"
 
 namespace insmc::app {
 

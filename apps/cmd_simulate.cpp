@@ -14,7 +14,7 @@
 #include "lib/truth/simulator.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
-#include "montecarlo/gap/record_simulation.h"
+#include "montecarlo/gap/null/record_simulation.h"
 #include "montecarlo/sampler/sampler.h"
 
 namespace insmc::app {

@@ -10,15 +10,15 @@
 #include <numeric>
 #include <optional>
 
-#include "lib/common/input_error.h"
 #include "lib/common/assert.h"
-#include "lib/gap/filter_windows.h"
-#include "lib/gap/response.h"
-#include "lib/gap/scheme_rows.h"
-#include "montecarlo/gap/candidate_fit.h"
-#include "montecarlo/gap/record_simulation.h"
-#include "montecarlo/gap/site_values.h"
-#include "montecarlo/gap/where.h"
+#include "lib/common/input_error.h"
+#include "montecarlo/gap/fit/candidate_fit.h"
+#include "montecarlo/gap/model/response.h"
+#include "montecarlo/gap/model/scheme_rows.h"
+#include "montecarlo/gap/null/record_simulation.h"
+#include "montecarlo/gap/records/filter_windows.h"
+#include "montecarlo/gap/records/site_values.h"
+#include "montecarlo/gap/where/where.h"
 #include "montecarlo/random/philox.h"
 
 namespace insmc::mc {

@@ -2,8 +2,8 @@
 /// `insmc gap`: the sim-to-real gap diagnosis (DESIGN.md §3, issue 7).
 ///
 /// 1. Model: each run's f and r rows as the linear level predicts them
-///    (lib/gap), the test run fitted, the navigation predicted from the fit.
-/// 2. Gap: G of lib/gap/gap_metric.h on all runs, against the model's own
+///    (model/), the test run fitted, the navigation predicted from the fit.
+/// 2. Gap: G of metric/gap_metric.h on all runs, against the model's own
 ///    null: truth-level runs with no effect and the priors, simulated at the
 ///    records' own times, pulse weight, resolution, latitude and system
 ///    (record_simulation.h). Significance: the share of null files (runs drawn
@@ -13,7 +13,7 @@
 ///    axis, stage and window; the post-test innovations projected on the time
 ///    functions of the error (Schuler, earth rate, t², t³, t⁴); the Allan
 ///    deviation of the f residuals against the null's.
-/// 4. Which effect: every candidate (lib/gap/candidates.h) fitted on one half
+/// 4. Which effect: every candidate (candidates/candidates.h) fitted on one half
 ///    of the runs (grid search, least G), scored on the other half, and the
 ///    halves swapped (2-fold cross-validation): ranked by held-out G.
 /// 5. How far: shrink = 1 − G_after/G_before on held-out runs; effects added
@@ -24,10 +24,10 @@
 #include <string>
 #include <vector>
 
-#include "lib/gap/candidates.h"
-#include "lib/gap/gap_metric.h"
 #include "lib/records/record.h"
 #include "lib/uncertainty/uncertainty_model.h"
+#include "montecarlo/gap/candidates/candidates.h"
+#include "montecarlo/gap/metric/gap_metric.h"
 
 namespace insmc::mc {
 
@@ -43,7 +43,7 @@ struct DiagnosisOptions {
   double default_pulse_mps = 0.1 * kFtpsToMps;
   gap::ExtractionOptions extraction;
   /// f windows shorter than this are summed into windows of at least this
-  /// length before anything else (lib/gap/filter_windows.h) [s].
+  /// length before anything else (records/filter_windows.h) [s].
   double min_filter_interval_s = 1.0;
   int minimum_runs = 5;             ///< for a ranking (two halves of ≥ 2 runs)
   /// Null files (of the records' size, from the calibration runs) on which

@@ -1,0 +1,67 @@
+#pragma once
+/// Candidate effects of the gap diagnosis (issue 7): each a named extension
+/// of the linear-Gaussian run model (gaussian_model.h) with parameters on a
+/// grid. They are the diagnosis' own physics of each effect, written from
+/// the effect's definition (the accelerometer error a(t) or platform angle
+/// θ(t) it adds, response.h, or the prior or noise it widens), not from the
+/// truth simulator; the names are those of `insmc effects` plus `bounds`
+/// (priors wider than Table 3.1) and `nonlinearity` (terms the linear level
+/// drops). Effects these observables cannot tell apart are one class named
+/// by its members joined with `|`.
+#include <functional>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "lib/units/quantity.h"
+#include "montecarlo/gap/model/gaussian_model.h"
+
+namespace insmc::gap {
+
+/// What a candidate may use when it builds its extension for a layout.
+struct LayoutContext {
+  const Layout* layout = nullptr;
+  const RecordSite* site = nullptr;
+  const BaseModel* base = nullptr;
+  /// Unit responses already computed for this layout, by key.
+  mutable std::map<std::string, Eigen::MatrixXd> cache;
+};
+
+struct CandidateParameter {
+  std::string name;
+  Dimension dimension;
+  /// SI, ascending; for an amplitude one value: the largest magnitude the
+  /// candidate covers (a fit beyond it is held there and flagged).
+  std::vector<double> grid;
+  /// The size of a deterministic signature: the extension's mean is linear
+  /// in it, and it is fitted by least squares, not on a grid.
+  bool amplitude = false;
+};
+
+struct Candidate {
+  std::string name;         ///< e.g. "accel_bias_instability"
+  std::string description;  ///< one line
+  std::vector<CandidateParameter> parameters;
+  /// The extension at one point of the parameter grid (values in parameter order).
+  std::function<Extension(const LayoutContext&, std::span<const double>)> build;
+
+  /// Number of grid points (the product of the parameters' grids).
+  int grid_size() const;
+  /// Parameter values of grid point `index` (amplitudes 0).
+  std::vector<double> grid_point(int index) const;
+  /// Indices of the amplitude parameters.
+  std::vector<int> amplitude_indices() const;
+};
+
+/// Every candidate, in a fixed order.
+const std::vector<Candidate>& candidate_registry();
+
+/// Knot spacing of the random-process bases [s]: random walks at the
+/// smallest, Gauss–Markov processes a correlation time apart within these
+/// bounds; between knots the bridge's first mode is a column and the faster
+/// part enters the f rows as noise.
+inline constexpr double kKnotSpacingS = 420.0;
+inline constexpr double kMinKnotSpacingS = 150.0;
+
+}  // namespace insmc::gap

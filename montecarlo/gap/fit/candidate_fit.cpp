@@ -1,0 +1,215 @@
+#include "montecarlo/gap/fit/candidate_fit.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+
+namespace insmc::mc {
+
+int PreparedRuns::layout_index(const gap::Layout& layout) {
+  for (std::size_t i = 0; i < layouts.size(); ++i)
+    if (layouts[i] == layout) return static_cast<int>(i);
+  layouts.push_back(layout);
+  bases.push_back(gap::make_base_model(layout, site, x_var));
+  keys.add_layout(layout);
+  return static_cast<int>(layouts.size() - 1);
+}
+
+Eigen::VectorXd run_values(const gap::RunData& run) {
+  return Eigen::Map<const Eigen::VectorXd>(run.values.data(), static_cast<Eigen::Index>(run.values.size()));
+}
+
+Evaluated evaluate_runs(const std::vector<gap::RunData>& runs, const std::vector<int>& layout_of,
+                        const std::vector<const gap::RunAnalyser*>& analysers, const gap::KeySpace& keys) {
+  Evaluated e;
+  e.sums.resize(runs.size());
+  e.keyed.resize(keys.size(), static_cast<Eigen::Index>(runs.size()));
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const int L = layout_of[r];
+    const gap::RunAnalyser& a = *analysers[static_cast<std::size_t>(L)];
+    const Eigen::VectorXd v = a.normalized(run_values(runs[r]));
+    e.sums[r] = a.sums_of(v);
+    e.keyed.col(static_cast<Eigen::Index>(r)) = gap::keyed_values(v, a, L, keys);
+  }
+  return e;
+}
+
+namespace {
+
+std::vector<const gap::Extension*> pointers(const std::vector<gap::Extension>& selected, const gap::Extension* added) {
+  std::vector<const gap::Extension*> e;
+  for (const gap::Extension& s : selected) e.push_back(&s);
+  if (added) e.push_back(added);
+  return e;
+}
+
+bool used(const PreparedRuns& p, std::size_t L) {
+  return std::find(p.layout_of.begin(), p.layout_of.end(), static_cast<int>(L)) != p.layout_of.end();
+}
+
+CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
+                               const std::vector<std::vector<gap::Extension>>& selected,
+                               std::vector<gap::LayoutContext>& ctx, const gap::NullCalibration& m0) {
+  CandidateSums out;
+  out.keys = &p.keys;
+  const int K = c.grid_size();
+  out.at.resize(static_cast<std::size_t>(K));
+  out.sets.resize(static_cast<std::size_t>(K));
+  out.evaluated.assign(static_cast<std::size_t>(K), false);
+  const auto evaluate = [&](int k) {
+    if (out.evaluated[static_cast<std::size_t>(k)]) return;
+    const std::vector<double> theta = c.grid_point(k);
+    std::vector<std::optional<gap::RunAnalyser>> analysers(p.layouts.size());
+    std::vector<const gap::RunAnalyser*> pointers_to(p.layouts.size(), nullptr);
+    for (std::size_t L = 0; L < p.layouts.size(); ++L) {
+      if (!used(p, L)) continue;
+      const gap::Extension e = c.build(ctx[L], theta);
+      analysers[L].emplace(p.layouts[L], gap::combine(p.bases[L], pointers(selected[L], &e)));
+      pointers_to[L] = &*analysers[L];
+    }
+    out.at[static_cast<std::size_t>(k)] = evaluate_runs(p.runs, p.layout_of, pointers_to, p.keys);
+    out.sets[static_cast<std::size_t>(k)] = out.at[static_cast<std::size_t>(k)].set(p.keys);
+    out.evaluated[static_cast<std::size_t>(k)] = true;
+  };
+  // Grid index = first-parameter index × rest + rest index (grid_point).
+  const int first = static_cast<int>(c.parameters.front().grid.size()), rest = K / first;
+  std::vector<int> all(p.runs.size());
+  for (std::size_t r = 0; r < all.size(); ++r) all[r] = static_cast<int>(r);
+  for (int j = 0; j < rest; ++j) {
+    int best = -1;
+    double best_gap = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < first; i += 2) {
+      evaluate(i * rest + j);
+      const double g = gap::gap_value(out.sets[static_cast<std::size_t>(i * rest + j)], all, m0);
+      if (g < best_gap) best_gap = g, best = i;
+    }
+    for (int i : {best - 1, best + 1})
+      if (i >= 0 && i < first) evaluate(i * rest + j);
+  }
+  return out;
+}
+
+CandidateSums evaluate_amplitudes(const PreparedRuns& p, const gap::Candidate& c,
+                                  const std::vector<std::vector<gap::Extension>>& selected,
+                                  std::vector<gap::LayoutContext>& ctx) {
+  CandidateSums out;
+  out.amplitudes = true;
+  out.keys = &p.keys;
+  out.layout_of = p.layout_of;
+  out.fit.resize(p.layouts.size());
+  for (std::size_t L = 0; L < p.layouts.size(); ++L)
+    if (used(p, L)) out.fit[L].emplace(p.layouts[L], gap::combine(p.bases[L], pointers(selected[L], nullptr)));
+  for (std::size_t r = 0; r < p.runs.size(); ++r)
+    out.normalized.push_back(out.fit[static_cast<std::size_t>(p.layout_of[r])]->normalized(run_values(p.runs[r])));
+  const std::vector<int> amp = c.amplitude_indices();
+  out.amplitude_limit.resize(static_cast<Eigen::Index>(amp.size()));
+  for (std::size_t j = 0; j < amp.size(); ++j)
+    out.amplitude_limit[static_cast<Eigen::Index>(j)] = c.parameters[static_cast<std::size_t>(amp[j])].grid.front();
+  out.signature.resize(static_cast<std::size_t>(c.grid_size()));
+  for (int k = 0; k < c.grid_size(); ++k) {
+    out.signature[static_cast<std::size_t>(k)].resize(p.layouts.size());
+    for (std::size_t L = 0; L < p.layouts.size(); ++L) {
+      if (!used(p, L)) continue;
+      Eigen::MatrixXd& Z = out.signature[static_cast<std::size_t>(k)][L];
+      for (std::size_t j = 0; j < amp.size(); ++j) {
+        // The signature of amplitude j alone, at unit size (SI).
+        std::vector<double> theta = c.grid_point(k);
+        theta[static_cast<std::size_t>(amp[j])] = 1.0;
+        const gap::Extension e = c.build(ctx[L], theta);
+        const Eigen::VectorXd z = out.fit[L]->normalized_linear(e.mean);
+        if (Z.size() == 0) Z.resize(z.size(), static_cast<Eigen::Index>(amp.size()));
+        Z.col(static_cast<Eigen::Index>(j)) = z;
+      }
+    }
+  }
+  return out;
+}
+
+const Eigen::MatrixXd& signature_of(const CandidateSums& s, int k, int r) {
+  return s.signature[static_cast<std::size_t>(k)][static_cast<std::size_t>(s.layout_of[static_cast<std::size_t>(r)])];
+}
+
+/// Least squares over the multiset `runs` of the normalized values on the
+/// signature columns; beyond its limit a signature is held at the limit (and flagged).
+Eigen::VectorXd least_squares_amplitudes(const CandidateSums& s, int k, const std::vector<int>& runs) {
+  const Eigen::Index m = signature_of(s, k, runs.front()).cols();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(m, m);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(m);
+  for (int r : runs) {
+    const Eigen::MatrixXd& Z = signature_of(s, k, r);
+    A += Z.transpose() * Z;
+    b += Z.transpose() * s.normalized[static_cast<std::size_t>(r)];
+  }
+  // A signature the layout cannot see (a zero column) gets amplitude 0.
+  return A.completeOrthogonalDecomposition().solve(b).cwiseMax(-s.amplitude_limit).cwiseMin(s.amplitude_limit);
+}
+
+}  // namespace
+
+CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
+                                 const std::vector<std::vector<gap::Extension>>& selected,
+                                 const gap::NullCalibration& m0) {
+  std::vector<gap::LayoutContext> ctx(p.layouts.size());
+  for (std::size_t L = 0; L < p.layouts.size(); ++L) ctx[L] = {&p.layouts[L], &p.site, &p.bases[L], {}};
+  return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, ctx, m0)
+                                       : evaluate_amplitudes(p, c, selected, ctx);
+}
+
+gap::RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices) {
+  std::vector<gap::GroupSums> sums(runs.size());
+  Eigen::MatrixXd keyed(s.keys->size(), static_cast<Eigen::Index>(runs.size()));
+  for (std::size_t j = 0; j < runs.size(); ++j) {
+    const auto r = static_cast<std::size_t>(runs[j]);
+    const Choice& choice = choices[j];
+    if (!s.amplitudes) {
+      const Evaluated& e = s.at[static_cast<std::size_t>(choice.grid)];
+      sums[j] = e.sums[r];
+      keyed.col(static_cast<Eigen::Index>(j)) = e.keyed.col(static_cast<Eigen::Index>(r));
+      continue;
+    }
+    const int L = s.layout_of[r];
+    const gap::RunAnalyser& a = *s.fit[static_cast<std::size_t>(L)];
+    const Eigen::VectorXd v = s.normalized[r] - signature_of(s, choice.grid, runs[j]) * choice.amplitude;
+    sums[j] = a.sums_of(v);
+    keyed.col(static_cast<Eigen::Index>(j)) = gap::keyed_values(v, a, L, *s.keys);
+  }
+  return gap::make_run_set(std::move(sums), keyed, *s.keys);
+}
+
+Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0) {
+  Choice best;
+  double best_gap = std::numeric_limits<double>::infinity();
+  // Amplitude candidates: the distinct runs of the multiset and where each
+  // entry of the multiset sits among them.
+  std::vector<int> distinct, at;
+  if (s.amplitudes) {
+    std::map<int, int> index;
+    for (int r : runs) {
+      auto [it, added] = index.emplace(r, static_cast<int>(distinct.size()));
+      if (added) distinct.push_back(r);
+      at.push_back(it->second);
+    }
+  }
+  for (int k = 0; k < s.grid_size(); ++k) {
+    Choice here{k, {}};
+    double g = 0;
+    if (s.amplitudes) {
+      here.amplitude = least_squares_amplitudes(s, k, runs);
+      g = gap::gap_value(run_set_under(s, distinct, std::vector<Choice>(distinct.size(), here)), at, m0);
+    } else {
+      if (!s.evaluated[static_cast<std::size_t>(k)]) continue;
+      g = gap::gap_value(s.sets[static_cast<std::size_t>(k)], runs, m0);
+    }
+    if (g < best_gap) best_gap = g, best = here;
+  }
+  return best;
+}
+
+std::vector<double> parameter_values(const gap::Candidate& c, const Choice& choice) {
+  std::vector<double> v = c.grid_point(choice.grid);
+  const std::vector<int> amp = c.amplitude_indices();
+  for (std::size_t j = 0; j < amp.size(); ++j) v[static_cast<std::size_t>(amp[j])] = choice.amplitude[static_cast<Eigen::Index>(j)];
+  return v;
+}
+
+}  // namespace insmc::mc

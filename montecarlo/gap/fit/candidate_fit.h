@@ -1,0 +1,95 @@
+#pragma once
+/// Fitting one candidate effect (candidates/candidates.h) to a set of runs, the
+/// step the diagnosis' ranking repeats on training halves and resamples.
+/// Grid parameters are chosen by least G over their grid; amplitude
+/// parameters (the size of a deterministic signature, the same in every run)
+/// by least squares on the runs' normalized values, which are affine in the
+/// data: z(y − S a) = z(y) − z_lin(S) a. A grid coarse enough to be cheap
+/// would miss a signature seen coherently in every run by tens of percent.
+
+#include <Eigen/Dense>
+#include <optional>
+#include <vector>
+
+#include "montecarlo/gap/candidates/candidates.h"
+#include "montecarlo/gap/metric/gap_metric.h"
+#include "montecarlo/gap/metric/run_set.h"
+#include "montecarlo/gap/model/gaussian_model.h"
+#include "montecarlo/gap/model/run_analysis.h"
+#include "montecarlo/gap/records/layout.h"
+
+namespace insmc::mc {
+
+/// The runs, their layouts and the base model of each layout.
+struct PreparedRuns {
+  gap::RecordSite site;
+  std::vector<gap::RunData> runs;
+  std::vector<gap::Layout> layouts;
+  std::vector<int> layout_of;  // per run
+  std::vector<gap::BaseModel> bases;
+  UncertaintyVector x_var;
+  gap::KeySpace keys;          // over every layout
+
+  /// Index of `layout`, added (with its base model and keys) when new.
+  int layout_index(const gap::Layout& layout);
+};
+
+Eigen::VectorXd run_values(const gap::RunData& run);
+
+/// Runs under one model: each run's group sums and its normalized values in
+/// the key space (columns).
+struct Evaluated {
+  std::vector<gap::GroupSums> sums;
+  Eigen::MatrixXd keyed;  ///< keys × runs
+  gap::RunSet set(const gap::KeySpace& keys) const { return gap::make_run_set(sums, keyed, keys); }
+};
+
+/// `runs` (with their layouts) under the analysers of each layout.
+Evaluated evaluate_runs(const std::vector<gap::RunData>& runs, const std::vector<int>& layout_of,
+                        const std::vector<const gap::RunAnalyser*>& analysers, const gap::KeySpace& keys);
+
+/// One candidate evaluated on every run, before any choice of parameters.
+struct CandidateSums {
+  bool amplitudes = false;
+  /// Without amplitudes: every run at each grid point evaluated, and its
+  /// run set (empty where the coarse-to-fine search skipped the point).
+  std::vector<Evaluated> at;
+  std::vector<gap::RunSet> sets;
+  std::vector<bool> evaluated;
+  /// With amplitudes: the fit without the candidate per layout, the runs'
+  /// normalized values under it, and the normalized signature columns
+  /// [grid][layout] (rows × amplitudes).
+  std::vector<std::optional<gap::RunAnalyser>> fit;
+  std::vector<Eigen::VectorXd> normalized;
+  std::vector<std::vector<Eigen::MatrixXd>> signature;
+  std::vector<int> layout_of;
+  Eigen::VectorXd amplitude_limit;  ///< the largest magnitude covered, per amplitude
+  const gap::KeySpace* keys = nullptr;
+  int grid_size() const { return amplitudes ? static_cast<int>(signature.size()) : static_cast<int>(at.size()); }
+};
+
+/// A choice of parameters: a grid point and, for amplitude candidates, the amplitudes.
+struct Choice {
+  int grid = 0;
+  Eigen::VectorXd amplitude;
+};
+
+/// `c` on every run of `p`, on top of the effects already selected (per
+/// layout). The first parameter of a grid candidate is searched coarse to
+/// fine: every other value, then the two values next to the best on all runs
+/// (m0) for each setting of the other parameters.
+CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
+                                 const std::vector<std::vector<gap::Extension>>& selected,
+                                 const gap::NullCalibration& m0);
+
+/// Each run of `runs` under its own choice (e.g. the held-out runs of two
+/// folds, each under the other fold's fit), as a run set in that order.
+gap::RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices);
+
+/// The choice of least G on the multiset `runs` (m0: the null's calibration).
+Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0);
+
+/// The candidate's parameter values of a choice (grid values and amplitudes).
+std::vector<double> parameter_values(const gap::Candidate& c, const Choice& choice);
+
+}  // namespace insmc::mc

@@ -1,0 +1,133 @@
+#include "montecarlo/gap/records/record_lattice.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <set>
+
+#include "lib/preflight/test_run.h"
+
+namespace insmc::gap {
+namespace {
+
+constexpr int kMinValues = 20;
+constexpr int kMinNonzero = 10;
+constexpr int kMinDistinct = 3;
+
+/// Whether every value is within tolerance × w of a multiple of w; the
+/// multiples seen and the least-squares step.
+struct Trial {
+  bool fits = false;
+  int distinct = 0;
+  double step = 0.0;
+};
+
+Trial try_step(const std::vector<double>& values, double w, double tolerance) {
+  Trial t;
+  std::set<long long> multiples;
+  double nn = 0.0, nv = 0.0;
+  int nonzero = 0;
+  for (double v : values) {
+    const double n = std::round(v / w);
+    if (std::abs(v - n * w) > tolerance * w || std::abs(n) > 1e12) return t;
+    multiples.insert(static_cast<long long>(n));
+    nonzero += n != 0.0;
+    nn += n * n;
+    nv += n * v;
+  }
+  t.distinct = static_cast<int>(multiples.size());
+  t.fits = nonzero >= kMinNonzero && t.distinct >= kMinDistinct && nn > 0;
+  t.step = t.fits ? nv / nn : 0.0;
+  return t;
+}
+
+}  // namespace
+
+LatticeFit fit_lattice(std::vector<double> values, double tolerance) {
+  LatticeFit fit;
+  fit.values = static_cast<int>(values.size());
+  if (fit.values < kMinValues) return fit;
+  std::sort(values.begin(), values.end());
+  std::vector<double> gaps;
+  for (std::size_t i = 1; i < values.size(); ++i) gaps.push_back(values[i] - values[i - 1]);
+  const double widest = *std::max_element(gaps.begin(), gaps.end());
+  if (!(widest > 0)) return fit;  // all equal: no spacing to see
+  // The step is the smallest spacing between distinct lattice points, or a
+  // whole fraction of it when some multiples are unseen. Two sets of bases:
+  // the smallest spacings above round-off (values exact to the digit, a
+  // lattice visited densely) and above 2 % of the widest (one lattice point
+  // seen twice with a small leftover, e.g. the nominal's in f).
+  double largest = 0.0;
+  for (double v : values) largest = std::max(largest, std::abs(v));
+  std::vector<double> bases;
+  for (const double floor : {1e-9 * largest, 0.02 * widest}) {
+    std::vector<double> above;
+    for (double g : gaps)
+      if (g > floor) above.push_back(g);
+    std::sort(above.begin(), above.end());
+    above.resize(std::min<std::size_t>(above.size(), 5));
+    bases.insert(bases.end(), above.begin(), above.end());
+  }
+  std::sort(bases.begin(), bases.end(), std::greater<>());
+  fit.kind = LatticeFit::Kind::kContinuous;
+  fit.finest_tried = bases.back() / 6;
+  fit.coarsest_tried = bases.front();
+  double best = 0.0;
+  for (double base : bases)
+    for (int k = 1; k <= 6; ++k) {
+      const double w = base / k;
+      if (w <= best * (1 + tolerance)) break;
+      const Trial t = try_step(values, w, tolerance);
+      if (!t.fits) continue;
+      best = w;
+      fit.kind = LatticeFit::Kind::kLattice;
+      fit.step = t.step;
+      fit.distinct_multiples = t.distinct;
+      break;  // a finer fraction of this base fits too; the largest is wanted
+    }
+  return fit;
+}
+
+LatticeFit f_pulse_lattice(const RecordFile& file, const ModelOptions& model, double tau) {
+  std::vector<double> values;
+  for (const RecordRun& run : file.runs)
+    for (int a = 0; a < 3; ++a) {
+      double last_t = 0.0, last_u = 0.0;
+      bool have = false;
+      for (const RecordRow& row : run.rows) {
+        if (row.phase != Phase::kTest || !row.f_mps2[static_cast<std::size_t>(a)] || row.t_s < tau * (1 - 1e-9))
+          continue;
+        const double u = *row.f_mps2[static_cast<std::size_t>(a)] * tau +
+                         (nominal_velocity_increment(row.t_s, model) -
+                          nominal_velocity_increment(row.t_s - tau, model))[a];
+        if (have && row.t_s - last_t <= 2 * tau * (1 + 1e-6)) values.push_back(u - last_u);
+        have = true;
+        last_t = row.t_s;
+        last_u = u;
+      }
+    }
+  return fit_lattice(std::move(values));
+}
+
+LatticeFit r_resolution_lattice(const RecordFile& file, const ModelOptions& model) {
+  std::vector<double> values;
+  for (const RecordRun& run : file.runs) {
+    bool have = false;
+    Vec3 first = Vec3::Zero();
+    for (const RecordRow& row : run.rows) {
+      // Test rows: every scheme's navigation moves or resets the position
+      // computer, and its clock may differ from the true position's.
+      if (row.phase != Phase::kTest || !row.r_ap_m) continue;
+      const Vec3 v = *row.r_ap_m + true_position_ap(row.t_s, model);
+      if (!have) {
+        first = v;
+        have = true;
+        continue;
+      }
+      for (int a = 0; a < 3; ++a) values.push_back(v[a] - first[a]);
+    }
+  }
+  return fit_lattice(std::move(values));
+}
+
+}  // namespace insmc::gap

@@ -1,0 +1,255 @@
+#include "montecarlo/gap/report/report.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "lib/units/quantity.h"
+#include "montecarlo/gap/report/gap_plots.h"
+#include "montecarlo/write/markdown.h"
+
+namespace insmc::mc {
+namespace {
+
+Json shares_json(const std::vector<Share>& shares) {
+  Json j = Json::object();
+  for (const Share& s : shares) j[s.name] = s.share;
+  return j;
+}
+
+Json parameters_json(const std::vector<ParameterEstimate>& ps) {
+  Json j = Json::object();
+  for (const ParameterEstimate& p : ps) {
+    Json e = Json::object();
+    e["value"] = p.value;
+    e["low_16"] = p.low;
+    e["high_84"] = p.high;
+    e["unit"] = std::string(si_suffix(p.dimension));
+    e["at_grid_edge"] = p.at_grid_edge;
+    j[p.name] = e;
+  }
+  return j;
+}
+
+std::string params_text(const std::vector<ParameterEstimate>& ps) {
+  std::string s;
+  for (const ParameterEstimate& p : ps) {
+    s += (s.empty() ? "" : ", ") +
+         fmt::format("{} = {} [{} … {}]{}", p.name, format_quantity(p.value, p.dimension),
+                     format_quantity(p.low, p.dimension), format_quantity(p.high, p.dimension),
+                     p.at_grid_edge ? " (grid edge)" : "");
+  }
+  return s;
+}
+
+std::string pct(double v) { return fmt::format("{:.1f} %", 100.0 * v); }
+
+}  // namespace
+
+Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_files) {
+  Json j = Json::object();
+  Json files = Json::array();
+  for (const std::string& f : record_files) files.push_back(f);
+  j["records"] = files;
+  j["runs"] = d.runs;
+  j["scheme"] = d.scheme;
+  Json site = Json::object();
+  for (const SiteValue& v : d.site) {
+    Json e = Json::object();
+    e["value"] = v.value;
+    e["source"] = v.source;
+    e["reason"] = v.reason;
+    site[v.key] = e;
+  }
+  j["site"] = site;
+  Json g = Json::object();
+  g["value"] = d.gap;
+  g["significant"] = d.significant;
+  g["alpha"] = d.alpha;
+  g["p_value"] = d.p_value;
+  g["null_median"] = d.null_gap_median;
+  g["null_critical"] = d.null_gap_critical;
+  g["calibration_runs"] = d.calibration_runs;
+  Json unmodelled = Json::object();
+  unmodelled["value"] = d.unmodelled_gap;
+  unmodelled["critical"] = d.unmodelled_critical;
+  unmodelled["p_value"] = d.p_value;
+  g["unmodelled"] = unmodelled;
+  Json pessimistic = Json::object();
+  pessimistic["value"] = d.pessimistic.value;
+  pessimistic["significant"] = d.pessimistic.significant;
+  pessimistic["p_value"] = d.pessimistic.p_value;
+  pessimistic["critical"] = d.pessimistic.critical;
+  Json where_less = Json::array();
+  for (const std::string& w : d.pessimistic.where) where_less.push_back(w);
+  pessimistic["where"] = where_less;
+  g["pessimistic"] = pessimistic;
+  g["significance"] = "significant: an unmodelled effect, one-sided: G+ (the groups with ln ratio > 0) against the "
+                      "null files' G+ at alpha; pessimistic: the groups with ln ratio < 0 (G-), the same way";
+  g["metric"] = "G = sqrt(mean over groups of ln(observed/expected)^2): scatter groups (mean normalized square per "
+                "run) and coherent groups (what all runs share, one-sided), expectations calibrated on the null";
+  j["gap"] = g;
+  Json where = Json::object();
+  where["by_kind"] = shares_json(d.by_kind);
+  where["by_axis"] = shares_json(d.by_axis);
+  where["by_stage"] = shares_json(d.by_stage);
+  where["by_window"] = shares_json(d.by_window);
+  Json groups = Json::array();
+  for (const GroupResult& r : d.groups) {
+    Json e = Json::object();
+    e["group"] = r.name();
+    e["kind"] = r.coherent ? "coherent" : "scatter";
+    e["terms"] = r.count;
+    e["power"] = r.power;
+    e["null_power"] = r.null_power;
+    e["log_ratio"] = r.log_ratio;
+    e["p_value"] = r.p_value;
+    e["share"] = r.share;
+    groups.push_back(e);
+  }
+  where["groups"] = groups;
+  Json tf = Json::object();
+  for (const TimeFunctionShares& t : d.time_functions) tf[std::string(1, "xyz"[t.axis])] = shares_json(t.shares);
+  where["time_functions_nav_r"] = tf;
+  Json allan = Json::object();
+  for (const AllanCurve& c : d.allan) {
+    Json a = Json::array();
+    for (const AllanPoint& p : c.points) {
+      Json e = Json::object();
+      e["cluster_s"] = p.cluster_s;
+      e["observed_mps2"] = p.observed;
+      e["null_mps2"] = p.null;
+      a.push_back(e);
+    }
+    allan[std::string(1, "xyz"[c.axis])] = a;
+  }
+  where["allan_f_residual"] = allan;
+  j["where"] = where;
+  Json ranking = Json::array();
+  for (const CandidateResult& c : d.ranking) {
+    Json e = Json::object();
+    e["effect"] = c.effect;
+    e["params"] = parameters_json(c.parameters);
+    e["heldout_gap_after"] = c.heldout_gap_after;
+    e["shrink"] = c.shrink;
+    e["null_shrink"] = std::isfinite(c.null_shrink) ? Json(c.null_shrink) : Json(nullptr);
+    Json left = Json::object();
+    for (int g = 0; g < gap::kGroupCount; ++g)
+      if (std::isfinite(c.heldout_log_ratios.scatter[g])) left[gap::group_name(g)] = c.heldout_log_ratios.scatter[g];
+    for (int k = 0; k < gap::kCoherentCount; ++k)
+      if (std::isfinite(c.heldout_log_ratios.coherent[static_cast<std::size_t>(k)]))
+        left[gap::coherent_group_name(k)] = c.heldout_log_ratios.coherent[static_cast<std::size_t>(k)];
+    e["heldout_log_ratios"] = left;
+    ranking.push_back(e);
+  }
+  j["ranked"] = d.ranked;
+  j["heldout_gap_before"] = d.heldout_gap_before;
+  j["ranking"] = ranking;
+  j["top"] = d.top.empty() ? Json(nullptr) : Json(d.top);
+  j["runner_up_margin"] = d.runner_up_margin;
+  j["runner_up_margin_se"] = d.runner_up_margin_se;
+  Json greedy = Json::array();
+  for (const GreedyStep& s : d.greedy) {
+    Json e = Json::object();
+    e["effect"] = s.effect;
+    e["params"] = parameters_json(s.parameters);
+    e["heldout_gap"] = s.heldout_gap;
+    e["p_value"] = s.p_value;
+    greedy.push_back(e);
+  }
+  j["greedy"] = greedy;
+  Json selected = Json::array();
+  for (const std::string& s : d.selected) selected.push_back(s);
+  j["selected"] = selected;
+  Json statements = Json::array();
+  for (const std::string& s : d.statements) statements.push_back(s);
+  j["statements"] = statements;
+  return j;
+}
+
+std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosis& d,
+                                                                  const std::vector<std::string>& record_files) {
+  std::string md = "# Sim-to-real gap diagnosis\n\n";
+  md += fmt::format("Records: {} ({} runs, scheme {}). Null: {} truth-level runs of the model itself at the "
+                    "records' times, pulse weight, site and scheme.\n\n",
+                    fmt::join(record_files, ", "), d.runs, d.scheme, d.calibration_runs);
+  md += "## 1. The gap\n\n";
+  md += fmt::format("G = **{:.3g}** (null files of {} runs: median {:.3g}, critical {:.3g}). More than the model "
+                    "(an unmodelled effect): G+ = {:.3g}, p = {:.3g}, alpha = {}: **{}**. Less than the model: G- = "
+                    "{:.3g}, p = {:.3g} (critical {:.3g}){}.\n\n",
+                    d.gap, d.runs, d.null_gap_median, d.null_gap_critical, d.unmodelled_gap, d.p_value, d.alpha,
+                    d.significant ? "significant gap" : "no significant gap", d.pessimistic.value,
+                    d.pessimistic.p_value, d.pessimistic.critical,
+                    d.pessimistic.significant
+                        ? fmt::format(": **the model is pessimistic about {}**: the data scatter or share less there "
+                                      "than it predicts, so an assumption is wider than the data (a declared pulse "
+                                      "weight or resolution coarser than the data show, priors wider than this "
+                                      "system); no effect is sought for it",
+                                      fmt::join(d.pessimistic.where, ", "))
+                        : ": not beyond the null");
+  md += "Site values (the null is simulated with them):\n\n";
+  Table site({"value", "used", "source", "why"});
+  for (const SiteValue& v : d.site) site.add_row({v.key, fmt::format("{:.6g}", v.value), v.source, v.reason});
+  md += render_markdown(site) + "\n";
+  md += "G is the RMS over report groups of ln(observed / expected): per run, how the data scatter about the "
+        "model's prediction (scatter groups), and what all runs share (coherent groups: a design or site effect, "
+        "one-sided); 0 when the data match the model, 1 for a factor e ≈ 2.7 in power (too much or too little). "
+        "G² = G+² + G-²: G+ from the groups above the model (what an effect would add), G- from those below it; "
+        "each is tested one-sided against its own null distribution. The expectations are the model's own, "
+        "calibrated on its null runs.\n\n";
+  for (const std::string& s : d.statements) md += "- " + s + "\n";
+  if (!d.statements.empty()) md += "\n";
+  md += "## 2. Where it lies\n\n";
+  Table t({"group", "terms", "observed", "null", "ln ratio", "p", "share"});
+  for (const GroupResult& r : d.groups)
+    t.add_row({r.name(), fmt::format("{:.0f}", r.count), fmt::format("{:.3g}", r.power),
+               fmt::format("{:.3g}", r.null_power), fmt::format("{:+.3f}", r.log_ratio), fmt::format("{:.3g}", r.p_value),
+               pct(r.share)});
+  md += render_markdown(t) + "\n";
+  const auto share_line = [](const char* title, const std::vector<Share>& s) {
+    std::string line = std::string("- ") + title + ": ";
+    for (std::size_t i = 0; i < s.size(); ++i) line += (i ? ", " : "") + s[i].name + " " + pct(s[i].share);
+    return line + "\n";
+  };
+  md += share_line("by kind", d.by_kind) + share_line("by axis", d.by_axis) + share_line("by stage", d.by_stage) +
+        share_line("by window", d.by_window);
+  md += "\nPost-test position innovations on the error's time functions (share of the normalized energy, fitted in "
+        "this order):\n\n";
+  Table tf({"axis", "function", "share"});
+  for (const TimeFunctionShares& s : d.time_functions)
+    for (const Share& e : s.shares) tf.add_row({std::string(1, "xyz"[s.axis]), e.name, pct(e.share)});
+  md += render_markdown(tf) + "\n![group ln ratios](gap_groups.svg)\n\n![Allan deviation](gap_allan.svg)\n\n";
+  md += "## 3. Which effect\n\n";
+  if (!d.ranked) {
+    md += "Not ranked (see the statements above).\n\n";
+  } else {
+    md += fmt::format("Held-out G before: {:.3g}. Each candidate fitted on one half of the runs, scored on the "
+                      "other (2-fold), ranked by held-out G after.\n\n", d.heldout_gap_before);
+    Table r({"rank", "effect", "held-out G after", "shrink", "shrink on null files", "parameters (16–84 % of resampled fits)"});
+    for (std::size_t i = 0; i < d.ranking.size(); ++i)
+      r.add_row({std::to_string(i + 1), d.ranking[i].effect, fmt::format("{:.3g}", d.ranking[i].heldout_gap_after),
+                 pct(d.ranking[i].shrink),
+                 std::isfinite(d.ranking[i].null_shrink) ? pct(d.ranking[i].null_shrink) : std::string("—"),
+                 params_text(d.ranking[i].parameters)});
+    md += "The shrink on null files is what the same candidate gains, split and fitted the same way, on null files "
+          "of as many runs (runs of the null calibration): a shrink not above it is noise fitted, not an effect.\n\n";
+    md += render_markdown(r) + "\n";
+    md += fmt::format("Top: **{}**; runner-up margin {:.3g} ± {:.3g} (resampled runs){}.\n\n", d.top,
+                      d.runner_up_margin, d.runner_up_margin_se,
+                      d.top.find('|') != std::string::npos ? " — within two standard errors: reported as one class" : "");
+  }
+  md += "## 4. How far it shrinks\n\n";
+  if (d.greedy.empty()) {
+    md += "No effect added.\n";
+  } else {
+    Table g({"step", "effect added", "parameters", "held-out G", "p"});
+    for (std::size_t i = 0; i < d.greedy.size(); ++i)
+      g.add_row({std::to_string(i + 1), d.greedy[i].effect, params_text(d.greedy[i].parameters),
+                 fmt::format("{:.3g}", d.greedy[i].heldout_gap), fmt::format("{:.3g}", d.greedy[i].p_value)});
+    md += fmt::format("From held-out G = {:.3g}:\n\n", d.heldout_gap_before) + render_markdown(g);
+  }
+  return {{"gap.md", md},
+          {"gap_groups.svg", groups_svg(d)},
+          {"gap_allan.svg", allan_svg(d)}};
+}
+
+}  // namespace insmc::mc
