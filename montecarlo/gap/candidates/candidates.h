@@ -7,7 +7,8 @@
 /// truth simulator; the names are those of `insmc effects` plus `bounds`
 /// (priors wider than Table 3.1) and `nonlinearity` (terms the linear level
 /// drops). Effects these observables cannot tell apart are one class named
-/// by its members joined with `|`.
+/// by its members joined with `|`. One file per candidate in this folder
+/// (definitions.h), listed in registry.cpp.
 #include <functional>
 #include <map>
 #include <span>
@@ -56,12 +57,5 @@ struct Candidate {
 
 /// Every candidate, in a fixed order.
 const std::vector<Candidate>& candidate_registry();
-
-/// Knot spacing of the random-process bases [s]: random walks at the
-/// smallest, Gauss–Markov processes a correlation time apart within these
-/// bounds; between knots the bridge's first mode is a column and the faster
-/// part enters the f rows as noise.
-inline constexpr double kKnotSpacingS = 420.0;
-inline constexpr double kMinKnotSpacingS = 150.0;
 
 }  // namespace insmc::gap

@@ -1,0 +1,19 @@
+// accel_bias_instability: the accelerometer bias wanders after the alignment
+// has taken its value (random_process.h).
+#include "montecarlo/gap/candidates/common.h"
+#include "montecarlo/gap/candidates/definitions.h"
+#include "montecarlo/gap/candidates/random_process.h"
+
+namespace insmc::gap::candidates {
+
+Candidate accel_bias_instability() {
+  return {"accel_bias_instability",
+          "accelerometer bias wandering as a random walk (tau 0, σ after 1 h) or Gauss–Markov process",
+          {{"sigma", Dimension::kAcceleration, log_grid(2, 2000, kUg)},
+           {"tau", Dimension::kTime, {0.0, 300.0, 1200.0, 3600.0}}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            return process_extension(ctx, Drive::kAccel, p[0], p[1]);
+          }};
+}
+
+}  // namespace insmc::gap::candidates

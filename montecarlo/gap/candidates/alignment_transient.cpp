@@ -1,0 +1,20 @@
+// alignment_transient: alignment loops not settled at switch-over, a level
+// and an azimuth misalignment beyond ζ_r.
+#include "montecarlo/gap/candidates/common.h"
+#include "montecarlo/gap/candidates/definitions.h"
+
+namespace insmc::gap::candidates {
+
+Candidate alignment_transient() {
+  return {"alignment_transient",
+          "alignment loops not settled at switch-over: a level and an azimuth misalignment beyond ζ_r",
+          {{"level", Dimension::kAngle, scaled({0, 0.03, 0.1, 0.3, 1, 3}, kMradToRad)},
+           {"azimuth", Dimension::kAngle, scaled({0.3, 1, 3, 10, 30, 100}, kMradToRad)}},
+          [](const LayoutContext&, std::span<const double> p) {
+            Extension e;
+            e.x_var_add.segment<3>(ux::kMisalignAlign) = Eigen::Vector3d(p[0] * p[0], p[0] * p[0], p[1] * p[1]);
+            return e;
+          }};
+}
+
+}  // namespace insmc::gap::candidates

@@ -1,0 +1,51 @@
+#include "montecarlo/gap/candidates/common.h"
+
+#include <cmath>
+
+namespace insmc::gap::candidates {
+
+std::vector<double> scaled(std::initializer_list<double> values, double unit) {
+  std::vector<double> out;
+  for (double v : values) out.push_back(v * unit);
+  return out;
+}
+
+std::vector<double> log_grid(double lo, double hi, double unit) {
+  std::vector<double> out;
+  for (int k = 0;; ++k) {
+    const double v = lo * std::pow(10.0, k / 4.0);
+    if (v > hi * 1.01) break;
+    out.push_back(v * unit);
+  }
+  return out;
+}
+
+double layout_end(const Layout& layout) {
+  double end = 0.0;
+  for (const ObservationRow& r : layout.rows) end = std::max(end, r.t_s);
+  return end;
+}
+
+Eigen::VectorXd f_noise(const LayoutContext& ctx, const Eigen::Vector3d& var) {
+  Eigen::VectorXd add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));
+  for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
+    const ObservationRow& r = ctx.layout->rows[i];
+    if (r.quantity == Quantity::kF) add[static_cast<Eigen::Index>(i)] = var[r.axis];
+  }
+  return add;
+}
+
+Eigen::MatrixXd signature_columns(const LayoutContext& ctx, const std::string& key, int columns,
+                                  const std::function<void(double, Columns3&, Columns3&)>& at) {
+  if (auto it = ctx.cache.find(key); it != ctx.cache.end()) return it->second;
+  InputSignal in;
+  in.columns = columns;
+  in.at = at;
+  Eigen::MatrixXd r = input_response(*ctx.layout, *ctx.site, in);
+  ctx.cache[key] = r;
+  return r;
+}
+
+Eigen::Vector3d specific_force(double t, const ModelOptions& m) { return -gravity_in_ap(t, m); }
+
+}  // namespace insmc::gap::candidates

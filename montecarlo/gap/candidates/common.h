@@ -1,0 +1,41 @@
+#pragma once
+/// What several candidates share: their parameter grids, noise added to the
+/// f rows, deterministic signatures through the run's response (response.h)
+/// and the specific force at rest the design effects are driven by.
+#include <Eigen/Dense>
+#include <functional>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "lib/common/model_options.h"
+#include "lib/units/units.h"
+#include "montecarlo/gap/candidates/candidates.h"
+#include "montecarlo/gap/model/response.h"
+
+namespace insmc::gap::candidates {
+
+inline constexpr double kUg = 1e-6 * kGravityMps2;  // µg in m/s²
+
+std::vector<double> scaled(std::initializer_list<double> values, double unit);
+
+/// lo, lo·r, lo·r², … up to hi (within 1 %), r = 10^(1/4), × unit: the same
+/// relative step (×1.78) for every scale parameter, so no candidate is
+/// favoured by a grid that happens to hold the data's value.
+std::vector<double> log_grid(double lo, double hi, double unit);
+
+/// The time of the layout's last row [s].
+double layout_end(const Layout& layout);
+
+/// Noise added to the f rows (per axis weight) [ (m/s²)² ].
+Eigen::VectorXd f_noise(const LayoutContext& ctx, const Eigen::Vector3d& var);
+
+/// Columns of a deterministic signature with amplitude prior params (one
+/// column per axis unless `shared`).
+Eigen::MatrixXd signature_columns(const LayoutContext& ctx, const std::string& key, int columns,
+                                  const std::function<void(double, Columns3&, Columns3&)>& at);
+
+/// f^{a'}(t) = −C(t) g_e, the specific force at rest in a' (3.24).
+Eigen::Vector3d specific_force(double t, const ModelOptions& m);
+
+}  // namespace insmc::gap::candidates

@@ -1,0 +1,19 @@
+// gyro_drift_instability: the gyro drift wanders after the alignment has
+// taken its value; the platform angle is its integral (random_process.h).
+#include "montecarlo/gap/candidates/common.h"
+#include "montecarlo/gap/candidates/definitions.h"
+#include "montecarlo/gap/candidates/random_process.h"
+
+namespace insmc::gap::candidates {
+
+Candidate gyro_drift_instability() {
+  return {"gyro_drift_instability",
+          "gyro drift wandering as a random walk (tau 0, σ after 1 h) or Gauss–Markov process",
+          {{"sigma", Dimension::kAngularRate, log_grid(0.1, 100, kMeruToRadps)},
+           {"tau", Dimension::kTime, {0.0, 300.0, 1200.0, 3600.0}}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            return process_extension(ctx, Drive::kRate, p[0], p[1]);
+          }};
+}
+
+}  // namespace insmc::gap::candidates

@@ -1,0 +1,25 @@
+// nonlinearity: what the linear level drops (products of uncertainties,
+// finite rotations); not an effect of the truth simulator but a model-level
+// candidate (a model error of a share of the predicted position error).
+#include <cmath>
+
+#include "montecarlo/gap/candidates/definitions.h"
+
+namespace insmc::gap::candidates {
+
+Candidate nonlinearity() {
+  return {"nonlinearity",
+          "terms the linear level drops (products of uncertainties, finite rotations): a model error "
+          "of a share of the predicted position error",
+          {{"share", Dimension::kDimensionless, {0.01, 0.03, 0.1, 0.3}}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            Extension e;
+            e.noise_var_add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));
+            for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i)
+              if (ctx.layout->rows[i].quantity == Quantity::kR)
+                e.noise_var_add[static_cast<Eigen::Index>(i)] = std::pow(p[0] * ctx.base->prior_std[static_cast<Eigen::Index>(i)], 2);
+            return e;
+          }};
+}
+
+}  // namespace insmc::gap::candidates

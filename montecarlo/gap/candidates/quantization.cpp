@@ -1,0 +1,20 @@
+// quantization: ΔV pulses of another weight than the model assumes, modelled
+// by the counters themselves (pulse_counting.h), not by an added noise.
+#include "montecarlo/gap/candidates/common.h"
+#include "montecarlo/gap/candidates/definitions.h"
+
+namespace insmc::gap::candidates {
+
+Candidate quantization() {
+  return {"quantization",
+          "ΔV pulses of another weight than the model's: counting noise w²/(6τ²) in f, and in r the pulse phase and "
+          "the slow sawtooth of the counters' velocity error (pulse_counting.h)",
+          {{"dv_pulse", Dimension::kVelocity, log_grid(0.02, 5, 1.0)}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            Extension e;
+            e.counting = pulse_counting(*ctx.layout, *ctx.site, p[0], ctx.base->x_var, ctx.base->noise_var.cwiseSqrt());
+            return e;
+          }};
+}
+
+}  // namespace insmc::gap::candidates

@@ -1,0 +1,24 @@
+#pragma once
+/// Random processes as candidates (instabilities, random walks): a process
+/// is carried by its values on knots plus the first bridge mode between
+/// them as columns of the run model, the faster rest as noise on the f rows.
+#include "montecarlo/gap/candidates/candidates.h"
+
+namespace insmc::gap::candidates {
+
+/// Knot spacing of the random-process bases [s]: random walks at the
+/// smallest, Gauss–Markov processes a correlation time apart within these
+/// bounds; between knots the bridge's first mode is a column and the faster
+/// part enters the f rows as noise.
+inline constexpr double kKnotSpacingS = 420.0;
+inline constexpr double kMinKnotSpacingS = 150.0;
+
+/// What the process is: an accelerometer error, a platform angle, a gyro
+/// rate (the angle is its integral) or a velocity (the accelerometer error
+/// is its derivative).
+enum class Drive { kAccel, kAngle, kRate, kVelocity };
+
+/// A random process on the knots with σ = params[0], τ = params[1].
+Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma, double tau);
+
+}  // namespace insmc::gap::candidates

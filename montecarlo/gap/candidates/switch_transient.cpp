@@ -1,0 +1,22 @@
+// switch_transient: steps at switch-over beyond Table 3.1, in the
+// misalignment and the accelerometer bias.
+#include "montecarlo/gap/candidates/common.h"
+#include "montecarlo/gap/candidates/definitions.h"
+
+namespace insmc::gap::candidates {
+
+Candidate switch_transient() {
+  return {"switch_transient",
+          "steps at switch-over beyond Table 3.1: misalignment (all axes) and accelerometer bias",
+          {{"misalignment", Dimension::kAngle, scaled({0, 0.03, 0.1, 0.3, 1, 3, 10}, kMradToRad)},
+           {"bias", Dimension::kAcceleration, scaled({0, 20, 50, 100, 200, 500, 1000, 3000}, kUg)}},
+          [](const LayoutContext&, std::span<const double> p) {
+            Extension e;
+            e.x_var_add.segment<3>(ux::kMisalignAlign).setConstant(p[0] * p[0]);
+            e.x_var_add.segment<2>(ux::kBiasChangeAlign).setConstant(p[1] * p[1]);
+            e.x_var_add[ux::kAccelBias + 2] = p[1] * p[1];
+            return e;
+          }};
+}
+
+}  // namespace insmc::gap::candidates

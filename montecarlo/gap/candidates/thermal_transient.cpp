@@ -1,0 +1,40 @@
+// thermal_transient: bias and drift settling after switch-on, the same in
+// every run, so a deterministic signature fitted by its amplitudes.
+#include <cmath>
+#include <string>
+
+#include "montecarlo/gap/candidates/common.h"
+#include "montecarlo/gap/candidates/definitions.h"
+
+namespace insmc::gap::candidates {
+
+Candidate thermal_transient() {
+  return {"thermal_transient",
+          "bias and drift settling exponentially after switch-on, the same in every run (a design effect): "
+          "a(t) = b (e^{-t/tau} − 1), θ(t) = d (tau (1 − e^{-t/tau}) − t) on every axis; b, d at switch-over",
+          {{"bias", Dimension::kAcceleration, {10 * kMgToMps2}, true},
+           {"drift", Dimension::kAngularRate, {300 * kMeruToRadps}, true},
+           {"tau", Dimension::kTime, {600.0, 1200.0, 2400.0}}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            const double tau = p[2];
+            const Eigen::MatrixXd cols = signature_columns(ctx, "thermal:" + std::to_string(tau), 2,
+                                                           [tau](double t, Columns3& a, Columns3& th) {
+                                                             const double decay = std::exp(-t / tau);
+                                                             a.setZero();
+                                                             th.setZero();
+                                                             a.col(0).setConstant(decay - 1.0);
+                                                             th.col(1).setConstant(tau * (1.0 - decay) - t);
+                                                           });
+            // b(t) = b0 + b0 (e^{-t/tau} − 1): the part at switch-over acts as
+            // the fixed bias δf and drift ω_do do, through the alignment (their
+            // columns of H_x); the settling is the signature above.
+            const Eigen::MatrixXd& H = ctx.base->H_x;
+            const Eigen::VectorXd fixed_bias = H.middleCols<3>(ux::kAccelBias).rowwise().sum();
+            const Eigen::VectorXd fixed_drift = H.middleCols<3>(ux::kGyroDrift).rowwise().sum();
+            Extension e;
+            e.mean = p[0] * (cols.col(0) + fixed_bias) + p[1] * (cols.col(1) + fixed_drift);
+            return e;
+          }};
+}
+
+}  // namespace insmc::gap::candidates

@@ -1,0 +1,23 @@
+// velocity_random_walk: white accelerometer noise, a velocity random walk
+// in r and white noise in f (random_process.h).
+#include "montecarlo/gap/candidates/common.h"
+#include "montecarlo/gap/candidates/definitions.h"
+#include "montecarlo/gap/candidates/random_process.h"
+
+namespace insmc::gap::candidates {
+
+Candidate velocity_random_walk() {
+  return {"velocity_random_walk",
+          "white accelerometer noise: white in f (q/τ), a velocity random walk in r (σ after 1 h)",
+          {{"velocity_1h", Dimension::kVelocity, log_grid(0.01, 10, 1.0)}},
+          [](const LayoutContext& ctx, std::span<const double> p) {
+            // The walk's increments over τ that the knots and bridge modes
+            // do not carry are white in f: q/τ.
+            Extension e = process_extension(ctx, Drive::kVelocity, p[0], 0.0);
+            const double q = p[0] * p[0] / 3600.0;
+            e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(q / ctx.site->filter_interval_s));
+            return e;
+          }};
+}
+
+}  // namespace insmc::gap::candidates
