@@ -1,0 +1,82 @@
+#include "montecarlo/gap/null/null_calibration.h"
+
+#include <tbb/parallel_for.h>
+
+#include <optional>
+
+#include "lib/common/assert.h"
+#include "montecarlo/gap/null/bootstrap.h"
+#include "montecarlo/gap/null/record_simulation.h"
+#include "montecarlo/gap/records/diagnosis_records.h"
+
+namespace insmc::mc {
+
+Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
+               std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of) {
+  TruthOptions truth;
+  truth.model = p.site.model;
+  truth.system = p.site.system;
+  truth.dv_pulse_mps = p.site.dv_pulse_mps;
+  truth.filter_interval_s = p.site.filter_interval_s;
+  const Sampler sampler(options.prior);
+  // The null after the records' scheme, with the estimators the diagnosis uses.
+  const TestRunOptions test = gap::record_test_options(p.site);
+  const TruthSchemeSetup setup(truth, test, p.site.estimators ? *p.site.estimators : TestRunEstimators{});
+  const RecordRunSpec spec{p.site.test_duration_s, p.site.position_resolution_m, p.site.scheme, &setup,
+                           p.site.nav_start_s};
+  std::vector<gap::RunData> sim(static_cast<std::size_t>(runs));
+  std::vector<gap::SchemeEstimates> estimates(static_cast<std::size_t>(runs));
+  tbb::parallel_for(0, runs, [&](int j) {
+    const RecordRun& pattern = file.runs[static_cast<std::size_t>(j) % file.runs.size()];
+    RecordFile one;
+    one.header = file.header;
+    one.runs.push_back(simulate_like(pattern, truth, sampler, options.seed, static_cast<std::uint64_t>(j), spec));
+    sim[static_cast<std::size_t>(j)] = std::move(gap::extract_runs(one, p.site, options.extraction).front());
+    if (p.site.estimators) {
+      const std::optional<gap::SchemeEstimates> u = gap::record_estimates(one.runs.front(), p.site, *p.site.estimators);
+      INSMC_ASSERT(u.has_value(), "null run {} lacks its test grid", j);
+      estimates[static_cast<std::size_t>(j)] = *u;
+    }
+  });
+  layout_of.resize(sim.size());
+  for (std::size_t j = 0; j < sim.size(); ++j) {
+    layout_of[j] = p.layout_index(sim[j].layout);
+    // The null run's own estimates, taken off its rows as the records' are.
+    if (p.site.estimators) take_off_estimates(sim[j], p.bases[static_cast<std::size_t>(layout_of[j])], estimates[j]);
+  }
+  std::vector<gap::RunAnalyser> analysers;
+  std::vector<const gap::RunAnalyser*> pointers;
+  analysers.reserve(p.layouts.size());
+  for (std::size_t L = 0; L < p.layouts.size(); ++L) {
+    analysers.emplace_back(p.layouts[L], gap::combine(p.bases[L], {}));
+    pointers.push_back(&analysers.back());
+  }
+  const gap::RunSet set = evaluate_runs(sim, layout_of, pointers, p.keys).set(p.keys);
+  z.resize(sim.size());
+  tbb::parallel_for(std::size_t{0}, sim.size(), [&](std::size_t j) {
+    analysers[static_cast<std::size_t>(layout_of[j])].analyse(run_values(sim[j]), z[j]);
+  });
+  Null null;
+  null.calibration = gap::NullCalibration::from_null(set);
+  const int n = static_cast<int>(p.runs.size());
+  const auto B = static_cast<std::size_t>(options.bootstrap);
+  null.gaps.resize(B);
+  null.unmodelled.resize(B);
+  null.pessimistic.resize(B);
+  null.log_ratios.resize(B);
+  tbb::parallel_for(0, options.bootstrap, [&](int b) {
+    const auto i = static_cast<std::size_t>(b);
+    const gap::Pooled s = gap::pool(set, resample(options.seed, static_cast<std::uint64_t>(b), n, runs));
+    null.log_ratios[i] = gap::log_ratios(s, null.calibration);
+    null.gaps[i] = gap::gap_value(null.log_ratios[i]);
+    const gap::SignedGap signed_gap = gap::signed_gap(null.log_ratios[i]);
+    null.unmodelled[i] = signed_gap.unmodelled;
+    null.pessimistic[i] = signed_gap.pessimistic;
+  });
+  null.set = set;
+  null.runs = std::move(sim);
+  null.layout_of = layout_of;
+  return null;
+}
+
+}  // namespace insmc::mc

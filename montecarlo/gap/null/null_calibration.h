@@ -1,0 +1,34 @@
+#pragma once
+/// The model's own null: truth-level runs like the records' (no
+/// effect, the priors), under the base model, calibrating the metric
+/// (metric/gap_metric.h) and giving the null files every p-value is read
+/// against.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/gap/fit/candidate_fit.h"
+#include "montecarlo/gap/metric/gap_metric.h"
+
+namespace insmc::mc {
+
+/// Everything the candidate search needs from the null calibration.
+struct Null {
+  gap::NullCalibration calibration;        // κ_g, λ_c
+  std::vector<double> gaps;                // G of the null files
+  std::vector<double> unmodelled;          // G₊ of the null files
+  std::vector<double> pessimistic;         // G₋ of the null files
+  std::vector<gap::LogRatios> log_ratios;  // ℓ of the null files
+  gap::RunSet set;                         // the null runs under the base model
+  std::vector<gap::RunData> runs;          // the null runs (estimates taken off)
+  std::vector<int> layout_of;              // their layouts
+};
+
+/// The model's own null: truth runs like the records' (their times, f rows,
+/// site, pulses), their run set under the base model, the calibration, and
+/// the G of 2000 bootstrap files of the records' size. `z` and `layout_of`
+/// keep each null run's row values and layout (for the Allan curves).
+Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
+               std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of);
+
+}  // namespace insmc::mc

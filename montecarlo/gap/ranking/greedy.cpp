@@ -1,0 +1,56 @@
+#include "montecarlo/gap/ranking/greedy.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <string>
+#include <vector>
+
+#include "lib/units/quantity.h"
+#include "montecarlo/gap/null/bootstrap.h"
+#include "montecarlo/gap/ranking/ranking.h"
+
+namespace insmc::mc {
+namespace {
+
+std::string fmt_params(const std::vector<ParameterEstimate>& ps) {
+  std::string s;
+  for (const ParameterEstimate& e : ps) s += (s.empty() ? "" : ", ") + e.name + "=" + format_quantity(e.value, e.dimension);
+  return s;
+}
+
+}  // namespace
+
+void rank_and_select(Diagnosis& d, const PreparedRuns& p, const Null& null, const DiagnosisOptions& options) {
+  const auto& registry = gap::candidate_registry();
+  std::vector<std::vector<gap::Extension>> selected(p.layouts.size());
+  std::vector<std::string> taken;
+  d.heldout_gap_before = d.gap;
+  double before = d.gap;
+  for (int step = 0; step < std::max(1, options.max_selected); ++step) {
+    const std::vector<Scored> ranked = rank_candidates(p, selected, taken, null.calibration, options.seed);
+    if (ranked.empty()) break;
+    if (step == 0) record_ranking(d, ranked, p, null, options, before);
+    if (!d.significant) break;
+    const Scored& best = ranked.front();
+    const gap::Candidate& c = registry[static_cast<std::size_t>(best.candidate)];
+    if (step > 0 && best.heldout_gap >= before) break;  // nothing left that helps on held-out runs
+    const double left = gap::signed_gap(gap::log_ratios(gap::pool(best.heldout, all_runs(p.runs.size())),
+                                                        null.calibration)).unmodelled;
+    GreedyStep g{c.name, best.parameters, best.heldout_gap, p_value_of(left, null.unmodelled)};
+    d.greedy.push_back(g);
+    d.selected.push_back(step == 0 ? d.top : c.name);
+    taken.push_back(c.name);
+    const std::vector<double> theta = parameter_values(c, best.full_fit);
+    for (std::size_t L = 0; L < p.layouts.size(); ++L) {
+      const gap::LayoutContext ctx{&p.layouts[L], &p.site, &p.bases[L], {}};
+      selected[L].push_back(c.build(ctx, theta));
+    }
+    before = best.heldout_gap;
+    if (g.p_value >= options.alpha) break;  // no significant gap remains
+    if (step + 1 == options.max_selected)
+      d.statements.push_back(fmt::format("a significant gap remains after {} effects ({}); the greedy search stops "
+                                         "there", step + 1, fmt_params(best.parameters)));
+  }
+}
+
+}  // namespace insmc::mc

@@ -1,0 +1,141 @@
+#include "montecarlo/gap/ranking/ranking.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "montecarlo/gap/null/bootstrap.h"
+
+namespace insmc::mc {
+namespace {
+
+/// Every run under the other half's fit (runs alternate between the halves
+/// in file order): 2-fold cross-validation.
+gap::RunSet heldout_set(const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0) {
+  std::vector<Choice> heldout_choice(n);
+  for (int fold = 0; fold < 2; ++fold) {
+    std::vector<int> train, test;
+    for (std::size_t r = 0; r < n; ++r) (static_cast<int>(r % 2) == fold ? test : train).push_back(static_cast<int>(r));
+    const Choice k = choose(s, train, m0);
+    for (int r : test) heldout_choice[static_cast<std::size_t>(r)] = k;
+  }
+  return run_set_under(s, all_runs(n), heldout_choice);
+}
+
+/// 2-fold cross-validation (runs alternate between the halves in file order),
+/// the full-data fit and its resampled 16–84 % range.
+Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0,
+             std::uint64_t seed) {
+  Scored out;
+  out.heldout = heldout_set(s, n, m0);
+  out.heldout_gap = gap::gap_value(out.heldout, all_runs(n), m0);
+  out.full_fit = choose(s, all_runs(n), m0);
+  const std::vector<double> best = parameter_values(c, out.full_fit);
+  constexpr int kResamples = 200;
+  std::vector<std::vector<double>> draws(c.parameters.size());
+  for (int b = 0; b < kResamples; ++b) {
+    const std::vector<int> runs = resample(seed, 1'000'000 + static_cast<std::uint64_t>(b), static_cast<int>(n), static_cast<int>(n));
+    const std::vector<double> theta = parameter_values(c, choose(s, runs, m0));
+    for (std::size_t i = 0; i < theta.size(); ++i) draws[i].push_back(theta[i]);
+  }
+  for (std::size_t i = 0; i < c.parameters.size(); ++i) {
+    const gap::CandidateParameter& par = c.parameters[i];
+    ParameterEstimate e{par.name, par.dimension, best[i], quantile(draws[i], 0.16), quantile(draws[i], 0.84),
+                        par.amplitude ? std::abs(best[i]) >= par.grid.front()
+                                      : par.grid.size() > 1 && (best[i] == par.grid.front() || best[i] == par.grid.back())};
+    out.parameters.push_back(e);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Scored> rank_candidates(const PreparedRuns& p, const std::vector<std::vector<gap::Extension>>& selected,
+                                    const std::vector<std::string>& exclude, const gap::NullCalibration& m0,
+                                    std::uint64_t seed) {
+  const auto& registry = gap::candidate_registry();
+  std::vector<Scored> scored(registry.size());
+  std::vector<bool> used(registry.size(), false);
+  tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
+    if (std::find(exclude.begin(), exclude.end(), registry[c].name) != exclude.end()) return;
+    scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected, m0), p.runs.size(), m0, seed);
+    scored[c].candidate = static_cast<int>(c);
+    used[c] = true;
+  });
+  std::vector<Scored> out;
+  for (std::size_t c = 0; c < registry.size(); ++c)
+    if (used[c]) out.push_back(std::move(scored[c]));
+  std::stable_sort(out.begin(), out.end(), [](const Scored& a, const Scored& b) { return a.heldout_gap < b.heldout_gap; });
+  return out;
+}
+
+std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, int files, const gap::NullCalibration& m0) {
+  const auto& registry = gap::candidate_registry();
+  const std::size_t n = p.runs.size();
+  files = std::min(files, static_cast<int>(null.runs.size() / std::max<std::size_t>(n, 1)));
+  std::vector<std::vector<double>> per(registry.size());
+  const std::vector<std::vector<gap::Extension>> none(p.layouts.size());
+  for (int f = 0; f < files; ++f) {
+    PreparedRuns q = p;
+    q.runs.assign(null.runs.begin() + static_cast<std::ptrdiff_t>(f * n),
+                  null.runs.begin() + static_cast<std::ptrdiff_t>((f + 1) * n));
+    q.layout_of.assign(null.layout_of.begin() + static_cast<std::ptrdiff_t>(f * n),
+                       null.layout_of.begin() + static_cast<std::ptrdiff_t>((f + 1) * n));
+    std::vector<int> idx(n);
+    for (std::size_t r = 0; r < n; ++r) idx[r] = static_cast<int>(f * n + r);
+    const double before = gap::gap_value(null.set, idx, m0);
+    std::vector<double> shrink(registry.size());
+    tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
+      const gap::RunSet held = heldout_set(evaluate_candidate(q, registry[c], none, m0), n, m0);
+      shrink[c] = before > 0 ? 1.0 - gap::gap_value(held, all_runs(n), m0) / before : 0.0;
+    });
+    for (std::size_t c = 0; c < registry.size(); ++c) per[c].push_back(shrink[c]);
+  }
+  std::vector<double> out(registry.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t c = 0; c < registry.size(); ++c)
+    if (!per[c].empty()) out[c] = quantile(per[c], 0.5);
+  return out;
+}
+
+void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const PreparedRuns& p, const Null& null,
+                    const DiagnosisOptions& options, double before) {
+  const auto& registry = gap::candidate_registry();
+  const int n = d.runs;
+  d.ranked = true;
+  for (const Scored& s : ranked) {
+    const gap::Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
+    d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before,
+                         std::numeric_limits<double>::quiet_NaN(),
+                         gap::log_ratios(gap::pool(s.heldout, all_runs(p.runs.size())), null.calibration)});
+  }
+  d.top = d.ranking.front().effect;
+  if (options.null_shrink_files > 0) {
+    const std::vector<double> reference = null_shrinks(p, null, options.null_shrink_files, null.calibration);
+    for (std::size_t i = 0; i < ranked.size(); ++i)
+      d.ranking[i].null_shrink = reference[static_cast<std::size_t>(ranked[i].candidate)];
+  }
+  if (ranked.size() > 1) {
+    // Runner-up margin and its resampling standard error.
+    constexpr int kResamples = 500;
+    std::vector<double> margins;
+    for (int b = 0; b < kResamples; ++b) {
+      const std::vector<int> idx = resample(options.seed, 2'000'000 + static_cast<std::uint64_t>(b), n, n);
+      margins.push_back(gap::gap_value(ranked[1].heldout, idx, null.calibration) -
+                        gap::gap_value(ranked[0].heldout, idx, null.calibration));
+    }
+    d.runner_up_margin = ranked[1].heldout_gap - ranked[0].heldout_gap;
+    const double mean = std::accumulate(margins.begin(), margins.end(), 0.0) / kResamples;
+    double var = 0;
+    for (double m : margins) var += (m - mean) * (m - mean);
+    d.runner_up_margin_se = std::sqrt(var / (kResamples - 1));
+    const bool single = d.ranking[0].effect.find('|') == std::string::npos &&
+                        d.ranking[1].effect.find('|') == std::string::npos;
+    if (single && d.runner_up_margin < 2.0 * d.runner_up_margin_se)
+      d.top = d.ranking[0].effect + "|" + d.ranking[1].effect;
+  }
+}
+
+}  // namespace insmc::mc

@@ -1,0 +1,43 @@
+#pragma once
+/// Which effect: every candidate fitted on one half of the runs
+/// and scored on the other (2-fold cross-validation), ranked by held-out G;
+/// each candidate's shrink on null files as the reference of its shrink on
+/// the records.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/gap/fit/candidate_fit.h"
+#include "montecarlo/gap/null/null_calibration.h"
+
+namespace insmc::mc {
+
+struct Scored {
+  int candidate = 0;
+  double heldout_gap = 0;
+  gap::RunSet heldout;  // every run at the other half's fit
+  Choice full_fit;
+  std::vector<ParameterEstimate> parameters;
+};
+
+/// Every candidate not in `exclude`, on top of the effects `selected` (per
+/// layout), scored; ascending held-out gap (registry order among equals).
+std::vector<Scored> rank_candidates(const PreparedRuns& p, const std::vector<std::vector<gap::Extension>>& selected,
+                                    const std::vector<std::string>& exclude, const gap::NullCalibration& m0,
+                                    std::uint64_t seed);
+
+/// Each candidate's held-out shrink on `files` null files of the records'
+/// size (consecutive runs of the null calibration, split and fitted as the
+/// records are), the median over the files: what fitting the candidate
+/// gains on noise alone, the reference its shrink on the records is read
+/// against. NaN for a candidate excluded.
+std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, int files, const gap::NullCalibration& m0);
+
+/// The first ranking into d: every candidate's result, the top one (a class
+/// "a|b" when the runner-up is within two resampling standard errors) and
+/// the null shrinks. `before`: the held-out gap without any candidate.
+void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const PreparedRuns& p, const Null& null,
+                    const DiagnosisOptions& options, double before);
+
+}  // namespace insmc::mc

@@ -1,0 +1,112 @@
+#include "montecarlo/gap/records/diagnosis_records.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <optional>
+
+#include "lib/common/input_error.h"
+#include "montecarlo/gap/records/filter_windows.h"
+#include "montecarlo/gap/records/site_values.h"
+
+namespace insmc::mc {
+
+Records records_for_diagnosis(const RecordFile& file, const DiagnosisOptions& options,
+                              std::vector<std::string>& statements, std::vector<SiteValue>& site_values) {
+  Records r{file, {}, {}};
+  const RecordHeader header = file.header.without_truth();
+  r.site = gap::read_site(header, options.default_pulse_mps);
+  // What the header leaves out is inferred from the rows and said: the null
+  // is simulated with these values.
+  site_values = complete_site(RecordFile{header, file.runs}, r.site, options);
+  for (const SiteValue& v : site_values)
+    if (v.source != "header") statements.push_back(v.reason);
+  r.file.header.set(std::string(kKeyDvPulseMps), r.site.dv_pulse_mps);
+  r.file.header.set(std::string(kKeyPositionResolutionM), r.site.position_resolution_m);
+  // After a scheme that uses the test run, the windows stay as recorded:
+  // its estimates came from them, and an estimator of longer windows can
+  // differ by a window's counting noise (5.3's Δf̂(T)).
+  if (uses_test_run(r.site.scheme) && r.site.filter_interval_s < options.min_filter_interval_s)
+    statements.push_back(fmt::format(
+        "f is recorded over {:g} s windows and kept so: scheme {}'s estimates were made from them (the diagnosis "
+        "takes longer than with windows of {:g} s or more)",
+        r.site.filter_interval_s, to_string(r.site.scheme), options.min_filter_interval_s));
+  const gap::FilterWindows windows =
+      uses_test_run(r.site.scheme) ? gap::FilterWindows{r.site.filter_interval_s, 1, 0}
+                                   : gap::coarsen_filter_windows(r.file, r.site.filter_interval_s,
+                                                                 r.site.test_duration_s, options.min_filter_interval_s);
+  if (windows.factor > 1) {
+    statements.push_back(fmt::format(
+        "f is recorded over {:g} s windows: they are summed {} at a time into {:g} s windows (what a {:g} s filter "
+        "box counts; nothing the model looks for lies above {:g} Hz){}",
+        r.site.filter_interval_s, windows.factor, windows.tau_s, windows.tau_s, 0.5 / windows.tau_s,
+        windows.dropped > 0 ? fmt::format("; {} f values in blocks with a gap are left out", windows.dropped) : ""));
+    r.site.filter_interval_s = windows.tau_s;
+    r.file.header.set("filter_interval_s", windows.tau_s);
+  }
+  const Scheme scheme = r.site.scheme;
+  if (!uses_test_run(scheme)) return r;
+  const TestRunOptions test = gap::record_test_options(r.site);
+  try {
+    validate(test);
+  } catch (const InputError& e) {
+    // The values come from the records' header, not from an option of gap:
+    // name the header key the test-run setting was read from.
+    std::string key = e.field();
+    for (const auto& [option, header_key] :
+         {std::pair{"--test-duration", "test_duration_s"}, std::pair{"--filter-interval", "filter_interval_s"},
+          std::pair{"--dv-pulse", "dv_pulse_mps"}, std::pair{"--position-resolution", "position_resolution_m"}})
+      if (key == option) key = header_key;
+    throw InputError(fmt::format("records' header {} (the test run of scheme {})", key, to_string(scheme)),
+                     e.value(), e.allowed());
+  }
+  const Resolvability resolvable = resolvable_terms(r.site.system, r.site.model, test, options.prior);
+  r.site.estimators = make_estimators(test, r.site.model, resolvable.u3, resolvable.u4);
+  for (const RecordRun& run : file.runs) {
+    const std::optional<gap::SchemeEstimates> u = gap::record_estimates(run, r.site, *r.site.estimators);
+    if (!u) {
+      statements.push_back(fmt::format(
+          "run {} lacks part of the test run's filter grid (f and r at every {:g} s up to T = {:g} s), from which "
+          "the scheme's estimates are recomputed: the navigation rows after scheme {} cannot be modelled, so only "
+          "the test runs are diagnosed", run.id, r.site.filter_interval_s, r.site.test_duration_s, to_string(scheme)));
+      for (RecordRun& kept : r.file.runs)
+        std::erase_if(kept.rows, [](const RecordRow& row) { return row.phase != Phase::kTest; });
+      r.file.header.set(std::string(kKeyScheme), std::string(to_string(Scheme::kNone)));
+      r.site.scheme = Scheme::kNone;
+      r.site.estimators.reset();
+      r.estimates.clear();
+      r.navigation_dropped = true;
+      return r;
+    }
+    r.estimates.push_back(*u);
+  }
+  // The test rows the estimates used, and no others (the null runs are
+  // simulated on the same rows).
+  const double tau = r.site.filter_interval_s;
+  for (RecordRun& run : r.file.runs)
+    std::erase_if(run.rows, [&](const RecordRow& row) {
+      const double k = row.t_s / tau;
+      return row.phase == Phase::kTest && std::abs(k - std::round(k)) > 1e-6;
+    });
+  return r;
+}
+
+void take_off_estimates(gap::RunData& run, const gap::BaseModel& base, const gap::SchemeEstimates& estimates) {
+  Eigen::Map<Eigen::VectorXd>(run.values.data(), static_cast<Eigen::Index>(run.values.size())) -=
+      base.estimate_map * estimates;
+}
+
+PreparedRuns prepare(const Records& records, const DiagnosisOptions& options) {
+  PreparedRuns p;
+  p.site = records.site;
+  p.x_var = options.prior.variance();
+  p.runs = gap::extract_runs(records.file, p.site, options.extraction);
+  for (std::size_t r = 0; r < p.runs.size(); ++r) {
+    const int L = p.layout_index(p.runs[r].layout);
+    p.layout_of.push_back(L);
+    if (!records.estimates.empty())
+      take_off_estimates(p.runs[r], p.bases[static_cast<std::size_t>(L)], records.estimates[r]);
+  }
+  return p;
+}
+
+}  // namespace insmc::mc
