@@ -6,8 +6,9 @@
 // or 60 s, 8 or 20 runs, some runs stopping 60-80 min into the navigation,
 // numbers to 9 digits). The diagnosis must infer what the header leaves out
 // (continuous outputs) and show unmodelled-effect false alarms at the rate
-// alpha; a pessimistic finding may name r groups only (docs/gap.md §2: the
-// linear level lacks the truth level's second-order terms), never f groups.
+// alpha, and "pessimistic" findings at no more than that rate either (the
+// linear level lacks the truth level's second-order terms, which the model
+// allows for without requiring them: docs/gap.md §2).
 //
 // CI runs a few files; the long measurement (docs/gap.md §2):
 //   INSMC_GAP_NULL_FILES=100 build/gap/tests/cli/cli_gap_linear_null_test
@@ -23,6 +24,7 @@
 
 #include "lib/propagation/linear_model.h"
 #include "montecarlo/sampler/sampler.h"
+#include "tests/cli/gap_null_files.h"
 #include "tests/cli/run_program.h"
 
 namespace insmc::testing {
@@ -91,35 +93,10 @@ std::string linear_records(int file, std::uint64_t seed) {
   return text;
 }
 
-int env_files(int fallback) {
-  const char* v = std::getenv("INSMC_GAP_NULL_FILES");
-  return v ? std::max(1, std::atoi(v)) : fallback;
-}
-
-/// Least k with P(X > k) < 1e-3 for X ~ Binomial(n, p): the most false
-/// alarms a test of level p leaves in n files at that confidence.
-int binomial_bound(int n, double p) {
-  double cdf = 0.0;
-  for (int k = 0; k <= n; ++k) {
-    cdf += std::exp(std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0) + k * std::log(p) +
-                    (n - k) * std::log1p(-p));
-    if (1.0 - cdf < 1e-3) return k;
-  }
-  return n;
-}
-
 bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
 
-/// The value of "significant" in the object that follows `key` in the JSON text.
-bool significant_after(const std::string& json, const std::string& key) {
-  const auto at = json.find("\"" + key + "\": {");
-  EXPECT_NE(at, std::string::npos) << key;
-  const auto s = json.find("\"significant\": ", at);
-  return json.compare(s + 15, 4, "true") == 0;
-}
-
 TEST(GapLinearNull, RecordsOfAnotherWriterWithoutPulseKeysShowFalseAlarmsAtAlpha) {
-  const int files = env_files(3);
+  const int files = null_files_from_env("INSMC_GAP_NULL_FILES", 3);
   const double alpha = 0.01;
   TempDir dir;
   int unmodelled = 0, pessimistic = 0;
@@ -135,16 +112,7 @@ TEST(GapLinearNull, RecordsOfAnotherWriterWithoutPulseKeysShowFalseAlarmsAtAlpha
     const bool u = significant_after(r.out, "gap"), p = significant_after(r.out, "pessimistic");
     unmodelled += u;
     pessimistic += p;
-    if (p || u) {
-      const auto at = r.out.find("\"pessimistic\": {");
-      const std::string finding = r.out.substr(at, r.out.find('}', at) - at + 1);
-      fmt::print("{}\n", finding);
-      // The linear level lacks the truth level's second-order terms in r
-      // (the floor of docs/gap.md §1 stands for them), so its r rows may
-      // scatter less than the truth null's; an f group named here would be
-      // the pulse weight assumed again (the inference failing).
-      EXPECT_FALSE(has(finding, " f_")) << finding;
-    }
+    if (p || u) fmt::print("{}\n{}\n", object_after(r.out, "gap"), object_after(r.out, "pessimistic"));
     const FileShape s = shape_of(file);
     fmt::print("file {:3d}: {:2d} runs, f every {:2g} s, r every {:2g} s, system {}, {:2g} deg: unmodelled {}, "
                "pessimistic {}\n",
@@ -155,6 +123,10 @@ TEST(GapLinearNull, RecordsOfAnotherWriterWithoutPulseKeysShowFalseAlarmsAtAlpha
              "expected (P(more) < 1e-3 at alpha = {})\n",
              files, unmodelled, pessimistic, bound, alpha);
   EXPECT_LE(unmodelled, bound);
+  // The writer leaves out nothing the model asks for: its r rows lack only
+  // the truth level's second-order terms, which the model allows for and
+  // does not require (the band of docs/gap.md §2).
+  EXPECT_LE(pessimistic, bound);
 }
 
 }  // namespace

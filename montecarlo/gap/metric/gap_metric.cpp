@@ -74,7 +74,15 @@ CoherentValues expected_coherent_power(const Pooled& p, const NullCalibration& c
     // The runs' own scatter as observed: only what they share beyond
     // independence is compared, so a random effect, which raises every
     // run's scatter but nothing common, leaves these groups alone.
-    const double scatter = over_members(c, [&](int g) { return p.power.z2[g]; }) / m;
+    // Runs that scatter less than the model (an assumption pessimistic)
+    // are compared with the model's own scatter: a signature they share
+    // counts when it is as large as what the model lets independent runs
+    // scatter, not when it is merely larger than their tiny scatter (runs of
+    // a perfect sensor are alike to the last digit and share nothing that
+    // matters).
+    const double observed_scatter = over_members(c, [&](int g) { return p.power.z2[g]; }) / m;
+    const double model_scatter = over_members(c, [&](int g) { return expected_sum(p.power, cal, g); }) / m;
+    const double scatter = std::max(observed_scatter, model_scatter);
     const double common = (m - 1) / m * cal.systematic[static_cast<std::size_t>(c)] *
                           over_members(c, [&](int g) { return p.power.floor[g]; });
     out[static_cast<std::size_t>(c)] = count > 0 && m > 0 ? (scatter + common) / count : kNaN;
@@ -85,11 +93,21 @@ CoherentValues expected_coherent_power(const Pooled& p, const NullCalibration& c
 LogRatios log_ratios(const Pooled& p, const NullCalibration& cal) {
   LogRatios l;
   for (int g = 0; g < kGroupCount; ++g) {
-    const double expected = expected_sum(p.power, cal, g);
+    // The model expects between the linear level's own scatter (no model
+    // error) and that plus the floor's share the null shows (the truth
+    // level's second-order terms): data anywhere in that band agree with it.
+    const double upper = expected_sum(p.power, cal, g), lower = p.power.expected[g];
     // A floor keeps a group that is fitted exactly from counting as infinite.
-    l.scatter[g] = p.power.count[g] > 0 && expected > 0
-                       ? std::log(std::max(p.power.z2[g], 1e-12 * p.power.count[g]) / expected)
-                       : kNaN;
+    const double observed = std::max(p.power.z2[g], 1e-12 * p.power.count[g]);
+    if (!(p.power.count[g] > 0 && upper > 0)) {
+      l.scatter[g] = kNaN;
+    } else if (observed > upper) {
+      l.scatter[g] = std::log(observed / upper);
+    } else if (lower > 0 && observed < lower) {
+      l.scatter[g] = std::log(observed / lower);
+    } else {
+      l.scatter[g] = 0.0;
+    }
   }
   const CoherentValues observed = coherent_power(p), expected = expected_coherent_power(p, cal);
   for (int c = 0; c < kCoherentCount; ++c) {

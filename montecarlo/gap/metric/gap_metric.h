@@ -3,15 +3,20 @@
 /// the data show to what the model predicts for them, and their RMS.
 ///
 /// Scatter groups g (layout.h: axis × stage × window), over the runs' terms i:
-///   ℓ_g = ln( Σ z²  /  (Σ E_i/e_i + κ_g Σ (1 − E_i/e_i)) ),
+///   U_g = Σ E_i/e_i + κ_g Σ (1 − E_i/e_i),   L_g = Σ E_i/e_i,
+///   ℓ_g = ln(Σ z² / U_g) above U_g, ln(Σ z² / L_g) below L_g, 0 between,
 /// E_i the expected square of a term under the actual noise, e_i its
 /// normalizer (with the model-error floor), κ_g the share of the floor's
 /// contribution that the model's own null really shows (the truth level's
-/// second-order terms and g_s, which the floor stands for).
+/// second-order terms and g_s, which the floor stands for). The floor is an
+/// allowance, not a prediction: data of the linear level (no second-order
+/// terms) scatter at L_g, truth-level data at U_g, and both agree with the
+/// model; only scatter beyond the band is a disagreement.
 ///
 /// Coherent groups c (what every run shares): with m runs,
 ///   C_c = (1/m) Σ_keys (Σ_runs z)²  =  m |mean z|²,
-///   E[C_c] = (1/m) Σ_runs |z_run|²  (the runs' own scatter, as observed)
+///   E[C_c] = max((1/m) Σ_runs |z_run|², (1/m) U_c)  (the runs' own scatter,
+///            as observed, or the model's, U_c the U_g of its members, if more)
 ///            + (m − 1)/m λ_c Σ_runs Σ (1 − E_i/e_i),
 ///   ℓ_c = ln( max(C_c, E[C_c]) / E[C_c] ),
 /// λ_c the systematic share of the floor the null shows in common (the

@@ -195,6 +195,17 @@ TEST(GapMetric, IsTheRmsOfTheGroupsLogRatiosAgainstTheCalibratedExpectation) {
   NullCalibration half;
   half.floor_share[0] = 0.5;
   EXPECT_NEAR(log_ratios(f, half).scatter[0], 0.0, 1e-12);
+  // The floor is an allowance: anything from the actual expectation (2,
+  // the linear level without second-order terms) to 2 + κ 8 agrees; beyond
+  // either end the ratio is to that end.
+  for (double inside : {2.0, 3.0, 6.0}) {
+    f.power.z2[0] = inside;
+    EXPECT_DOUBLE_EQ(log_ratios(f, half).scatter[0], 0.0) << inside;
+  }
+  f.power.z2[0] = 0.5;
+  EXPECT_NEAR(log_ratios(f, half).scatter[0], std::log(0.5 / 2.0), 1e-12);
+  f.power.z2[0] = 12.0;
+  EXPECT_NEAR(log_ratios(f, half).scatter[0], std::log(12.0 / 6.0), 1e-12);
 }
 
 TEST(GapMetric, CoherentGroupsSeeOnlyWhatRunsShareBeyondIndependence) {
@@ -221,6 +232,26 @@ TEST(GapMetric, CoherentGroupsSeeOnlyWhatRunsShareBeyondIndependence) {
   EXPECT_NEAR(log_ratios(pool(make_run_set({run, run}, same, keys), std::vector<int>{0, 0, 1}), none)
                   .coherent[static_cast<std::size_t>(c)],
               std::log(3.0), 1e-12);
+  // Runs alike to the last digit but a hundred times below the model's
+  // scatter (a perfect sensor) share nothing the model would notice: the
+  // reference is the model's scatter then, and with 200 such runs the
+  // shared part reaches it only at 200 × 1e-4 / 2.25 < 1.
+  GroupSums tiny = run;
+  tiny.z2[g] = 1e-4;
+  Eigen::MatrixXd alike = Eigen::MatrixXd::Zero(keys.size(), 200);
+  alike.row(0).setConstant(1e-2);
+  std::vector<int> all(200);
+  for (int k = 0; k < 200; ++k) all[static_cast<std::size_t>(k)] = k;
+  EXPECT_NEAR(log_ratios(pool(make_run_set(std::vector<GroupSums>(200, tiny), alike, keys), all), none)
+                  .coherent[static_cast<std::size_t>(c)],
+              0.0, 1e-12);
+  // … and when what they share outgrows the model's scatter, it counts:
+  // 200 runs × 0.04 = 8 against the model's 2.25.
+  tiny.z2[g] = 0.04;
+  alike.row(0).setConstant(0.2);
+  EXPECT_NEAR(log_ratios(pool(make_run_set(std::vector<GroupSums>(200, tiny), alike, keys), all), none)
+                  .coherent[static_cast<std::size_t>(c)],
+              std::log(200 * 0.04 / 2.25), 1e-9);
   // Null runs that share a systematic part calibrate it away: λ from their
   // pairs over the floor one run contributes.
   GroupSums floored = run;
