@@ -72,8 +72,9 @@ LikelihoodFit fit_likelihood(LikelihoodLattice& lattice, std::span<const int> ru
 /// the model without it (docs/gap.md §4, the ranking by held-out runs).
 struct CrossValidation {
   double gain = 0.0;
-  std::array<double, 2> fold_gain{};               ///< held-out half 1, half 0 … per fold
-  std::array<std::vector<double>, 2> fold_values;  ///< the parameters fitted on each fold's training half
+  /// Fold f is fitted on half f (runs f, f + 2, …) and scored on the other half.
+  std::array<double, 2> fold_gain{};
+  std::array<std::vector<double>, 2> fold_values;  ///< the parameters fitted on half f (SI)
   int evaluations = 0;
 };
 CrossValidation cross_validate(LikelihoodLattice& lattice, std::span<const double> null_per_run);
