@@ -1,0 +1,32 @@
+#pragma once
+/// The evaluation a likelihood fit (likelihood_fit.h) injects for a
+/// candidate effect: at given values of its non-amplitude parameters, the
+/// candidate's extension built for every layout on top of the effects
+/// already selected, combined with the layout's base model (gaussian_model.h),
+/// factorized once (model/likelihood.h), and every run's exact
+/// log-likelihood. Amplitude parameters are held at 0 (their signature is a
+/// mean; its least-squares fit stays in candidate_fit.h).
+#include <vector>
+
+#include "montecarlo/gap/candidates/candidates.h"
+#include "montecarlo/gap/fit/candidate_fit.h"
+#include "montecarlo/gap/fit/likelihood_lattice.h"
+
+namespace insmc::mc {
+
+/// Indices (in c.parameters) of the parameters a likelihood fit searches:
+/// the non-amplitude ones, in order. The evaluation takes values in this order.
+std::vector<int> likelihood_parameters(const gap::Candidate& c);
+
+/// The per-run log-likelihoods of `p`'s runs under `c` at the values of
+/// likelihood_parameters(c), on top of `selected` (per layout). `p`, `c` and
+/// `selected` must outlive the returned function.
+RunLogLikelihoods candidate_evaluation(const PreparedRuns& p, const gap::Candidate& c,
+                                       const std::vector<std::vector<gap::Extension>>& selected);
+
+/// The per-run log-likelihoods under the selected effects alone (the null of
+/// the cross-validation gain).
+std::vector<double> null_log_likelihoods(const PreparedRuns& p,
+                                         const std::vector<std::vector<gap::Extension>>& selected);
+
+}  // namespace insmc::mc

@@ -1,0 +1,119 @@
+// A candidate's injected likelihood evaluation (montecarlo/gap/fit/candidate_likelihood.h)
+// on runs drawn from the run model with the candidate at a known value:
+// the evaluation is the model's own likelihood, and the maximum-likelihood
+// fit (likelihood_fit.h) finds the value within its interval.
+#include "montecarlo/gap/fit/candidate_likelihood.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "lib/uncertainty/uncertainty_model.h"
+#include "lib/units/units.h"
+#include "montecarlo/gap/fit/likelihood_fit.h"
+#include "montecarlo/gap/model/likelihood.h"
+
+namespace insmc::mc {
+namespace {
+
+/// f rows every 10 s and r rows every 60 s on three axes, test T = 900 s.
+gap::Layout layout(double end_s) {
+  using namespace gap;
+  Layout l;
+  for (int stage = 0; stage < 2; ++stage) {
+    for (double t = 10.0; t <= end_s + 1e-9; t += 10.0) {
+      const bool test = t <= 900.0;
+      if (test != (stage == 0)) continue;
+      const Stage st = test ? Stage::kTest : Stage::kNav;
+      const int w = test ? 0 : nav_window(t, 900.0);
+      for (int k = 0; k < 3; ++k) l.rows.push_back({t, Quantity::kF, k, group_of(st, Quantity::kF, k, w)});
+      if (std::fmod(t, 60.0) == 0.0)
+        for (int k = 0; k < 3; ++k) l.rows.push_back({t, Quantity::kR, k, group_of(st, Quantity::kR, k, w)});
+    }
+    if (stage == 0) l.test_rows = static_cast<int>(l.rows.size());
+  }
+  return l;
+}
+
+const gap::Candidate& candidate(const std::string& name) {
+  for (const gap::Candidate& c : gap::candidate_registry())
+    if (c.name == name) return c;
+  throw std::runtime_error("no candidate " + name);
+}
+
+/// `runs` draws y = μ + H c + e from the model with `bounds` at scale `s`.
+PreparedRuns drawn_runs(int runs, double s, std::uint64_t seed) {
+  PreparedRuns p;
+  p.site.filter_interval_s = 10.0;
+  p.site.dv_pulse_mps = 0.1 * kFtpsToMps;
+  p.x_var = UncertaintyModel{}.variance();
+  const gap::Layout l = layout(2700.0);
+  const int L = p.layout_index(l);
+  gap::LayoutContext ctx{&p.layouts[0], &p.site, &p.bases[0], {}};
+  const double theta[] = {s};
+  const gap::Extension e = candidate("bounds").build(ctx, theta);
+  const gap::GaussianModel m = gap::combine(p.bases[0], {&e});
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal;
+  for (int r = 0; r < runs; ++r) {
+    const Eigen::VectorXd c =
+        m.prior_var.cwiseSqrt().cwiseProduct(Eigen::VectorXd::NullaryExpr(m.H.cols(), [&] { return normal(rng); }));
+    const Eigen::VectorXd noise =
+        m.noise_var.cwiseSqrt().cwiseProduct(Eigen::VectorXd::NullaryExpr(m.H.rows(), [&] { return normal(rng); }));
+    const Eigen::VectorXd y = m.mean + m.H * c + noise;
+    p.runs.push_back({r, l, std::vector<double>(y.data(), y.data() + y.size()), 2700.0});
+    p.layout_of.push_back(L);
+  }
+  return p;
+}
+
+TEST(GapCandidateLikelihood, IsTheCombinedModelsLikelihoodAndFitsTheDrawnValue) {
+  const double truth = 3.0;
+  const PreparedRuns p = drawn_runs(16, truth, 5);
+  const std::vector<std::vector<gap::Extension>> selected(p.layouts.size());
+  const gap::Candidate& c = candidate("bounds");
+  const RunLogLikelihoods evaluate = candidate_evaluation(p, c, selected);
+
+  // One evaluation: one model build and factorization per layout.
+  const auto t0 = std::chrono::steady_clock::now();
+  const double at[] = {2.0};
+  const std::vector<double> ll = evaluate(at);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("one evaluation: %.3f s (%zu rows, %d runs)\n", seconds, p.layouts[0].rows.size(),
+              static_cast<int>(p.runs.size()));
+
+  gap::LayoutContext ctx{&p.layouts[0], &p.site, &p.bases[0], {}};
+  const gap::Extension e = c.build(ctx, at);
+  const gap::RunLikelihood direct(gap::combine(p.bases[0], {&e}));
+  const gap::RunLikelihood null_model(gap::combine(p.bases[0], {}));
+  const std::vector<double> null = null_log_likelihoods(p, selected);
+  ASSERT_EQ(ll.size(), p.runs.size());
+  for (std::size_t r = 0; r < p.runs.size(); ++r) {
+    EXPECT_DOUBLE_EQ(ll[r], direct.log_likelihood(run_values(p.runs[r])));
+    EXPECT_DOUBLE_EQ(null[r], null_model.log_likelihood(run_values(p.runs[r])));
+  }
+
+  // Physical limits of the prior scale: from narrower than Table 3.1 to ×1000.
+  LikelihoodLattice lattice({{"scale", 0.1, 1000.0, 1.0}}, evaluate, static_cast<int>(p.runs.size()));
+  std::vector<int> all(p.runs.size());
+  for (std::size_t r = 0; r < all.size(); ++r) all[r] = static_cast<int>(r);
+  const LikelihoodFit fit = fit_likelihood(lattice, all);
+  const ProfileInterval& ci = fit.parameters[0].ci95;
+  std::printf("scale %.3g (95 %%: %.3g..%.3g), %d evaluations\n", fit.parameters[0].value_si, ci.lower_si, ci.upper_si,
+              fit.evaluations);
+  EXPECT_FALSE(fit.at_limit());
+  EXPECT_LE(ci.lower_si, truth);
+  EXPECT_GE(ci.upper_si, truth);
+  // Scale 1 is the null model: the held-out runs prefer the drawn scale.
+  const CrossValidation cv = cross_validate(lattice, null);
+  EXPECT_GT(cv.gain, 0.0);
+  std::printf("held-out gain %.1f, %d more evaluations\n", cv.gain, cv.evaluations);
+}
+
+}  // namespace
+}  // namespace insmc::mc
