@@ -5,6 +5,7 @@
 
 #include "apps/cli_common.h"
 #include "apps/output_paths.h"
+#include "apps/progress.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
@@ -33,7 +34,10 @@ int run_gap(const Args& args) {
       "alpha", po::value<double>()->default_value(0.01), "false-alarm rate of a significant gap, (0, 0.5)")(
       "seed", po::value<std::uint64_t>()->default_value(1), "seed of the null runs and the resampling")(
       "calibration-runs", po::value<int>()->default_value(0), "null runs (0: max(200, 10 x runs))")(
-      "max-effects", po::value<int>()->default_value(3), "effects added greedily at most, >= 1");
+      "max-effects", po::value<int>()->default_value(3), "effects added greedily at most, >= 1")(
+      "rank", po::value<std::string>()->default_value("always"),
+      "fit and rank the candidate effects: always, significant (only when the gap is), never (screening: the gap, "
+      "its significance and where it lies)");
   opts.add(uncertainty_options_description());
   const auto vm = parse_args(args, "gap", "--records FILE [--records FILE...] [--out DIR] [--format json]", opts);
   if (!vm) return 0;
@@ -53,6 +57,11 @@ int run_gap(const Args& args) {
   options.max_selected = (*vm)["max-effects"].as<int>();
   if (options.max_selected < 1 || options.max_selected > 5)
     throw InputError("--max-effects", std::to_string(options.max_selected), "must lie in [1, 5]");
+  const std::string rank = (*vm)["rank"].as<std::string>();
+  if (rank == "always") options.rank = mc::RankWhen::kAlways;
+  else if (rank == "significant") options.rank = mc::RankWhen::kIfSignificant;
+  else if (rank == "never") options.rank = mc::RankWhen::kNever;
+  else throw InputError("--rank", echo_input(rank), "always, significant or never");
   options.prior = read_uncertainty_model(*vm);
   std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "gap");
 
@@ -70,7 +79,13 @@ int run_gap(const Args& args) {
                                    runs, rows, kMaxDiagnosedRuns, kMaxRecordRows));
   }
   const RecordFile merged = mc::merge_record_files(files, names);
-  const mc::Diagnosis d = mc::diagnose(merged, options);
+  mc::Diagnosis d;
+  {
+    Progress progress(0, "");
+    options.progress = [&progress](std::string_view stage, std::uint64_t done, std::uint64_t total,
+                                   std::string_view unit) { progress.update(stage, done, total, unit); };
+    d = mc::diagnose(merged, options);
+  }
 
   const std::string json = mc::diagnosis_json(d, names).dump(2) + "\n";
   std::vector<std::pair<std::string, std::string>> report = mc::diagnosis_report(d, names);

@@ -6,6 +6,7 @@
 
 #include "apps/cli_common.h"
 #include "apps/output_paths.h"
+#include "apps/progress.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
 #include "lib/truth/effect.h"
@@ -53,7 +54,13 @@ int run_gap_validate(const Args& args) {
     }
   }
   std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "gap-validate");
-  const mc::ValidationResult r = mc::validate_diagnosis(options);
+  mc::ValidationResult r;
+  {
+    Progress progress(0, "files");
+    options.progress = [&progress](std::string_view stage, std::uint64_t done, std::uint64_t total,
+                                   std::string_view unit) { progress.update(stage, done, total, unit); };
+    r = mc::validate_diagnosis(options);
+  }
   const auto files = mc::validation_report(r, options);
   if (out) out->write(OutputFiles(files.begin(), files.end()));
   fmt::print("{}", files.front().second);

@@ -6,11 +6,30 @@
 
 namespace insmc::app {
 
-Progress::Progress(std::uint64_t total)
-    : total_(total), enabled_(isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()), last_(start_) {}
+Progress::Progress(std::uint64_t total, std::string unit)
+    : total_(total),
+      unit_(std::move(unit)),
+      enabled_(isatty(STDERR_FILENO) != 0),
+      start_(std::chrono::steady_clock::now()),
+      stage_start_(start_),
+      last_(start_) {}
 
 Progress::~Progress() {
   if (printed_) fmt::print(stderr, "\r\033[K");
+}
+
+void Progress::update(std::string_view stage, std::uint64_t done, std::uint64_t total, std::string_view unit) {
+  if (!enabled_) return;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (stage != stage_) {
+      stage_ = stage;
+      stage_start_ = std::chrono::steady_clock::now();
+    }
+    total_ = total;
+    unit_ = unit;
+  }
+  update(done);
 }
 
 void Progress::update(std::uint64_t done) {
@@ -20,9 +39,12 @@ void Progress::update(std::uint64_t done) {
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   if (elapsed < 1.0 || std::chrono::duration<double>(now - last_).count() < 0.25) return;
   last_ = now;
-  const double rate = static_cast<double>(done) / elapsed;
-  const double eta = rate > 0 ? static_cast<double>(total_ - done) / rate : 0.0;
-  fmt::print(stderr, "\r{} / {} samples, {:.3g} samples/s, ETA {:.0f} s\033[K", done, total_, rate, eta);
+  const double in_stage = std::chrono::duration<double>(now - stage_start_).count();
+  const double rate = in_stage > 0 ? static_cast<double>(done) / in_stage : 0.0;
+  const double eta = rate > 0 && total_ >= done ? static_cast<double>(total_ - done) / rate : 0.0;
+  const std::string prefix = stage_.empty() ? std::string() : stage_ + ": ";
+  fmt::print(stderr, "\r{}{} / {} {}, {:.3g} {}/s, ETA {:.0f} s, {:.0f} s in all\033[K", prefix, done, total_, unit_,
+             rate, unit_, eta, elapsed);
   printed_ = true;
 }
 

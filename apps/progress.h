@@ -1,23 +1,29 @@
 #pragma once
-/// Progress on stderr (samples/s and ETA) for runs longer than a second,
-/// only when stderr is a terminal; silent otherwise.
-#include <atomic>
+/// Progress on stderr (count, rate and ETA) for work longer than a second,
+/// only when stderr is a terminal; silent otherwise (scripts, CI, pipes).
 #include <chrono>
 #include <cstdint>
 #include <mutex>
+#include <string>
+#include <string_view>
 
 namespace insmc::app {
 
 class Progress {
  public:
-  explicit Progress(std::uint64_t total);
+  /// `unit` names what is counted ("samples", "runs", "files").
+  explicit Progress(std::uint64_t total, std::string unit = "samples");
   ~Progress();
   void update(std::uint64_t done);
+  /// Progress of a command of several stages, each with a count of its own
+  /// (a new stage name starts its own rate and ETA).
+  void update(std::string_view stage, std::uint64_t done, std::uint64_t total, std::string_view unit);
 
  private:
   std::uint64_t total_;
+  std::string unit_, stage_;
   bool enabled_;
-  std::chrono::steady_clock::time_point start_, last_;
+  std::chrono::steady_clock::time_point start_, stage_start_, last_;
   std::mutex mutex_;
   bool printed_ = false;
 };

@@ -94,6 +94,10 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
     d.statements.push_back(fmt::format("no significant gap (p = {:.3g} >= alpha = {}): no effect is selected",
                                        d.p_value, options.alpha));
   }
+  if (options.rank == RankWhen::kNever || (options.rank == RankWhen::kIfSignificant && !d.significant)) {
+    d.statements.push_back("candidate effects not fitted (--rank)");
+    return d;
+  }
   rank_and_select(d, p, null, options);
   honest_statements(d);
   return d;

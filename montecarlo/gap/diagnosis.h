@@ -20,6 +20,8 @@
 ///    greedily while the held-out gap stays significant.
 /// The diagnosis reads only the records' non-`truth.` keys and the priors.
 #include <cstdint>
+#include <functional>
+#include <string_view>
 #include <limits>
 #include <string>
 #include <vector>
@@ -30,6 +32,18 @@
 #include "montecarlo/gap/metric/gap_metric.h"
 
 namespace insmc::mc {
+
+/// Where a long diagnosis is: its stage, the count done of the stage's total
+/// and what is counted (called from worker threads, in any order).
+using DiagnosisProgress =
+    std::function<void(std::string_view stage, std::uint64_t done, std::uint64_t total, std::string_view unit)>;
+
+/// When candidate effects are fitted and ranked.
+enum class RankWhen {
+  kAlways,         ///< always (the ranking of a null file shows what fitting noise gains)
+  kIfSignificant,  ///< only when there is a significant unmodelled gap
+  kNever,          ///< never: the gap, its significance and where it lies only (screening)
+};
 
 struct DiagnosisOptions {
   UncertaintyModel prior;           ///< Table 3.1 unless overridden
@@ -50,7 +64,15 @@ struct DiagnosisOptions {
   /// each candidate's held-out shrink is measured as the reference of its
   /// shrink on the records (CandidateResult::null_shrink); 0: not measured.
   int null_shrink_files = 3;
+  RankWhen rank = RankWhen::kAlways;
+  DiagnosisProgress progress;  ///< may be empty
 };
+
+/// Calls options.progress when it is set.
+inline void report_progress(const DiagnosisOptions& options, std::string_view stage, std::uint64_t done,
+                            std::uint64_t total, std::string_view unit) {
+  if (options.progress) options.progress(stage, done, total, unit);
+}
 
 struct GroupResult {
   bool coherent = false;   ///< a coherent group (what all runs share), else a scatter group

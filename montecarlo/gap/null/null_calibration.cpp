@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <atomic>
 #include <optional>
 
 #include "lib/common/assert.h"
@@ -26,7 +27,10 @@ Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& 
                            p.site.nav_start_s};
   std::vector<gap::RunData> sim(static_cast<std::size_t>(runs));
   std::vector<gap::SchemeEstimates> estimates(static_cast<std::size_t>(runs));
+  std::atomic<std::uint64_t> simulated{0};
+  const auto total = static_cast<std::uint64_t>(runs);
   tbb::parallel_for(0, runs, [&](int j) {
+    report_progress(options, "null calibration", simulated++, total, "truth runs");
     const RecordRun& pattern = file.runs[static_cast<std::size_t>(j) % file.runs.size()];
     RecordFile one;
     one.header = file.header;

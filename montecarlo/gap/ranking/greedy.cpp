@@ -27,7 +27,8 @@ void rank_and_select(Diagnosis& d, const PreparedRuns& p, const Null& null, cons
   d.heldout_gap_before = d.gap;
   double before = d.gap;
   for (int step = 0; step < std::max(1, options.max_selected); ++step) {
-    const std::vector<Scored> ranked = rank_candidates(p, selected, taken, null.calibration, options.seed);
+    const std::vector<Scored> ranked = rank_candidates(p, selected, taken, null.calibration, options,
+                                                       fmt::format("candidates, step {}", step + 1));
     if (ranked.empty()) break;
     if (step == 0) record_ranking(d, ranked, p, null, options, before);
     if (!d.significant) break;

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -55,15 +56,17 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
 
 std::vector<Scored> rank_candidates(const PreparedRuns& p, const std::vector<std::vector<gap::Extension>>& selected,
                                     const std::vector<std::string>& exclude, const gap::NullCalibration& m0,
-                                    std::uint64_t seed) {
+                                    const DiagnosisOptions& options, std::string_view stage) {
   const auto& registry = gap::candidate_registry();
   std::vector<Scored> scored(registry.size());
   std::vector<bool> used(registry.size(), false);
+  std::atomic<std::uint64_t> done{0};
   tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
     if (std::find(exclude.begin(), exclude.end(), registry[c].name) != exclude.end()) return;
-    scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected, m0), p.runs.size(), m0, seed);
+    scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected, m0), p.runs.size(), m0, options.seed);
     scored[c].candidate = static_cast<int>(c);
     used[c] = true;
+    report_progress(options, stage, ++done, registry.size() - exclude.size(), "candidates");
   });
   std::vector<Scored> out;
   for (std::size_t c = 0; c < registry.size(); ++c)
@@ -72,10 +75,13 @@ std::vector<Scored> rank_candidates(const PreparedRuns& p, const std::vector<std
   return out;
 }
 
-std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, int files, const gap::NullCalibration& m0) {
+std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, const gap::NullCalibration& m0,
+                                 const DiagnosisOptions& options) {
   const auto& registry = gap::candidate_registry();
   const std::size_t n = p.runs.size();
-  files = std::min(files, static_cast<int>(null.runs.size() / std::max<std::size_t>(n, 1)));
+  const int files = std::min(options.null_shrink_files, static_cast<int>(null.runs.size() / std::max<std::size_t>(n, 1)));
+  std::atomic<std::uint64_t> done{0};
+  const auto total = static_cast<std::uint64_t>(files) * registry.size();
   std::vector<std::vector<double>> per(registry.size());
   const std::vector<std::vector<gap::Extension>> none(p.layouts.size());
   for (int f = 0; f < files; ++f) {
@@ -91,6 +97,7 @@ std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, int fi
     tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
       const gap::RunSet held = heldout_set(evaluate_candidate(q, registry[c], none, m0), n, m0);
       shrink[c] = before > 0 ? 1.0 - gap::gap_value(held, all_runs(n), m0) / before : 0.0;
+      report_progress(options, "candidates on null files", ++done, total, "fits");
     });
     for (std::size_t c = 0; c < registry.size(); ++c) per[c].push_back(shrink[c]);
   }
@@ -113,7 +120,7 @@ void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const Prepa
   }
   d.top = d.ranking.front().effect;
   if (options.null_shrink_files > 0) {
-    const std::vector<double> reference = null_shrinks(p, null, options.null_shrink_files, null.calibration);
+    const std::vector<double> reference = null_shrinks(p, null, null.calibration, options);
     for (std::size_t i = 0; i < ranked.size(); ++i)
       d.ranking[i].null_shrink = reference[static_cast<std::size_t>(ranked[i].candidate)];
   }

@@ -5,6 +5,7 @@
 /// the records.
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "montecarlo/gap/diagnosis.h"
@@ -25,14 +26,15 @@ struct Scored {
 /// layout), scored; ascending held-out gap (registry order among equals).
 std::vector<Scored> rank_candidates(const PreparedRuns& p, const std::vector<std::vector<gap::Extension>>& selected,
                                     const std::vector<std::string>& exclude, const gap::NullCalibration& m0,
-                                    std::uint64_t seed);
+                                    const DiagnosisOptions& options, std::string_view stage);
 
 /// Each candidate's held-out shrink on `files` null files of the records'
 /// size (consecutive runs of the null calibration, split and fitted as the
 /// records are), the median over the files: what fitting the candidate
 /// gains on noise alone, the reference its shrink on the records is read
 /// against. NaN for a candidate excluded.
-std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, int files, const gap::NullCalibration& m0);
+std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, const gap::NullCalibration& m0,
+                                 const DiagnosisOptions& options);
 
 /// The first ranking into d: every candidate's result, the top one (a class
 /// "a|b" when the runner-up is within two resampling standard errors) and

@@ -1,6 +1,7 @@
 #include "montecarlo/gap/validation/validation.h"
 
 #include <algorithm>
+#include <atomic>
 #include <boost/math/distributions/binomial.hpp>
 #include <cmath>
 #include <fmt/format.h>
@@ -116,6 +117,9 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
   d.alpha = options.alpha;
   d.max_selected = 1;
   d.null_shrink_files = 0;  // the study scores the shrink itself; the reference is for people reading a report
+  // Only a significant file is scored by its ranking (identified, shrink,
+  // fitted / true): a file without a gap is not ranked.
+  d.rank = RankWhen::kIfSignificant;
   const double model_pulse = TruthOptions{}.dv_pulse_mps;
   // Every file of the study, in report order: null data (the model itself,
   // with its pulses), then each effect by magnitude and seed. A file's data
@@ -144,6 +148,7 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
   for (const Job& job : jobs)
     if (job.spec) validate_effect(*job.spec, fmt::format("--magnitudes {:g} x", job.magnitude));
   result.cases.resize(jobs.size());
+  std::atomic<std::uint64_t> diagnosed{0};
   tbb::parallel_for(std::size_t{0}, jobs.size(), [&](std::size_t j) {
     const Job& job = jobs[j];
     std::vector<EffectSpec> effects;
@@ -166,6 +171,7 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
       }
     }
     result.cases[j] = c;
+    if (options.progress) options.progress("gap-validate", ++diagnosed, jobs.size(), "files");
   });
   for (const ValidationCase& c : result.cases) {
     if (c.effect != "none") continue;

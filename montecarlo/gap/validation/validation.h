@@ -24,6 +24,7 @@ struct ValidationOptions {
   /// file's seed depends only on (seed, effect, magnitude, file), so a
   /// subset reproduces the full study's files.
   std::vector<std::string> effects;
+  DiagnosisProgress progress;  ///< files diagnosed; may be empty
   /// The quick CI subset: 10-run files, one dominant magnitude (30x), one seed, 4 null files.
   static ValidationOptions quick_subset();
 };
