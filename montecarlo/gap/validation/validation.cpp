@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <boost/math/distributions/binomial.hpp>
 #include <cmath>
 #include <fmt/format.h>
@@ -153,8 +154,11 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
     const Job& job = jobs[j];
     std::vector<EffectSpec> effects;
     if (job.spec) effects.push_back(*job.spec);
-    const Diagnosis g = diagnose(simulate_file(effects, job.file_seed, options.runs_per_file), d);
+    const RecordFile records = simulate_file(effects, job.file_seed, options.runs_per_file);
+    const auto start = std::chrono::steady_clock::now();
+    const Diagnosis g = diagnose(records, d);
     ValidationCase c{job.effect, job.magnitude, job.seed, g.significant, g.top, false, 0.0, 0.0, g.gap, g.p_value};
+    c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!job.spec) {
       c.top = g.significant ? g.top : "";
       c.identified = !g.significant;
@@ -173,6 +177,12 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
     result.cases[j] = c;
     if (options.progress) options.progress("gap-validate", ++diagnosed, jobs.size(), "files");
   });
+  std::vector<double> seconds;
+  for (const ValidationCase& c : result.cases) seconds.push_back(c.seconds);
+  if (!seconds.empty()) {
+    result.median_seconds = median(seconds);
+    result.max_seconds = *std::max_element(seconds.begin(), seconds.end());
+  }
   for (const ValidationCase& c : result.cases) {
     if (c.effect != "none") continue;
     result.null_files++;
@@ -272,10 +282,11 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
                     fmt::format("{}/{}", s.identified_anywhere, s.significant_cases),
                     s.detection_threshold > 0 ? fmt::format("{}", s.detection_threshold) : "not reached",
                     s.median_recovered_ratio > 0 ? fmt::format("{:.2f}", s.median_recovered_ratio) : "-"});
-  Table cases({"effect", "magnitude", "seed", "G", "p", "top", "identified", "shrink"});
+  Table cases({"effect", "magnitude", "seed", "G", "p", "top", "identified", "shrink", "s"});
   for (const ValidationCase& c : r.cases)
     cases.add_row({c.effect, fmt::format("{}", c.magnitude), std::to_string(c.seed), fmt::format("{:.3g}", c.gap),
-                   fmt::format("{:.3g}", c.p_value), c.top, c.identified ? "yes" : "no", fmt::format("{:.2f}", c.shrink)});
+                   fmt::format("{:.3g}", c.p_value), c.top, c.identified ? "yes" : "no", fmt::format("{:.2f}", c.shrink),
+                   fmt::format("{:.1f}", c.seconds)});
   std::string md = fmt::format(
       "# Gap diagnosis validation on withheld effects{}\n\n"
       "Records from the truth simulator ({} runs per file, system 1, 45°, 15 min test + 90 min), one effect at a "
@@ -284,10 +295,11 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
       "Null data (the model itself, with its 0.1 ft/s pulses): {} false alarm(s) in {} files (alpha = {}; rate 95 % "
       "interval {:.2g}–{:.2g}, binomial p of so many at alpha {:.2g}).\n\n"
       "Median held-out shrink over the detected files (significant files at magnitudes where the effect is detectable: more "
-      "than half of that magnitude's files significant): {:.2f}.\n\n## Per effect\n\n{}\n## Confusion "
+      "than half of that magnitude's files significant): {:.2f}.\n\nDiagnosis time per file (wall, null calibration "
+      "included; the study diagnoses files side by side on every core): median {:.1f} s, max {:.1f} s.\n\n## Per effect\n\n{}\n## Confusion "
       "(rows: true effect; columns: the diagnosis' top effect or class)\n\n{}\n## Every file\n\n{}\n## Targets\n\n",
       options.quick ? " (quick subset)" : "", options.runs_per_file, fmt::join(options.magnitudes, ", "), options.seeds,
-      r.false_alarms, r.null_files, options.alpha, r.false_alarm_low, r.false_alarm_high, r.false_alarm_p, r.median_shrink, render_markdown(scores), render_markdown(confusion),
+      r.false_alarms, r.null_files, options.alpha, r.false_alarm_low, r.false_alarm_high, r.false_alarm_p, r.median_shrink, r.median_seconds, r.max_seconds, render_markdown(scores), render_markdown(confusion),
       render_markdown(cases));
   for (const std::string& e : r.undetectable)
     md += fmt::format("- {}: not detectable at the magnitudes tried ({} x its defaults): no magnitude has more than "
@@ -304,6 +316,8 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
   j["false_alarm_rate_ci95"] = ci;
   j["false_alarm_binomial_p"] = r.false_alarm_p;
   j["median_shrink"] = r.median_shrink;
+  j["diagnosis_seconds_median"] = r.median_seconds;
+  j["diagnosis_seconds_max"] = r.max_seconds;
   Json s = Json::array();
   for (const EffectScore& e : r.scores) {
     Json o = Json::object();

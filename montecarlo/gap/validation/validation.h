@@ -40,6 +40,7 @@ struct ValidationCase {
   double shrink = 0;       ///< of the top candidate on held-out runs
   double recovered_ratio = 0;  ///< fitted / true of the magnitude parameter (0: not comparable)
   double gap = 0, p_value = 1;
+  double seconds = 0;      ///< wall time of the diagnosis (null calibration included)
 };
 
 /// The targets are judged at the magnitudes where the effect is detectable:
@@ -65,6 +66,7 @@ struct ValidationResult {
   double false_alarm_p = 1.0;                         ///< P(≥ false_alarms | null_files, alpha)
   double false_alarm_low = 0, false_alarm_high = 1;   ///< Clopper–Pearson 95 % interval of the rate
   double median_shrink = 0;             ///< over the detected files of every effect
+  double median_seconds = 0, max_seconds = 0;  ///< wall time per file's diagnosis
   std::vector<std::string> failures;    ///< targets not met, one line each
   std::vector<std::string> undetectable;  ///< effects no magnitude tried makes detectable
 };
