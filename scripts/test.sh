@@ -35,7 +35,7 @@ bash scripts/build.sh build/sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DINSMC_W
 # code they drive runs under the sanitizers in the gap unit tests and the
 # short Gap.* cases) and the output sets' kill and two-writer tests
 # (file-system behaviour repeated many times, no code path of their own).
-sanitizer_skip='^(GapValidate[.]|GapLinearNull[.]|Outputs[.](ASigkill|OfTwoRuns)'
+sanitizer_skip='^(GapValidate[.]|GapLinearNull[.]|GapImportedNull[.]|Outputs[.](ASigkill|OfTwoRuns)'
 sanitizer_skip+='|Gap[.](FilterWindows|RecordsAfterEachKind|AnEffectAfterAScheme|RecordsOfOtherSoftware|AWithheld|RecordsOfTheModelItself))'
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 run_suite build/sanitize 1800 -E "$sanitizer_skip"
 
