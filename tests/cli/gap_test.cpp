@@ -137,6 +137,22 @@ TEST(Gap, TooFewRunsGiveAStatementNotARanking) {
   EXPECT_TRUE(has(r.out, "too few to fit candidate effects")) << r.out;
 }
 
+TEST(Gap, ScreeningWithoutCandidatesGivesTheSameGap) {
+  // --rank never: the gap, its significance and where it lies, without the
+  // candidate search; the same numbers as the whole diagnosis.
+  TempDir dir;
+  const std::string records = simulate(dir, "screen.csv", "--seed 16 --effect sway:accel_rms=20mg", 6);
+  const auto whole = run_insmc("gap --records " + records + " --format json --max-effects 1");
+  const auto screen = run_insmc("gap --records " + records + " --format json --rank never");
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  ASSERT_EQ(screen.exit_code, 0) << screen.err;
+  EXPECT_TRUE(has(whole.out, "\"ranked\": true")) << whole.out.substr(0, 300);
+  EXPECT_TRUE(has(screen.out, "\"ranked\": false")) << screen.out.substr(0, 300);
+  EXPECT_TRUE(has(screen.out, "candidate effects not fitted (--rank)")) << screen.out;
+  const auto gap_object = [](const std::string& json) { return json.substr(json.find("\"gap\": {"), 400); };
+  EXPECT_EQ(gap_object(screen.out), gap_object(whole.out));
+}
+
 TEST(Gap, RecordsAfterEachKindOfSchemeOfTheModelItselfShowNoSignificantGap) {
   // The navigation after a scheme follows the scheme's maps, with each run's
   // estimates recomputed from its own test rows: records of the model itself
@@ -199,7 +215,8 @@ TEST(Gap, BadInputIsRefusedWithOneLine) {
        {"gap --records " + bad + " --out " + out, "gap --records /no/such/file.csv --out " + out,
         "gap --records " + good + " --alpha 2 --out " + out, "gap --out " + out,
         "gap --records " + good + " --format csv --out " + out, "gap --records " + scheme + " --out " + out,
-        "gap --records " + good + " --bound nonsense=1 --out " + out}) {
+        "gap --records " + good + " --bound nonsense=1 --out " + out,
+        "gap --records " + good + " --rank sometimes --out " + out}) {
     const auto r = run_insmc(args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_EQ(line_count(r.err), 1) << args << "\n" << r.err;
