@@ -1,5 +1,5 @@
-// insmc gap: the sim-to-real gap diagnosis of record files (DESIGN.md §3,
-// issue 7): the gap and its significance, where it lies, which candidate
+// insmc gap: the sim-to-real gap diagnosis of record files (docs/records.md,
+// docs/gap.md): the gap and its significance, where it lies, which candidate
 // effect removes it on held-out runs, and how far it shrinks.
 #include <fmt/format.h>
 

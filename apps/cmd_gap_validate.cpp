@@ -1,5 +1,5 @@
 // insmc gap-validate: the gap diagnosis run blind on truth-level records with
-// withheld effects (issue 7); exit 0 when every target holds, 1 when one
+// withheld effects (docs/gap.md); exit 0 when every target holds, 1 when one
 // fails (named on stderr), 2 for bad input.
 #include <charconv>
 #include <fmt/format.h>

@@ -1,8 +1,9 @@
-// insmc import-imu: raw IMU samples (CSV) → records of format v1 (DESIGN.md
-// §3, issue 7). A strapdown computer in the inertial frame on a stationary
-// base stands in for the space-stabilized platform (lib/imu/strapdown.h):
-// leveling from the accelerometers, azimuth and latitude from the user,
-// gyro bias from the alignment window, then test run and navigation.
+// insmc import-imu: raw IMU samples (CSV) → records of format v1
+// (docs/records.md, docs/real-data/import.md). A strapdown computer in the
+// inertial frame on a stationary base stands in for the space-stabilized
+// platform (lib/imu/strapdown.h): leveling from the accelerometers, azimuth
+// and latitude from the user, gyro bias from the alignment window, then test
+// run and navigation.
 #include <cmath>
 #include <fmt/format.h>
 #include <sstream>
@@ -179,7 +180,7 @@ int run_import_imu(const Args& args) {
         RecordRow row;
         row.run = run_id;
         row.t_s = r.t_s[k];
-        row.phase = r.t_s[k] <= T ? Phase::kTest : Phase::kNav;  // (DESIGN.md §3: test for 0 ≤ t ≤ T)
+        row.phase = r.t_s[k] <= T ? Phase::kTest : Phase::kNav;  // (docs/records.md: test for 0 ≤ t ≤ T)
         for (int c = 0; c < 3; ++c)
           if (std::isfinite(r.accel_error_ap_mps2[k][c])) row.f_mps2[c] = r.accel_error_ap_mps2[k][c];
         row.r_ap_m = r.position_error_ap_m[k];

@@ -1,4 +1,4 @@
-// insmc simulate: truth-level records (record format v1, DESIGN.md §3) of
+// insmc simulate: truth-level records (record format v1, docs/records.md) of
 // runs on a stationary base: switch-over, test run, navigation, with chosen
 // named effects. Runs are deterministic per (seed, run).
 #include <cmath>

@@ -464,7 +464,7 @@ std::vector<MemberFn> table_3_1_members(const std::string& row, const ModelOptio
   auto one = [&b](std::string label, std::vector<int> columns) {
     return MemberFn{std::move(label), [b, columns](double) {
                       double v = 0.0;
-                      for (int c : columns) v += b[c];  // ζ = ζ_c + ζ_r, ∂f = ∂f_c + ∂f_r (DESIGN.md §1)
+                      for (int c : columns) v += b[c];  // ζ = ζ_c + ζ_r, ∂f = ∂f_c + ∂f_r (catalogue.cpp)
                       return v;
                     }};
   };

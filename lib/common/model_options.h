@@ -18,8 +18,9 @@ struct ModelOptions {
   /// (the tilt it leaves, ω_ie/F(0), is no longer small), and above 1e5 the
   /// loop is faster than the 10 s filter that shapes it.
   static constexpr double kMinLevelingGainRatio = 10.0, kMaxLevelingGainRatio = 1e5;
-  /// F_T(0)/ω_ie of the system-1 theodolite azimuth loop; +inf (the default,
-  /// DESIGN.md §1) makes ψ_ωz(1) = ω_doz/F_T(0) vanish. > 0.
+  /// F_T(0)/ω_ie of the system-1 theodolite azimuth loop; +inf (the default:
+  /// §2.1 calls F_T(0) large and gives it no value) makes ψ_ωz(1) =
+  /// ω_doz/F_T(0) vanish. > 0.
   double azimuth_gain_ratio = std::numeric_limits<double>::infinity();
   /// F_2(0)/ω_ie of the system-2 low-pass y loop (§2.2). F_1 and F_3 are
   /// proportional-plus-integral (infinite DC gain), which gives (2.16). > 0.

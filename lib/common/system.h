@@ -1,6 +1,7 @@
 #pragma once
 /// The two alignment concepts of the report (chapter 2), and the fidelity
-/// levels of DESIGN.md §2, each with its one to_string/parse pair.
+/// levels (`--fidelity paper|linear|truth`, docs/truth-vs-models.md), each
+/// with its one to_string/parse pair.
 #include <string>
 #include <string_view>
 

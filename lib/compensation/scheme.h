@@ -1,6 +1,6 @@
 #pragma once
-/// The compensation schemes of chapter 5 (DESIGN.md §1 item 5), each with
-/// the clock its results are reported on (item 6).
+/// The compensation schemes of chapter 5, each with the clock its results
+/// are reported on (clock_of).
 #include <string_view>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
 /// The compensation schemes of chapter 5 acting on the truth simulator
-/// (issue 6) through the same injection points of fig. 5.1 as
+/// (docs/truth-vs-models.md) through the same injection points of fig. 5.1 as
 /// compensation_maps.h uses on the linear model:
 ///   * the test run is a truth run; its data are what the instruments give
 ///     (ΔV pulses through the filter box, the position computer at its

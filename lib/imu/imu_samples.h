@@ -2,7 +2,7 @@
 /// Raw IMU samples from a CSV file: three gyro and three accelerometer
 /// columns in the sensor (body) frame b, in units the user declares, sampled
 /// at a declared rate or stamped by a time column. The first step of the
-/// path from real data to records (`insmc import-imu`, issue 7).
+/// path from real data to records (`insmc import-imu`, docs/real-data/import.md).
 ///
 /// Sample convention: sample k holds the gyro rate ω_ib^b and the specific
 /// force f^b over [t_k, t_{k+1}) (a zero-order hold from its time stamp; the

@@ -1,7 +1,7 @@
 #pragma once
 /// A strapdown navigation computer in the inertial frame, on a stationary
 /// base, fed by raw IMU samples (lib/imu/imu_samples.h): the path from real
-/// data to records of format v1 (DESIGN.md §3, issue 7).
+/// data to records of format v1 (docs/records.md, docs/real-data/import.md).
 ///
 /// Why it behaves as the report's space-stabilized platform: the computer
 /// keeps the attitude C_b^â of the sensor body b relative to a virtual

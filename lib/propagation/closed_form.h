@@ -22,7 +22,7 @@ struct ClosedFormCoefficients {
 
 /// Which reading of (3.27) to use.
 enum class Form327 {
-  kPrinted,    ///< as transcribed, slips of TRANSCRIPTION-NOTES fixed
+  kPrinted,    ///< as transcribed, transcription slips fixed (errata.md#transcription-slips)
   kCorrected,  ///< K6 terms re-derived (errata.md#3-27): the printed
                ///< ε(K6 − K7) sin φ and −(ω_ie/ω_s)³K6(φ − sin φ) read
                ///< −ε(3K6 + K7) sin φ and −εK6(φ − sin φ)

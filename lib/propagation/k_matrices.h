@@ -1,6 +1,6 @@
 #pragma once
 /// The uncertainty matrices K1..K11 of (3.25a–k) as printed (transcription
-/// slips fixed, paper/TRANSCRIPTION-NOTES.md), each a 3×kDim map in the a'
+/// slips fixed, tables/notes/errata.md#transcription-slips), each a 3×kDim map in the a'
 /// frame, dimensionless (the forcing of (3.25) is C_a'^i g Σ K_j f_j(t)).
 ///
 /// Known error of the original kept here on purpose (the `paper` level):

@@ -16,7 +16,8 @@ std::vector<Sensitivity3> position_maps(System system, Fidelity fidelity, const 
                                         const std::vector<double>& times_s);
 
 /// Rows (north, east) of C_{a'}^{n}(t) = (I + B(t))ᵀ: the local-level
-/// horizontal components of an a' vector at time t (DESIGN.md §1 item 6).
+/// horizontal components of an a' vector at time t (`horizontal` outputs are
+/// the north–east magnitude in the local-level frame).
 Eigen::Matrix<double, 2, 3> local_level_horizontal(double t_s, const ModelOptions& options);
 
 }  // namespace insmc

@@ -1,6 +1,6 @@
 #pragma once
 /// Records of real or simulated runs in memory: the content of a record file
-/// of format v1 (DESIGN.md §3 "Record format v1"). One run = one alignment,
+/// of format v1 (docs/records.md). One run = one alignment,
 /// its test run and its navigation on a stationary base. Reading and writing
 /// the CSV text is in lib/records/record_io.h.
 #include <Eigen/Core>

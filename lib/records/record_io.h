@@ -1,5 +1,5 @@
 #pragma once
-/// Reading and writing record files of format v1 (DESIGN.md §3): CSV in SI
+/// Reading and writing record files of format v1 (docs/records.md): CSV in SI
 /// units after a `# insmc-record v1` line and `# key=value` header lines.
 ///
 /// The reader is strict about content and lenient about form: it accepts

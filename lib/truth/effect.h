@@ -1,5 +1,5 @@
 #pragma once
-/// The truth simulator's named effects (DESIGN.md §3, issue 6): physical
+/// The truth simulator's named effects (docs/truth-vs-models.md): physical
 /// behaviour the report's model does not have, each with a name, parameters
 /// with units and defaults, and a one-line description. `insmc effects` lists
 /// the registry; `--effect NAME[:param=value,...]` selects one (values with

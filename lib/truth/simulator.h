@@ -1,5 +1,5 @@
 #pragma once
-/// The `truth` fidelity level (DESIGN.md §2, issue 6): a nonlinear simulation
+/// The `truth` fidelity level (docs/truth-vs-models.md): a nonlinear simulation
 /// of the space-stabilized INS of the report on a stationary base, making none
 /// of the report's approximations. It stands in for the real system and is the
 /// data source of the sim-to-real gap diagnosis.
@@ -97,7 +97,8 @@ struct TruthOptions {
   ModelOptions model;
   /// Alignment concept (chapter 2).
   System system = System::kTheodolite;
-  /// ΔV pulse weight [m/s] (DESIGN.md §3; the report's 0.1 ft/s); 0 = a
+  /// ΔV pulse weight [m/s] (the records' dv_pulse_mps, docs/records.md; the
+  /// report's 0.1 ft/s); 0 = a
   /// continuous accelerometer output. ≥ 0. The quantization effect overrides it.
   double dv_pulse_mps = 0.1 * kFtpsToMps;
   /// τ, the filter-box interval of the accelerometer data (fig. 5.2) [s]; > 0.

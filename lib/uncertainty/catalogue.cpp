@@ -10,7 +10,8 @@ namespace {
 using D = Dimension;
 constexpr Applies kBoth = Applies::kBoth;
 
-// Table 3.1, with the DESIGN.md §1 defaults where the paper leaves a choice:
+// Table 3.1, with these defaults where the paper leaves a choice (it bounds ζ
+// and ∂f only as a whole):
 // ζ = ζ_c + ζ_r and ∂f = ∂f_c + ∂f_r are each split half and half, each part
 // bounded by half the Table 3.1 bound.
 constexpr double kMg = kMgToMps2;

@@ -1,6 +1,6 @@
 #pragma once
 /// The uncertainty catalogue: every parameter of Table 3.1 and chapter 2, one
-/// entry per scalar, with its name (DESIGN.md §1), the paper's symbol, its
+/// entry per scalar, with its name (as `insmc params` lists it), the paper's symbol, its
 /// dimension (SI inside), its default bound, the systems it applies to and
 /// whether it is drawn anew at each alignment. The single source of truth for
 /// the sampler, the --bound/--dist options, `insmc params`, the error budget
@@ -26,7 +26,7 @@ struct UncertaintySpec {
   std::string_view symbol;       ///< the paper's symbol, e.g. "ω_dox"
   int index;                     ///< slot in UncertaintyVector (ux::)
   Dimension dimension;           ///< SI unit family
-  double default_bound_si;       ///< Table 3.1 bound (or DESIGN.md §1 split)
+  double default_bound_si;       ///< Table 3.1 bound (or its half: ζ, ∂f split, catalogue.cpp)
   std::string_view paper_unit;   ///< unit the paper states the bound in
   Applies applies;               ///< system(s) it acts in
   bool per_alignment;            ///< drawn anew at every alignment (ζ_r, ∂f_r)

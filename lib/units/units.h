@@ -6,7 +6,7 @@
 /// n.mi.) appear only at the edges (apps/, tables/, montecarlo/write/), via the
 /// constants below, each named by both of its units.
 ///
-/// Constants the report does not print (paper/TRANSCRIPTION-NOTES.md):
+/// Constants the report does not print (tables/notes/errata.md#transcription-slips):
 /// ω_ie = 7.292115e-5 rad/s, g = 32.174 ft/s² = 9.80665 m/s², r0 = 20.9e6 ft,
 /// giving a Schuler period of 84.4 min.
 #include <cmath>

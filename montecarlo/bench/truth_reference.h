@@ -7,7 +7,7 @@
 /// stops, same pulse-remainder integral — but no options validation, no
 /// effects registry, no std::function or virtual calls, and everything that
 /// does not depend on the sample computed once. It is the floor the `truth`
-/// path is timed against (issue 8: truth within 2× of it) and nothing else:
+/// path is timed against (docs/performance.md: truth within 2× of it) and nothing else:
 /// the library's simulator remains the truth level.
 #include <vector>
 

@@ -1,5 +1,6 @@
 #pragma once
-/// `insmc gap`: the sim-to-real gap diagnosis (DESIGN.md §3, issue 7).
+/// `insmc gap`: the sim-to-real gap diagnosis of record files (docs/gap.md,
+/// docs/records.md).
 ///
 /// 1. Model: each run's f and r rows as the linear level predicts them
 ///    (model/), the test run fitted, the navigation predicted from the fit.

@@ -81,7 +81,7 @@ void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const 
   double phases[kPhaseDraws];
   // The observations of the block, in per-thread buffers kept across calls:
   // with a fresh 2 MB temporary per product, half of a paper run's time went
-  // to page faults and zeroing of the new memory (perf, issue 8).
+  // to page faults and zeroing of the new memory (perf, docs/performance.md).
   thread_local Eigen::MatrixXd vel_buffer, pos_buffer, r0_buffer;
   const auto product = [&](Eigen::MatrixXd& buffer, const auto& map) {
     if (buffer.rows() != map.rows() || buffer.cols() < ni)

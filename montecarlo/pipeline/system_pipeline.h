@@ -1,5 +1,5 @@
 #pragma once
-/// What one sample goes through for one alignment system (DESIGN.md §1):
+/// What one sample goes through for one alignment system:
 /// the fresh per-alignment draws of a realignment, the preflight test run
 /// (ΔV pulse counts through the filter box, the position computer at its
 /// resolution, optional sway), the least-squares fits, and the

@@ -1,5 +1,5 @@
 #pragma once
-/// Counter-based random numbers for insmc (STYLE convention 7).
+/// Counter-based random numbers for insmc.
 ///
 /// Every random number drawn for a Monte Carlo sample is a pure function of
 /// (seed, stream purpose, sample index, draw number), so a sample can be

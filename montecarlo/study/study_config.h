@@ -1,6 +1,6 @@
 #pragma once
 /// Everything that defines a Monte Carlo study, with defaults, units and the
-/// validator that checks every constraint (STYLE.md §5).
+/// validator that checks every constraint (docs/robustness.md lists them).
 #include <cstdint>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
 /// A small table of strings (header row + rows) and its CSV rendering.
-/// Column names follow STYLE convention 3 (unit in the name: `rms_m`).
+/// Column names carry their unit (`rms_m`).
 /// The same `Table` is rendered as Markdown by montecarlo/write/markdown.h.
 #include <string>
 #include <vector>

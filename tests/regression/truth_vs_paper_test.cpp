@@ -1,5 +1,5 @@
 // The truth simulator against the report's short-run form (3.29) — the
-// `paper` level — term by term (issue 6): each uncertainty alone at its
+// `paper` level — term by term (docs/truth-vs-models.md): each uncertainty alone at its
 // Table 3.1 bound, t = 1..90 min, continuous outputs, the truth by its odd
 // part (r(x) − r(−x))/2 (first order; the even, second-order part is
 // measured in tests/unit/lib/truth). The report keeps a term when it gives

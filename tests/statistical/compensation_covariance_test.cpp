@@ -1,7 +1,8 @@
 // Statistical test: with continuous outputs the Monte Carlo RMS² of every
 // compensation scheme agrees with the linear-covariance prediction
-// (STYLE.md §10), and with the ΔV pulses and the position resolution on,
-// the Monte Carlo–covariance difference is measured and printed.
+// (fixed seeds, bounds derived from the distribution), and with the ΔV
+// pulses and the position resolution on, the Monte Carlo–covariance
+// difference is measured and printed.
 //
 // Part 1, the check. Studies with --dv-pulse 0, position resolution 0,
 // torquer pulse 0 (5.4's command counter) and sway off, for each fidelity

@@ -1,5 +1,6 @@
 // Statistical test: the Monte Carlo RMS² of every output agrees with the
-// exact linear covariance (STYLE.md §10, the central test).
+// exact linear covariance (the central test: fixed seeds, bounds derived from
+// the distribution).
 //
 // Statistic: for each output (system 1 and 2 × report times 42/63/84 min ×
 // axes x, y, z, horizontal), the Monte Carlo mean of r² over n = 1e5

@@ -1,5 +1,5 @@
 // Statistical test: the coverage of the run's RMS confidence interval
-// (STYLE.md §9: [rms_lo, rms_hi], the delta method with the fourth moment,
+// ([rms_lo, rms_hi]: the delta method with the fourth moment,
 // 95%), over many independent runs of a small study.
 //
 // Statistic: X, the number of the kRuns runs (seeds kFirstSeed ...

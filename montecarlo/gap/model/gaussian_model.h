@@ -1,6 +1,6 @@
 #pragma once
 /// The model of one run's observations as the diagnosis sees it: linear in
-/// its causes with known second moments (the linear level, issue 7),
+/// its causes with known second moments (the linear level, docs/gap.md),
 ///   y = μ + H c + e,  c ~ (0, diag(prior_var)),  e ~ (0, diag(noise_var)),
 /// c = (x, effect coefficients): the first 33 columns are the uncertainties of
 /// Table 3.1 (priors overridable), further columns come from candidate
@@ -36,7 +36,7 @@ struct GaussianModel {
 /// the truth's first-order terms the linear level takes with g instead of the
 /// site's g_s (0.17 % at 45°) and its second-order terms (docs/truth-vs-models.md).
 inline constexpr double kRelativeModelError = 0.003;
-/// Absolute model-error floor of r rows [m] (issue 6: truth and linear agree
+/// Absolute model-error floor of r rows [m] (docs/truth-vs-models.md: truth and linear agree
 /// within 1 % + 1 m).
 inline constexpr double kAbsoluteModelErrorM = 1.0;
 /// Floor of the f noise [m/s²] (≈ 0.1 µg) so that a continuous output

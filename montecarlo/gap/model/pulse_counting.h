@@ -1,6 +1,6 @@
 #pragma once
-/// What ΔV pulse counting does to a run's observations (DESIGN.md §1 item 3;
-/// the truth level's counters, simulator.h), as the gap diagnosis models it.
+/// What ΔV pulse counting does to a run's observations (the truth level's
+/// counters, simulator.h), as the gap diagnosis models it.
 ///
 /// An accelerometer whose velocity increments are counted in pulses of w
 /// (remainder carried, rounding at ±w/2, initial content the pulse phase ρ0 w)

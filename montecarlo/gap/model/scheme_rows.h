@@ -1,5 +1,5 @@
 #pragma once
-/// Records after a compensation scheme (DESIGN.md §3: the header's scheme):
+/// Records after a compensation scheme (docs/records.md: the header's scheme):
 /// what the diagnosis' run model takes from chapter 5.
 ///
 /// The scheme's position maps (compensation_maps.h, linear level) give each

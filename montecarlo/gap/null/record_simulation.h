@@ -1,5 +1,5 @@
 #pragma once
-/// Truth-level runs as records (DESIGN.md §3): what `insmc simulate` writes,
+/// Truth-level runs as records (docs/records.md): what `insmc simulate` writes,
 /// and the null data the gap diagnosis calibrates against. Run `run` of
 /// `seed` is a pure function of (seed, run): x from the sampler's stream,
 /// the pulse phase from its own stream, the effects' noise from theirs.

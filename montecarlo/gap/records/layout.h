@@ -1,5 +1,5 @@
 #pragma once
-/// What the gap diagnosis (DESIGN.md §3, issue 7) takes from a record file:
+/// What the gap diagnosis (docs/gap.md) takes from a record file (docs/records.md):
 /// per run, the observations it compares with the model, in the order the
 /// model's rows are built (test rows first: they are what the fit sees), and
 /// the groups by which the gap is reported (axis × stage × time window).
@@ -52,7 +52,7 @@ struct ObservationRow {
 };
 
 /// How a record's navigation rows follow its test run (the header's scheme,
-/// DESIGN.md §3).
+/// docs/records.md).
 enum class NavSegment {
   kContinue,  ///< none, 5.4: one navigation from switch-over
   kReset,     ///< 5.2, 5.3: position and velocity reset at T; instruments, platform and counters go on

@@ -1,6 +1,6 @@
 #pragma once
 /// The gap diagnosis written out: gap.json (machines) and gap.md with its
-/// SVG plots (people). Shape of the JSON: issue 7.
+/// SVG plots (people). Shape of the JSON: docs/gap.md.
 #include <string>
 #include <utility>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-/// `insmc gap-validate` (issue 7): the diagnosis run blind on truth-level
+/// `insmc gap-validate` (docs/gap.md): the diagnosis run blind on truth-level
 /// records with one named effect (or none) switched on, at several
 /// magnitudes and seeds. The data come from the truth simulator
 /// (lib/truth), never from the diagnosis' candidate models; the records are

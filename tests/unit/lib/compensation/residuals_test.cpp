@@ -3,7 +3,7 @@
 // propagates the model through the injection points of fig. 5.1 and never
 // uses a printed residual formula) and compared term by term with the
 // report's printed matrices, transcription slips fixed
-// (../shared/paper/TRANSCRIPTION-NOTES.md):
+// (tables/notes/errata.md#transcription-slips):
 //   5.1.1 (5.4), (5.4a, b);  5.1.2 (5.7), (5.7a–d);  combined (end of 5.1.2);
 //   5.2 (5.9a, b);  5.3 (5.11b);  5.4 (5.20), (5.17a–c);  none (3.29).
 // Method: perturb one uncertainty (with every estimate equal to what it

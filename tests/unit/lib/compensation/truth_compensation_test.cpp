@@ -1,5 +1,5 @@
 // Every compensation scheme at the truth level against the same scheme on the
-// linear level, run by run (issue 6): |truth − linear| ≤ 1% |linear| + 1 m
+// linear level, run by run (docs/truth-vs-models.md): |truth − linear| ≤ 1% |linear| + 1 m
 // at t = 1..90 min on the scheme's clock. The linear side is built here from
 // the linear test-run maps and compensation_maps.h (the extended vector z of
 // one sample, continuous outputs so that both levels see the same data

@@ -24,9 +24,9 @@ using testing::PerfectOutputs;
 // A perfect IMU leaves only the integrator's error: first-order rotation
 // compensation drops (ωh)²/6 ≈ 1e-11 of f at 10 Hz, quaternion round-off
 // ~1e-16 per step; both stay far below these bounds over 105 min.
-constexpr double kPerfectPositionTolM = 1.0;       // the bound
+constexpr double kPerfectPositionTolM = 1.0;       // 1 m over 105 min
 constexpr double kPerfectForceTolMps2 = 1e-8;      // 1 ng: "tiny"
-constexpr double kClosedFormRelTol = 0.01;         // the 1%
+constexpr double kClosedFormRelTol = 0.01;         // 1 % of the closed form
 
 StrapdownOptions options_for(const SyntheticSite& s) {
   StrapdownOptions o;

@@ -3,7 +3,7 @@
 // (step halving, pulse bookkeeping, determinism, cost).
 //
 // Agreement measure: for each uncertainty at its Table 3.1 bound, over
-// t = 1..90 min, |truth − linear| ≤ 1% |linear| + 1 m (issue 6). The truth is
+// t = 1..90 min, |truth − linear| ≤ 1% |linear| + 1 m (docs/truth-vs-models.md). The truth is
 // split into its odd part (x and −x: (r(x) − r(−x))/2, first order plus cubes)
 // and its even part ((r(x) + r(−x))/2, the products of uncertainties the
 // linear model drops by construction). The odd part must meet the bound for
@@ -26,7 +26,7 @@
 namespace insmc {
 namespace {
 
-constexpr double kRelativeTol = 0.01;  // issue 6: 1% of the error …
+constexpr double kRelativeTol = 0.01;  // 1% of the error …
 constexpr double kAbsoluteTolM = 1.0;  // … plus 1 m
 
 // Unoptimized builds (the ASan/UBSan job) run about a thousand times slower:
@@ -522,8 +522,8 @@ TEST(TruthSimulator, OptionsAreValidated) {
 }
 
 TEST(TruthSimulator, CostOfOneRun) {
-  // Not a gate (timing thresholds stay out of unit tests, STYLE §13): the
-  // figure for issue 6 (< 2 ms for 15 min test + 84 min flight, one core).
+  // Not a gate (timing thresholds stay out of unit tests): the figure the
+  // truth level aims at (< 2 ms for 15 min test + 84 min flight, one core).
   const std::vector<double> times = uniform_times(99.0 * 60.0, 10.0);
   const TruthOptions o;
   UncertaintyVector x = random_at_bounds(10);

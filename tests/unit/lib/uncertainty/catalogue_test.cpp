@@ -25,7 +25,7 @@ TEST(Catalogue, DefaultBoundsFollowTable31AndTheHalfSplits) {
   EXPECT_DOUBLE_EQ(b[ux::kAccelBias], 1e-3 * kGravityMps2);
   EXPECT_DOUBLE_EQ(b[ux::kGyroDrift + 2], 10 * kMeruToRadps);
   EXPECT_DOUBLE_EQ(b[ux::kGyroMuDrift], 5 * kMeruToRadps);
-  // ζ = ζ_c + ζ_r and ∂f = ∂f_c + ∂f_r split half and half (DESIGN.md §1).
+  // ζ = ζ_c + ζ_r and ∂f = ∂f_c + ∂f_r split half and half (lib/uncertainty/catalogue.cpp).
   EXPECT_DOUBLE_EQ(b[ux::kMisalignConst] + b[ux::kMisalignAlign], 1e-3);
   EXPECT_DOUBLE_EQ(b[ux::kBiasChangeConst] + b[ux::kBiasChangeAlign], 0.1 * kMgToMps2);
   EXPECT_DOUBLE_EQ(b[ux::kAltitudeError], 100.0);
