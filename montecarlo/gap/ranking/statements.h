@@ -4,7 +4,7 @@
 
 namespace insmc::mc {
 
-/// What the ranking cannot support, said plainly (issue 7: priors too narrow,
+/// What the ranking cannot support, said plainly (docs/gap.md: priors too narrow,
 /// effect not identifiable, disturbances masked).
 void honest_statements(Diagnosis& d);
 
