@@ -62,8 +62,11 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
   std::vector<std::optional<gap::RunAnalyser>> analysers;
   const Evaluated base = evaluate_under(p, [](int) { return std::vector<const gap::Extension*>{}; }, analysers);
   const gap::Pooled observed = gap::pool(base.set(p.keys), all_runs(p.runs.size()));
-  const gap::LogRatios observed_ratios = gap::log_ratios(observed, null.calibration);
+  const gap::LogRatios observed_ratios =
+      gap::log_ratios(observed, null.calibration, gap::CoherentReference::kAtLeastModelScatter);
   d.gap = gap::gap_value(observed_ratios);
+  // The baseline of the candidates' held-out shrink, read as they are.
+  d.heldout_gap_before = gap::gap_value(gap::log_ratios(observed, null.calibration));
   // One-sided: an unmodelled effect shows as more scatter or more in common
   // than the model; less is the model being pessimistic, a finding of its own.
   const gap::SignedGap signed_gap = gap::signed_gap(observed_ratios);

@@ -66,7 +66,7 @@ CoherentValues coherent_power(const Pooled& p) {
   return out;
 }
 
-CoherentValues expected_coherent_power(const Pooled& p, const NullCalibration& cal) {
+CoherentValues expected_coherent_power(const Pooled& p, const NullCalibration& cal, CoherentReference reference) {
   CoherentValues out;
   const double m = p.runs;
   for (int c = 0; c < kCoherentCount; ++c) {
@@ -74,15 +74,17 @@ CoherentValues expected_coherent_power(const Pooled& p, const NullCalibration& c
     // The runs' own scatter as observed: only what they share beyond
     // independence is compared, so a random effect, which raises every
     // run's scatter but nothing common, leaves these groups alone.
-    // Runs that scatter less than the model (an assumption pessimistic)
-    // are compared with the model's own scatter: a signature they share
-    // counts when it is as large as what the model lets independent runs
-    // scatter, not when it is merely larger than their tiny scatter (runs of
-    // a perfect sensor are alike to the last digit and share nothing that
-    // matters).
+    // For significance, runs that scatter less than the model (an
+    // assumption pessimistic) are compared with the model's own scatter: a
+    // signature they share counts when it is as large as what the model
+    // lets independent runs scatter, not when it is merely larger than
+    // their tiny scatter (runs of a perfect sensor are alike to the last
+    // digit and share nothing that matters).
     const double observed_scatter = over_members(c, [&](int g) { return p.power.z2[g]; }) / m;
     const double model_scatter = over_members(c, [&](int g) { return expected_sum(p.power, cal, g); }) / m;
-    const double scatter = std::max(observed_scatter, model_scatter);
+    const double scatter = reference == CoherentReference::kAtLeastModelScatter
+                               ? std::max(observed_scatter, model_scatter)
+                               : observed_scatter;
     const double common = (m - 1) / m * cal.systematic[static_cast<std::size_t>(c)] *
                           over_members(c, [&](int g) { return p.power.floor[g]; });
     out[static_cast<std::size_t>(c)] = count > 0 && m > 0 ? (scatter + common) / count : kNaN;
@@ -90,7 +92,7 @@ CoherentValues expected_coherent_power(const Pooled& p, const NullCalibration& c
   return out;
 }
 
-LogRatios log_ratios(const Pooled& p, const NullCalibration& cal) {
+LogRatios log_ratios(const Pooled& p, const NullCalibration& cal, CoherentReference reference) {
   LogRatios l;
   for (int g = 0; g < kGroupCount; ++g) {
     // The model expects between the linear level's own scatter (no model
@@ -109,7 +111,7 @@ LogRatios log_ratios(const Pooled& p, const NullCalibration& cal) {
       l.scatter[g] = 0.0;
     }
   }
-  const CoherentValues observed = coherent_power(p), expected = expected_coherent_power(p, cal);
+  const CoherentValues observed = coherent_power(p), expected = expected_coherent_power(p, cal, reference);
   for (int c = 0; c < kCoherentCount; ++c) {
     const auto k = static_cast<std::size_t>(c);
     l.coherent[k] = std::isfinite(observed[k]) && expected[k] > 0 ? std::log(std::max(observed[k], expected[k]) / expected[k])

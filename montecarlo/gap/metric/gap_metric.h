@@ -15,8 +15,9 @@
 ///
 /// Coherent groups c (what every run shares): with m runs,
 ///   C_c = (1/m) Σ_keys (Σ_runs z)²  =  m |mean z|²,
-///   E[C_c] = max((1/m) Σ_runs |z_run|², (1/m) U_c)  (the runs' own scatter,
-///            as observed, or the model's, U_c the U_g of its members, if more)
+///   E[C_c] = (1/m) Σ_runs |z_run|²  (the runs' own scatter, as observed;
+///            for significance the model's, (1/m) U_c with U_c the U_g of
+///            its members, when that is more: CoherentReference)
 ///            + (m − 1)/m λ_c Σ_runs Σ (1 − E_i/e_i),
 ///   ℓ_c = ln( max(C_c, E[C_c]) / E[C_c] ),
 /// λ_c the systematic share of the floor the null shows in common (the
@@ -58,15 +59,30 @@ struct LogRatios {
   CoherentValues coherent{};
 };
 
+/// What a coherent group's shared power is read against (E[C_c] above).
+enum class CoherentReference {
+  /// The runs' own scatter as observed. Comparing candidates: a candidate
+  /// that only widens the model's scatter then cannot explain a signature
+  /// the runs share.
+  kRunsScatter,
+  /// The larger of the runs' scatter and the model's. The significance of
+  /// an unmodelled effect (observed and null files alike): runs far below
+  /// the model's scatter (a perfect sensor, alike to the last digit) share
+  /// nothing the model would notice.
+  kAtLeastModelScatter,
+};
+
 /// Mean z² per scatter group (NaN where a group has no terms).
 GroupValues group_power(const GroupSums& sums);
 /// The calibrated expected mean z² per scatter group.
 GroupValues expected_power(const GroupSums& sums, const NullCalibration& calibration);
 /// C_c / m and its calibrated expectation / m per coherent group.
 CoherentValues coherent_power(const Pooled& pooled);
-CoherentValues expected_coherent_power(const Pooled& pooled, const NullCalibration& calibration);
+CoherentValues expected_coherent_power(const Pooled& pooled, const NullCalibration& calibration,
+                                       CoherentReference reference = CoherentReference::kRunsScatter);
 
-LogRatios log_ratios(const Pooled& pooled, const NullCalibration& calibration);
+LogRatios log_ratios(const Pooled& pooled, const NullCalibration& calibration,
+                     CoherentReference reference = CoherentReference::kRunsScatter);
 
 /// G from the ℓ present.
 double gap_value(const LogRatios& l);

@@ -71,7 +71,7 @@ Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& 
   tbb::parallel_for(0, options.bootstrap, [&](int b) {
     const auto i = static_cast<std::size_t>(b);
     const gap::Pooled s = gap::pool(set, resample(options.seed, static_cast<std::uint64_t>(b), n, runs));
-    null.log_ratios[i] = gap::log_ratios(s, null.calibration);
+    null.log_ratios[i] = gap::log_ratios(s, null.calibration, gap::CoherentReference::kAtLeastModelScatter);
     null.gaps[i] = gap::gap_value(null.log_ratios[i]);
     const gap::SignedGap signed_gap = gap::signed_gap(null.log_ratios[i]);
     null.unmodelled[i] = signed_gap.unmodelled;

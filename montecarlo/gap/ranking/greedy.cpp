@@ -24,8 +24,7 @@ void rank_and_select(Diagnosis& d, const PreparedRuns& p, const Null& null, cons
   const auto& registry = gap::candidate_registry();
   std::vector<std::vector<gap::Extension>> selected(p.layouts.size());
   std::vector<std::string> taken;
-  d.heldout_gap_before = d.gap;
-  double before = d.gap;
+  double before = d.heldout_gap_before;
   for (int step = 0; step < std::max(1, options.max_selected); ++step) {
     const std::vector<Scored> ranked = rank_candidates(p, selected, taken, null.calibration, options,
                                                        fmt::format("candidates, step {}", step + 1));
@@ -36,7 +35,8 @@ void rank_and_select(Diagnosis& d, const PreparedRuns& p, const Null& null, cons
     const gap::Candidate& c = registry[static_cast<std::size_t>(best.candidate)];
     if (step > 0 && best.heldout_gap >= before) break;  // nothing left that helps on held-out runs
     const double left = gap::signed_gap(gap::log_ratios(gap::pool(best.heldout, all_runs(p.runs.size())),
-                                                        null.calibration)).unmodelled;
+                                                        null.calibration, gap::CoherentReference::kAtLeastModelScatter))
+                            .unmodelled;
     GreedyStep g{c.name, best.parameters, best.heldout_gap, p_value_of(left, null.unmodelled)};
     d.greedy.push_back(g);
     d.selected.push_back(step == 0 ? d.top : c.name);

@@ -9,11 +9,12 @@ namespace insmc::mc {
 
 std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::NullCalibration& calibration,
                                        const std::vector<gap::LogRatios>& null_log_ratios, double alpha) {
-  const gap::LogRatios l = gap::log_ratios(observed, calibration);
+  const gap::LogRatios l = gap::log_ratios(observed, calibration, gap::CoherentReference::kAtLeastModelScatter);
   const gap::GroupValues power = gap::group_power(observed.power);
   const gap::GroupValues null_power = gap::expected_power(observed.power, calibration);
   const gap::CoherentValues coherent = gap::coherent_power(observed);
-  const gap::CoherentValues null_coherent = gap::expected_coherent_power(observed, calibration);
+  const gap::CoherentValues null_coherent =
+      gap::expected_coherent_power(observed, calibration, gap::CoherentReference::kAtLeastModelScatter);
   double total = 0;
   for (double v : l.scatter)
     if (std::isfinite(v)) total += v * v;

@@ -242,14 +242,20 @@ TEST(GapMetric, CoherentGroupsSeeOnlyWhatRunsShareBeyondIndependence) {
   alike.row(0).setConstant(1e-2);
   std::vector<int> all(200);
   for (int k = 0; k < 200; ++k) all[static_cast<std::size_t>(k)] = k;
-  EXPECT_NEAR(log_ratios(pool(make_run_set(std::vector<GroupSums>(200, tiny), alike, keys), all), none)
+  const auto significance = CoherentReference::kAtLeastModelScatter;
+  EXPECT_NEAR(log_ratios(pool(make_run_set(std::vector<GroupSums>(200, tiny), alike, keys), all), none, significance)
                   .coherent[static_cast<std::size_t>(c)],
               0.0, 1e-12);
+  // Comparing candidates, the runs' own scatter stays the reference: a
+  // candidate that only widens the model cannot explain what runs share.
+  EXPECT_NEAR(log_ratios(pool(make_run_set(std::vector<GroupSums>(200, tiny), alike, keys), all), none)
+                  .coherent[static_cast<std::size_t>(c)],
+              std::log(200.0), 1e-9);
   // … and when what they share outgrows the model's scatter, it counts:
   // 200 runs × 0.04 = 8 against the model's 2.25.
   tiny.z2[g] = 0.04;
   alike.row(0).setConstant(0.2);
-  EXPECT_NEAR(log_ratios(pool(make_run_set(std::vector<GroupSums>(200, tiny), alike, keys), all), none)
+  EXPECT_NEAR(log_ratios(pool(make_run_set(std::vector<GroupSums>(200, tiny), alike, keys), all), none, significance)
                   .coherent[static_cast<std::size_t>(c)],
               std::log(200 * 0.04 / 2.25), 1e-9);
   // Null runs that share a systematic part calibrate it away: λ from their
