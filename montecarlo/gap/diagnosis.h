@@ -15,7 +15,9 @@
 ///    deviation of the f residuals against the null's.
 /// 4. Which effect: every candidate (candidates/candidates.h) fitted on one half
 ///    of the runs (grid search, least G), scored on the other half, and the
-///    halves swapped (2-fold cross-validation): ranked by held-out G.
+///    halves swapped (2-fold cross-validation): ranked by held-out G. The
+///    first few also fitted by maximum likelihood between physical limits
+///    (ranking/likelihood_ranking.h), beside the ranking.
 /// 5. How far: shrink = 1 − G_after/G_before on held-out runs; effects added
 ///    greedily while the held-out gap stays significant.
 /// The diagnosis reads only the records' non-`truth.` keys and the priors.

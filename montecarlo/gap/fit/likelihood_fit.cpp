@@ -218,10 +218,16 @@ ProfileInterval profile_interval(LikelihoodLattice& L, Profile& profile, int p, 
 
 }  // namespace
 
-LikelihoodFit fit_likelihood(LikelihoodLattice& L, std::span<const int> runs, bool intervals, Search search) {
+LikelihoodFit fit_likelihood(LikelihoodLattice& L, std::span<const int> runs, bool intervals, Search search,
+                             std::span<const int> from) {
   const int before = L.evaluations();
-  std::vector<int> start(static_cast<std::size_t>(L.dimensions()));
-  for (int p = 0; p < L.dimensions(); ++p) start[static_cast<std::size_t>(p)] = L.nearest(p, L.parameter(p).start_si);
+  std::vector<int> start(from.begin(), from.end());
+  if (start.empty()) {
+    start.resize(static_cast<std::size_t>(L.dimensions()));
+    for (int p = 0; p < L.dimensions(); ++p) start[static_cast<std::size_t>(p)] = L.nearest(p, L.parameter(p).start_si);
+  }
+  INSMC_ASSERT(static_cast<int>(start.size()) == L.dimensions(), "start of {} parameters, expected {}", start.size(),
+               L.dimensions());
   const Ascent best = ascend(L, runs, start, std::nullopt, search == Search::kCoarse, 0);
 
   LikelihoodFit fit;
@@ -251,7 +257,7 @@ CrossValidation cross_validate(LikelihoodLattice& L, std::span<const double> nul
 }
 
 CrossValidation cross_validate(std::array<LikelihoodLattice*, 2> folds, std::span<const double> null_per_run,
-                               Search search) {
+                               Search search, std::span<const int> start) {
   for (const LikelihoodLattice* L : folds)
     INSMC_ASSERT(static_cast<int>(null_per_run.size()) == L->runs(), "null log-likelihoods of {} runs, expected {}",
                  null_per_run.size(), L->runs());
@@ -264,7 +270,7 @@ CrossValidation cross_validate(std::array<LikelihoodLattice*, 2> folds, std::spa
     LikelihoodLattice& L = *folds[f];
     const std::vector<int>& train = half[f];
     const std::vector<int>& held_out = half[1 - f];
-    const LikelihoodFit fit = fit_likelihood(L, train, false, search);
+    const LikelihoodFit fit = fit_likelihood(L, train, false, search, start);
     double null_sum = 0.0;
     for (int r : held_out) null_sum += null_per_run[static_cast<std::size_t>(r)];
     cv.fold_gain[f] = L.sum(fit.index, held_out) - null_sum;

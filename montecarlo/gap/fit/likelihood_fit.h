@@ -66,9 +66,10 @@ inline constexpr int kMaxAscentRounds = 6;
 enum class Search { kCoarse, kLocal };
 
 /// The maximum of Σ_{r ∈ runs} log p_r over the lattice, with profile
-/// intervals when `intervals`.
+/// intervals when `intervals`, from the lattice point `start` (empty: the
+/// parameters' start values).
 LikelihoodFit fit_likelihood(LikelihoodLattice& lattice, std::span<const int> runs, bool intervals = true,
-                             Search search = Search::kCoarse);
+                             Search search = Search::kCoarse, std::span<const int> start = {});
 
 /// The held-out log-likelihood gain of a 2-fold cross-validation: runs
 /// alternate between halves in file order; each half is fitted and the
@@ -89,6 +90,6 @@ CrossValidation cross_validate(LikelihoodLattice& lattice, std::span<const doubl
 /// signature, likelihood_parameters()) were fitted on half f too, so that
 /// nothing of the held-out half enters its own prediction. Both may be one lattice.
 CrossValidation cross_validate(std::array<LikelihoodLattice*, 2> folds, std::span<const double> null_per_run,
-                               Search search = Search::kCoarse);
+                               Search search = Search::kCoarse, std::span<const int> start = {});
 
 }  // namespace insmc::mc

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -113,7 +114,8 @@ std::vector<MlParameter> ml_parameters(const std::vector<Member>& members, const
 /// A model on the records: its maximum likelihood on all runs and its
 /// held-out gain. A single candidate gets profile intervals and a coarse
 /// search over each whole range; a pair, warm-started from its members' own
-/// fits, neither (a joint profile costs a search per point).
+/// fits, neither (a joint profile costs a search per point), and its folds
+/// start from its fit on all runs.
 LikelihoodResult fit_model(const PreparedRuns& p, const std::vector<Member>& members, const Selected& none,
                            const std::vector<double>& null_ll) {
   const bool single = members.size() == 1;
@@ -123,7 +125,8 @@ LikelihoodResult fit_model(const PreparedRuns& p, const std::vector<Member>& mem
   LikelihoodResult r;
   r.fitted = true;
   r.parameters = ml_parameters(members, fit, single);
-  r.heldout_gain = cross_validate({l.at[1], l.at[2]}, null_ll, search).gain;
+  // A pair's folds start from its fit on all runs, which lies near theirs.
+  r.heldout_gain = cross_validate({l.at[1], l.at[2]}, null_ll, search, single ? std::span<const int>() : fit.index).gain;
   r.evaluations = l.evaluations();
   return r;
 }
@@ -165,24 +168,11 @@ void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const Pr
   const std::uint64_t total = top * static_cast<std::uint64_t>(1 + files) + pairs;
   const auto progress = [&] { report_progress(options, "maximum likelihood", ++done, total, "fits"); };
 
-  // The candidates on the records and, as their reference, the same held-out
-  // gain on null files of the records' size: one parallel pass. A pair's
-  // reference is not measured: it would cost more than all these fits (docs/gap.md §4).
-  std::vector<PreparedRuns> file(static_cast<std::size_t>(files));
-  std::vector<std::vector<double>> file_null_ll(file.size());
-  tbb::parallel_for(std::size_t{0}, file.size(), [&](std::size_t f) {
-    file[f] = null_file(p, null, static_cast<int>(f));
-    file_null_ll[f] = null_log_likelihoods(file[f], none);
-  });
-  std::vector<std::vector<double>> gains(top, std::vector<double>(file.size()));
-  tbb::parallel_for(std::size_t{0}, top * (1 + file.size()), [&](std::size_t t) {
-    const std::size_t m = t % top, f = t / top;  // f = 0: the records, else null file f − 1
-    if (f == 0) d.ranking[m].likelihood = fit_model(p, models[m], none, null_ll);
-    else gains[m][f - 1] = null_gain(file[f - 1], models[m], none, file_null_ll[f - 1], null.calibration);
+  // The candidates on the records first: a pair starts from its members' fits.
+  tbb::parallel_for(std::size_t{0}, top, [&](std::size_t i) {
+    d.ranking[i].likelihood = fit_model(p, models[i], none, null_ll);
     progress();
   });
-  for (std::size_t m = 0; m < top && !file.empty(); ++m) d.ranking[m].likelihood.null_gain = quantile(gains[m], 0.5);
-
   // A pair starts from each member's own maximum-likelihood values.
   for (std::size_t a = 0; a < paired; ++a)
     for (std::size_t b = a + 1; b < paired; ++b) {
@@ -195,10 +185,27 @@ void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const Pr
       models.push_back(std::move(pair));
       d.pairs.push_back({d.ranking[a].effect, d.ranking[b].effect, {}});
     }
-  tbb::parallel_for(std::size_t{0}, pairs, [&](std::size_t j) {
-    d.pairs[j].likelihood = fit_model(p, models[top + j], none, null_ll);
+  // Then the pairs and, in the same parallel pass, each candidate's reference:
+  // the same held-out gain on null files of the records' size. A pair's
+  // reference is not measured: it would cost more than all the other fits
+  // together (docs/gap.md §4).
+  std::vector<PreparedRuns> file(static_cast<std::size_t>(files));
+  std::vector<std::vector<double>> file_null_ll(file.size());
+  tbb::parallel_for(std::size_t{0}, file.size(), [&](std::size_t f) {
+    file[f] = null_file(p, null, static_cast<int>(f));
+    file_null_ll[f] = null_log_likelihoods(file[f], none);
+  });
+  std::vector<std::vector<double>> gains(top, std::vector<double>(file.size()));
+  tbb::parallel_for(std::size_t{0}, pairs + top * file.size(), [&](std::size_t t) {
+    if (t < pairs) {
+      d.pairs[t].likelihood = fit_model(p, models[top + t], none, null_ll);
+    } else {
+      const std::size_t m = (t - pairs) % top, f = (t - pairs) / top;
+      gains[m][f] = null_gain(file[f], models[m], none, file_null_ll[f], null.calibration);
+    }
     progress();
   });
+  for (std::size_t m = 0; m < top && !file.empty(); ++m) d.ranking[m].likelihood.null_gain = quantile(gains[m], 0.5);
 
   std::stable_sort(d.pairs.begin(), d.pairs.end(), [](const PairResult& x, const PairResult& y) {
     return x.likelihood.heldout_gain > y.likelihood.heldout_gain;
