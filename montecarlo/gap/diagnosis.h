@@ -16,7 +16,9 @@
 ///    deviation of the f residuals against the null's.
 /// 4. Which effect: every candidate (candidates/candidates.h) fitted on one half
 ///    of the runs (grid search, least G), scored on the other half, and the
-///    halves swapped (2-fold cross-validation): ranked by held-out G.
+///    halves swapped (2-fold cross-validation): ranked by held-out G. The
+///    first few also fitted by maximum likelihood between physical limits
+///    (ranking/likelihood_ranking.h), beside the ranking.
 /// 5. How far: shrink = 1 − G_after/G_before on held-out runs; effects added
 ///    greedily while the held-out gap stays significant.
 /// The diagnosis reads only the records' non-`truth.` keys and the priors.
@@ -65,6 +67,10 @@ struct DiagnosisOptions {
   /// each candidate's held-out shrink is measured as the reference of its
   /// shrink on the records (CandidateResult::null_shrink); 0: not measured.
   int null_shrink_files = 3;
+  /// Candidates (the best by held-out G) also fitted by maximum likelihood
+  /// between physical limits, and how many of them are paired; 0: none.
+  int likelihood_candidates = 5;
+  int likelihood_pair_candidates = 3;
   RankWhen rank = RankWhen::kAlways;
   DiagnosisProgress progress;  ///< may be empty
 };
@@ -120,6 +126,37 @@ struct ParameterEstimate {
   bool at_grid_edge = false;
 };
 
+/// A likelihood profile interval (fit/likelihood_fit.h); an open end stays
+/// within the drop up to the physical limit, which it then reports.
+struct ProfileRange {
+  double low = 0, high = 0;
+  bool open_low = false, open_high = false;
+};
+
+/// A parameter's maximum-likelihood value between its physical limits
+/// (CandidateParameter::lower_si, upper_si), with profile intervals; an
+/// amplitude keeps its least-squares value (no intervals).
+struct MlParameter {
+  std::string name;
+  Dimension dimension = Dimension::kDimensionless;
+  double value = 0;
+  bool least_squares = false;  ///< an amplitude: the least-squares fit's value
+  bool intervals = false;      ///< ci68 and ci95 measured
+  ProfileRange ci68, ci95;
+  bool at_limit = false;       ///< the maximum sits at a physical limit
+};
+
+/// The maximum-likelihood side of a candidate or a pair (docs/gap.md §4).
+struct LikelihoodResult {
+  bool fitted = false;
+  std::vector<MlParameter> parameters;
+  /// Held-out log-likelihood gain over the model without it, 2-fold [nats],
+  /// and the same on null files of the records' size (median); NaN when not measured.
+  double heldout_gain = std::numeric_limits<double>::quiet_NaN();
+  double null_gain = std::numeric_limits<double>::quiet_NaN();
+  int evaluations = 0;  ///< model builds the fits made
+};
+
 struct CandidateResult {
   std::string effect;
   std::string description;
@@ -131,6 +168,13 @@ struct CandidateResult {
   /// those files): what it gains on noise alone. NaN when not measured.
   double null_shrink = std::numeric_limits<double>::quiet_NaN();
   gap::LogRatios heldout_log_ratios{};  ///< ℓ on held-out runs with the effect added
+  LikelihoodResult likelihood;          ///< fitted for the top candidates only
+};
+
+/// Two of the top candidates together, their parameters fitted jointly.
+struct PairResult {
+  std::string first, second;
+  LikelihoodResult likelihood;
 };
 
 struct GreedyStep {
@@ -182,6 +226,7 @@ struct Diagnosis {
   std::vector<CandidateResult> ranking;   ///< ascending held-out gap
   std::string top;                        ///< effect or class "a|b"
   double runner_up_margin = 0, runner_up_margin_se = 0;
+  std::vector<PairResult> pairs;          ///< of the top candidates, by held-out log-likelihood gain
   std::vector<GreedyStep> greedy;         ///< the effects added, in order
   std::vector<std::string> selected;
 };

@@ -35,7 +35,8 @@ Candidate anisoelastic_drift() {
   return {"anisoelastic_drift",
           "g²-sensitive drift ω = c (f_y f_z, f_z f_x, f_x f_y)/g² as the earth turns gravity in the platform, the "
           "same in every run (a design effect)",
-          {{"coefficient", Dimension::kAngularRate, {1000 * kMeruToRadps}, true}},
+          {amplitude("coefficient", Dimension::kAngularRate, 1000 * kMeruToRadps,
+                     "100 times Table 3.1's 10 meru drift, a tenth of the small-angle model's limit")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
             const double g2 = m.gravity_mps2 * m.gravity_mps2;

@@ -38,6 +38,13 @@ struct CandidateParameter {
   /// The size of a deterministic signature: the extension's mean is linear
   /// in it, and it is fitted by least squares, not on a grid.
   bool amplitude = false;
+  /// Physical limits (SI) the maximum-likelihood fit (fit/likelihood_fit.h)
+  /// searches between instead of the grid, and why they are those; an
+  /// amplitude's are ± the magnitude it covers (its least-squares fit is
+  /// held there). A fit at a limit runs to the physics' end, not a grid's.
+  double lower_si = 0.0;
+  double upper_si = 0.0;
+  std::string limits;
 };
 
 struct Candidate {

@@ -1,6 +1,7 @@
 #include "montecarlo/gap/candidates/common.h"
 
 #include <cmath>
+#include <utility>
 
 namespace insmc::gap::candidates {
 
@@ -18,6 +19,15 @@ std::vector<double> log_grid(double lo, double hi, double unit) {
     out.push_back(v * unit);
   }
   return out;
+}
+
+CandidateParameter searched(std::string name, Dimension dimension, std::vector<double> grid, double lower_si,
+                            double upper_si, std::string why) {
+  return {std::move(name), dimension, std::move(grid), false, lower_si, upper_si, std::move(why)};
+}
+
+CandidateParameter amplitude(std::string name, Dimension dimension, double largest_si, std::string why) {
+  return {std::move(name), dimension, {largest_si}, true, -largest_si, largest_si, std::move(why)};
 }
 
 double layout_end(const Layout& layout) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lib/common/model_options.h"
+#include "lib/units/physical_range.h"
 #include "lib/units/units.h"
 #include "montecarlo/gap/candidates/candidates.h"
 #include "montecarlo/gap/model/response.h"
@@ -23,6 +24,14 @@ std::vector<double> scaled(std::initializer_list<double> values, double unit);
 /// relative step (×1.78) for every scale parameter, so no candidate is
 /// favoured by a grid that happens to hold the data's value.
 std::vector<double> log_grid(double lo, double hi, double unit);
+
+/// A parameter searched on `grid` (least G) and between the physical limits
+/// [lower_si, upper_si] (maximum likelihood); `why`: where the limits come from.
+CandidateParameter searched(std::string name, Dimension dimension, std::vector<double> grid, double lower_si,
+                            double upper_si, std::string why);
+
+/// An amplitude covering magnitudes up to `largest_si`, and why that far.
+CandidateParameter amplitude(std::string name, Dimension dimension, double largest_si, std::string why);
 
 /// The time of the layout's last row [s].
 double layout_end(const Layout& layout);

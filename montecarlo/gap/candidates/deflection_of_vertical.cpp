@@ -1,6 +1,7 @@
 // deflection_of_vertical: the site's deflection beyond Table 3.1, the same
 // in every run: a fixed value of ξ, η through the alignment (2.8b).
 #include "lib/units/units.h"
+#include "montecarlo/gap/candidates/common.h"
 #include "montecarlo/gap/candidates/definitions.h"
 
 namespace insmc::gap::candidates {
@@ -9,8 +10,8 @@ Candidate deflection_of_vertical() {
   return {"deflection_of_vertical",
           "deflection of the vertical at the site beyond Table 3.1, the same in every run: ξ, η of (2.8b) with a "
           "fixed value",
-          {{"xi", Dimension::kAngle, {20 * kMradToRad}, true},
-           {"eta", Dimension::kAngle, {20 * kMradToRad}, true}},
+          {amplitude("xi", Dimension::kAngle, 20 * kMradToRad, "200 times Table 3.1's 0.1 mrad deflection"),
+           amplitude("eta", Dimension::kAngle, 20 * kMradToRad, "200 times Table 3.1's 0.1 mrad deflection")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             Extension e;
             e.mean = p[0] * ctx.base->H_x.col(ux::kDeflection) + p[1] * ctx.base->H_x.col(ux::kDeflection + 1);

@@ -4,6 +4,7 @@
 
 #include "lib/frames/frames.h"
 #include "lib/units/units.h"
+#include "montecarlo/gap/candidates/common.h"
 #include "montecarlo/gap/candidates/definitions.h"
 #include "montecarlo/gap/model/response.h"
 
@@ -14,9 +15,10 @@ Candidate gravity_model() {
           "the computer's gravitation differs from the true one (e.g. J2), the same in every run at a site: the "
           "computer places the site where its own model has the plumb line the leveling found, an offset fixed "
           "to the earth (north, down; turning with it in a'), and lacks a vertical anomaly that drives r",
-          {{"north_offset", Dimension::kLength, {1000e3}, true},
-           {"down_offset", Dimension::kLength, {1000e3}, true},
-           {"vertical", Dimension::kAcceleration, {100 * kMgToMps2}, true}},
+          {amplitude("north_offset", Dimension::kLength, 1000e3, "the 1000 km of lib/units/physical_range.h"),
+           amplitude("down_offset", Dimension::kLength, 1000e3, "the 1000 km of lib/units/physical_range.h"),
+           amplitude("vertical", Dimension::kAcceleration, 100 * kMgToMps2,
+                     "the 100 mg the linearized model describes")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
             InputSignal in;

@@ -3,6 +3,7 @@
 // candidate (a model error of a share of the predicted position error).
 #include <cmath>
 
+#include "montecarlo/gap/candidates/common.h"
 #include "montecarlo/gap/candidates/definitions.h"
 
 namespace insmc::gap::candidates {
@@ -11,7 +12,9 @@ Candidate nonlinearity() {
   return {"nonlinearity",
           "terms the linear level drops (products of uncertainties, finite rotations): a model error "
           "of a share of the predicted position error",
-          {{"share", Dimension::kDimensionless, {0.01, 0.03, 0.1, 0.3}}},
+          {searched("share", Dimension::kDimensionless, {0.01, 0.03, 0.1, 0.3}, 1e-4, 1.0,
+                    "1e-4 (second-order terms of Table 3.1's 1e-4 scale factors) to the whole predicted error, "
+                    "where the linear level no longer holds")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             Extension e;
             e.noise_var_add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));

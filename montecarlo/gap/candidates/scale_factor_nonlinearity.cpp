@@ -10,7 +10,7 @@ Candidate scale_factor_nonlinearity() {
   return {"scale_factor_nonlinearity",
           "accelerometer output k2 (f_k/g)² on every axis as the earth turns gravity in the platform, the same in "
           "every run (a design effect)",
-          {{"k2", Dimension::kAcceleration, {20 * kMgToMps2}, true}},
+          {amplitude("k2", Dimension::kAcceleration, 20 * kMgToMps2, "20 times Table 3.1's 1 mg bias at 1 g")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
             const Eigen::Vector3d f0 = specific_force(0.0, m);

@@ -12,7 +12,9 @@ Candidate sway() {
   return {"sway",
           "vehicle sway of periods 2-20 s: residual acceleration in f after the τ box filter, its velocity and "
           "displacement at switch-over, and the counters cycling from the start",
-          {{"accel_rms", Dimension::kAcceleration, log_grid(0.2, 200, kMgToMps2)}},
+          {searched("accel_rms", Dimension::kAcceleration, log_grid(0.2, 200, kMgToMps2), 1e-6 * kMgToMps2,
+                    kGravityMps2, "1e-6 of Table 3.1's 1 mg bias up to 1 g, the truth effect's own limit "
+                    "(lib/truth/effects/sway.cpp)")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             // Log-uniform periods in [2, 20] s: mean power gain of the box
             // filter sinc²(π τ/P), mean 1/ω² for the velocity and 1/ω⁴ for

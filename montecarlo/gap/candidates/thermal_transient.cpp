@@ -12,9 +12,10 @@ Candidate thermal_transient() {
   return {"thermal_transient",
           "bias and drift settling exponentially after switch-on, the same in every run (a design effect): "
           "a(t) = b (e^{-t/tau} − 1), θ(t) = d (tau (1 − e^{-t/tau}) − t) on every axis; b, d at switch-over",
-          {{"bias", Dimension::kAcceleration, {10 * kMgToMps2}, true},
-           {"drift", Dimension::kAngularRate, {300 * kMeruToRadps}, true},
-           {"tau", Dimension::kTime, {600.0, 1200.0, 2400.0}}},
+          {amplitude("bias", Dimension::kAcceleration, 10 * kMgToMps2, "10 times Table 3.1's 1 mg bias"),
+           amplitude("drift", Dimension::kAngularRate, 300 * kMeruToRadps, "30 times Table 3.1's 10 meru drift"),
+           searched("tau", Dimension::kTime, {600.0, 1200.0, 2400.0}, 1.0, magnitude_limit(Dimension::kTime),
+                    "1 s (a step at switch-over) to 48 h, the longest run (a drift that never settles)")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const double tau = p[2];
             const Eigen::MatrixXd cols = signature_columns(ctx, "thermal:" + std::to_string(tau), 2,

@@ -9,7 +9,9 @@ namespace insmc::gap::candidates {
 Candidate velocity_random_walk() {
   return {"velocity_random_walk",
           "white accelerometer noise: white in f (q/τ), a velocity random walk in r (σ after 1 h)",
-          {{"velocity_1h", Dimension::kVelocity, log_grid(0.01, 10, 1.0)}},
+          {searched("velocity_1h", Dimension::kVelocity, log_grid(0.01, 10, 1.0), 0.3e-6,
+                    magnitude_limit(Dimension::kVelocity),
+                    "1e-6 of Table 3.1's 0.3 m/s initial velocity up to the 10 m/s the model describes")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             // The walk's increments over τ that the knots and bridge modes
             // do not carry are white in f: q/τ.

@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "lib/common/assert.h"
 #include "montecarlo/gap/model/likelihood.h"
@@ -11,7 +12,7 @@ namespace insmc::mc {
 namespace {
 
 /// Every run's log-likelihood under per-layout models (`extension(L)`: the
-/// candidate's extension for layout L, or null for none). Each layout's
+/// extensions added for layout L, none for the null). Each layout's
 /// model is built and factorized once, and only for layouts some run uses.
 template <class ExtensionOf>
 std::vector<double> per_run(const PreparedRuns& p, const std::vector<std::vector<gap::Extension>>& selected,
@@ -23,8 +24,8 @@ std::vector<double> per_run(const PreparedRuns& p, const std::vector<std::vector
     if (!models[L]) {
       std::vector<const gap::Extension*> extensions;
       for (const gap::Extension& e : selected[L]) extensions.push_back(&e);
-      const std::optional<gap::Extension> added = extension(L);
-      if (added) extensions.push_back(&*added);
+      const std::vector<gap::Extension> added = extension(L);
+      for (const gap::Extension& e : added) extensions.push_back(&e);
       models[L].emplace(gap::combine(p.bases[L], extensions));
     }
     out[r] = models[L]->log_likelihood(run_values(p.runs[r]));
@@ -41,26 +42,49 @@ std::vector<int> likelihood_parameters(const gap::Candidate& c) {
   return searched;
 }
 
-RunLogLikelihoods candidate_evaluation(const PreparedRuns& p, const gap::Candidate& c,
-                                       const std::vector<std::vector<gap::Extension>>& selected) {
+RunLogLikelihoods joint_evaluation(const PreparedRuns& p, std::vector<HeldCandidate> candidates,
+                                   const std::vector<std::vector<gap::Extension>>& selected) {
   INSMC_ASSERT(selected.size() == p.layouts.size(), "selected effects for {} layouts, expected {}", selected.size(),
                p.layouts.size());
-  // The layouts' contexts live as long as the function: candidates cache
-  // unit responses in them, which every later evaluation reuses.
-  auto contexts = std::make_shared<std::vector<gap::LayoutContext>>(p.layouts.size());
-  for (std::size_t L = 0; L < p.layouts.size(); ++L) (*contexts)[L] = {&p.layouts[L], &p.site, &p.bases[L], {}};
-  return [&p, &c, &selected, contexts, searched = likelihood_parameters(c)](std::span<const double> values) {
-    INSMC_ASSERT(values.size() == searched.size(), "{}: {} values for {} parameters", c.name, values.size(),
-                 searched.size());
-    std::vector<double> theta(c.parameters.size(), 0.0);  // amplitudes 0
-    for (std::size_t j = 0; j < searched.size(); ++j) theta[static_cast<std::size_t>(searched[j])] = values[j];
-    return per_run(p, selected, [&](std::size_t L) { return std::optional(c.build((*contexts)[L], theta)); });
+  // Each candidate's layout contexts live as long as the function: candidates
+  // cache unit responses in them, which every later evaluation reuses.
+  auto contexts = std::make_shared<std::vector<std::vector<gap::LayoutContext>>>();
+  std::size_t searched = 0;
+  for (const HeldCandidate& h : candidates) {
+    auto& ctx = contexts->emplace_back(p.layouts.size());
+    for (std::size_t L = 0; L < p.layouts.size(); ++L) ctx[L] = {&p.layouts[L], &p.site, &p.bases[L], {}};
+    searched += likelihood_parameters(*h.candidate).size();
+  }
+  return [&p, &selected, contexts, candidates = std::move(candidates), searched](std::span<const double> values) {
+    INSMC_ASSERT(values.size() == searched, "{} values for {} parameters", values.size(), searched);
+    // Each candidate's parameter vector: its searched values in turn, its amplitudes held.
+    std::vector<std::vector<double>> theta;
+    std::size_t next = 0;
+    for (const HeldCandidate& h : candidates) {
+      const gap::Candidate& c = *h.candidate;
+      std::vector<double>& t = theta.emplace_back(c.parameters.size(), 0.0);
+      for (int j : likelihood_parameters(c)) t[static_cast<std::size_t>(j)] = values[next++];
+      const std::vector<int> amp = c.amplitude_indices();
+      for (std::size_t j = 0; j < h.amplitudes.size() && j < amp.size(); ++j)
+        t[static_cast<std::size_t>(amp[j])] = h.amplitudes[j];
+    }
+    return per_run(p, selected, [&](std::size_t L) {
+      std::vector<gap::Extension> added;
+      for (std::size_t i = 0; i < candidates.size(); ++i)
+        added.push_back(candidates[i].candidate->build((*contexts)[i][L], theta[i]));
+      return added;
+    });
   };
+}
+
+RunLogLikelihoods candidate_evaluation(const PreparedRuns& p, const gap::Candidate& c,
+                                       const std::vector<std::vector<gap::Extension>>& selected) {
+  return joint_evaluation(p, {{&c, {}}}, selected);
 }
 
 std::vector<double> null_log_likelihoods(const PreparedRuns& p,
                                          const std::vector<std::vector<gap::Extension>>& selected) {
-  return per_run(p, selected, [](std::size_t) { return std::optional<gap::Extension>(); });
+  return per_run(p, selected, [](std::size_t) { return std::vector<gap::Extension>(); });
 }
 
 }  // namespace insmc::mc

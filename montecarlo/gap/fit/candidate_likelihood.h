@@ -4,8 +4,10 @@
 /// candidate's extension built for every layout on top of the effects
 /// already selected, combined with the layout's base model (gaussian_model.h),
 /// factorized once (model/likelihood.h), and every run's exact
-/// log-likelihood. Amplitude parameters are held at 0 (their signature is a
-/// mean; its least-squares fit stays in candidate_fit.h).
+/// log-likelihood. Amplitude parameters are held at given values, 0 unless
+/// told (their signature is a mean; its least-squares fit stays in
+/// candidate_fit.h). Several candidates together are one joint evaluation:
+/// their extensions all added, their parameters one after the other.
 #include <vector>
 
 #include "montecarlo/gap/candidates/candidates.h"
@@ -23,6 +25,20 @@ std::vector<int> likelihood_parameters(const gap::Candidate& c);
 /// `selected` must outlive the returned function.
 RunLogLikelihoods candidate_evaluation(const PreparedRuns& p, const gap::Candidate& c,
                                        const std::vector<std::vector<gap::Extension>>& selected);
+
+/// A candidate in a joint evaluation: its amplitudes (amplitude_indices()
+/// order; empty: all 0) held at these values.
+struct HeldCandidate {
+  const gap::Candidate* candidate = nullptr;
+  std::vector<double> amplitudes;
+};
+
+/// The per-run log-likelihoods of `p`'s runs with every candidate of
+/// `candidates` added on top of `selected`, at the values of each one's
+/// likelihood_parameters() in turn. `p`, the candidates and `selected` must
+/// outlive the returned function.
+RunLogLikelihoods joint_evaluation(const PreparedRuns& p, std::vector<HeldCandidate> candidates,
+                                   const std::vector<std::vector<gap::Extension>>& selected);
 
 /// The per-run log-likelihoods under the selected effects alone (the null of
 /// the cross-validation gain).

@@ -218,11 +218,17 @@ ProfileInterval profile_interval(LikelihoodLattice& L, Profile& profile, int p, 
 
 }  // namespace
 
-LikelihoodFit fit_likelihood(LikelihoodLattice& L, std::span<const int> runs, bool intervals) {
+LikelihoodFit fit_likelihood(LikelihoodLattice& L, std::span<const int> runs, bool intervals, Search search,
+                             std::span<const int> from) {
   const int before = L.evaluations();
-  std::vector<int> start(static_cast<std::size_t>(L.dimensions()));
-  for (int p = 0; p < L.dimensions(); ++p) start[static_cast<std::size_t>(p)] = L.nearest(p, L.parameter(p).start_si);
-  const Ascent best = ascend(L, runs, start, std::nullopt, true, 0);
+  std::vector<int> start(from.begin(), from.end());
+  if (start.empty()) {
+    start.resize(static_cast<std::size_t>(L.dimensions()));
+    for (int p = 0; p < L.dimensions(); ++p) start[static_cast<std::size_t>(p)] = L.nearest(p, L.parameter(p).start_si);
+  }
+  INSMC_ASSERT(static_cast<int>(start.size()) == L.dimensions(), "start of {} parameters, expected {}", start.size(),
+               L.dimensions());
+  const Ascent best = ascend(L, runs, start, std::nullopt, search == Search::kCoarse, 0);
 
   LikelihoodFit fit;
   fit.index = best.index;
@@ -247,23 +253,31 @@ LikelihoodFit fit_likelihood(LikelihoodLattice& L, std::span<const int> runs, bo
 }
 
 CrossValidation cross_validate(LikelihoodLattice& L, std::span<const double> null_per_run) {
-  INSMC_ASSERT(static_cast<int>(null_per_run.size()) == L.runs(), "null log-likelihoods of {} runs, expected {}",
-               null_per_run.size(), L.runs());
-  const int before = L.evaluations();
+  return cross_validate({&L, &L}, null_per_run);
+}
+
+CrossValidation cross_validate(std::array<LikelihoodLattice*, 2> folds, std::span<const double> null_per_run,
+                               Search search, std::span<const int> start) {
+  for (const LikelihoodLattice* L : folds)
+    INSMC_ASSERT(static_cast<int>(null_per_run.size()) == L->runs(), "null log-likelihoods of {} runs, expected {}",
+                 null_per_run.size(), L->runs());
+  const bool shared = folds[0] == folds[1];
+  const int before = folds[0]->evaluations() + (shared ? 0 : folds[1]->evaluations());
   std::array<std::vector<int>, 2> half;
-  for (int r = 0; r < L.runs(); ++r) half[static_cast<std::size_t>(r % 2)].push_back(r);
+  for (int r = 0; r < folds[0]->runs(); ++r) half[static_cast<std::size_t>(r % 2)].push_back(r);
   CrossValidation cv;
   for (std::size_t f = 0; f < 2; ++f) {
+    LikelihoodLattice& L = *folds[f];
     const std::vector<int>& train = half[f];
     const std::vector<int>& held_out = half[1 - f];
-    const LikelihoodFit fit = fit_likelihood(L, train, false);
+    const LikelihoodFit fit = fit_likelihood(L, train, false, search, start);
     double null_sum = 0.0;
     for (int r : held_out) null_sum += null_per_run[static_cast<std::size_t>(r)];
     cv.fold_gain[f] = L.sum(fit.index, held_out) - null_sum;
     for (const ParameterFit& q : fit.parameters) cv.fold_values[f].push_back(q.value_si);
     cv.gain += cv.fold_gain[f];
   }
-  cv.evaluations = L.evaluations() - before;
+  cv.evaluations = folds[0]->evaluations() + (shared ? 0 : folds[1]->evaluations()) - before;
   return cv;
 }
 

@@ -60,9 +60,16 @@ inline constexpr double kDrop95 = 1.92;
 /// moves (a ridge the lattice follows a step at a time).
 inline constexpr int kMaxAscentRounds = 6;
 
+/// How coordinate ascent starts from the parameters' start values: a coarse
+/// pass over each whole range first, or local searches only (a warm start
+/// from values already fitted, e.g. a pair's from each member's own fit).
+enum class Search { kCoarse, kLocal };
+
 /// The maximum of Σ_{r ∈ runs} log p_r over the lattice, with profile
-/// intervals when `intervals`.
-LikelihoodFit fit_likelihood(LikelihoodLattice& lattice, std::span<const int> runs, bool intervals = true);
+/// intervals when `intervals`, from the lattice point `start` (empty: the
+/// parameters' start values).
+LikelihoodFit fit_likelihood(LikelihoodLattice& lattice, std::span<const int> runs, bool intervals = true,
+                             Search search = Search::kCoarse, std::span<const int> start = {});
 
 /// The held-out log-likelihood gain of a 2-fold cross-validation: runs
 /// alternate between halves in file order; each half is fitted and the
@@ -78,5 +85,11 @@ struct CrossValidation {
   int evaluations = 0;
 };
 CrossValidation cross_validate(LikelihoodLattice& lattice, std::span<const double> null_per_run);
+/// The same with a lattice per fold: fold f is fitted and scored on
+/// `folds[f]`, a model whose held parts (the amplitudes of a deterministic
+/// signature, likelihood_parameters()) were fitted on half f too, so that
+/// nothing of the held-out half enters its own prediction. Both may be one lattice.
+CrossValidation cross_validate(std::array<LikelihoodLattice*, 2> folds, std::span<const double> null_per_run,
+                               Search search = Search::kCoarse, std::span<const int> start = {});
 
 }  // namespace insmc::mc

@@ -9,20 +9,16 @@
 #include <numeric>
 
 #include "montecarlo/gap/null/bootstrap.h"
+#include "montecarlo/gap/ranking/likelihood_ranking.h"
 
 namespace insmc::mc {
 namespace {
 
 /// Every run under the other half's fit (runs alternate between the halves
 /// in file order): 2-fold cross-validation.
-gap::RunSet heldout_set(const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0) {
+gap::RunSet heldout_set(const std::array<Choice, 2>& half, const CandidateSums& s, std::size_t n) {
   std::vector<Choice> heldout_choice(n);
-  for (int fold = 0; fold < 2; ++fold) {
-    std::vector<int> train, test;
-    for (std::size_t r = 0; r < n; ++r) (static_cast<int>(r % 2) == fold ? test : train).push_back(static_cast<int>(r));
-    const Choice k = choose(s, train, m0);
-    for (int r : test) heldout_choice[static_cast<std::size_t>(r)] = k;
-  }
+  for (std::size_t r = 0; r < n; ++r) heldout_choice[r] = half[1 - r % 2];
   return run_set_under(s, all_runs(n), heldout_choice);
 }
 
@@ -31,7 +27,8 @@ gap::RunSet heldout_set(const CandidateSums& s, std::size_t n, const gap::NullCa
 Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0,
              std::uint64_t seed) {
   Scored out;
-  out.heldout = heldout_set(s, n, m0);
+  out.half_fit = half_fits(s, n, m0);
+  out.heldout = heldout_set(out.half_fit, s, n);
   out.heldout_gap = gap::gap_value(out.heldout, all_runs(n), m0);
   out.full_fit = choose(s, all_runs(n), m0);
   const std::vector<double> best = parameter_values(c, out.full_fit);
@@ -53,6 +50,28 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
 }
 
 }  // namespace
+
+std::array<Choice, 2> half_fits(const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0) {
+  std::array<Choice, 2> out;
+  for (std::size_t h = 0; h < 2; ++h) {
+    std::vector<int> train;
+    for (std::size_t r = h; r < n; r += 2) train.push_back(static_cast<int>(r));
+    out[h] = choose(s, train, m0);
+  }
+  return out;
+}
+
+int null_file_count(const PreparedRuns& p, const Null& null, const DiagnosisOptions& options) {
+  return std::min(options.null_shrink_files, static_cast<int>(null.runs.size() / std::max<std::size_t>(p.runs.size(), 1)));
+}
+
+PreparedRuns null_file(const PreparedRuns& p, const Null& null, int f) {
+  const auto n = static_cast<std::ptrdiff_t>(p.runs.size());
+  PreparedRuns q = p;
+  q.runs.assign(null.runs.begin() + f * n, null.runs.begin() + (f + 1) * n);
+  q.layout_of.assign(null.layout_of.begin() + f * n, null.layout_of.begin() + (f + 1) * n);
+  return q;
+}
 
 std::vector<Scored> rank_candidates(const PreparedRuns& p, const std::vector<std::vector<gap::Extension>>& selected,
                                     const std::vector<std::string>& exclude, const gap::NullCalibration& m0,
@@ -79,23 +98,20 @@ std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, const 
                                  const DiagnosisOptions& options) {
   const auto& registry = gap::candidate_registry();
   const std::size_t n = p.runs.size();
-  const int files = std::min(options.null_shrink_files, static_cast<int>(null.runs.size() / std::max<std::size_t>(n, 1)));
+  const int files = null_file_count(p, null, options);
   std::atomic<std::uint64_t> done{0};
   const auto total = static_cast<std::uint64_t>(files) * registry.size();
   std::vector<std::vector<double>> per(registry.size());
   const std::vector<std::vector<gap::Extension>> none(p.layouts.size());
   for (int f = 0; f < files; ++f) {
-    PreparedRuns q = p;
-    q.runs.assign(null.runs.begin() + static_cast<std::ptrdiff_t>(f * n),
-                  null.runs.begin() + static_cast<std::ptrdiff_t>((f + 1) * n));
-    q.layout_of.assign(null.layout_of.begin() + static_cast<std::ptrdiff_t>(f * n),
-                       null.layout_of.begin() + static_cast<std::ptrdiff_t>((f + 1) * n));
+    const PreparedRuns q = null_file(p, null, f);
     std::vector<int> idx(n);
     for (std::size_t r = 0; r < n; ++r) idx[r] = static_cast<int>(f * n + r);
     const double before = gap::gap_value(null.set, idx, m0);
     std::vector<double> shrink(registry.size());
     tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
-      const gap::RunSet held = heldout_set(evaluate_candidate(q, registry[c], none, m0), n, m0);
+      const CandidateSums sums = evaluate_candidate(q, registry[c], none, m0);
+      const gap::RunSet held = heldout_set(half_fits(sums, n, m0), sums, n);
       shrink[c] = before > 0 ? 1.0 - gap::gap_value(held, all_runs(n), m0) / before : 0.0;
       report_progress(options, "candidates on null files", ++done, total, "fits");
     });
@@ -116,7 +132,8 @@ void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const Prepa
     const gap::Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
     d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before,
                          std::numeric_limits<double>::quiet_NaN(),
-                         gap::log_ratios(gap::pool(s.heldout, all_runs(p.runs.size())), null.calibration)});
+                         gap::log_ratios(gap::pool(s.heldout, all_runs(p.runs.size())), null.calibration),
+                         {}});
   }
   d.top = d.ranking.front().effect;
   if (options.null_shrink_files > 0) {
@@ -124,6 +141,7 @@ void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const Prepa
     for (std::size_t i = 0; i < ranked.size(); ++i)
       d.ranking[i].null_shrink = reference[static_cast<std::size_t>(ranked[i].candidate)];
   }
+  record_likelihood(d, ranked, p, null, options);
   if (ranked.size() > 1) {
     // Runner-up margin and its resampling standard error.
     constexpr int kResamples = 500;

@@ -3,6 +3,7 @@
 /// and scored on the other (2-fold cross-validation), ranked by held-out G;
 /// each candidate's shrink on null files as the reference of its shrink on
 /// the records.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -19,8 +20,18 @@ struct Scored {
   double heldout_gap = 0;
   gap::RunSet heldout;  // every run at the other half's fit
   Choice full_fit;
+  std::array<Choice, 2> half_fit;  ///< fitted on half h (runs h, h + 2, …)
   std::vector<ParameterEstimate> parameters;
 };
+
+/// The choices of least G on each half of n runs (half h: runs h, h + 2, …).
+std::array<Choice, 2> half_fits(const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0);
+
+/// How many null files of the records' size the null calibration holds, up
+/// to options.null_shrink_files, and null file f: p with its runs replaced
+/// by consecutive runs of the null calibration.
+int null_file_count(const PreparedRuns& p, const Null& null, const DiagnosisOptions& options);
+PreparedRuns null_file(const PreparedRuns& p, const Null& null, int f);
 
 /// Every candidate not in `exclude`, on top of the effects `selected` (per
 /// layout), scored; ascending held-out gap (registry order among equals).

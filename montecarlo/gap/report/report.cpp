@@ -5,6 +5,7 @@
 
 #include "lib/units/quantity.h"
 #include "montecarlo/gap/report/gap_plots.h"
+#include "montecarlo/gap/report/likelihood_report.h"
 #include "montecarlo/write/markdown.h"
 
 namespace insmc::mc {
@@ -139,11 +140,13 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
       if (std::isfinite(c.heldout_log_ratios.coherent[static_cast<std::size_t>(k)]))
         left[gap::coherent_group_name(k)] = c.heldout_log_ratios.coherent[static_cast<std::size_t>(k)];
     e["heldout_log_ratios"] = left;
+    add_likelihood_json(e, c.likelihood, d.runs);
     ranking.push_back(e);
   }
   j["ranked"] = d.ranked;
   j["heldout_gap_before"] = d.heldout_gap_before;
   j["ranking"] = ranking;
+  j["pairs"] = pairs_json(d);
   j["top"] = d.top.empty() ? Json(nullptr) : Json(d.top);
   j["runner_up_margin"] = d.runner_up_margin;
   j["runner_up_margin_se"] = d.runner_up_margin_se;
@@ -236,6 +239,7 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
     md += fmt::format("Top: **{}**; runner-up margin {:.3g} ± {:.3g} (resampled runs){}.\n\n", d.top,
                       d.runner_up_margin, d.runner_up_margin_se,
                       d.top.find('|') != std::string::npos ? " — within two standard errors: reported as one class" : "");
+    md += likelihood_markdown(d);
   }
   md += "## 4. How far it shrinks\n\n";
   if (d.greedy.empty()) {

@@ -118,6 +118,7 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
   d.alpha = options.alpha;
   d.max_selected = 1;
   d.null_shrink_files = 0;  // the study scores the shrink itself; the reference is for people reading a report
+  d.likelihood_candidates = 0;  // the study scores the ranking by held-out G; the likelihood side is for reports
   // Only a significant file is scored by its ranking (identified, shrink,
   // fitted / true): a file without a gap is not ranked.
   d.rank = RankWhen::kIfSignificant;

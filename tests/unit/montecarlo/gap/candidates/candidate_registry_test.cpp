@@ -48,5 +48,30 @@ TEST(CandidateRegistry, NamesAreUnique) {
   EXPECT_EQ(candidate_names().size(), candidate_registry().size());
 }
 
+/// Every parameter states its physical limits and why (the maximum-likelihood
+/// fit searches between them, docs/gap.md §4): a searched one a positive log
+/// range that reaches below its grid's least positive value (a grid may
+/// reach beyond the upper one: `bounds` to 1000, quantization to 5 m/s, kept
+/// for the ranking by G that section 5 validates), an amplitude ± the
+/// magnitude its least-squares fit is held at.
+TEST(CandidateRegistry, EveryParameterHasPhysicalLimitsWithAReason) {
+  for (const Candidate& c : candidate_registry())
+    for (const CandidateParameter& p : c.parameters) {
+      const std::string where = c.name + "." + p.name;
+      EXPECT_FALSE(p.limits.empty()) << where;
+      if (p.amplitude) {
+        EXPECT_EQ(p.upper_si, p.grid.front()) << where;
+        EXPECT_EQ(p.lower_si, -p.upper_si) << where;
+        continue;
+      }
+      EXPECT_GT(p.lower_si, 0.0) << where;
+      EXPECT_GT(p.upper_si, p.lower_si) << where;
+      for (double v : p.grid) {
+        if (v <= 0) continue;  // a grid's 0 (none) is the lower limit's floor
+        EXPECT_GE(v, p.lower_si) << where;
+      }
+    }
+}
+
 }  // namespace
 }  // namespace insmc::gap

@@ -168,6 +168,21 @@ TEST(GapLikelihoodFit, CorrelatedTwoParameterMaximumByCoordinateAscent) {
   expect_quadratic_fit(problem, 2.0);
 }
 
+TEST(GapLikelihoodFit, ALocalSearchFromAFarStartFindsTheSameMaximum) {
+  // A warm start (a pair from its members' fits) searches locally only: the
+  // doubling steps still climb six decades to the maximum, and the folds of
+  // a cross-validation may start from the fit on all runs.
+  VarianceProblem problem(20, 20, 2.3, 19);
+  LikelihoodLattice lattice({{"variance", 1e-4, 1e4, 1e-3}}, problem.evaluation(), problem.runs());
+  const std::vector<int> all = all_runs(problem.runs());
+  const LikelihoodFit local = fit_likelihood(lattice, all, false, Search::kLocal);
+  EXPECT_LE(std::abs(std::log(local.parameters[0].value_si / problem.mle(all))), std::log(kLatticeStep));
+  const std::vector<double> null(static_cast<std::size_t>(problem.runs()), 0.0);
+  const CrossValidation from_fit = cross_validate({&lattice, &lattice}, null, Search::kLocal, local.index);
+  const CrossValidation coarse = cross_validate(lattice, null);
+  EXPECT_NEAR(from_fit.gain, coarse.gain, 1e-9 * std::abs(coarse.gain));
+}
+
 TEST(GapLikelihoodFit, SubsetFitsReuseTheMemo) {
   VarianceProblem problem(20, 20, 2.3, 17);
   LikelihoodLattice lattice({{"variance", 1e-4, 1e4, 1.0}}, problem.evaluation(), problem.runs());
