@@ -35,6 +35,11 @@ int run_gap(const Args& args) {
       "seed", po::value<std::uint64_t>()->default_value(1), "seed of the null runs and the resampling")(
       "calibration-runs", po::value<int>()->default_value(0), "null runs (0: max(200, 10 x runs))")(
       "max-effects", po::value<int>()->default_value(3), "effects added greedily at most, >= 1")(
+      "likelihood", po::value<int>()->default_value(0),
+      "also fit the best N candidates by maximum likelihood between physical limits, with profile intervals and "
+      "held-out log-likelihood gains, in [0, 15] (experimental: docs/gap.md section 4)")(
+      "likelihood-pairs", po::value<int>()->default_value(0),
+      "of those, pair the best N and fit each pair jointly, in [0, 5]")(
       "rank", po::value<std::string>()->default_value("always"),
       "fit and rank the candidate effects: always, significant (only when the gap is), never (screening: the gap, "
       "its significance and where it lies)");
@@ -57,6 +62,14 @@ int run_gap(const Args& args) {
   options.max_selected = (*vm)["max-effects"].as<int>();
   if (options.max_selected < 1 || options.max_selected > 5)
     throw InputError("--max-effects", std::to_string(options.max_selected), "must lie in [1, 5]");
+  options.likelihood_candidates = (*vm)["likelihood"].as<int>();
+  if (options.likelihood_candidates < 0 || options.likelihood_candidates > 15)
+    throw InputError("--likelihood", std::to_string(options.likelihood_candidates), "must lie in [0, 15]");
+  options.likelihood_pair_candidates = (*vm)["likelihood-pairs"].as<int>();
+  if (options.likelihood_pair_candidates < 0 || options.likelihood_pair_candidates > 5 ||
+      options.likelihood_pair_candidates > options.likelihood_candidates)
+    throw InputError("--likelihood-pairs", std::to_string(options.likelihood_pair_candidates),
+                     "must lie in [0, 5] and not exceed --likelihood");
   const std::string rank = (*vm)["rank"].as<std::string>();
   if (rank == "always") options.rank = mc::RankWhen::kAlways;
   else if (rank == "significant") options.rank = mc::RankWhen::kIfSignificant;

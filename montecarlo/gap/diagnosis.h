@@ -69,8 +69,11 @@ struct DiagnosisOptions {
   int null_shrink_files = 3;
   /// Candidates (the best by held-out G) also fitted by maximum likelihood
   /// between physical limits, and how many of them are paired; 0: none.
-  int likelihood_candidates = 5;
-  int likelihood_pair_candidates = 3;
+  /// Off unless asked for (`gap --likelihood N`): the likelihood of the run
+  /// model is not yet calibrated on the null as G is, and it costs 2-3 times
+  /// the rest of the diagnosis (docs/gap.md §4).
+  int likelihood_candidates = 0;
+  int likelihood_pair_candidates = 0;
   RankWhen rank = RankWhen::kAlways;
   DiagnosisProgress progress;  ///< may be empty
 };

@@ -23,6 +23,7 @@ mc::Diagnosis diagnosed(const TempDir& dir, const std::string& name, const std::
   EXPECT_EQ(r.exit_code, 0) << r.err;
   mc::DiagnosisOptions o;
   o.max_selected = 1;
+  o.likelihood_candidates = 5;
   o.likelihood_pair_candidates = pairs;
   return mc::diagnose(without_truth(read_record_file(path)), o);
 }
