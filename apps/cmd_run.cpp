@@ -1,8 +1,8 @@
 // insmc run: the Monte Carlo study. Prints a summary of the envelope
 // (apps/stdout_choice.h), writes the output files of the README's contract
-// into --out DIR. With --checkpoint it
-// saves its progress (apps/checkpoint.h) and --resume continues it; under
-// MPI the ranks share the blocks (apps/study_runner.h, apps/ranks.h).
+// into --out DIR. With --checkpoint it saves its progress (apps/checkpoint.h)
+// and --resume continues it; under MPI the ranks share the blocks
+// (apps/study_runner.h, apps/ranks.h).
 #include <algorithm>
 #include <chrono>
 #include <fmt/format.h>
