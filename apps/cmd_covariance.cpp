@@ -1,9 +1,11 @@
 // insmc covariance: the exact linear-covariance RMS of every output
-// (S(t) P S(t)ᵀ plus the squared mean) and the error budget.
+// (S(t) P S(t)ᵀ plus the squared mean) and the error budget. Prints a
+// summary (apps/stdout_choice.h); the files hold every output.
 #include <fmt/format.h>
 
 #include "apps/cli_common.h"
 #include "apps/output_paths.h"
+#include "apps/stdout_choice.h"
 #include "apps/study_options.h"
 #include "montecarlo/study/study_map.h"
 
@@ -14,12 +16,13 @@ int run_covariance(const Args& args) {
   opts.add_options()("out", po::value<std::string>(), "folder for covariance.csv, covariance_grid.csv, budget.csv, "
                                                       "covariance.md (created if needed)")(
       "format", po::value<std::string>()->default_value("markdown"),
-      "stdout: markdown, csv (covariance.csv alone) or json");
+      "stdout: markdown (horizontal RMS per scheme and system), csv (covariance.csv alone) or json");
+  add_stdout_switches(opts, "covariance.md (the RMS of every axis at every report time)");
   opts.add(study_options_description(false));
   const auto vm = parse_args(args, "covariance", "[options]", opts);
   if (!vm) return 0;
   const mc::StudyConfig config = read_study_config(*vm, false);
-  const OutputFormat format = parse_output_format((*vm)["format"].as<std::string>());
+  const StdoutChoice shown = read_stdout_choice(*vm);
   const mc::LengthUnit unit = read_length_unit(*vm);
   std::optional<OutputFolderOption> out = prepare_output_folder(
       *vm, "covariance", {"covariance.csv", "covariance_grid.csv", "budget.csv", "covariance.md"});
@@ -31,14 +34,22 @@ int run_covariance(const Args& args) {
   json["covariance"] = files.covariance_json;
   if (out) {
     out->write({{"covariance.csv", files.covariance_csv},
-                                                        {"covariance_grid.csv", files.covariance_grid_csv},
-                                                        {"budget.csv", files.budget_csv},
-                                                        {"covariance.md", files.covariance_md}});
+                {"covariance_grid.csv", files.covariance_grid_csv},
+                {"budget.csv", files.budget_csv},
+                {"covariance.md", files.covariance_md}});
   }
-  switch (format) {
+  if (shown.quiet) return 0;
+  switch (shown.format) {
     case OutputFormat::kCsv: fmt::print("{}", files.covariance_csv); break;
     case OutputFormat::kJson: fmt::print("{}", json.dump()); break;
-    case OutputFormat::kMarkdown: fmt::print("{}", files.covariance_md); break;
+    case OutputFormat::kMarkdown:
+      if (shown.full) {
+        fmt::print("{}", files.covariance_md);
+        break;
+      }
+      fmt::print("insmc covariance: fidelity {}\n\n{}\n{}", to_string(config.fidelity), files.summary_text,
+                 full_tables_line(*vm, "covariance", {"covariance.md", "covariance.csv"}));
+      break;
   }
   return 0;
 }

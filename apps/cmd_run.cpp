@@ -1,7 +1,8 @@
-// insmc run: the Monte Carlo study. Prints the envelope table, writes the
-// output files of the README's contract into --out DIR. With --checkpoint it
-// saves its progress (apps/checkpoint.h) and --resume continues it; under
-// MPI the ranks share the blocks (apps/study_runner.h, apps/ranks.h).
+// insmc run: the Monte Carlo study. Prints a summary of the envelope
+// (apps/stdout_choice.h), writes the output files of the README's contract
+// into --out DIR. With --checkpoint it saves its progress (apps/checkpoint.h)
+// and --resume continues it; under MPI the ranks share the blocks
+// (apps/study_runner.h, apps/ranks.h).
 #include <algorithm>
 #include <chrono>
 #include <fmt/format.h>
@@ -15,6 +16,7 @@
 #include "apps/interrupt.h"
 #include "apps/output_paths.h"
 #include "apps/ranks.h"
+#include "apps/stdout_choice.h"
 #include "apps/study_options.h"
 #include "apps/study_runner.h"
 #include "apps/sweep.h"
@@ -69,7 +71,8 @@ int replay(const mc::StudyConfig& c, const mc::StudyLayout& l, const mc::StudyMa
 
 /// The options a --resume command line may give; every other setting comes
 /// from the checkpoint.
-const std::vector<std::string> kResumeOptions = {"out", "format", "threads", "checkpoint", "checkpoint-every"};
+const std::vector<std::string> kResumeOptions = {"out",     "format",     "quiet",           "full",
+                                                 "threads", "checkpoint", "checkpoint-every"};
 
 /// Of the settings (threads aside) and of every output's predicted mean and
 /// RMS: a resumed run must compute exactly the study it continues.
@@ -158,7 +161,7 @@ int run_command(const Args& args, Ranks& ranks) {
   opts.add_options()("out", po::value<std::string>(), "folder for envelope.csv, envelope_grid.csv, envelope.md, "
                                                       "envelope.svg and run.json (created if needed)")(
       "format", po::value<std::string>()->default_value("markdown"),
-      "stdout: markdown (readable table), csv (envelope.csv alone) or json (run.json alone)")(
+      "stdout: markdown (horizontal RMS per scheme and system), csv (envelope.csv alone) or json (run.json alone)")(
       "replay", po::value<std::string>(), "recompute sample INDEX alone and print its uncertainties and errors")(
       "checkpoint", po::value<std::string>(),
       "write FILE (every setting and the merged state of the finished samples) every --checkpoint-every of work, "
@@ -166,7 +169,8 @@ int run_command(const Args& args, Ranks& ranks) {
       "checkpoint-every", po::value<std::string>()->default_value("10s"), "work between two checkpoints, in [10ms, 24h]")(
       "resume", po::value<std::string>(),
       "continue the run of checkpoint FILE to the same result, byte for byte; no other option is needed, and only "
-      "--out, --format, --threads, --checkpoint (default FILE) and --checkpoint-every may be given");
+      "--out, --format, --quiet, --full, --threads, --checkpoint (default FILE) and --checkpoint-every may be given");
+  add_stdout_switches(opts, "the RMS of every axis at every report time");
   opts.add(study_options_description(true));
   const std::string synopsis = "[options]\n       insmc run --resume FILE [--out DIR] [--format F]";
   auto vm = parse_args(args, "run", synopsis, opts);
@@ -185,7 +189,8 @@ int run_command(const Args& args, Ranks& ranks) {
       if (std::find(kResumeOptions.begin(), kResumeOptions.end(), o.name) == kResumeOptions.end())
         throw InputError("--resume", resume_path,
                          fmt::format("the checkpoint restores every setting; --{} cannot be given with it (only "
-                                     "--out, --format, --threads, --checkpoint and --checkpoint-every can)",
+                                     "--out, --format, --quiet, --full, --threads, --checkpoint and "
+                                     "--checkpoint-every can)",
                                      o.name));
       overrides.push_back(o.name);
       override_tokens.insert(override_tokens.end(), o.tokens.begin(), o.tokens.end());
@@ -198,7 +203,7 @@ int run_command(const Args& args, Ranks& ranks) {
   }
 
   const mc::StudyConfig config = read_study_config(*vm, true);
-  const OutputFormat format = parse_output_format((*vm)["format"].as<std::string>());
+  const StdoutChoice shown = read_stdout_choice(*vm);
   const mc::LengthUnit unit = read_length_unit(*vm);
   const std::string checkpoint_path = vm->count("checkpoint") ? (*vm)["checkpoint"].as<std::string>() : "";
   const std::string every_text = (*vm)["checkpoint-every"].as<std::string>();
@@ -235,7 +240,7 @@ int run_command(const Args& args, Ranks& ranks) {
     if (!ranks.root()) return 0;
     if (out)
       out->write({{"sweep.csv", files.sweep_csv}, {"sweep.md", files.summary_md}, {"sweep.svg", files.plot_svg}});
-    fmt::print("{}", format == OutputFormat::kCsv ? files.sweep_csv : files.summary_md);
+    if (!shown.quiet) fmt::print("{}", shown.format == OutputFormat::kCsv ? files.sweep_csv : files.summary_md);
     return 0;
   }
   const mc::StudyLayout layout = mc::make_layout(config);
@@ -244,6 +249,7 @@ int run_command(const Args& args, Ranks& ranks) {
   if (vm->count("replay")) {
     const std::string text = (*vm)["replay"].as<std::string>();
     if (!checkpoint_path.empty()) throw InputError("--checkpoint", checkpoint_path, "cannot be combined with --replay");
+    if (shown.quiet) throw InputError("--replay", text, "prints one sample: cannot be combined with --quiet");
     std::uint64_t index = 0;
     try {
       std::size_t used = 0;
@@ -326,12 +332,14 @@ int run_command(const Args& args, Ranks& ranks) {
                 {"envelope.svg", files.envelope_svg},
                 {"run.json", run_json}});
   }
-  switch (format) {
+  if (shown.quiet) return 0;
+  switch (shown.format) {
     case OutputFormat::kCsv: fmt::print("{}", files.envelope_csv); break;
     case OutputFormat::kJson: fmt::print("{}", run_json); break;
     case OutputFormat::kMarkdown:
       fmt::print("insmc run: {} samples, seed {}, fidelity {}, {:.2f} s\n\n{}", config.samples, config.seed,
-                 to_string(config.fidelity), elapsed_s, files.summary_text);
+                 to_string(config.fidelity), elapsed_s, shown.full ? files.full_text : files.summary_text);
+      if (!shown.full || out) fmt::print("\n{}", full_tables_line(*vm, "run", {"envelope.md", "envelope.csv"}));
       break;
   }
   return 0;

@@ -9,6 +9,7 @@
 #include "lib/units/units.h"
 #include "montecarlo/engine/engine.h"
 #include "montecarlo/write/csv.h"
+#include "montecarlo/write/interval_format.h"
 #include "montecarlo/write/markdown.h"
 #include "montecarlo/write/svg_plot.h"
 
@@ -162,7 +163,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
       table.add_row(row);
       if (spec.axis == mc::Axis::kHorizontal && std::abs(t - c.report_times_s.back()) < 1e-6) {
         summary.add_row({point_name, row[axes.size()], row[axes.size() + 1],
-                         fmt::format("{:.6g} ± {:.2g}", k * s.rms, k * (s.rms_hi - s.rms_lo) / 2), fitted});
+                         mc::format_with_interval(k * s.rms, k * (s.rms_hi - s.rms_lo) / 2), fitted});
         const std::string name = fmt::format("{} sys {}", to_string(spec.scheme), system_number(spec.system));
         mc::PlotSeries* series = nullptr;
         for (auto& ps : plot)

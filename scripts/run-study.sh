@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # README command 1: installs what is missing, builds insmc (Release) and runs
 # the default Monte Carlo study on the built-in Table 3.1 defaults, printing
-# the envelope table and writing its files to results/.
+# the summary of the envelope (horizontal RMS per scheme and system) and
+# writing the full tables to results/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh

@@ -42,6 +42,15 @@ bool is_number(const std::string& s) {
   return ec == std::errc() && ptr == last;
 }
 
+// A number, or a value with its interval ("28830 ± 480",
+// montecarlo/write/interval_format.h): aligned like a number.
+bool is_numeric_cell(const std::string& s) {
+  static const std::string kPlusMinus = " ± ";
+  const std::size_t at = s.find(kPlusMinus);
+  if (at == std::string::npos) return is_number(s);
+  return is_number(s.substr(0, at)) && is_number(s.substr(at + kPlusMinus.size()));
+}
+
 void append_padded(std::string& out, const std::string& cell, std::size_t width, bool right) {
   const std::string pad(width - display_width(cell), ' ');
   out += ' ';
@@ -69,7 +78,7 @@ std::string render_markdown(const Table& table) {
     for (std::size_t c = 0; c < columns; ++c) {
       escaped[c] = escape_cell(row[c]);
       width[c] = std::max(width[c], display_width(escaped[c]));
-      if (!is_number(row[c])) right[c] = false;
+      if (!is_numeric_cell(row[c])) right[c] = false;
     }
     rows.push_back(std::move(escaped));
   }

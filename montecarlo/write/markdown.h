@@ -11,8 +11,9 @@ namespace insmc::mc {
 /// to the column width (counted in UTF-8 code points) so the source is
 /// readable; '|' in a cell is escaped as "\|" and a line break becomes
 /// "<br>". Columns with at least one row whose body cells all parse as
-/// numbers (std::from_chars, so also "nan" and "inf") are right-aligned
-/// (`---:`, header included), the others left-aligned.
+/// numbers (std::from_chars, so also "nan" and "inf") or as a number with
+/// its interval ("28830 ± 480") are right-aligned (`---:`, header
+/// included), the others left-aligned.
 std::string render_markdown(const Table& table);
 
 }  // namespace insmc::mc

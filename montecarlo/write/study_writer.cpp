@@ -2,12 +2,15 @@
 
 #include <cmath>
 #include <fmt/format.h>
+#include <optional>
 
 #include "lib/common/version.h"
 #include "lib/uncertainty/catalogue.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
 #include "montecarlo/write/csv.h"
+#include "montecarlo/write/envelope_summary.h"
+#include "montecarlo/write/interval_format.h"
 #include "montecarlo/write/markdown.h"
 #include "montecarlo/write/svg_plot.h"
 
@@ -34,15 +37,36 @@ std::vector<std::string> envelope_header(LengthUnit u) {
   return header;
 }
 
+std::string rms_interval_column(LengthUnit u, double confidence) {
+  return fmt::format("RMS [{}] ± half-width ({}% CI)", length_suffix(u), format_number(100 * confidence));
+}
+
+/// envelope.md's header: the columns of envelope.csv for people, the RMS
+/// with its interval in one cell.
+std::vector<std::string> readable_header(LengthUnit u, double confidence) {
+  const std::string u_ = length_suffix(u);
+  std::vector<std::string> header = {"scheme", "system", "clock", "axis", "t_min", "n",
+                                     rms_interval_column(u, confidence)};
+  for (const char* q : {"mean", "std", "min", "max", "p95"}) header.push_back(fmt::format("{} [{}]", q, u_));
+  header.emplace_back("ready [min]");
+  return header;
+}
+
+/// A row's statistics other than the RMS have no interval of their own;
+/// they come from the same samples, so the RMS interval's place is the
+/// precision they are printed to as well.
+std::string at_rms_precision(double x, std::optional<int> place) {
+  return place ? format_at_place(x, *place) : format_significant(x, 6);
+}
+
 }  // namespace
 
 EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const StudyMap& map,
                               const StudyAccumulator& acc, LengthUnit unit) {
   const double k = length_factor(unit);
-  Table report(envelope_header(unit)), grid(envelope_header(unit));
-  Table summary({"scheme", "system", "axis", "t_min", fmt::format("RMS [{}] ± half-width ({}% CI)", length_suffix(unit),
-                                                                    format_number(100 * c.confidence)),
-                 "n"});
+  Table report(envelope_header(unit)), grid(envelope_header(unit)), readable(readable_header(unit, c.confidence));
+  Table full({"scheme", "system", "axis", "t_min", rms_interval_column(unit, c.confidence), "n"});
+  std::vector<HorizontalPoint> horizontal;
   EnvelopeFiles f;
   f.envelope_json = Json::array();
   std::vector<PlotSeries> plot;
@@ -60,9 +84,16 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
     if (l.is_grid_time[spec.time_index]) grid.add_row(row);
     if (l.is_report_time[spec.time_index]) {
       report.add_row(row);
-      const double half = 0.5 * (s.rms_hi - s.rms_lo);
-      summary.add_row({row[0], row[1], row[3], row[4],
-                       fmt::format("{:.6g} ± {:.2g}", k * s.rms, k * half), std::to_string(s.n)});
+      const double half = 0.5 * k * (s.rms_hi - s.rms_lo);
+      const std::string rms = format_with_interval(k * s.rms, half);
+      const std::optional<int> place = interval_place(half);
+      full.add_row({row[0], row[1], row[3], row[4], rms, std::to_string(s.n)});
+      readable.add_row({row[0], row[1], row[2], row[3], row[4], row[5], rms, at_rms_precision(k * s.mean, place),
+                        at_rms_precision(k * s.std, place), at_rms_precision(k * s.min, place),
+                        at_rms_precision(k * s.max, place), at_rms_precision(k * s.p95_abs, place), row[14]});
+      if (spec.axis == Axis::kHorizontal)
+        horizontal.push_back({row[0], row[2], system_number(spec.system), t / 60.0, k * s.rms, half,
+                              map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0});
       Json j = Json::object();
       j["scheme"] = row[0];
       j["system"] = system_number(spec.system);
@@ -92,10 +123,16 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
   f.envelope_grid_csv = render_csv(grid);
   f.envelope_md = fmt::format(
       "# insmc run: RMS position error\n\n{} samples, seed {}, fidelity {}, latitude {} deg; "
-      "confidence intervals {}% (delta method, fourth moment).\n\n{}",
+      "confidence intervals {}% (delta method, fourth moment). Each row is printed to the second significant "
+      "figure of its RMS interval's half-width; envelope.csv has every number at full precision.\n\n{}",
       c.samples, c.seed, to_string(c.fidelity), format_number(c.model.latitude_rad / kDegToRad),
-      format_number(100 * c.confidence), render_markdown(report));
-  f.summary_text = render_markdown(summary);
+      format_number(100 * c.confidence), render_markdown(readable));
+  f.full_text = render_markdown(full);
+  f.summary_text = render_horizontal_summary(
+      horizontal, fmt::format("Horizontal RMS position error [{}] ± half-width of its {}% confidence interval, at "
+                              "t minutes on each scheme's clock; ready: minutes from the first switch-over until "
+                              "the vehicle may fly.",
+                              length_suffix(unit), format_number(100 * c.confidence)));
   f.envelope_svg = svg_line_plot("Horizontal RMS position error (shaded: confidence interval)",
                                  "time on the scheme's clock [min]",
                                  fmt::format("RMS horizontal error [{}]", length_suffix(unit)), plot);
@@ -109,6 +146,7 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
   Table budget({"scheme", "system", "axis", "t_min", "parameter", "variance_share"});
   const std::vector<std::string> sources = map.budget_sources();
   const std::vector<std::vector<double>> shares = map.budget_shares();
+  std::vector<HorizontalPoint> horizontal;
   CovarianceFiles f;
   f.covariance_json = Json::array();
   for (size_t o = 0; o < l.outputs.size(); ++o) {
@@ -122,6 +160,10 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
     if (l.is_grid_time[spec.time_index]) cov_grid.add_row(row);
     if (!l.is_report_time[spec.time_index]) continue;
     cov.add_row(row);
+    if (spec.axis == Axis::kHorizontal)
+      horizontal.push_back({key[0], std::string(clock_of(spec.scheme)), system_number(spec.system), t / 60.0,
+                            k * map.predicted_rms()[o], std::nullopt,
+                            map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0});
     Json j = Json::object();
     j["scheme"] = key[0];
     j["system"] = system_number(spec.system);
@@ -143,6 +185,10 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
   f.covariance_md = fmt::format("# insmc covariance: exact linear RMS\n\nfidelity {}, latitude {} deg.\n\n{}",
                                 to_string(c.fidelity), format_number(c.model.latitude_rad / kDegToRad),
                                 render_markdown(cov));
+  f.summary_text = render_horizontal_summary(
+      horizontal, fmt::format("Horizontal RMS position error [{}], exact for the linear model, at t minutes on each "
+                              "scheme's clock; ready: minutes from the first switch-over until the vehicle may fly.",
+                              length_suffix(unit)));
   return f;
 }
 

@@ -15,7 +15,8 @@ enum class LengthUnit { kMetre, kFoot };
 
 struct EnvelopeFiles {
   std::string envelope_csv, envelope_grid_csv, envelope_md, envelope_svg;
-  std::string summary_text;  ///< the readable table printed on stdout
+  std::string summary_text;  ///< stdout: horizontal RMS per scheme × system (envelope_summary.h)
+  std::string full_text;     ///< stdout with --full: every axis and report time
   Json envelope_json;        ///< the report-time envelope for run.json
 };
 
@@ -24,6 +25,7 @@ EnvelopeFiles render_envelope(const StudyConfig& config, const StudyLayout& layo
 
 struct CovarianceFiles {
   std::string covariance_csv, covariance_grid_csv, budget_csv, covariance_md;
+  std::string summary_text;  ///< stdout: horizontal RMS per scheme × system (envelope_summary.h)
   Json covariance_json;
 };
 

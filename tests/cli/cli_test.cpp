@@ -79,6 +79,68 @@ TEST(Cli, RunWritesTheOutputContractAndIsIdenticalForAnyThreadCount) {
   EXPECT_NE(paper.out.find("rms_ft,rms_lo_ft"), std::string::npos);
 }
 
+TEST(Cli, RunPrintsASummaryWithTheIntervalAndWhereTheFullTablesAre) {
+  TempDir dir;
+  const auto r = run_insmc("run --samples 3000 --out " + dir.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // A header line, a caption, the table (2 + 7 schemes × 2 systems) and the
+  // line naming the files: a screen, not 168 rows.
+  EXPECT_LE(line_count(r.out), 24) << r.out;
+  EXPECT_NE(r.out.find("| scheme "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" 84 min |"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" ± "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| 5.4 "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("| x "), std::string::npos) << "axes are in the files only\n" << r.out;
+  EXPECT_NE(r.out.find((dir.path() / "envelope.md").string()), std::string::npos) << r.out;
+  // The file keeps every row: schemes × systems × times × axes.
+  const std::string md = read_file(dir.path() / "envelope.md");
+  EXPECT_EQ(std::count(md.begin(), md.end(), '\n'), 4 + 2 + 7 * 2 * 3 * 4) << md;
+  // --full: the table of every axis, as before the summary.
+  const auto full = run_insmc("run --samples 3000 --full");
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  EXPECT_GE(line_count(full.out), 7 * 2 * 3 * 4 + 2);
+  EXPECT_NE(full.out.find("| horizontal "), std::string::npos);
+  // Without --out the line tells how to get the full tables.
+  const auto bare = run_insmc("run --samples 3000 --scheme none");
+  ASSERT_EQ(bare.exit_code, 0) << bare.err;
+  EXPECT_NE(bare.out.find("--out DIR"), std::string::npos) << bare.out;
+}
+
+TEST(Cli, QuietPrintsNothingAndWritesTheFiles) {
+  TempDir dir;
+  const auto r = run_insmc("run --samples 3000 --scheme none,5.2 --quiet --out " + dir.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "");
+  for (const char* f : {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.svg", "run.json"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / f)) << f;
+  const auto cov = run_insmc("covariance --quiet --out " + dir.str() + "/cov");
+  ASSERT_EQ(cov.exit_code, 0) << cov.err;
+  EXPECT_EQ(cov.out, "");
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "cov" / "covariance.csv"));
+  // Errors still go to stderr with exit code 2.
+  const auto bad = run_insmc("run --quiet --samples 0");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.out, "");
+  EXPECT_NE(bad.err.find("--samples"), std::string::npos) << bad.err;
+}
+
+TEST(Cli, CsvOnStdoutIsTheEnvelopeFileByteForByte) {
+  TempDir dir;
+  const auto r = run_insmc("run --samples 3000 --scheme none,5.3 --format csv --out " + dir.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, read_file(dir.path() / "envelope.csv"));
+  EXPECT_EQ(r.out.find(" ± "), std::string::npos);  // full precision, no rounding
+}
+
+TEST(Cli, HelpShowsDefaultsAsTyped) {
+  for (const char* sub : {"run", "covariance", "check"}) {
+    const auto r = run_insmc(std::string(sub) + " --help");
+    EXPECT_NE(r.out.find("(=0.95)"), std::string::npos) << sub;
+    EXPECT_EQ(r.out.find("999999999"), std::string::npos) << sub << r.out;
+  }
+}
+
 TEST(Cli, ReplayPrintsOneSample) {
   const auto r = run_insmc("run --samples 100 --replay 42");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -94,6 +156,13 @@ TEST(Cli, CovarianceWritesRmsAndABudgetSummingToOne) {
   EXPECT_EQ(cov.substr(0, cov.find('\n')), "scheme,system,axis,t_min,rms_m");
   const std::string budget = read_file(dir.path() / "budget.csv");
   EXPECT_EQ(budget.substr(0, budget.find('\n')), "scheme,system,axis,t_min,parameter,variance_share");
+  // stdout: the horizontal RMS per scheme × system; --full: covariance.md.
+  EXPECT_LE(line_count(r.out), 24) << r.out;
+  EXPECT_NE(r.out.find(" 84 min |"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find((dir.path() / "covariance.md").string()), std::string::npos) << r.out;
+  const auto full = run_insmc("covariance --full");
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  EXPECT_EQ(full.out, read_file(dir.path() / "covariance.md"));
 }
 
 struct BadInput {

@@ -22,6 +22,17 @@ TEST(RenderMarkdown, NumericColumnsRightAlignedTextLeft) {
             "| 5.4    |  12.5 |  200 |\n");
 }
 
+TEST(RenderMarkdown, ValuesWithTheirIntervalAreRightAligned) {
+  Table t({"scheme", "rms_m", "note"});
+  t.add_row({"none", "28830 ± 480", "a ± b"});
+  t.add_row({"5.2", "120 ± 15", "1 ± 2"});
+  EXPECT_EQ(render_markdown(t),
+            "| scheme |       rms_m | note  |\n"
+            "| ------ | ----------: | ----- |\n"
+            "| none   | 28830 ± 480 | a ± b |\n"
+            "| 5.2    |    120 ± 15 | 1 ± 2 |\n");
+}
+
 TEST(RenderMarkdown, HeaderOnlyUsesMinimumDelimiter) {
   const Table t({"a", "bb"});
   EXPECT_EQ(render_markdown(t),

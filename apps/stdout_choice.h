@@ -1,0 +1,31 @@
+#pragma once
+/// What `insmc run` and `insmc covariance` print on stdout: by default a
+/// compact summary (montecarlo/write/envelope_summary.h) and where the full
+/// tables are; --full the full table; --quiet nothing (the files are still
+/// written, errors still go to stderr); --format csv|json the machine output
+/// alone, unchanged, for scripts.
+#include <string>
+#include <vector>
+
+#include "apps/cli_common.h"
+
+namespace insmc::app {
+
+struct StdoutChoice {
+  OutputFormat format = OutputFormat::kMarkdown;
+  bool quiet = false;  ///< nothing on stdout
+  bool full = false;   ///< markdown: the full table instead of the summary
+};
+
+/// --quiet and --full (`full_table`: what --full prints).
+void add_stdout_switches(po::options_description& opts, const std::string& full_table);
+
+/// --format, --quiet, --full.
+StdoutChoice read_stdout_choice(const po::variables_map& vm);
+
+/// The line under the summary: the full tables' paths in --out, or how to
+/// get them. `files`: the full tables' names, `command`: the subcommand.
+std::string full_tables_line(const po::variables_map& vm, const std::string& command,
+                             const std::vector<std::string>& files);
+
+}  // namespace insmc::app

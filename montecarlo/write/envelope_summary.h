@@ -1,0 +1,29 @@
+#pragma once
+/// The compact table `insmc run` and `insmc covariance` print on stdout:
+/// one row per scheme × system, one column per report time, the horizontal
+/// RMS (what the report's schemes are judged by) and the ready time. The
+/// full tables, every axis and statistic, go to the files.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace insmc::mc {
+
+/// One horizontal output at a report time.
+struct HorizontalPoint {
+  std::string scheme, clock;
+  int system = 0;
+  double t_min = 0;
+  double rms = 0;                    ///< in the printed unit
+  std::optional<double> half_width;  ///< of its confidence interval; none for exact values
+  double ready_min = 0;              ///< from the first switch-over until the vehicle may fly
+};
+
+/// A caption line, then a Markdown table: scheme | system | clock | one
+/// "T min" column per report time | ready [min]. Rows and columns keep the
+/// order of first appearance in `points`. Values with an interval are
+/// printed "28830 ± 480" (interval_format.h), exact ones to five
+/// significant figures. `caption` names the quantity and its unit.
+std::string render_horizontal_summary(const std::vector<HorizontalPoint>& points, const std::string& caption);
+
+}  // namespace insmc::mc
