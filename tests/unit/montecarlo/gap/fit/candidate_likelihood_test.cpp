@@ -17,28 +17,12 @@
 #include "lib/units/units.h"
 #include "montecarlo/gap/fit/likelihood_fit.h"
 #include "montecarlo/gap/model/likelihood.h"
+#include "tests/unit/montecarlo/gap/test_layout.h"
 
 namespace insmc::mc {
 namespace {
 
-/// f rows every 10 s and r rows every 60 s on three axes, test T = 900 s.
-gap::Layout layout(double end_s) {
-  using namespace gap;
-  Layout l;
-  for (int stage = 0; stage < 2; ++stage) {
-    for (double t = 10.0; t <= end_s + 1e-9; t += 10.0) {
-      const bool test = t <= 900.0;
-      if (test != (stage == 0)) continue;
-      const Stage st = test ? Stage::kTest : Stage::kNav;
-      const int w = test ? 0 : nav_window(t, 900.0);
-      for (int k = 0; k < 3; ++k) l.rows.push_back({t, Quantity::kF, k, group_of(st, Quantity::kF, k, w)});
-      if (std::fmod(t, 60.0) == 0.0)
-        for (int k = 0; k < 3; ++k) l.rows.push_back({t, Quantity::kR, k, group_of(st, Quantity::kR, k, w)});
-    }
-    if (stage == 0) l.test_rows = static_cast<int>(l.rows.size());
-  }
-  return l;
-}
+gap::Layout layout(double end_s) { return gap::testing::test_layout(end_s); }
 
 const gap::Candidate& candidate(const std::string& name) {
   for (const gap::Candidate& c : gap::candidate_registry())

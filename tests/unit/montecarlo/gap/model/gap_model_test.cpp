@@ -17,6 +17,7 @@
 #include "montecarlo/gap/model/pulse_counting.h"
 #include "montecarlo/gap/model/response.h"
 #include "montecarlo/gap/model/run_analysis.h"
+#include "tests/unit/montecarlo/gap/test_layout.h"
 
 namespace insmc::gap {
 namespace {
@@ -28,23 +29,7 @@ RecordSite site() {
   return s;
 }
 
-/// f rows every τ and r rows every 60 s on three axes, test T = 900 s.
-Layout layout(double end_s) {
-  Layout l;
-  for (int stage = 0; stage < 2; ++stage) {
-    for (double t = 10.0; t <= end_s + 1e-9; t += 10.0) {
-      const bool test = t <= 900.0;
-      if (test != (stage == 0)) continue;
-      const Stage st = test ? Stage::kTest : Stage::kNav;
-      const int w = test ? 0 : nav_window(t, 900.0);
-      for (int k = 0; k < 3; ++k) l.rows.push_back({t, Quantity::kF, k, group_of(st, Quantity::kF, k, w)});
-      if (std::fmod(t, 60.0) == 0.0)
-        for (int k = 0; k < 3; ++k) l.rows.push_back({t, Quantity::kR, k, group_of(st, Quantity::kR, k, w)});
-    }
-    if (stage == 0) l.test_rows = static_cast<int>(l.rows.size());
-  }
-  return l;
-}
+Layout layout(double end_s) { return testing::test_layout(end_s); }
 
 TEST(GapResponse, ConstantAccelerometerErrorGivesTheSchulerClosedForm) {
   const Layout l = layout(3000.0);
