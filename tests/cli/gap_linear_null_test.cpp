@@ -93,8 +93,6 @@ std::string linear_records(int file, std::uint64_t seed) {
   return text;
 }
 
-bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
-
 TEST(GapLinearNull, RecordsOfAnotherWriterWithoutPulseKeysShowFalseAlarmsAtAlpha) {
   const int files = null_files_from_env("INSMC_GAP_NULL_FILES", 3);
   const double alpha = 0.01;

@@ -2,10 +2,10 @@
 // What the null-file tests of the diagnosis share: how many files to run
 // (an environment variable for the long measurement), the binomial bound of
 // false alarms at a level, and reading a finding out of `gap --format json`.
+#include <boost/math/distributions/binomial.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -20,13 +20,10 @@ inline int null_files_from_env(const char* variable, int fallback) {
 /// Least k with P(X > k) < 1e-3 for X ~ Binomial(n, p): the most false
 /// alarms a test of level p leaves in n files at that confidence.
 inline int binomial_bound(int n, double p) {
-  double cdf = 0.0;
-  for (int k = 0; k <= n; ++k) {
-    cdf += std::exp(std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0) + k * std::log(p) +
-                    (n - k) * std::log1p(-p));
-    if (1.0 - cdf < 1e-3) return k;
-  }
-  return n;
+  const boost::math::binomial_distribution<double> files(n, p);
+  int k = 0;
+  while (k < n && boost::math::cdf(boost::math::complement(files, k)) >= 1e-3) ++k;
+  return k;
 }
 
 /// The JSON object that follows `"key": ` (up to its first closing brace).

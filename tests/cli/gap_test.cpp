@@ -24,8 +24,6 @@ std::string simulate(const TempDir& dir, const std::string& name, const std::str
   return path;
 }
 
-bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
-
 /// The number after `name="` in `tag` (NaN when absent).
 double attribute(const std::string& tag, const std::string& name) {
   const auto at = tag.find(" " + name + "=\"");

@@ -9,8 +9,6 @@
 namespace insmc::testing {
 namespace {
 
-bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
-
 TEST(GapValidate, QuickSubsetScoresEveryEffectBlind) {
   TempDir dir;
   const std::string out = (dir.path() / "v").string();

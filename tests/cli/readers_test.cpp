@@ -14,8 +14,6 @@ namespace insmc::testing {
 namespace {
 
 int line_count(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
-bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
-
 std::string write(const TempDir& dir, const std::string& name, const std::string& text) {
   const std::string path = (dir.path() / name).string();
   std::ofstream(path, std::ios::binary) << text;

@@ -18,6 +18,9 @@ ProgramResult run_insmc(const std::string& args);
 /// The path of the built insmc.
 std::string insmc_path();
 
+/// Whether `text` (a program's output) contains `what`.
+inline bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+
 /// A whole /bin/sh command line (e.g. insmc under mpirun), run to the end.
 ProgramResult run_shell(const std::string& command);
 
