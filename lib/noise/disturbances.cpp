@@ -1,7 +1,6 @@
 #include "lib/noise/disturbances.h"
 
 #include <algorithm>
-#include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/distributions/normal.hpp>
 #include <cmath>
 
@@ -40,9 +39,8 @@ DisturbanceMask find_disturbances(const SensorRecording& rec, double alpha) {
   if (total_blocks < 2 * kRunningMedianHalfWidth + 1) return no_mask(rec);
   const double a = alpha / static_cast<double>(total_blocks * kChannels);
   const double nu = static_cast<double>(n - 1);
-  const boost::math::chi_squared chi(nu);
-  const double var_limit = boost::math::quantile(chi, 1 - a) / nu, var_median = boost::math::quantile(chi, 0.5) / nu;
   const double z_limit = boost::math::quantile(boost::math::normal(), 1 - a / 2);
+  const double z_limit_one_sided = boost::math::quantile(boost::math::normal(), 1 - a);
 
   // Per run and block: the flags.
   std::vector<std::vector<Flag>> flags(rec.runs.size());
@@ -73,12 +71,22 @@ DisturbanceMask find_disturbances(const SensorRecording& rec, double alpha) {
         all_departures.push_back(std::abs(d));
       }
     }
-    const double sigma2 = median(all_vars) / var_median;
+    // ln s² of each block against the channel's median and robust spread:
+    // real sensor noise is rarely Gaussian (quantized, heavy tailed), so the
+    // spread of ln s² is measured, not taken from χ²(n−1).
+    std::vector<double> log_vars, log_dev;
+    for (double v : all_vars) log_vars.push_back(std::log(std::max(v, 1e-300)));
+    const double log_median = median(log_vars);
+    for (double v : log_vars) log_dev.push_back(std::abs(v - log_median));
+    const double log_sd = 1.4826 * median(log_dev);
     const double robust_sd = 1.4826 * median(all_departures);
     for (std::size_t r = 0; r < rec.runs.size(); ++r)
       for (std::size_t i = 0; i < flags[r].size(); ++i) {
         Flag& f = flags[r][i];
-        const double v_excess = sigma2 > 0 ? vars[r][i] / (sigma2 * var_limit) : 0;
+        const double v_excess =
+            log_sd > 0 && vars[r][i] > 0
+                ? std::exp(std::log(vars[r][i]) - log_median) / std::exp(z_limit_one_sided * log_sd)
+                : 0;
         const double m_excess = robust_sd > 0 ? std::abs(departures[r][i]) / (robust_sd * z_limit) : 0;
         if (v_excess > 1 || m_excess > 1) {
           f.variance = f.variance || v_excess > 1;

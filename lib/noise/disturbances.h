@@ -3,9 +3,10 @@
 /// recordings before the noise analysis (docs/noise.md §4). The samples are
 /// cut into blocks of max(1 s, 10 samples); a block is disturbed when, in
 /// any channel,
-/// - its sample variance exceeds the channel's typical block variance by more
-///   than chance allows: s²_i > σ̂² χ²_{1−α'}(n−1)/(n−1), σ̂² the median
-///   block variance divided by the median of χ²(n−1)/(n−1); or
+/// - the log of its sample variance lies more than z_{1−α'} robust standard
+///   deviations above the channel's median log variance (the spread measured
+///   as 1.4826 × the median absolute departure: real noise is quantized and
+///   heavy tailed, so χ²(n−1) would understate it); or
 /// - its mean departs from the running median of the 31 blocks around it by
 ///   more than z_{1−α'/2} robust standard deviations (1.4826 × the median
 ///   absolute departure of the channel),

@@ -38,7 +38,7 @@ NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& opti
   std::size_t longest = 0;
   for (const Segment& r : rec.runs) longest = std::max(longest, r.size());
   const double first_part_s =
-      std::min(options.first_part_s, static_cast<double>(longest) * rec.dt_s / 3);
+      std::min(options.first_part_s, static_cast<double>(longest) * rec.dt_s / 2);
   NoiseFitOptions fit_options;
   fit_options.selection_alpha = options.alpha;
   fit_options.confidence = options.confidence;
