@@ -30,7 +30,7 @@ int run_noise(const Args& args) {
       "family-wise level of the masking, the stationarity test and the term selection, in [1e-6, 0.2]")(
       "confidence", po::value<double>()->default_value(0.95), "of every interval, in [0.5, 0.999999]")(
       "first-part", po::value<std::string>()->default_value("1h"),
-      "start of each recording tested against the rest (warm-up); at most half the longest recording is used")(
+      "start of each recording tested against the rest (warm-up); at most half the longest recording is used; 0s: no test")(
       "mask", po::value<std::string>()->default_value("on"), "on: mask disturbances; off: use every sample");
   add_imu_csv_options(opts);
   const auto vm = parse_args(args, "noise", "--input FILE [--input FILE]... (--rate RATE | --time-column NAME) [options]", opts);
@@ -45,8 +45,9 @@ int run_noise(const Args& args) {
   if (!(options.confidence >= 0.5 && options.confidence <= 0.999999))
     throw InputError("--confidence", fmt::format("{:g}", options.confidence), "must lie in [0.5, 0.999999]");
   options.first_part_s = parse_quantity((*vm)["first-part"].as<std::string>(), Dimension::kTime, "--first-part");
-  if (!(options.first_part_s >= 60 && options.first_part_s <= 86400))
-    throw InputError("--first-part", echo_input((*vm)["first-part"].as<std::string>()), "must lie in [1min, 24h]");
+  if (!(options.first_part_s == 0 || (options.first_part_s >= 60 && options.first_part_s <= 86400)))
+    throw InputError("--first-part", echo_input((*vm)["first-part"].as<std::string>()),
+                     "must be 0s (no warm-up test) or lie in [1min, 24h]");
   const std::string mask = (*vm)["mask"].as<std::string>();
   if (mask != "on" && mask != "off") throw InputError("--mask", echo_input(mask), "must be on or off");
   options.mask = mask == "on";

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "lib/uncertainty/catalogue.h"
 #include "lib/units/units.h"
@@ -52,6 +53,16 @@ double equivalent_constant(NoiseTerm t, double value_si, double tc_s) {
 }
 
 std::string g3(double v) { return fmt::format("{:.3g}", v); }
+
+/// A Gauss–Markov term with T_c within twice the first cluster time is the
+/// sensor's bandwidth (its samples are filtered), white noise beyond:
+/// N_eff = √(N² + 2σ²T_c). nullopt otherwise.
+std::optional<double> white_noise_effective(const noise::ChannelNoise& ch) {
+  const noise::NoiseModel& m = ch.fit.model;
+  if (ch.allan.empty() || !(m[NoiseTerm::kGaussMarkov] > 0) || m.correlation_time_s > 2 * ch.allan.front().tau_s)
+    return std::nullopt;
+  return std::sqrt(m[NoiseTerm::kWhiteRate] + 2 * m[NoiseTerm::kGaussMarkov] * m.correlation_time_s);
+}
 
 std::string bound_text(SensorKind kind) {
   return kind == SensorKind::kGyro ? fmt::format("{:g} meru", table31_bound_si(kind) / kMeruToRadps)
@@ -152,6 +163,14 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
                           g3(ch.fit.model.correlation_time_s));
     }
   }
+  for (const noise::ChannelNoise& ch : a.channels)
+    if (const auto n_eff = white_noise_effective(ch)) {
+      const auto [v, unit] = spec_value(NoiseTerm::kWhiteRate, ch.kind, *n_eff);
+      md += fmt::format("\n{}: the Gauss–Markov term has T_c at the sampling interval ({:g} s), the sensor's own "
+                        "bandwidth; beyond a few samples it is white noise, and together with the random-walk term N it makes "
+                        "{} {} of white noise, √(N² + 2σ²T_c) (no interval: a sum of two fitted terms).\n",
+                        ch.name, ch.fit.model.correlation_time_s, g3(v), unit);
+    }
   md += "\nTerms tried and not needed (their likelihood-ratio statistic below the test's critical value):\n";
   for (const noise::ChannelNoise& ch : a.channels) {
     std::string dropped;
@@ -320,6 +339,7 @@ mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysi
       terms.push_back(std::move(x));
     }
     c["terms"] = std::move(terms);
+    if (const auto n_eff = white_noise_effective(ch)) c["white_noise_effective_si"] = *n_eff;
     mc::Json st = mc::Json::object();
     st["tested"] = ch.stationarity.tested;
     st["first_part_s"] = ch.stationarity.first_part_s;

@@ -48,7 +48,8 @@ NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& opti
     ch.name = channel_name(c);
     ch.kind = channel_kind(c);
     const std::vector<double>& y = rec.channel[c];
-    const std::vector<AllanLevel> rest_levels = overlapping_allan(y, rec.dt_s, rest);
+    const std::vector<AllanLevel> rest_levels =
+        first_part_s > 0 ? overlapping_allan(y, rec.dt_s, rest) : std::vector<AllanLevel>{};
     if (rest_levels.size() >= 2) {
       const NoiseFit rest_fit = fit_noise(rest_levels, fit_options);
       ch.stationarity =

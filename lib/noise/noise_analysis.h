@@ -20,7 +20,7 @@ namespace insmc::noise {
 struct NoiseOptions {
   double alpha = 0.01;          ///< family-wise level of masking, stationarity and term selection
   double confidence = 0.95;     ///< of every interval
-  double first_part_s = 3600;   ///< the warm-up tested against the rest (shortened to half the longest run)
+  double first_part_s = 3600;   ///< the warm-up tested against the rest (shortened to half the longest run); 0: no test
   bool mask = true;
 };
 

@@ -9,6 +9,7 @@
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
 #include "lib/truth/effects/effects.h"
+#include "lib/units/units.h"
 
 namespace insmc {
 namespace {
@@ -118,6 +119,19 @@ void validate_effect(const EffectSpec& spec, std::string_view field) {
   }
 }
 
+namespace {
+/// A parameter "after 1 h" of a random walk (angle_1h, velocity_1h) also
+/// takes the walk's data-sheet value: 0.005degprth is 0.005 deg after 1 h.
+double parse_effect_value(std::string_view value, const EffectParameter& p, const std::string& field) {
+  const bool walk_unit = value.ends_with("prth") || value.ends_with("prts");
+  if (p.name.ends_with("_1h") && walk_unit && (p.dimension == Dimension::kAngle || p.dimension == Dimension::kVelocity)) {
+    const Dimension walk = p.dimension == Dimension::kAngle ? Dimension::kAngleRandomWalk : Dimension::kVelocityRandomWalk;
+    return parse_quantity(value, walk, field) * std::sqrt(kHourToS);
+  }
+  return parse_quantity(value, p.dimension, field);
+}
+}  // namespace
+
 EffectSpec parse_effect(std::string_view text, std::string_view field) {
   text = trim(text);
   const std::size_t colon = text.find(':');
@@ -146,7 +160,7 @@ EffectSpec parse_effect(std::string_view text, std::string_view field) {
                          "unknown parameter; expected one of " + parameter_names(info));
       if (seen[index]) throw InputError(param_field, std::string(value), "given twice");
       seen[index] = true;
-      spec.values_si[index] = parse_quantity(value, info.parameters[index].dimension, param_field);
+      spec.values_si[index] = parse_effect_value(value, info.parameters[index], param_field);
       if (comma == std::string_view::npos) break;
       rest = rest.substr(comma + 1);
     }

@@ -33,6 +33,10 @@ double magnitude_limit(Dimension dimension) {
     case Dimension::kLength: return 1e6;
     case Dimension::kTime: return 48 * 3600.0;
     case Dimension::kDimensionless: return 0.1;
+    // Random walks: 1,000 deg/√h (the noisiest MEMS gyros are near 10) and
+    // 60 m/s/√h (MEMS accelerometers are near 0.1).
+    case Dimension::kAngleRandomWalk: return 1000 * kDegToRad / 60;
+    case Dimension::kVelocityRandomWalk: return 1.0;
   }
   return 0.0;
 }

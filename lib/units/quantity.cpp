@@ -34,6 +34,9 @@ constexpr UnitFactor kRateUnits[] = {{"radps", 1.0},
 constexpr UnitFactor kVelocityUnits[] = {{"mps", 1.0}, {"ftps", kFtpsToMps}, {"mmps", 1e-3}};
 constexpr UnitFactor kAccelerationUnits[] = {
     {"mps2", 1.0}, {"mg", kMgToMps2}, {"ug", kUgToMps2}, {"g", kGravityMps2}, {"ftps2", kFtToM}};
+// "prth": per root hour (1/√h = 1/60 · 1/√s), "prts": per root second.
+constexpr UnitFactor kAngleWalkUnits[] = {{"radprts", 1.0}, {"degprth", kDegToRad / 60}, {"degprts", kDegToRad}};
+constexpr UnitFactor kVelocityWalkUnits[] = {{"mpsprts", 1.0}, {"mpsprth", 1.0 / 60}, {"ftpsprth", kFtToM / 60}};
 constexpr UnitFactor kDimensionlessUnits[] = {{"", 1.0}, {"ppm", kPpmToUnit}};
 
 std::span<const UnitFactor> units_of(Dimension d) {
@@ -44,6 +47,8 @@ std::span<const UnitFactor> units_of(Dimension d) {
     case Dimension::kAngularRate: return kRateUnits;
     case Dimension::kVelocity: return kVelocityUnits;
     case Dimension::kAcceleration: return kAccelerationUnits;
+    case Dimension::kAngleRandomWalk: return kAngleWalkUnits;
+    case Dimension::kVelocityRandomWalk: return kVelocityWalkUnits;
     case Dimension::kDimensionless: return kDimensionlessUnits;
   }
   return kDimensionlessUnits;
@@ -65,6 +70,8 @@ std::string_view si_suffix(Dimension d) {
     case Dimension::kAngularRate: return "radps";
     case Dimension::kVelocity: return "mps";
     case Dimension::kAcceleration: return "mps2";
+    case Dimension::kAngleRandomWalk: return "radprts";
+    case Dimension::kVelocityRandomWalk: return "mpsprts";
     case Dimension::kDimensionless: return "";
   }
   return "";
@@ -113,7 +120,8 @@ std::string format_quantity(double value_si, Dimension dimension) {
   const UnitFactor* chosen = &units_of(dimension)[0];
   for (const auto& u : units_of(dimension)) {
     const std::string_view name = u.name;
-    if (name == "meru" || name == "mg" || name == "mrad" || name == "ppm") chosen = &u;
+    if (name == "meru" || name == "mg" || name == "mrad" || name == "ppm" || name == "degprth" || name == "mpsprth")
+      chosen = &u;
   }
   if (dimension == Dimension::kDimensionless) chosen = &units_of(dimension)[0];
   return fmt::format("{:.12g}{}", value_si / chosen->to_si, chosen->name);

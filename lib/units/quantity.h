@@ -1,6 +1,7 @@
 #pragma once
 /// Values with units on the command line and in INI files ("15min", "10meru",
-/// "1mg", "0.3mps", "100m", "1mrad", "20arcsec", "45deg", "50ppm"), parsed by
+/// "1mg", "0.3mps", "100m", "1mrad", "20arcsec", "45deg", "50ppm", and the
+/// sensor-spec random walks "0.005degprth" (deg/√h), "0.03mpsprth"), parsed by
 /// one function into SI. A dimensional value without a unit is refused with
 /// the list of accepted units; dimensionless values are bare (or "ppm").
 #include <cstddef>
@@ -18,10 +19,12 @@ enum class Dimension {
   kAngularRate,     ///< rad/s
   kVelocity,        ///< m/s
   kAcceleration,    ///< m/s²
+  kAngleRandomWalk,     ///< rad/√s (a gyro's white rate noise; deg/√h on data sheets)
+  kVelocityRandomWalk,  ///< m/s/√s (an accelerometer's white noise; m/s/√h on data sheets)
 };
 
 /// Name of the SI unit used in file columns and JSON keys ("m", "s", "rad",
-/// "radps", "mps", "mps2", "" for dimensionless).
+/// "radps", "mps", "mps2", "radprts", "mpsprts", "" for dimensionless).
 std::string_view si_suffix(Dimension d);
 
 /// The unit spellings accepted for a dimension, e.g. {"m","ft","km","nmi"}.

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "lib/common/input_error.h"
+#include "lib/truth/effect.h"
 #include "lib/units/units.h"
 
 namespace insmc {
@@ -81,6 +82,29 @@ TEST(Constants, SchulerPeriodIs84Point4Minutes) {
   const double period_min = 2 * std::numbers::pi / schuler_frequency_radps() / 60.0;
   EXPECT_NEAR(period_min, 84.4, 0.05);
   EXPECT_DOUBLE_EQ(kEarthRadiusM, 20.9e6 * 0.3048);
+}
+
+}  // namespace
+}  // namespace insmc
+
+namespace insmc {
+namespace {
+
+TEST(SensorSpecUnits, RandomWalksPerRootHourAndSecond) {
+  // 1/√h = 1/60 · 1/√s.
+  EXPECT_DOUBLE_EQ(parse_quantity("0.005degprth", Dimension::kAngleRandomWalk, "f"), 0.005 * kDegToRad / 60);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.03mpsprth", Dimension::kVelocityRandomWalk, "f"), 0.03 / 60);
+  EXPECT_DOUBLE_EQ(parse_quantity("2e-5radprts", Dimension::kAngleRandomWalk, "f"), 2e-5);
+  EXPECT_THROW(parse_quantity("0.005deg", Dimension::kAngleRandomWalk, "f"), InputError);
+  EXPECT_THROW(parse_quantity("0.005degprth", Dimension::kAngle, "f"), InputError);
+}
+
+TEST(SensorSpecUnits, EffectsTakeTheWalkForTheirValueAfterOneHour) {
+  const EffectSpec by_angle = parse_effect("angle_random_walk:angle_1h=0.005deg");
+  const EffectSpec by_walk = parse_effect("angle_random_walk:angle_1h=0.005degprth");
+  EXPECT_NEAR(by_walk.values_si[0], by_angle.values_si[0], 1e-15);
+  const EffectSpec v = parse_effect("velocity_random_walk:velocity_1h=0.03mpsprth");
+  EXPECT_NEAR(v.values_si[0], 0.03, 1e-12);
 }
 
 }  // namespace
