@@ -139,7 +139,7 @@ class BoundsParser {
     if (b.metric != BoundMetric::kRms && b.axis != mc::Axis::kHorizontal)
       fail(limit->column, fmt::format("limit {}: {} is a percentile of the horizontal radial error; it needs "
                                       "axis=horizontal, not axis={}",
-                                      quote(limit->text), to_string(b.metric), axis_name(b.axis)));
+                                      quote(limit->text), names_of(b.metric).key, axis_name(b.axis)));
     const Token& t_min = kv.at("t_min");
     const double minutes = number(t_min, "t_min");
     if (!(minutes >= 0 && minutes <= 360))
@@ -220,13 +220,10 @@ class BoundsParser {
 
 }  // namespace
 
-std::string_view to_string(BoundMetric m) {
-  switch (m) {
-    case BoundMetric::kRms: return "rms";
-    case BoundMetric::kCep50: return "cep50";
-    case BoundMetric::kCep95: return "p95";
-  }
-  return "?";
+BoundMetricNames names_of(BoundMetric m) {
+  if (m == BoundMetric::kCep50) return {"cep50", "CEP50"};
+  if (m == BoundMetric::kCep95) return {"p95", "CEP95"};
+  return {"rms", "RMS"};
 }
 
 std::vector<Bound> parse_bounds_text(std::string_view text, std::string_view source) {

@@ -32,7 +32,12 @@ inline constexpr std::size_t kMaxBoundsReportTimes = 100;
 
 /// What a bound limits (docs/outputs.md, "Accuracy metrics").
 enum class BoundMetric { kRms, kCep50, kCep95 };
-std::string_view to_string(BoundMetric m);
+/// Its key in a bounds file ("rms", "cep50", "p95") and the name check
+/// prints ("RMS", "CEP50", "CEP95").
+struct BoundMetricNames {
+  std::string_view key, label;
+};
+BoundMetricNames names_of(BoundMetric m);
 
 struct Bound {
   int line = 0;

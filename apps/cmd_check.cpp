@@ -11,21 +11,11 @@
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
 #include "lib/units/units.h"
-#include "montecarlo/aggregate/horizontal_accuracy.h"
 #include "montecarlo/engine/engine.h"
 #include "montecarlo/write/csv.h"
 
 namespace insmc::app {
 namespace {
-
-std::string_view metric_label(BoundMetric m) {
-  switch (m) {
-    case BoundMetric::kRms: return "RMS";
-    case BoundMetric::kCep50: return "CEP50";
-    case BoundMetric::kCep95: return "CEP95";
-  }
-  return "?";
-}
 
 /// Output o's estimate of the bound's metric with its interval at `confidence`.
 mc::QuantileEstimate estimate(BoundMetric metric, const mc::StudyLayout& layout, const mc::StudyAccumulator& acc,
@@ -34,11 +24,9 @@ mc::QuantileEstimate estimate(BoundMetric metric, const mc::StudyLayout& layout,
   if (metric == BoundMetric::kRms) return {sum.rms, sum.rms_lo, sum.rms_hi};
   // The bounds file allows percentiles on horizontal outputs alone, and
   // their times are the study's report times: their samples are kept.
-  const int slot = layout.kept_slot[o];
-  INSMC_ASSERT(slot >= 0, "a percentile bound on output {} whose samples are not kept", o);
-  const mc::HorizontalAccuracy a = mc::horizontal_accuracy(
-      sum, acc.kept().values(static_cast<std::uint64_t>(slot)), layout.times_s[layout.outputs[o].time_index], confidence);
-  return metric == BoundMetric::kCep50 ? a.cep50_m : a.cep95_m;
+  const std::optional<mc::HorizontalAccuracy> a = acc.accuracy(layout, o, sum, confidence);
+  INSMC_ASSERT(a.has_value(), "a percentile bound on output {} whose samples are not kept", o);
+  return metric == BoundMetric::kCep50 ? a->cep50_m : a->cep95_m;
 }
 
 }  // namespace
@@ -86,7 +74,7 @@ int run_check(const Args& args) {
       if (!ok) ++violated;
       fmt::print("{} line {}: scheme={} system={} axis={} t_min={}: {} {} m, upper {}% limit {} m {} bound {} m\n",
                  ok ? "ok      " : "VIOLATED", b.line, to_string(b.scheme), system_number(b.system),
-                 to_string(b.axis), mc::format_number(b.t_s / 60), metric_label(b.metric), mc::format_number(e.value),
+                 to_string(b.axis), mc::format_number(b.t_s / 60), names_of(b.metric).label, mc::format_number(e.value),
                  mc::format_number(100 * conf), mc::format_number(e.hi), ok ? "<=" : ">",
                  mc::format_number(b.limit_m));
     }

@@ -150,6 +150,14 @@ void StudyAccumulator::merge(const StudyAccumulator& other) {
   kept_.merge(other.kept_);
 }
 
+std::optional<HorizontalAccuracy> StudyAccumulator::accuracy(const StudyLayout& l, std::size_t o,
+                                                             const OutputSummary& s, double confidence) const {
+  const int slot = l.kept_slot[o];
+  if (slot < 0 || kept_.outputs() == 0) return std::nullopt;
+  return horizontal_accuracy(s, kept_.values(static_cast<std::uint64_t>(slot)), l.times_s[l.outputs[o].time_index],
+                             confidence);
+}
+
 std::string StudyAccumulator::serialize() const {
   std::string out = "insmc-acc2";
   const std::uint64_t n = outputs_.size();

@@ -8,10 +8,12 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "montecarlo/aggregate/horizontal_accuracy.h"
 #include "montecarlo/aggregate/kept_samples.h"
 #include "montecarlo/aggregate/output_stats.h"
 #include "montecarlo/study/study_map.h"
@@ -31,6 +33,10 @@ class StudyAccumulator {
   const std::vector<OutputStats>& outputs() const { return outputs_; }
   KeptSamples& kept() { return kept_; }
   const KeptSamples& kept() const { return kept_; }
+  /// Output o's accuracy metrics (horizontal_accuracy.h) from its summary
+  /// `s` at `confidence` and its kept values; none when they are not kept.
+  std::optional<HorizontalAccuracy> accuracy(const StudyLayout& layout, std::size_t o, const OutputSummary& s,
+                                             double confidence) const;
   std::string serialize() const;
   static StudyAccumulator deserialize(std::string_view bytes);
   friend bool operator==(const StudyAccumulator&, const StudyAccumulator&) = default;

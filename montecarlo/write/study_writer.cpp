@@ -59,15 +59,6 @@ std::string at_rms_precision(double x, std::optional<int> place) {
   return place ? format_at_place(x, *place) : format_significant(x, 6);
 }
 
-/// The accuracy metrics of output o when its samples were kept.
-std::optional<HorizontalAccuracy> accuracy_of(const StudyLayout& l, const StudyAccumulator& acc, std::size_t o,
-                                              const OutputSummary& s, double confidence) {
-  const int slot = l.kept_slot[o];
-  if (slot < 0) return std::nullopt;
-  return horizontal_accuracy(s, acc.kept().values(static_cast<std::uint64_t>(slot)),
-                             l.times_s[l.outputs[o].time_index], confidence);
-}
-
 /// The summary's figures of one row's metrics, in the printed unit.
 AccuracyFigures figures_of(const HorizontalAccuracy& a, double k) {
   const auto half = [](const QuantileEstimate& e) { return 0.5 * (e.hi - e.lo); };
@@ -90,7 +81,7 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
     const OutputSpec& spec = l.outputs[o];
     const OutputSummary s = acc.outputs()[o].summarize(c.confidence);
     const double t = l.times_s[spec.time_index];
-    const std::optional<HorizontalAccuracy> accuracy = accuracy_of(l, acc, o, s, c.confidence);
+    const std::optional<HorizontalAccuracy> accuracy = acc.accuracy(l, o, s, c.confidence);
     std::vector<std::string> row = {std::string(to_string(spec.scheme)), std::to_string(system_number(spec.system)),
                                     std::string(clock_of(spec.scheme)), std::string(to_string(spec.axis)),
                                     fmt_minutes(t), std::to_string(s.n), format_number(k * s.rms),

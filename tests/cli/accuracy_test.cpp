@@ -26,6 +26,12 @@ std::vector<std::string> cells_of(const std::string& line) {
   return out;
 }
 
+/// Writes `text` to `name` in `dir`; its path.
+std::string write_file(const TempDir& dir, const char* name, const std::string& text) {
+  std::ofstream(dir.path() / name) << text;
+  return (dir.path() / name).string();
+}
+
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> out;
   std::stringstream in(text);
@@ -106,15 +112,11 @@ TEST(Accuracy, SummaryShowsCep50And2drmsAtTheLastReportTimeAndUnitsNmiWork) {
 
 TEST(Accuracy, CheckJudgesCep50AndP95BoundsByTheirUpperLimits) {
   TempDir dir;
-  const auto write = [&](const char* name, const std::string& text) {
-    std::ofstream(dir.path() / name) << text;
-    return (dir.path() / name).string();
-  };
   // Scheme none, system 2 at 84 min: CEP50 about 12 km, CEP95 about 23 km
   // (2000 samples); the loose bounds are twice that, the tight one a tenth.
   const std::string h = "scheme=none system=2 axis=horizontal t_min=84 ";
-  const std::string loose = write("loose.txt", h + "cep50_m<=24000\n" + h + "p95<=25nmi\n");
-  const std::string tight = write("tight.txt", h + "cep50<=0.7nmi\n");
+  const std::string loose = write_file(dir, "loose.txt", h + "cep50_m<=24000\n" + h + "p95<=25nmi\n");
+  const std::string tight = write_file(dir, "tight.txt", h + "cep50<=0.7nmi\n");
   const auto pass = run_insmc("check --samples 2000 --bounds " + loose);
   EXPECT_EQ(pass.exit_code, 0) << pass.out << pass.err;
   EXPECT_TRUE(has(pass.out, "ok       line 1: scheme=none system=2 axis=horizontal t_min=84: CEP50 ")) << pass.out;
@@ -127,10 +129,6 @@ TEST(Accuracy, CheckJudgesCep50AndP95BoundsByTheirUpperLimits) {
 
 TEST(Accuracy, CheckRefusesBadPercentileBoundsWithOneLine) {
   TempDir dir;
-  const auto write = [&](const char* name, const std::string& text) {
-    std::ofstream(dir.path() / name) << text;
-    return (dir.path() / name).string();
-  };
   const struct {
     const char* text;
     const char* message;
@@ -142,7 +140,7 @@ TEST(Accuracy, CheckRefusesBadPercentileBoundsWithOneLine) {
       {"scheme=none system=2 axis=horizontal t_min=84 cep50_m>=3\n", ":1:47: limit 'cep50_m>=3': expected"},
   };
   for (const auto& c : cases) {
-    const std::string path = write("bad.txt", c.text);
+    const std::string path = write_file(dir, "bad.txt", c.text);
     const auto r = run_insmc("check --samples 2000 --bounds " + path);
     EXPECT_EQ(r.exit_code, 2) << c.text;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
