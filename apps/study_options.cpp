@@ -68,7 +68,8 @@ po::options_description study_options_description(bool monte_carlo) {
       "paper (the report's closed forms as printed), linear (full linear model, report errors corrected) or "
       "truth (the nonlinear simulator per sample, every scheme through its injection points)")(
       "confidence", po::value<double>()->default_value(0.95, "0.95"), "confidence level of the RMS intervals, in [0.5, 0.999999]")(
-      "units", po::value<std::string>()->default_value("si"), "si (metres, _m columns), paper (feet, _ft columns) or nmi (nautical miles, _nmi columns)")(
+      "units", po::value<std::string>()->default_value("si"), "si (metres, _m columns), paper (feet, _ft columns) or nmi (nautical miles, _nmi "
+      "columns)")(
       "grid-step", po::value<std::string>()->default_value("2min"), "envelope time-grid step")(
       "grid-end", po::value<std::string>()->default_value("90min"), "envelope time-grid end");
   if (monte_carlo) {

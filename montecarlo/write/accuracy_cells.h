@@ -25,6 +25,12 @@ std::vector<std::string> accuracy_header(LengthUnit unit);
 /// without metrics (and for the rate at t = 0, where it is undefined).
 std::vector<std::string> accuracy_cells(const std::optional<HorizontalAccuracy>& a, LengthUnit unit);
 
+/// envelope.md's columns: "CEP50 [m]", "CEP95 [m]", "2DRMS [m]",
+/// "CEP50/t [n.mi./h]", and a row's cells "value ± half-width"
+/// (interval_format.h; half the interval's width), empty without metrics.
+std::vector<std::string> readable_accuracy_header(LengthUnit unit);
+std::vector<std::string> readable_accuracy_cells(const std::optional<HorizontalAccuracy>& a, LengthUnit unit);
+
 /// The same in SI keys (cep50_m, …, radial_rate_nmiph, …) on a run.json
 /// envelope row; null values without metrics.
 void add_accuracy_json(Json& row, const std::optional<HorizontalAccuracy>& a);

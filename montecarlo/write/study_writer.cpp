@@ -49,6 +49,7 @@ std::vector<std::string> readable_header(LengthUnit u, double confidence) {
                                      rms_interval_column(u, confidence)};
   for (const char* q : {"mean", "std", "min", "max", "p95"}) header.push_back(fmt::format("{} [{}]", q, u_));
   header.emplace_back("ready [min]");
+  for (std::string& column : readable_accuracy_header(u)) header.push_back(std::move(column));
   return header;
 }
 
@@ -97,9 +98,12 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
       const std::string rms = format_with_interval(k * s.rms, half);
       const std::optional<int> place = interval_place(half);
       full.add_row({row[0], row[1], row[3], row[4], rms, std::to_string(s.n)});
-      readable.add_row({row[0], row[1], row[2], row[3], row[4], row[5], rms, at_rms_precision(k * s.mean, place),
-                        at_rms_precision(k * s.std, place), at_rms_precision(k * s.min, place),
-                        at_rms_precision(k * s.max, place), at_rms_precision(k * s.p95_abs, place), row[14]});
+      std::vector<std::string> readable_row = {row[0], row[1], row[2], row[3], row[4], row[5], rms,
+                                               at_rms_precision(k * s.mean, place), at_rms_precision(k * s.std, place),
+                                               at_rms_precision(k * s.min, place), at_rms_precision(k * s.max, place),
+                                               at_rms_precision(k * s.p95_abs, place), row[14]};
+      for (std::string& cell : readable_accuracy_cells(accuracy, unit)) readable_row.push_back(std::move(cell));
+      readable.add_row(std::move(readable_row));
       if (spec.axis == Axis::kHorizontal)
         horizontal.push_back({row[0], row[2], system_number(spec.system), t / 60.0, k * s.rms, half,
                               map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0,

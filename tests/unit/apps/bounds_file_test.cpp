@@ -41,7 +41,8 @@ TEST(BoundsFile, ReadsBounds) {
 
 TEST(BoundsFile, OtherLimitFormsAreRefusedNotIgnored) {
   const std::string base = "scheme=none system=2 axis=horizontal t_min=84 ";
-  EXPECT_NE(error_of(base + "rms_m>=5").find("bounds.txt:1:47: limit 'rms_m>=5': expected METRIC_UNIT<=NUMBER or METRIC<=NUMBERUNIT"),
+  EXPECT_NE(error_of(base + "rms_m>=5")
+                .find("bounds.txt:1:47: limit 'rms_m>=5': expected METRIC_UNIT<=NUMBER or METRIC<=NUMBERUNIT"),
             std::string::npos)
       << error_of(base + "rms_m>=5");
   EXPECT_NE(error_of(base + "rms_km<=5").find("bounds.txt:1:47: limit 'rms_km<=5'"), std::string::npos);

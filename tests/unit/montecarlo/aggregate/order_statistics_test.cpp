@@ -28,7 +28,8 @@ using testing::Acceptance, testing::acceptance_probability, testing::binomial_ac
 // P(B <= k) for B ~ Bin(n, p); 0 for k < 0.
 double cdf(std::uint64_t n, double p, std::int64_t k) {
   if (k < 0) return 0.0;
-  return boost::math::cdf(boost::math::binomial_distribution<double>(static_cast<double>(n), p), static_cast<double>(k));
+  const boost::math::binomial_distribution<double> b(static_cast<double>(n), p);
+  return boost::math::cdf(b, static_cast<double>(k));
 }
 
 // The exact coverage of [X_(lo), X_(hi)] for the p-quantile of continuous
