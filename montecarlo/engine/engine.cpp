@@ -210,8 +210,8 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
           if (b >= end_block) break;
           run_block(c, map, sampler, truth, b, ws, acc, total.kept());
           const std::uint64_t n = std::min<std::uint64_t>(kBlockSize, c.samples - b * kBlockSize);
-          const std::uint64_t total = done.fetch_add(n) + n;
-          if (progress) progress(total);
+          const std::uint64_t samples_done = done.fetch_add(n) + n;
+          if (progress) progress(samples_done);
         }
       },
       tbb::simple_partitioner());
