@@ -71,12 +71,13 @@ KeptSamples KeptSamples::read_from(std::string_view bytes, std::size_t& pos) {
   KeptSamples k;
   if (outputs == 0 && (samples != 0 || kept_blocks != 0)) in.fail("kept blocks without kept outputs");
   if (outputs != 0) {
-    // Sizes checked against the bytes present before anything is allocated.
-    if (outputs > kMaxKeptValues || kept_blocks > kMaxKeptValues / outputs ||
+    // Sizes checked against the bytes present before anything is allocated
+    // (a state that keeps anything keeps at least one block).
+    if (kept_blocks == 0 || outputs > kMaxKeptValues || kept_blocks > kMaxKeptValues / outputs ||
         in.remaining() < kept_blocks * (1 + 4 * outputs * kBlockSize))
       in.fail("kept samples larger than the state");
     k = KeptSamples(outputs, samples);
-    if (k.kept_blocks_ != kept_blocks || kept_blocks == 0) in.fail("kept blocks do not match the sample count");
+    if (k.kept_blocks_ != kept_blocks) in.fail("kept blocks do not match the sample count");
   }
   for (auto& f : k.filled_) {
     f = in.u8();
