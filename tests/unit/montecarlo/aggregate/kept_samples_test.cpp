@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "montecarlo/aggregate/byte_io.h"
 #include "montecarlo/random/philox.h"
 #include "montecarlo/study/study_config.h"
 #include "tests/unit/montecarlo/aggregate/permutation.h"
@@ -90,6 +91,17 @@ TEST(KeptSamples, RoundTripIsBitExactAndTruncationIsAnError) {
   bytes.pop_back();
   pos = 2;
   EXPECT_THROW(KeptSamples::read_from(bytes, pos), std::runtime_error);
+  // A corrupt header never allocates what the bytes do not hold: 2^20
+  // outputs of zero blocks, or more blocks than the bytes carry.
+  for (const std::uint64_t blocks : {std::uint64_t{0}, std::uint64_t{5}}) {
+    std::string corrupt;
+    byte_io::put_u64(corrupt, std::uint64_t{1} << 20);
+    byte_io::put_u64(corrupt, 1'000'000);
+    byte_io::put_u64(corrupt, blocks);
+    corrupt += std::string(64, '\0');
+    pos = 0;
+    EXPECT_THROW(KeptSamples::read_from(corrupt, pos), std::runtime_error) << blocks;
+  }
 }
 
 }  // namespace
