@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "apps/cli_common.h"
+#include "apps/imu_csv_options.h"
 #include "apps/output_paths.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
@@ -20,22 +21,6 @@
 
 namespace insmc::app {
 namespace {
-
-/// "a,b,c" → three column names (blanks around names dropped).
-std::array<std::string, 3> parse_three_columns(const std::string& text, const char* field) {
-  std::array<std::string, 3> out;
-  std::stringstream in(text);
-  std::string item;
-  int n = 0;
-  while (std::getline(in, item, ',')) {
-    const auto first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
-    if (n < 3) out[n] = first == std::string::npos ? "" : item.substr(first, last - first + 1);
-    ++n;
-  }
-  if (n != 3 || (!text.empty() && text.back() == ','))
-    throw InputError(field, echo_input(text), "must be three column names X,Y,Z separated by commas");
-  return out;
-}
 
 enum class RunsFrom { kFile, kSplit };
 
@@ -58,15 +43,6 @@ int run_import_imu(const Args& args) {
       "out", po::value<std::string>(), "record file to write (required)")(
       "runs-from", po::value<std::string>()->default_value("file"),
       "file: one run from the start of each input; split: consecutive runs of align + test + nav")(
-      "rate", po::value<std::string>(), "sample rate, e.g. 100Hz (sample k at k/rate); or --time-column")(
-      "time-column", po::value<std::string>(), "column with the sample times (instead of --rate)")(
-      "time-unit", po::value<std::string>()->default_value("s"), "unit of the time column: s, ms, min, h")(
-      "gyro-columns", po::value<std::string>()->default_value("gyro_x_dps,gyro_y_dps,gyro_z_dps"),
-      "gyro columns of the sensor x,y,z axes")(
-      "accel-columns", po::value<std::string>()->default_value("acc_x_g,acc_y_g,acc_z_g"),
-      "accelerometer columns of the sensor x,y,z axes")(
-      "gyro-unit", po::value<std::string>()->default_value("deg/s"), "unit of the gyro columns: deg/s, rad/s, deg/h")(
-      "accel-unit", po::value<std::string>()->default_value("g"), "unit of the accelerometer columns: g, m/s2")(
       "latitude", po::value<std::string>(), "latitude L0 of the site (required, e.g. 51.08deg)")(
       "altitude", po::value<std::string>()->default_value("0m"), "height of the site above the model sphere r0")(
       "azimuth", po::value<std::string>()->default_value("0deg"),
@@ -79,6 +55,7 @@ int run_import_imu(const Args& args) {
       "output interval, also the filter interval tau of the accelerometer error f")(
       "gyro-bias", po::value<std::string>()->default_value("remove"),
       "remove: subtract the gyro bias estimated during alignment; keep: navigate on the raw gyros");
+  add_imu_csv_options(opts);
   const auto vm = parse_args(args, "import-imu",
                              "--input FILE [--input FILE]... --out FILE --latitude ANGLE (--rate RATE | "
                              "--time-column NAME) [options]",
@@ -94,24 +71,7 @@ int run_import_imu(const Args& args) {
     return parse_quantity((*vm)[name].as<std::string>(), d, std::string("--") + name);
   };
 
-  ImuCsvOptions csv;
-  csv.gyro_columns = parse_three_columns((*vm)["gyro-columns"].as<std::string>(), "--gyro-columns");
-  csv.accel_columns = parse_three_columns((*vm)["accel-columns"].as<std::string>(), "--accel-columns");
-  csv.gyro_unit = parse_gyro_unit((*vm)["gyro-unit"].as<std::string>(), "--gyro-unit");
-  csv.accel_unit = parse_accel_unit((*vm)["accel-unit"].as<std::string>(), "--accel-unit");
-  if (!vm->count("rate") && !vm->count("time-column"))
-    throw InputError("--rate", "(missing)", "give the sample rate (e.g. 100Hz) or a time column with --time-column");
-  if (vm->count("rate")) csv.rate_hz = parse_rate_hz((*vm)["rate"].as<std::string>(), "--rate");
-  if (vm->count("time-column")) {
-    csv.time_column = (*vm)["time-column"].as<std::string>();
-    const std::string unit = (*vm)["time-unit"].as<std::string>();
-    try {  // the time units of parse_quantity, named without a number
-      csv.time_unit_s = parse_quantity("1" + unit, Dimension::kTime, "--time-unit");
-    } catch (const InputError&) {
-      throw InputError("--time-unit", echo_input(unit), "must be one of: s, min, h, ms");
-    }
-  }
-  if (auto e = validate(csv)) throw *e;
+  const ImuCsvOptions csv = read_imu_csv_options(*vm);
 
   StrapdownOptions nav;
   nav.latitude_rad = q("latitude", Dimension::kAngle);

@@ -27,6 +27,7 @@ constexpr Subcommand kSubcommands[] = {
     {"tables", insmc::app::run_tables, "the report's tables beside the values insmc computes"},
     {"simulate", insmc::app::run_simulate, "truth-level records (format v1) with chosen named effects"},
     {"import-imu", insmc::app::run_import_imu, "records (format v1) from raw IMU samples: strapdown, stationary base"},
+    {"noise", insmc::app::run_noise, "raw-sensor noise: Allan deviation, fitted noise terms, warm-up, disturbances"},
     {"gap", insmc::app::run_gap, "sim-to-real gap diagnosis of record files: where, which effect, how far it shrinks"},
     {"gap-validate", insmc::app::run_gap_validate, "the gap diagnosis scored blind on records with withheld effects"},
     {"effects", insmc::app::run_effects, "the truth simulator's named effects, parameters and defaults"},

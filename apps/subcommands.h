@@ -20,5 +20,6 @@ int run_simulate(const Args& args);
 int run_gap(const Args& args);
 int run_gap_validate(const Args& args);
 int run_import_imu(const Args& args);
+int run_noise(const Args& args);
 
 }  // namespace insmc::app

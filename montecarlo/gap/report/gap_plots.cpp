@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "montecarlo/write/svg_frame.h"
 #include "montecarlo/write/svg_plot.h"
 
 namespace insmc::mc {
@@ -13,39 +14,6 @@ namespace {
 
 constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c"};
 
-
-/// A frame in pixels and the data range it shows.
-struct Frame {
-  double left, top, width, height;
-  double x0, x1, y0, y1;
-  double px(double x) const { return left + (x - x0) / (x1 - x0) * width; }
-  double py(double y) const { return top + height - (y - y0) / (y1 - y0) * height; }
-};
-
-std::string open_svg(double w, double h, const std::string& title) {
-  return fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" font-family=\"sans-serif\" "
-                     "font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-                     "<text x=\"60\" y=\"22\" font-size=\"14\">{}</text>\n",
-                     w, h, svg_escape(title));
-}
-
-/// The frame, its clip path (id "frame") and the y label.
-std::string frame_svg(const Frame& f, const std::string& y_label) {
-  return fmt::format("<defs><clipPath id=\"frame\"><rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\"/>"
-                     "</clipPath></defs>\n<rect class=\"frame\" x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" "
-                     "height=\"{:.1f}\" fill=\"none\" stroke=\"black\"/>\n"
-                     "<text transform=\"translate(16,{:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>\n",
-                     f.left, f.top, f.width, f.height, f.left, f.top, f.width, f.height, f.top + f.height / 2,
-                     svg_escape(y_label));
-}
-
-double nice_step(double span) {
-  if (!(span > 0)) return 1.0;
-  const double raw = span / 6, p = std::pow(10.0, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0, 10.0})
-    if (m * p >= raw) return m * p;
-  return 10 * p;
-}
 
 }  // namespace
 
@@ -106,14 +74,7 @@ std::string allan_svg(const Diagnosis& d) {
   y0 = std::floor(y0), y1 = std::max(std::ceil(y1), y0 + 1);
   const Frame f{80, 40, 520, 340, x0, x1, y0, y1};
   std::string svg = open_svg(800, 440, "Allan deviation of the f residuals: data (solid) and the null (band, dashed)");
-  for (double e = y0; e <= y1 + 1e-9; e += 1)
-    svg += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#ddd\"/>"
-                       "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">1e{:g}</text>\n",
-                       f.left, f.py(e), f.left + f.width, f.py(e), f.left - 5, f.py(e) + 4, e);
-  for (double e = x0; e <= x1 + 1e-9; e += 1)
-    svg += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#ddd\"/>"
-                       "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{:g} s</text>\n",
-                       f.px(e), f.top, f.px(e), f.top + f.height, f.px(e), f.top + f.height + 16, std::pow(10.0, e));
+  svg += decade_grid_svg(f, " s");
   svg += frame_svg(f, "Allan deviation [m/s^2]");
   svg += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">cluster time (log scale)</text>\n",
                      f.left + f.width / 2, f.top + f.height + 40);

@@ -1,0 +1,84 @@
+// insmc noise: the raw-sensor noise stage (docs/noise.md). Overlapping Allan
+// deviation of each gyro and accelerometer channel with its intervals, the
+// standard noise terms fitted with intervals and selected, disturbances
+// masked, the warm-up tested, all beside Table 3.1's bounds.
+#include <fmt/format.h>
+
+#include "apps/cli_common.h"
+#include "apps/imu_csv_options.h"
+#include "apps/output_paths.h"
+#include "apps/noise_report.h"
+#include "apps/progress.h"
+#include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
+#include "lib/noise/noise_analysis.h"
+#include "lib/units/quantity.h"
+
+namespace insmc::app {
+
+/// Fewest samples per recording: the Allan variance needs a few octaves of
+/// cluster times, and the masking a few dozen blocks.
+inline constexpr std::size_t kMinNoiseSamples = 300;
+
+int run_noise(const Args& args) {
+  po::options_description opts("Options");
+  opts.add_options()("input", po::value<std::vector<std::string>>()->composing(),
+                     "IMU CSV file of a static recording (plain text), repeatable: one recording each")(
+      "out", po::value<std::string>(), "folder for noise.md, noise.json, allan.csv, noise_terms.csv, allan.svg")(
+      "format", po::value<std::string>()->default_value("markdown"), "what to print: markdown or json")(
+      "alpha", po::value<double>()->default_value(0.01),
+      "family-wise level of the masking, the stationarity test and the term selection, in [1e-6, 0.2]")(
+      "confidence", po::value<double>()->default_value(0.95), "of every interval, in [0.5, 0.999999]")(
+      "first-part", po::value<std::string>()->default_value("1h"),
+      "start of each recording tested against the rest (warm-up); at most half the longest recording is used")(
+      "mask", po::value<std::string>()->default_value("on"), "on: mask disturbances; off: use every sample");
+  add_imu_csv_options(opts);
+  const auto vm = parse_args(args, "noise", "--input FILE [--input FILE]... (--rate RATE | --time-column NAME) [options]", opts);
+  if (!vm) return 0;
+  if (!vm->count("input")) throw InputError("--input", "(missing)", "give at least one IMU CSV file");
+  const ImuCsvOptions csv = read_imu_csv_options(*vm);
+  noise::NoiseOptions options;
+  options.alpha = (*vm)["alpha"].as<double>();
+  if (!(options.alpha >= 1e-6 && options.alpha <= 0.2))
+    throw InputError("--alpha", fmt::format("{:g}", options.alpha), "must lie in [1e-6, 0.2]");
+  options.confidence = (*vm)["confidence"].as<double>();
+  if (!(options.confidence >= 0.5 && options.confidence <= 0.999999))
+    throw InputError("--confidence", fmt::format("{:g}", options.confidence), "must lie in [0.5, 0.999999]");
+  options.first_part_s = parse_quantity((*vm)["first-part"].as<std::string>(), Dimension::kTime, "--first-part");
+  if (!(options.first_part_s >= 60 && options.first_part_s <= 86400))
+    throw InputError("--first-part", echo_input((*vm)["first-part"].as<std::string>()), "must lie in [1min, 24h]");
+  const std::string mask = (*vm)["mask"].as<std::string>();
+  if (mask != "on" && mask != "off") throw InputError("--mask", echo_input(mask), "must be on or off");
+  options.mask = mask == "on";
+  const std::string format = (*vm)["format"].as<std::string>();
+  if (format != "markdown" && format != "json") throw InputError("--format", echo_input(format), "must be markdown or json");
+  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "noise");
+
+  std::vector<ImuSamples> recordings;
+  for (const std::string& input : (*vm)["input"].as<std::vector<std::string>>()) {
+    recordings.push_back(read_imu_csv(input, csv));
+    if (recordings.back().size() < kMinNoiseSamples)
+      throw InputError("--input", echo_input(input, 256),
+                       fmt::format("{} samples: a noise analysis needs at least {} per recording",
+                                   recordings.back().size(), kMinNoiseSamples));
+  }
+  const noise::SensorRecording rec = noise::make_recording(recordings);
+  recordings.clear();
+  noise::NoiseAnalysis analysis;
+  {
+    Progress progress(0, "");
+    progress.update("noise analysis", 0, 1, "");
+    analysis = noise::analyse_noise(rec, options);
+  }
+  const std::string json = noise_json(rec, analysis, options.confidence).dump(2) + "\n";
+  const auto report = noise_report(rec, analysis, options.confidence);
+  if (out) {
+    OutputFiles files(report.begin(), report.end());
+    files.emplace_back("noise.json", json);
+    out->write(files);
+  }
+  fmt::print("{}", format == "json" ? json : report.front().second);
+  return 0;
+}
+
+}  // namespace insmc::app

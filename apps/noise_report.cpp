@@ -1,0 +1,362 @@
+#include "apps/noise_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+#include <numbers>
+
+#include "lib/uncertainty/catalogue.h"
+#include "lib/units/units.h"
+#include "montecarlo/write/svg_frame.h"
+#include "montecarlo/write/svg_plot.h"
+
+namespace insmc::app {
+namespace {
+
+using noise::NoiseTerm;
+using noise::SensorKind;
+
+constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c"};
+
+/// One Schuler period, the report's flight horizon (84.4 min).
+double schuler_period_s() { return 2 * std::numbers::pi / schuler_frequency_radps(); }
+
+/// Table 3.1's bound for the in-run error of a channel: the gyro drift ω_do
+/// (10 meru) for gyros; the accelerometer bias change ∂f between alignment
+/// and flight (0.1 mg: its constant and per-alignment halves) for
+/// accelerometers, the part of the bias the test run cannot take out.
+double table31_bound_si(SensorKind kind) {
+  if (kind == SensorKind::kGyro) return find_uncertainty("gyro_drift_x")->default_bound_si;
+  return find_uncertainty("bias_change_const_x")->default_bound_si + find_uncertainty("bias_change_align_x")->default_bound_si;
+}
+
+/// A term's size as a constant rate error over one Schuler period T_s:
+/// Q/T_s, N/√T_s, B, K√(T_s/3), R T_s, and for the Gauss–Markov process the
+/// RMS of its average over T_s, σ√(2x(1 − (1 − e^{−1/x})x)), x = T_c/T_s
+/// (σ for T_c ≫ T_s, white noise for T_c ≪ T_s) (docs/noise.md §6).
+double equivalent_constant(NoiseTerm t, double value_si, double tc_s) {
+  const double ts = schuler_period_s();
+  switch (t) {
+    case NoiseTerm::kQuantization: return value_si / ts;
+    case NoiseTerm::kWhiteRate: return value_si / std::sqrt(ts);
+    case NoiseTerm::kBiasInstability: return value_si;
+    case NoiseTerm::kRateRandomWalk: return value_si * std::sqrt(ts / 3);
+    case NoiseTerm::kRateRamp: return value_si * ts;
+    case NoiseTerm::kGaussMarkov: {
+      const double x = tc_s / ts;
+      return value_si * std::sqrt(std::max(0.0, 2 * x * (1 - x * (-std::expm1(-1 / x)))));
+    }
+  }
+  return 0;
+}
+
+std::string g3(double v) { return fmt::format("{:.3g}", v); }
+
+std::string bound_text(SensorKind kind) {
+  return kind == SensorKind::kGyro ? fmt::format("{:g} meru", table31_bound_si(kind) / kMeruToRadps)
+                                   : fmt::format("{:g} mg", table31_bound_si(kind) / kMgToMps2);
+}
+
+struct Orientation {
+  std::size_t run;
+  Vec3 mean_g;  ///< mean specific force over the kept samples [g]
+};
+
+std::vector<Orientation> orientations(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a) {
+  std::vector<Orientation> out;
+  for (std::size_t r = 0; r < rec.runs.size(); ++r) {
+    Vec3 sum = Vec3::Zero();
+    double n = 0;
+    for (const noise::Segment& s : a.mask.kept)
+      if (s.begin >= rec.runs[r].begin && s.end <= rec.runs[r].end)
+        for (std::size_t k = s.begin; k < s.end; ++k, n += 1)
+          for (int i = 0; i < 3; ++i) sum[i] += rec.channel[3 + i][k];
+    if (n > 0) out.push_back({r, sum / n / kGravityMps2});
+  }
+  return out;
+}
+
+/// Distinct orientations: mean specific-force directions more than 5° apart.
+std::size_t distinct_orientations(const std::vector<Orientation>& o) {
+  std::vector<Vec3> seen;
+  for (const Orientation& x : o) {
+    const Vec3 u = x.mean_g.normalized();
+    bool known = false;
+    for (const Vec3& v : seen) known = known || u.dot(v) > std::cos(5 * kDegToRad);
+    if (!known) seen.push_back(u);
+  }
+  return seen.size();
+}
+
+std::string identifiability(const std::vector<Orientation>& o) {
+  const std::size_t n = distinct_orientations(o);
+  if (n <= 1)
+    return "One static orientation: scale factor, misalignment and g-sensitivity are not identifiable from these data "
+           "(each acts as a constant bias in one orientation; separating them needs the sensor turned through "
+           "several orientations, or rotated at known rates).\n";
+  std::string s = fmt::format("{} distinct orientations (mean specific force more than 5° apart). ", n);
+  std::string both;
+  for (int i = 0; i < 3; ++i) {
+    double lo = 1e9, hi = -1e9;
+    for (const Orientation& x : o) lo = std::min(lo, x.mean_g[i]), hi = std::max(hi, x.mean_g[i]);
+    if (hi - lo > 1.5) both += fmt::format("{}{}", both.empty() ? "" : ", ", "xyz"[i]);
+  }
+  s += both.empty() ? "No accelerometer axis sees both +g and −g, so scale factor and bias stay confounded on every axis. "
+                    : fmt::format("Accelerometer axes that see both +g and −g, where bias and scale factor separate: {}. ", both);
+  s += n >= 6 ? "With six or more orientations the accelerometer misalignments and the gyros' g-sensitivity become "
+                "identifiable too (a multi-position calibration; not fitted by this stage).\n"
+              : "Misalignment and g-sensitivity need more orientations (six for a full multi-position calibration).\n";
+  return s;
+}
+
+std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence) {
+  std::string md = "# Sensor noise: overlapping Allan deviation and fitted terms\n\n";
+  double total_s = 0;
+  for (const noise::Segment& r : rec.runs) total_s += static_cast<double>(r.size()) * rec.dt_s;
+  md += fmt::format("{} recording(s), {} samples at {:g} Hz ({:.2f} h). Intervals at {:g} %; method: docs/noise.md.\n\n",
+                    rec.runs.size(), rec.size(), 1 / rec.dt_s, total_s / 3600, 100 * confidence);
+
+  md += fmt::format("## Against Table 3.1\n\nEach term as a constant error over one Schuler period ({:.1f} min), "
+                    "root-sum-square over the terms, against Table 3.1's bound (gyros: drift ω_do < {}; "
+                    "accelerometers: bias change ∂f < {}).\n\n",
+                    schuler_period_s() / 60, bound_text(SensorKind::kGyro), bound_text(SensorKind::kAccelerometer));
+  md += "| channel | equivalent | bound | ratio | largest term |\n|---|---:|---:|---:|---|\n";
+  for (const noise::ChannelNoise& ch : a.channels) {
+    double rss = 0, biggest = 0;
+    std::string name = "-";
+    for (const noise::TermFit& t : ch.fit.terms) {
+      const double e = equivalent_constant(t.term, t.value_si, ch.fit.model.correlation_time_s);
+      rss += e * e;
+      if (e > biggest) biggest = e, name = std::string(noise::term_name(t.term, ch.kind));
+    }
+    const double bound = table31_bound_si(ch.kind);
+    const bool gyro = ch.kind == SensorKind::kGyro;
+    md += fmt::format("| {} | {} {} | {} | {} | {} |\n", ch.name,
+                      g3(std::sqrt(rss) / (gyro ? kMeruToRadps : kMgToMps2)), gyro ? "meru" : "mg", bound_text(ch.kind),
+                      std::sqrt(rss) > bound ? fmt::format("**{:.3g}× above**", std::sqrt(rss) / bound)
+                                             : fmt::format("{:.2g} (within)", std::sqrt(rss) / bound),
+                      name);
+  }
+
+  md += "\n## Fitted terms\n\n| channel | term | value | interval | unit | value (SI) | unit (SI) |\n|---|---|---:|---|---|---:|---|\n";
+  for (const noise::ChannelNoise& ch : a.channels) {
+    for (const noise::TermFit& t : ch.fit.terms) {
+      const auto [v, unit] = spec_value(t.term, ch.kind, t.value_si);
+      const double f = t.value_si > 0 ? v / t.value_si : 0;
+      md += fmt::format("| {} | {} | {} | [{}, {}] | {} | {} | {} |\n", ch.name, noise::term_name(t.term, ch.kind), g3(v),
+                        g3(t.lower_si * f), g3(t.upper_si * f), unit, g3(t.value_si), noise::term_si_unit(t.term, ch.kind));
+      if (t.term == NoiseTerm::kGaussMarkov)
+        md += fmt::format("| {} | correlation time | {} | [{}, {}] | s | {} | s |\n", ch.name, g3(ch.fit.model.correlation_time_s),
+                          g3(ch.fit.correlation_time_lower_s), g3(ch.fit.correlation_time_upper_s),
+                          g3(ch.fit.model.correlation_time_s));
+    }
+  }
+  md += "\nTerms tried and not needed (their likelihood-ratio statistic below the test's critical value):\n";
+  for (const noise::ChannelNoise& ch : a.channels) {
+    std::string dropped;
+    for (const noise::TermFit& t : ch.fit.dropped)
+      dropped += fmt::format("{}{} ({:.2g})", dropped.empty() ? "" : ", ", noise::term_name(t.term, ch.kind), t.drop_statistic);
+    md += fmt::format("- {}: {}\n", ch.name, dropped.empty() ? "none" : dropped);
+  }
+
+  md += "\n## Stationarity: the first part of each run against the rest\n\n";
+  md += "| channel | first part | change of the mean | expected sd | runs | χ² | p | verdict |\n|---|---:|---:|---:|---:|---:|---:|---|\n";
+  for (const noise::ChannelNoise& ch : a.channels) {
+    const noise::StationarityTest& s = ch.stationarity;
+    if (!s.tested) {
+      md += fmt::format("| {} | - | - | - | 0 | - | - | not tested (no run twice as long as the first part) |\n", ch.name);
+      continue;
+    }
+    const bool gyro = ch.kind == SensorKind::kGyro;
+    const double unit = gyro ? kDegphToRadps : kUgToMps2;
+    md += fmt::format("| {} | {:.3g} min | {} {} | {} {} | {} | {:.3g} | {:.2g} | {} |\n", ch.name, s.first_part_s / 60,
+                      g3(s.mean_change / unit), gyro ? "deg/h" : "ug", g3(s.expected_sd / unit), gyro ? "deg/h" : "ug",
+                      s.runs, s.statistic, s.p_value,
+                      s.stationary ? "stationary" : "**non-stationary (warm-up): left out of the fit**");
+  }
+
+  md += "\n## Masked disturbances\n\n";
+  if (a.mask.intervals.empty()) {
+    md += fmt::format("None found (blocks of {:g} s tested for excess variance and for jumps of the mean).\n", a.mask.block_s);
+  } else {
+    md += fmt::format("{} interval(s), {:.1f} s in all, left out of every channel:\n\n| recording | from [s] | to [s] | "
+                      "channels | test | excess |\n|---|---:|---:|---|---|---:|\n",
+                      a.mask.intervals.size(), static_cast<double>(a.mask.masked_samples) * rec.dt_s);
+    for (const noise::MaskedInterval& m : a.mask.intervals)
+      md += fmt::format("| {} | {:.1f} | {:.1f} | {} | {} | {:.3g}× |\n", rec.run_names[m.run], m.start_s, m.end_s,
+                        m.channels, m.test, m.excess);
+  }
+  md += "\n## What these data can identify\n\n" + identifiability(orientations(rec, a));
+  return md;
+}
+
+std::string allan_csv(const noise::NoiseAnalysis& a) {
+  std::string csv = "channel,tau_s,adev_si,adev_lower_si,adev_upper_si,edf,windows,model_adev_si,si_unit\n";
+  for (const noise::ChannelNoise& ch : a.channels)
+    for (const noise::AllanRow& r : ch.allan)
+      csv += fmt::format("{},{},{},{},{},{:.6g},{},{},{}\n", ch.name, r.tau_s, r.adev, r.lower, r.upper, r.edf, r.windows,
+                         r.model_adev, ch.kind == SensorKind::kGyro ? "rad/s" : "m/s2");
+  return csv;
+}
+
+std::string terms_csv(const noise::NoiseAnalysis& a) {
+  std::string csv = "channel,term,value_si,lower_si,upper_si,si_unit,value_spec,lower_spec,upper_spec,spec_unit\n";
+  for (const noise::ChannelNoise& ch : a.channels)
+    for (const noise::TermFit& t : ch.fit.terms) {
+      const auto [v, unit] = spec_value(t.term, ch.kind, t.value_si);
+      const double f = t.value_si > 0 ? v / t.value_si : 0;
+      csv += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", ch.name, noise::term_name(t.term, ch.kind), t.value_si,
+                         t.lower_si, t.upper_si, noise::term_si_unit(t.term, ch.kind), v, t.lower_si * f, t.upper_si * f, unit);
+      if (t.term == NoiseTerm::kGaussMarkov)
+        csv += fmt::format("{},correlation_time,{},{},{},s,{},{},{},s\n", ch.name, ch.fit.model.correlation_time_s,
+                           ch.fit.correlation_time_lower_s, ch.fit.correlation_time_upper_s,
+                           ch.fit.model.correlation_time_s, ch.fit.correlation_time_lower_s,
+                           ch.fit.correlation_time_upper_s);
+    }
+  return csv;
+}
+
+/// Two log–log panels (gyros, accelerometers): each axis's Allan deviation
+/// with its interval bars and the fitted model (dashed).
+std::string allan_svg(const noise::NoiseAnalysis& a) {
+  std::string svg = mc::open_svg(760, 860, "Overlapping Allan deviation: data with intervals, fitted model dashed");
+  for (int panel = 0; panel < 2; ++panel) {
+    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+    for (int i = 0; i < 3; ++i)
+      for (const noise::AllanRow& r : a.channels[3 * panel + i].allan) {
+        x0 = std::min(x0, std::log10(r.tau_s)), x1 = std::max(x1, std::log10(r.tau_s));
+        for (double v : {r.adev, r.lower, r.upper, r.model_adev})
+          if (v > 0 && std::isfinite(v)) y0 = std::min(y0, std::log10(v)), y1 = std::max(y1, std::log10(v));
+      }
+    if (!(x1 >= x0) || !(y1 >= y0)) x0 = 0, x1 = 1, y0 = -6, y1 = -5;
+    x0 = std::floor(x0), x1 = std::max(std::ceil(x1), x0 + 1), y0 = std::floor(y0), y1 = std::max(std::ceil(y1), y0 + 1);
+    const mc::Frame f{90, 50 + 410.0 * panel, 520, 330, x0, x1, y0, y1};
+    svg += mc::decade_grid_svg(f, " s");
+    std::string frame = mc::frame_svg(f, panel == 0 ? "gyro Allan deviation [rad/s]" : "accelerometer Allan deviation [m/s^2]");
+    // One clip path per panel.
+    const std::string id = fmt::format("frame{}", panel);
+    for (std::size_t p = frame.find("\"frame\""); p != std::string::npos; p = frame.find("\"frame\"", p + 1))
+      frame.replace(p, 7, "\"" + id + "\"");
+    svg += frame;
+    svg += fmt::format("<g clip-path=\"url(#{})\">\n", id);
+    for (int i = 0; i < 3; ++i) {
+      const noise::ChannelNoise& ch = a.channels[3 * panel + i];
+      std::string data, model;
+      for (const noise::AllanRow& r : ch.allan) {
+        const double x = f.px(std::log10(r.tau_s));
+        data += fmt::format("{:.1f},{:.1f} ", x, f.py(std::log10(r.adev)));
+        if (r.model_adev > 0) model += fmt::format("{:.1f},{:.1f} ", x, f.py(std::log10(r.model_adev)));
+        svg += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\"/>"
+                           "<circle class=\"point\" cx=\"{0:.1f}\" cy=\"{4:.1f}\" r=\"3\" fill=\"{3}\"/>\n",
+                           x, f.py(std::log10(std::max(r.lower, 1e-300))), f.py(std::log10(r.upper)), kColours[i],
+                           f.py(std::log10(r.adev)));
+      }
+      svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"/>\n", data, kColours[i]);
+      svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\" stroke-dasharray=\"6,4\"/>\n",
+                         model, kColours[i]);
+    }
+    svg += "</g>\n";
+    for (int i = 0; i < 3; ++i)
+      svg += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"3\"/>"
+                         "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
+                         f.left + f.width + 20, f.top + 12 + 20.0 * i, f.left + f.width + 44, f.top + 12 + 20.0 * i,
+                         kColours[i], f.left + f.width + 50, f.top + 16 + 20.0 * i, mc::svg_escape(a.channels[3 * panel + i].name));
+    svg += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">cluster time τ (log scale)</text>\n",
+                       f.left + f.width / 2, f.top + f.height + 36);
+  }
+  return svg + "</svg>\n";
+}
+
+}  // namespace
+
+std::pair<double, std::string> spec_value(NoiseTerm t, SensorKind kind, double v) {
+  const double root_h = std::sqrt(kHourToS);  // 1/√s = 60/√h
+  if (kind == SensorKind::kGyro) {
+    switch (t) {
+      case NoiseTerm::kQuantization: return {v / kArcsecToRad, "arcsec"};
+      case NoiseTerm::kWhiteRate: return {v / kDegToRad * root_h, "deg/sqrt(h)"};
+      case NoiseTerm::kBiasInstability:
+      case NoiseTerm::kGaussMarkov: return {v / kDegphToRadps, "deg/h"};
+      case NoiseTerm::kRateRandomWalk: return {v / kDegphToRadps * root_h, "deg/h/sqrt(h)"};
+      case NoiseTerm::kRateRamp: return {v / kDegphToRadps * kHourToS, "deg/h/h"};
+    }
+  }
+  switch (t) {
+    case NoiseTerm::kQuantization: return {v, "m/s"};
+    case NoiseTerm::kWhiteRate: return {v * root_h, "m/s/sqrt(h)"};
+    case NoiseTerm::kBiasInstability:
+    case NoiseTerm::kGaussMarkov: return {v / kUgToMps2, "ug"};
+    case NoiseTerm::kRateRandomWalk: return {v / kUgToMps2 * root_h, "ug/sqrt(h)"};
+    case NoiseTerm::kRateRamp: return {v / kUgToMps2 * kHourToS, "ug/h"};
+  }
+  return {v, ""};
+}
+
+mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence) {
+  mc::Json j = mc::Json::object();
+  j["sample_interval_s"] = rec.dt_s;
+  j["samples"] = rec.size();
+  j["recordings"] = rec.runs.size();
+  j["confidence"] = confidence;
+  mc::Json channels = mc::Json::array();
+  for (const noise::ChannelNoise& ch : a.channels) {
+    mc::Json c = mc::Json::object();
+    c["channel"] = ch.name;
+    mc::Json terms = mc::Json::array();
+    for (const noise::TermFit& t : ch.fit.terms) {
+      mc::Json x = mc::Json::object();
+      const auto [v, unit] = spec_value(t.term, ch.kind, t.value_si);
+      const double f = t.value_si > 0 ? v / t.value_si : 0;
+      x["term"] = std::string(noise::term_name(t.term, ch.kind));
+      x["value_si"] = t.value_si, x["lower_si"] = t.lower_si, x["upper_si"] = t.upper_si;
+      x["si_unit"] = std::string(noise::term_si_unit(t.term, ch.kind));
+      x["value_spec"] = v, x["lower_spec"] = t.lower_si * f, x["upper_spec"] = t.upper_si * f, x["spec_unit"] = unit;
+      if (t.term == NoiseTerm::kGaussMarkov) {
+        x["correlation_time_s"] = ch.fit.model.correlation_time_s;
+        x["correlation_time_lower_s"] = ch.fit.correlation_time_lower_s;
+        x["correlation_time_upper_s"] = ch.fit.correlation_time_upper_s;
+      }
+      terms.push_back(std::move(x));
+    }
+    c["terms"] = std::move(terms);
+    mc::Json st = mc::Json::object();
+    st["tested"] = ch.stationarity.tested;
+    st["first_part_s"] = ch.stationarity.first_part_s;
+    st["mean_change_si"] = ch.stationarity.mean_change;
+    st["expected_sd_si"] = ch.stationarity.expected_sd;
+    st["p_value"] = ch.stationarity.p_value;
+    st["stationary"] = ch.stationarity.stationary;
+    st["first_part_excluded"] = ch.first_part_excluded;
+    c["stationarity"] = std::move(st);
+    mc::Json allan = mc::Json::array();
+    for (const noise::AllanRow& r : ch.allan) {
+      mc::Json x = mc::Json::object();
+      x["tau_s"] = r.tau_s, x["adev_si"] = r.adev, x["lower_si"] = r.lower, x["upper_si"] = r.upper, x["edf"] = r.edf;
+      x["model_adev_si"] = r.model_adev;
+      allan.push_back(std::move(x));
+    }
+    c["allan"] = std::move(allan);
+    channels.push_back(std::move(c));
+  }
+  j["channels"] = std::move(channels);
+  mc::Json masked = mc::Json::array();
+  for (const noise::MaskedInterval& m : a.mask.intervals) {
+    mc::Json x = mc::Json::object();
+    x["recording"] = rec.run_names[m.run], x["start_s"] = m.start_s, x["end_s"] = m.end_s;
+    x["channels"] = m.channels, x["test"] = m.test, x["excess"] = m.excess;
+    masked.push_back(std::move(x));
+  }
+  j["masked"] = std::move(masked);
+  return j;
+}
+
+std::vector<std::pair<std::string, std::string>> noise_report(const noise::SensorRecording& rec,
+                                                              const noise::NoiseAnalysis& a, double confidence) {
+  return {{"noise.md", markdown(rec, a, confidence)},
+          {"allan.csv", allan_csv(a)},
+          {"noise_terms.csv", terms_csv(a)},
+          {"allan.svg", allan_svg(a)}};
+}
+
+}  // namespace insmc::app

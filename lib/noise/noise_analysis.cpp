@@ -1,0 +1,68 @@
+#include "lib/noise/noise_analysis.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace insmc::noise {
+namespace {
+
+std::vector<AllanRow> allan_rows(const std::vector<AllanLevel>& levels, const NoiseFit& fit, double confidence) {
+  std::vector<AllanRow> rows;
+  for (std::size_t j = 0; j < levels.size(); ++j) {
+    AllanRow r;
+    r.tau_s = levels[j].tau_s;
+    r.adev = std::sqrt(levels[j].avar);
+    r.edf = fit.edf[j];
+    const DeviationInterval ci = adev_interval(levels[j].avar, r.edf, confidence);
+    r.lower = ci.lo, r.upper = ci.hi;
+    r.model_adev = std::sqrt(fit.model.avar(r.tau_s));
+    r.windows = levels[j].windows;
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+std::size_t total(std::span<const Segment> s) {
+  std::size_t n = 0;
+  for (const Segment& x : s) n += x.size();
+  return n;
+}
+
+}  // namespace
+
+NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& options) {
+  NoiseAnalysis out;
+  out.dt_s = rec.dt_s;
+  out.mask = options.mask ? find_disturbances(rec, options.alpha) : no_mask(rec);
+  out.used_s = static_cast<double>(total(out.mask.kept)) * rec.dt_s;
+  std::size_t longest = 0;
+  for (const Segment& r : rec.runs) longest = std::max(longest, r.size());
+  const double first_part_s =
+      std::min(options.first_part_s, static_cast<double>(longest) * rec.dt_s / 2);
+  NoiseFitOptions fit_options;
+  fit_options.selection_alpha = options.alpha;
+  fit_options.confidence = options.confidence;
+  const std::vector<Segment> rest = after_first_part(rec.runs, out.mask.kept, rec.dt_s, first_part_s);
+  for (std::size_t c = 0; c < kChannels; ++c) {
+    ChannelNoise& ch = out.channels[c];
+    ch.name = channel_name(c);
+    ch.kind = channel_kind(c);
+    const std::vector<double>& y = rec.channel[c];
+    const std::vector<AllanLevel> rest_levels = overlapping_allan(y, rec.dt_s, rest);
+    if (rest_levels.size() >= 2) {
+      const NoiseFit rest_fit = fit_noise(rest_levels, fit_options);
+      ch.stationarity =
+          test_first_part(y, rec.dt_s, rec.runs, out.mask.kept, rest_fit.model, first_part_s, options.alpha);
+    }
+    ch.first_part_excluded = ch.stationarity.tested && !ch.stationarity.stationary;
+    const std::vector<Segment>& used = ch.first_part_excluded ? rest : out.mask.kept;
+    const std::vector<AllanLevel> levels = overlapping_allan(y, rec.dt_s, used);
+    if (levels.size() < 2)
+      throw std::invalid_argument("analyse_noise: too few samples for two Allan levels");
+    ch.fit = fit_noise(levels, fit_options);
+    ch.allan = allan_rows(levels, ch.fit, options.confidence);
+  }
+  return out;
+}
+
+}  // namespace insmc::noise

@@ -1,0 +1,83 @@
+// insmc noise end to end: a synthetic static recording with known white
+// noise, the report's files, the fitted random walk against the truth, and
+// bad input.
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <random>
+
+#include "tests/cli/run_program.h"
+
+namespace insmc::testing {
+namespace {
+
+/// 30 min at 10 Hz: gyros white at 0.3 deg/√h (deg/s columns), accelerometers
+/// white at 0.05 m/s/√h (g columns), z down; a 3 s bump at t = 900 s.
+std::string write_recording(const TempDir& dir, bool bump) {
+  const std::string path = (dir.path() / "imu.csv").string();
+  std::ofstream f(path);
+  f << "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g\n";
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> e(0.0, 1.0);
+  const double dt = 0.1, arw_dps = 0.3 / 60 / std::sqrt(dt), vrw_g = 0.05 / 60 / std::sqrt(dt) / 9.80665;
+  for (int k = 0; k < 18000; ++k) {
+    const double shake = bump && k >= 9000 && k < 9030 ? 0.05 : 0.0;
+    f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", 0.01 + arw_dps * e(rng), arw_dps * e(rng),
+                     arw_dps * e(rng), shake * std::sin(k) + vrw_g * e(rng), vrw_g * e(rng), -1.0 + vrw_g * e(rng));
+  }
+  return path;
+}
+
+TEST(Noise, WhiteNoiseRecordingIsReportedWithItsTruthInsideTheInterval) {
+  TempDir dir;
+  const std::string input = write_recording(dir, true);
+  const std::string out = (dir.path() / "out").string();
+  const ProgramResult r = run_insmc(fmt::format("noise --input {} --rate 10Hz --out {} --format json", input, out));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* name : {"noise.md", "noise.json", "allan.csv", "noise_terms.csv", "allan.svg"})
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / name)) << name;
+  const std::string terms = read_file(std::filesystem::path(out) / "noise_terms.csv");
+  // gyro_x's angle random walk: 0.3 deg/√h inside its interval.
+  std::istringstream lines(terms);
+  std::string line;
+  bool found = false;
+  while (std::getline(lines, line)) {
+    if (line.rfind("gyro_x,angle_random_walk,", 0) != 0) continue;
+    found = true;
+    std::vector<std::string> f;
+    std::istringstream cells(line);
+    for (std::string c; std::getline(cells, c, ',');) f.push_back(c);
+    ASSERT_EQ(f.size(), 10u);
+    EXPECT_EQ(f[9], "deg/sqrt(h)");
+    EXPECT_LE(std::stod(f[7]), 0.3);
+    EXPECT_GE(std::stod(f[8]), 0.3);
+  }
+  EXPECT_TRUE(found) << terms;
+  // The bump is masked and named.
+  const std::string md = read_file(std::filesystem::path(out) / "noise.md");
+  EXPECT_TRUE(has(md, "accel_x")) << md;
+  EXPECT_TRUE(has(md, "| 89")) << md;  // the masked interval starts near 900 s
+  EXPECT_TRUE(has(md, "One static orientation")) << md;
+  EXPECT_TRUE(has(r.out, "\"channels\""));
+}
+
+TEST(Noise, BadInputExitsTwoNamingTheOption) {
+  TempDir dir;
+  const std::string input = write_recording(dir, false);
+  for (auto [args, field] : {std::pair{"--rate 10Hz --alpha 5", "--alpha"}, std::pair{"", "--rate"},
+                             std::pair{"--rate 10Hz --first-part 3s", "--first-part"},
+                             std::pair{"--rate 10Hz --mask maybe", "--mask"},
+                             std::pair{"--rate 10Hz --gyro-unit furlong", "--gyro-unit"}}) {
+    const ProgramResult r = run_insmc(fmt::format("noise --input {} {}", input, args));
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_TRUE(has(r.err, field)) << r.err;
+  }
+  const ProgramResult missing = run_insmc("noise --rate 10Hz");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_TRUE(has(missing.err, "--input"));
+}
+
+}  // namespace
+}  // namespace insmc::testing
