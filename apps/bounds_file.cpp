@@ -6,19 +6,46 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 #include "lib/records/number_text.h"
+#include "lib/units/quantity.h"
 #include "lib/units/units.h"
 
 namespace insmc::app {
 namespace {
 
 constexpr std::string_view kKeys = "scheme, system, axis, t_min, confidence";
-constexpr std::string_view kLimitForms = "rms_m<=NUMBER or rms_ft<=NUMBER (NUMBER >= 0)";
+constexpr std::string_view kLimitForms =
+    "METRIC_UNIT<=NUMBER or METRIC<=NUMBERUNIT (rms_m<=9000, cep50_nmi<=2, p95<=3nmi; METRIC rms, cep50 or p95, "
+    "UNIT m, ft or nmi, NUMBER >= 0)";
+constexpr std::array<std::pair<std::string_view, BoundMetric>, 4> kMetrics = {{{"rms", BoundMetric::kRms},
+                                                                              {"cep50", BoundMetric::kCep50},
+                                                                              {"p95", BoundMetric::kCep95},
+                                                                              {"cep95", BoundMetric::kCep95}}};
+// The units a limit's key may carry (rms_ft): factor to metres.
+constexpr std::array<std::pair<std::string_view, double>, 3> kKeyUnits = {
+    {{"m", 1.0}, {"ft", kFtToM}, {"nmi", kNmiToM}}};
 constexpr std::array<std::pair<std::string_view, mc::Axis>, 4> kAxes = {
     {{"x", mc::Axis::kX}, {"y", mc::Axis::kY}, {"z", mc::Axis::kZ}, {"horizontal", mc::Axis::kHorizontal}}};
+
+/// The metric a limit token starts with (rms_m<=…, cep50<=…), if any.
+std::optional<std::pair<std::string_view, BoundMetric>> limit_metric(std::string_view text) {
+  for (const auto& m : kMetrics)
+    if (text.starts_with(m.first) && text.size() > m.first.size() &&
+        (text[m.first.size()] == '_' || text[m.first.size()] == '<'))
+      return m;
+  return std::nullopt;
+}
+
+/// The bounds file's name of an axis (kAxes).
+std::string_view axis_name(mc::Axis a) {
+  for (const auto& [name, axis] : kAxes)
+    if (axis == a) return name;
+  return "?";
+}
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -84,11 +111,11 @@ class BoundsParser {
     Bound b;
     b.line = static_cast<int>(line_);
     for (const Token& t : tokens) {
-      if (t.text.starts_with("rms_")) {
+      if (limit_metric(t.text)) {
         if (limit)
-          fail(t.column, fmt::format("a second limit {} (the first at column {}): one rms_m<=N or rms_ft<=N a line",
+          fail(t.column, fmt::format("a second limit {} (the first at column {}): one limit a line",
                                      quote(t.text), limit->column));
-        b.rms_limit_m = parse_limit(t);
+        parse_limit(t, b);
         limit = t;
         continue;
       }
@@ -104,11 +131,15 @@ class BoundsParser {
     }
     for (std::string_view key : {"scheme", "system", "axis", "t_min"})
       if (!kv.count(key))
-        fail(1, fmt::format("missing {}: each bound needs scheme, system, axis, t_min and rms_m<=N", key));
-    if (!limit) fail(1, "missing the limit: each bound needs rms_m<=N or rms_ft<=N");
+        fail(1, fmt::format("missing {}: each bound needs scheme, system, axis, t_min and a limit (rms_m<=N)", key));
+    if (!limit) fail(1, fmt::format("missing the limit: each bound needs one, {}", kLimitForms));
     b.scheme = parse_scheme_token(kv.at("scheme"));
     b.system = parse_system_token(kv.at("system"));
     b.axis = parse_axis_token(kv.at("axis"));
+    if (b.metric != BoundMetric::kRms && b.axis != mc::Axis::kHorizontal)
+      fail(limit->column, fmt::format("limit {}: {} is a percentile of the horizontal radial error; it needs "
+                                      "axis=horizontal, not axis={}",
+                                      quote(limit->text), names_of(b.metric).key, axis_name(b.axis)));
     const Token& t_min = kv.at("t_min");
     const double minutes = number(t_min, "t_min");
     if (!(minutes >= 0 && minutes <= 360))
@@ -123,18 +154,31 @@ class BoundsParser {
     return b;
   }
 
-  /// Exactly rms_m<=N or rms_ft<=N: anything else that starts rms_ (rms_m>=5,
-  /// rms_km<=5, rms_m=5) would otherwise read as no limit at all.
-  double parse_limit(const Token& t) const {
-    for (const std::string_view prefix : {std::string_view("rms_m<="), std::string_view("rms_ft<=")}) {
-      if (!t.text.starts_with(prefix)) continue;
-      const Token value{t.text.substr(prefix.size()), t.column + prefix.size()};
-      const double x = number(value, prefix.substr(0, prefix.size() - 2));
-      if (!(x >= 0)) fail(value.column, fmt::format("{}: the limit must be >= 0", quote(t.text)));
-      const double m = prefix == "rms_ft<=" ? x * kFtToM : x;
-      return m;
+  /// METRIC_UNIT<=NUMBER or METRIC<=NUMBERUNIT, exactly: anything else that
+  /// starts with a metric (rms_m>=5, rms_km<=5, rms_m=5) would otherwise
+  /// read as no limit at all.
+  void parse_limit(const Token& t, Bound& b) const {
+    const auto [metric_name, metric] = *limit_metric(t.text);
+    const std::size_t le = t.text.find("<=");
+    if (le == std::string_view::npos) fail(t.column, fmt::format("limit {}: expected {}", quote(t.text), kLimitForms));
+    const std::string_view key = t.text.substr(0, le);
+    const Token value{t.text.substr(le + 2), t.column + le + 2};
+    double x = 0;
+    if (key == metric_name) {  // the unit with the number: cep50<=3nmi
+      try {
+        x = parse_quantity(value.text, Dimension::kLength, key);
+      } catch (const InputError& e) {
+        fail(value.column, e.what());
+      }
+    } else {
+      const std::string_view unit = key.substr(metric_name.size() + 1);
+      const auto u = std::find_if(kKeyUnits.begin(), kKeyUnits.end(), [&](const auto& k) { return k.first == unit; });
+      if (u == kKeyUnits.end()) fail(t.column, fmt::format("limit {}: expected {}", quote(t.text), kLimitForms));
+      x = number(value, key) * u->second;
     }
-    fail(t.column, fmt::format("limit {}: expected {}", quote(t.text), kLimitForms));
+    if (!(x >= 0)) fail(value.column, fmt::format("{}: the limit must be >= 0", quote(t.text)));
+    b.metric = metric;
+    b.limit_m = x;
   }
 
   double number(const Token& t, std::string_view what) const {
@@ -175,6 +219,12 @@ class BoundsParser {
 };
 
 }  // namespace
+
+BoundMetricNames names_of(BoundMetric m) {
+  if (m == BoundMetric::kCep50) return {"cep50", "CEP50"};
+  if (m == BoundMetric::kCep95) return {"p95", "CEP95"};
+  return {"rms", "RMS"};
+}
 
 std::vector<Bound> parse_bounds_text(std::string_view text, std::string_view source) {
   return BoundsParser(text, source).parse();

@@ -1,7 +1,10 @@
 #pragma once
 /// The bounds file of `insmc check --bounds FILE`: one bound a line,
 ///   scheme=none system=2 axis=horizontal t_min=84 rms_m<=9000 [confidence=0.95]
-/// (rms_ft<=N also accepted; `#` starts a comment). Every mistake is an
+/// `#` starts a comment. The limit is METRIC_UNIT<=NUMBER or
+/// METRIC<=NUMBER UNIT (no space: `cep50<=3nmi`): METRIC rms, or on
+/// axis=horizontal cep50 or p95 (= cep95, the 95th percentile of the radial
+/// error); UNIT m, ft or nmi (and km with the number). Every mistake is an
 /// InputError whose one-line message starts `FILE:LINE:COLUMN: ` (1-based).
 #include <cstddef>
 #include <cstdint>
@@ -27,13 +30,23 @@ inline constexpr std::size_t kMaxBoundsLineBytes = 1024;
 inline constexpr std::size_t kMaxBounds = 2'000;
 inline constexpr std::size_t kMaxBoundsReportTimes = 100;
 
+/// What a bound limits (docs/outputs.md, "Accuracy metrics").
+enum class BoundMetric { kRms, kCep50, kCep95 };
+/// Its key in a bounds file ("rms", "cep50", "p95") and the name check
+/// prints ("RMS", "CEP50", "CEP95").
+struct BoundMetricNames {
+  std::string_view key, label;
+};
+BoundMetricNames names_of(BoundMetric m);
+
 struct Bound {
   int line = 0;
   Scheme scheme = Scheme::kNone;
   System system = System::kTheodolite;
   mc::Axis axis = mc::Axis::kHorizontal;
   double t_s = 0.0;
-  double rms_limit_m = 0.0;
+  BoundMetric metric = BoundMetric::kRms;
+  double limit_m = 0.0;
   std::optional<double> confidence;
 };
 

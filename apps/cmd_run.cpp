@@ -232,7 +232,7 @@ int run_command(const Args& args, Ranks& ranks) {
                        "cannot be combined with a sweep (checkpoint the points as separate runs)");
     // Each point's blocks are split over the ranks (one rank without MPI).
     const SweepFiles files =
-        run_sweep(config, sweeps, unit == mc::LengthUnit::kFoot, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
+        run_sweep(config, sweeps, unit, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
           RunPlan plan;
           plan.result_everywhere = true;
           return run_study_blocks(c, m, ranks, StudyProgress{{}, mc::StudyAccumulator(m)}, plan).progress.state;

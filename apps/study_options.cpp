@@ -68,7 +68,8 @@ po::options_description study_options_description(bool monte_carlo) {
       "paper (the report's closed forms as printed), linear (full linear model, report errors corrected) or "
       "truth (the nonlinear simulator per sample, every scheme through its injection points)")(
       "confidence", po::value<double>()->default_value(0.95, "0.95"), "confidence level of the RMS intervals, in [0.5, 0.999999]")(
-      "units", po::value<std::string>()->default_value("si"), "si (metres, _m columns) or paper (feet, _ft columns)")(
+      "units", po::value<std::string>()->default_value("si"), "si (metres, _m columns), paper (feet, _ft columns) or nmi (nautical miles, _nmi "
+      "columns)")(
       "grid-step", po::value<std::string>()->default_value("2min"), "envelope time-grid step")(
       "grid-end", po::value<std::string>()->default_value("90min"), "envelope time-grid end");
   if (monte_carlo) {
@@ -189,7 +190,8 @@ mc::LengthUnit read_length_unit(const po::variables_map& vm) {
   const std::string u = vm["units"].as<std::string>();
   if (u == "si") return mc::LengthUnit::kMetre;
   if (u == "paper") return mc::LengthUnit::kFoot;
-  throw InputError("--units", u, "must be si or paper");
+  if (u == "nmi") return mc::LengthUnit::kNauticalMile;
+  throw InputError("--units", u, "must be si, paper or nmi");
 }
 
 }  // namespace insmc::app

@@ -111,10 +111,10 @@ std::vector<SweepAxis> find_sweeps(const po::variables_map& vm) {
   return axes;
 }
 
-SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, bool paper_units,
+SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, mc::LengthUnit unit,
                      const StudyRunner& run) {
-  const double k = paper_units ? 1.0 / kFtToM : 1.0;
-  const std::string u = paper_units ? "ft" : "m";
+  const double k = mc::length_factor(unit);
+  const std::string u = mc::length_suffix(unit);
   std::vector<std::string> header;
   for (const auto& a : axes) header.push_back(a.column);
   for (const char* c : {"scheme", "system", "clock", "axis", "t_min", "n"}) header.emplace_back(c);

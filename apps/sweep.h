@@ -10,6 +10,7 @@
 #include "apps/cli_common.h"
 #include "montecarlo/engine/engine.h"
 #include "montecarlo/study/study_config.h"
+#include "montecarlo/write/length_unit.h"
 
 namespace insmc::app {
 
@@ -33,7 +34,7 @@ struct SweepFiles {
 using StudyRunner = std::function<mc::StudyAccumulator(const mc::StudyConfig&, const mc::StudyMap&)>;
 /// `run`: how each point is run (default: every block in this process; under
 /// MPI, apps/cmd_run.cpp splits each point's blocks over the ranks).
-SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, bool paper_units,
+SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, mc::LengthUnit unit,
                      const StudyRunner& run = {});
 
 }  // namespace insmc::app

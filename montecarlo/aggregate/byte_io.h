@@ -1,6 +1,6 @@
 #pragma once
 /// Little-endian byte encoding for aggregator serialize()/deserialize()
-/// (ExactSum, OutputStats).
+/// (ExactSum, OutputStats, KeptSamples).
 /// Doubles are written as their IEEE-754 binary64 bit patterns, so a round
 /// trip reproduces every bit (including -0 and NaN payloads). Byte order is
 /// fixed by shifting, independent of the host's endianness.
@@ -11,6 +11,8 @@
 #include <string_view>
 
 namespace insmc::mc::byte_io {
+
+inline void put_u8(std::string& out, std::uint8_t v) { out.push_back(static_cast<char>(v)); }
 
 inline void put_u32(std::string& out, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFu));
@@ -29,6 +31,13 @@ class Reader {
   Reader(std::string_view bytes, const char* what, std::size_t start = 0)
       : bytes_(bytes), what_(what), pos_(start) {
     if (start > bytes_.size()) fail("start beyond the end");
+  }
+
+  std::uint8_t u8() {
+    need(1);
+    const std::uint8_t v = byte(0);
+    pos_ += 1;
+    return v;
   }
 
   std::uint32_t u32() {

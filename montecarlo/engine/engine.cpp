@@ -79,8 +79,11 @@ void truth_rows(const StudyConfig& c, const StudyMap& map, const Sampler& sample
   }
 }
 
+/// Runs one block into `acc`; the kept outputs' values also go into `kept`
+/// (the run's one store: distinct blocks are distinct memory).
 void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler,
-               const std::vector<TruthSchemeSetup>& truth, std::uint64_t block, Workspace& ws, StudyAccumulator& acc) {
+               const std::vector<TruthSchemeSetup>& truth, std::uint64_t block, Workspace& ws, StudyAccumulator& acc,
+               KeptSamples& kept) {
   const std::uint64_t first = block * kBlockSize;
   const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kBlockSize, c.samples - first));
   fill_uniform01(c.seed, Stream::Uncertainties, first, ux::kDim, n,
@@ -101,6 +104,8 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
     ws.y[j].topRows(ni).noalias() = ws.z.leftCols(ni).transpose() * map.transposed(sj);
   }
   auto& outs = acc.outputs();
+  const std::vector<int>& kept_slot = map.layout().kept_slot;
+  const bool keep = kept.keeps(block);
   for (std::size_t o = 0; o < outs.size(); ++o) {
     const Eigen::MatrixXd& y = ws.y[static_cast<std::size_t>(map.system_index(o))];
     const int base = map.row_base(o);
@@ -110,19 +115,27 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
     } else {
       const double* north = y.col(base + 3).data();
       const double* east = y.col(base + 4).data();
+      // The horizontal radial error r = sqrt(N² + E²).
       for (std::size_t s = 0; s < n; ++s) ws.h[s] = std::sqrt(north[s] * north[s] + east[s] * east[s]);
       outs[o].add_block(ws.h.data(), n);
+      if (keep && kept_slot[o] >= 0)
+        std::transform(ws.h.begin(), ws.h.begin() + static_cast<std::ptrdiff_t>(n),
+                       kept.slot(block, static_cast<std::uint64_t>(kept_slot[o])),
+                       [](double r) { return static_cast<float>(r); });
     }
   }
+  if (keep) kept.mark_filled(block);
 }
 
 }  // namespace
 
-StudyAccumulator::StudyAccumulator(const StudyMap& map) {
+StudyAccumulator::StudyAccumulator(const StudyMap& map, bool keep_samples) {
   const auto& mean = map.predicted_mean();
   const auto& rms = map.predicted_rms();
   outputs_.reserve(mean.size());
   for (size_t o = 0; o < mean.size(); ++o) outputs_.emplace_back(mean[o], rms[o]);
+  if (keep_samples && map.layout().n_kept > 0)
+    kept_ = KeptSamples(static_cast<std::uint64_t>(map.layout().n_kept), map.config().samples);
 }
 
 void StudyAccumulator::merge(const StudyAccumulator& other) {
@@ -134,24 +147,35 @@ void StudyAccumulator::merge(const StudyAccumulator& other) {
   INSMC_ASSERT(other.outputs_.size() == outputs_.size(), "merging accumulators of {} and {} outputs",
                outputs_.size(), other.outputs_.size());
   for (size_t o = 0; o < outputs_.size(); ++o) outputs_[o].merge(other.outputs_[o]);
+  kept_.merge(other.kept_);
+}
+
+std::optional<HorizontalAccuracy> StudyAccumulator::accuracy(const StudyLayout& l, std::size_t o,
+                                                             const OutputSummary& s, double confidence) const {
+  const int slot = l.kept_slot[o];
+  if (slot < 0 || kept_.outputs() == 0) return std::nullopt;
+  return horizontal_accuracy(s, kept_.values(static_cast<std::uint64_t>(slot)), l.times_s[l.outputs[o].time_index],
+                             confidence);
 }
 
 std::string StudyAccumulator::serialize() const {
-  std::string out = "insmc-acc1";
+  std::string out = "insmc-acc2";
   const std::uint64_t n = outputs_.size();
   for (int b = 0; b < 8; ++b) out.push_back(static_cast<char>((n >> (8 * b)) & 0xff));
   for (const auto& s : outputs_) s.append_to(out);
+  kept_.append_to(out);
   return out;
 }
 
 StudyAccumulator StudyAccumulator::deserialize(std::string_view bytes) {
-  if (bytes.substr(0, 10) != "insmc-acc1") throw std::runtime_error("not an insmc accumulator state");
+  if (bytes.substr(0, 10) != "insmc-acc2") throw std::runtime_error("not an insmc accumulator state (of this version)");
   std::size_t pos = 10;
   if (bytes.size() < pos + 8) throw std::runtime_error("accumulator state truncated");
   std::uint64_t n = 0;
   for (int b = 0; b < 8; ++b) n |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[pos++])) << (8 * b);
   StudyAccumulator acc;
   for (std::uint64_t o = 0; o < n; ++o) acc.outputs_.push_back(OutputStats::read_from(bytes, pos));
+  acc.kept_ = KeptSamples::read_from(bytes, pos);
   if (pos != bytes.size()) throw std::runtime_error("accumulator state has trailing bytes");
   return acc;
 }
@@ -164,7 +188,9 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   const Sampler sampler(c.uncertainties);
   const std::vector<TruthSchemeSetup> truth = truth_setups(c, map);
-  const StudyAccumulator empty(map);
+  const StudyAccumulator empty(map, false);
+  // The kept values go straight into the result's store, block by block.
+  StudyAccumulator total(map);
   tbb::enumerable_thread_specific<StudyAccumulator> partial(empty);
   tbb::enumerable_thread_specific<Workspace> workspaces(map, static_cast<int>(c.systems.size()));
   std::atomic<std::uint64_t> done{0};
@@ -182,16 +208,15 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
         while (!stopped()) {
           const std::uint64_t b = next.fetch_add(1);
           if (b >= end_block) break;
-          run_block(c, map, sampler, truth, b, ws, acc);
+          run_block(c, map, sampler, truth, b, ws, acc, total.kept());
           const std::uint64_t n = std::min<std::uint64_t>(kBlockSize, c.samples - b * kBlockSize);
-          const std::uint64_t total = done.fetch_add(n) + n;
-          if (progress) progress(total);
+          const std::uint64_t samples_done = done.fetch_add(n) + n;
+          if (progress) progress(samples_done);
         }
       },
       tbb::simple_partitioner());
   if (finished_end) *finished_end = std::min(next.load(), end_block);
   // Exact, associative and commutative merge: the order does not matter.
-  StudyAccumulator total = empty;
   for (const StudyAccumulator& p : partial) total.merge(p);
   return total;
 }

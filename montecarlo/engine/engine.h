@@ -8,29 +8,42 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "montecarlo/aggregate/horizontal_accuracy.h"
+#include "montecarlo/aggregate/kept_samples.h"
 #include "montecarlo/aggregate/output_stats.h"
 #include "montecarlo/study/study_map.h"
 
 namespace insmc::mc {
 
-/// Statistics of every output of a study (layout order).
+/// Statistics of every output of a study (layout order), and the kept
+/// per-sample values of the outputs the layout marks (StudyLayout::kept_slot).
 class StudyAccumulator {
  public:
   StudyAccumulator() = default;
-  explicit StudyAccumulator(const StudyMap& map);
+  /// `keep_samples` false: no kept values (the engine's per-thread partials,
+  /// whose blocks' values go straight into the run's one store).
+  explicit StudyAccumulator(const StudyMap& map, bool keep_samples = true);
   void merge(const StudyAccumulator& other);
   std::vector<OutputStats>& outputs() { return outputs_; }
   const std::vector<OutputStats>& outputs() const { return outputs_; }
+  KeptSamples& kept() { return kept_; }
+  const KeptSamples& kept() const { return kept_; }
+  /// Output o's accuracy metrics (horizontal_accuracy.h) from its summary
+  /// `s` at `confidence` and its kept values; none when they are not kept.
+  std::optional<HorizontalAccuracy> accuracy(const StudyLayout& layout, std::size_t o, const OutputSummary& s,
+                                             double confidence) const;
   std::string serialize() const;
   static StudyAccumulator deserialize(std::string_view bytes);
   friend bool operator==(const StudyAccumulator&, const StudyAccumulator&) = default;
 
  private:
   std::vector<OutputStats> outputs_;
+  KeptSamples kept_;
 };
 
 /// Called from worker threads with the number of samples finished so far.

@@ -43,6 +43,8 @@ StudyLayout make_layout(const StudyConfig& c) {
     for (int j = 0; j < l.n_systems; ++j)
       for (int k = 0; k < l.n_times; ++k)
         for (Axis a : kAllAxes) l.outputs.push_back({c.schemes[i], c.systems[j], a, k});
+  for (const OutputSpec& o : l.outputs)
+    l.kept_slot.push_back(o.axis == Axis::kHorizontal && l.is_report_time[o.time_index] ? l.n_kept++ : -1);
   return l;
 }
 

@@ -28,6 +28,11 @@ struct StudyLayout {
   std::vector<bool> is_report_time, is_grid_time;
   /// Scheme-major, then system, time, axis.
   std::vector<OutputSpec> outputs;
+  /// Per output: its place among the outputs whose per-sample values are
+  /// kept (horizontal at a report time: the accuracy metrics of
+  /// docs/outputs.md), or -1; n_kept of them, in output order.
+  std::vector<int> kept_slot;
+  int n_kept = 0;
   /// Index of the output for (scheme i, system j, time k, axis a).
   int index(int scheme_i, int system_j, int time_k, Axis a) const;
   int n_systems = 0, n_times = 0;

@@ -1,6 +1,7 @@
 #include "montecarlo/write/envelope_summary.h"
 
 #include <algorithm>
+#include <optional>
 #include <fmt/format.h>
 
 #include "montecarlo/write/csv.h"
@@ -34,17 +35,37 @@ std::string render_horizontal_summary(const std::vector<HorizontalPoint>& points
     });
     if (row == rows.end()) rows.push_back({&p, {}});
   }
+  // The accuracy columns: at the latest time whose points carry metrics.
+  std::optional<double> accuracy_t;
+  for (const HorizontalPoint& p : points)
+    if (p.accuracy && (!accuracy_t || p.t_min > *accuracy_t)) accuracy_t = p.t_min;
   std::vector<std::string> header = {"scheme", "system", "clock"};
   for (double t : times) header.push_back(fmt::format("{} min", format_number(t)));
+  if (accuracy_t) {
+    header.push_back(fmt::format("CEP50 {} min", format_number(*accuracy_t)));
+    header.push_back(fmt::format("2DRMS {} min", format_number(*accuracy_t)));
+    header.emplace_back("CEP50/t [n.mi./h]");
+  }
   header.emplace_back("ready [min]");
   Table table(header);
   for (Row& r : rows) {
     std::vector<std::string> cells = {r.first->scheme, std::to_string(r.first->system), r.first->clock};
-    for (double t : times) {
+    const auto at = [&](double t) {
       const auto p = std::find_if(points.begin(), points.end(), [&](const HorizontalPoint& q) {
         return q.scheme == r.first->scheme && q.system == r.first->system && q.t_min == t;
       });
-      cells.push_back(p == points.end() ? "" : cell(*p));
+      return p == points.end() ? nullptr : &*p;
+    };
+    for (double t : times) {
+      const HorizontalPoint* p = at(t);
+      cells.push_back(p ? cell(*p) : "");
+    }
+    if (accuracy_t) {
+      const HorizontalPoint* p = at(*accuracy_t);
+      const std::optional<AccuracyFigures> a = p ? p->accuracy : std::nullopt;
+      cells.push_back(a ? format_with_interval(a->cep50, a->cep50_half) : "");
+      cells.push_back(a ? format_with_interval(a->drms2, a->drms2_half) : "");
+      cells.push_back(a ? format_with_interval(a->rate_nmiph, a->rate_half_nmiph) : "");
     }
     cells.push_back(format_number(r.first->ready_min));
     table.add_row(std::move(cells));

@@ -9,6 +9,13 @@
 
 namespace insmc::mc {
 
+/// The accuracy metrics of one horizontal output (Monte Carlo only), in the
+/// printed unit, with the half-widths of their confidence intervals.
+struct AccuracyFigures {
+  double cep50 = 0, cep50_half = 0, drms2 = 0, drms2_half = 0;
+  double rate_nmiph = 0, rate_half_nmiph = 0;  ///< CEP50 / t in n.mi./h
+};
+
 /// One horizontal output at a report time.
 struct HorizontalPoint {
   std::string scheme, clock;
@@ -17,10 +24,13 @@ struct HorizontalPoint {
   double rms = 0;                    ///< in the printed unit
   std::optional<double> half_width;  ///< of its confidence interval; none for exact values
   double ready_min = 0;              ///< from the first switch-over until the vehicle may fly
+  std::optional<AccuracyFigures> accuracy;
 };
 
 /// A caption line, then a Markdown table: scheme | system | clock | one
-/// "T min" column per report time | ready [min]. Rows and columns keep the
+/// "T min" column per report time | then, when the points carry accuracy
+/// metrics, "CEP50 T min" | "2DRMS T min" | "CEP50/t [n.mi./h]" at the
+/// latest such time T | ready [min]. Rows and columns keep the
 /// order of first appearance in `points`. Values with an interval are
 /// printed "28830 ± 480" (interval_format.h), exact ones to five
 /// significant figures. `caption` names the quantity and its unit.

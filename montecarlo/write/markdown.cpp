@@ -78,7 +78,7 @@ std::string render_markdown(const Table& table) {
     for (std::size_t c = 0; c < columns; ++c) {
       escaped[c] = escape_cell(row[c]);
       width[c] = std::max(width[c], display_width(escaped[c]));
-      if (!is_numeric_cell(row[c])) right[c] = false;
+      if (!row[c].empty() && !is_numeric_cell(row[c])) right[c] = false;  // a gap is no text
     }
     rows.push_back(std::move(escaped));
   }

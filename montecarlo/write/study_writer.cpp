@@ -8,6 +8,7 @@
 #include "lib/uncertainty/catalogue.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
+#include "montecarlo/write/accuracy_cells.h"
 #include "montecarlo/write/csv.h"
 #include "montecarlo/write/envelope_summary.h"
 #include "montecarlo/write/interval_format.h"
@@ -17,8 +18,6 @@
 namespace insmc::mc {
 namespace {
 
-double length_factor(LengthUnit u) { return u == LengthUnit::kFoot ? 1.0 / kFtToM : 1.0; }
-std::string length_suffix(LengthUnit u) { return u == LengthUnit::kFoot ? "ft" : "m"; }
 std::string fmt_minutes(double t_s) { return format_number(t_s / 60.0); }
 
 int scheme_index(const StudyConfig& c, Scheme s) {
@@ -34,6 +33,7 @@ std::vector<std::string> envelope_header(LengthUnit u) {
   for (const char* q : {"rms", "rms_lo", "rms_hi", "mean", "std", "min", "max", "p95"})
     header.push_back(fmt::format("{}_{}", q, u_));
   header.push_back("ready_time_min");
+  for (std::string& column : accuracy_header(u)) header.push_back(std::move(column));
   return header;
 }
 
@@ -49,6 +49,7 @@ std::vector<std::string> readable_header(LengthUnit u, double confidence) {
                                      rms_interval_column(u, confidence)};
   for (const char* q : {"mean", "std", "min", "max", "p95"}) header.push_back(fmt::format("{} [{}]", q, u_));
   header.emplace_back("ready [min]");
+  for (std::string& column : readable_accuracy_header(u)) header.push_back(std::move(column));
   return header;
 }
 
@@ -57,6 +58,13 @@ std::vector<std::string> readable_header(LengthUnit u, double confidence) {
 /// precision they are printed to as well.
 std::string at_rms_precision(double x, std::optional<int> place) {
   return place ? format_at_place(x, *place) : format_significant(x, 6);
+}
+
+/// The summary's figures of one row's metrics, in the printed unit.
+AccuracyFigures figures_of(const HorizontalAccuracy& a, double k) {
+  const auto half = [](const QuantileEstimate& e) { return 0.5 * (e.hi - e.lo); };
+  return {k * a.cep50_m.value, k * half(a.cep50_m), k * a.drms2_m.value, k * half(a.drms2_m),
+          mps_to_nmiph(a.radial_rate_mps.value), mps_to_nmiph(half(a.radial_rate_mps))};
 }
 
 }  // namespace
@@ -74,6 +82,7 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
     const OutputSpec& spec = l.outputs[o];
     const OutputSummary s = acc.outputs()[o].summarize(c.confidence);
     const double t = l.times_s[spec.time_index];
+    const std::optional<HorizontalAccuracy> accuracy = acc.accuracy(l, o, s, c.confidence);
     std::vector<std::string> row = {std::string(to_string(spec.scheme)), std::to_string(system_number(spec.system)),
                                     std::string(clock_of(spec.scheme)), std::string(to_string(spec.axis)),
                                     fmt_minutes(t), std::to_string(s.n), format_number(k * s.rms),
@@ -81,6 +90,7 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
                                     format_number(k * s.mean), format_number(k * s.std), format_number(k * s.min),
                                     format_number(k * s.max), format_number(k * s.p95_abs),
                                     format_number(map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0)};
+    for (std::string& cell : accuracy_cells(accuracy, unit)) row.push_back(std::move(cell));
     if (l.is_grid_time[spec.time_index]) grid.add_row(row);
     if (l.is_report_time[spec.time_index]) {
       report.add_row(row);
@@ -88,12 +98,16 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
       const std::string rms = format_with_interval(k * s.rms, half);
       const std::optional<int> place = interval_place(half);
       full.add_row({row[0], row[1], row[3], row[4], rms, std::to_string(s.n)});
-      readable.add_row({row[0], row[1], row[2], row[3], row[4], row[5], rms, at_rms_precision(k * s.mean, place),
-                        at_rms_precision(k * s.std, place), at_rms_precision(k * s.min, place),
-                        at_rms_precision(k * s.max, place), at_rms_precision(k * s.p95_abs, place), row[14]});
+      std::vector<std::string> readable_row = {row[0], row[1], row[2], row[3], row[4], row[5], rms,
+                                               at_rms_precision(k * s.mean, place), at_rms_precision(k * s.std, place),
+                                               at_rms_precision(k * s.min, place), at_rms_precision(k * s.max, place),
+                                               at_rms_precision(k * s.p95_abs, place), row[14]};
+      for (std::string& cell : readable_accuracy_cells(accuracy, unit)) readable_row.push_back(std::move(cell));
+      readable.add_row(std::move(readable_row));
       if (spec.axis == Axis::kHorizontal)
         horizontal.push_back({row[0], row[2], system_number(spec.system), t / 60.0, k * s.rms, half,
-                              map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0});
+                              map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0,
+                              accuracy ? std::optional(figures_of(*accuracy, k)) : std::nullopt});
       Json j = Json::object();
       j["scheme"] = row[0];
       j["system"] = system_number(spec.system);
@@ -107,6 +121,7 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
       j["mean_m"] = s.mean;
       j["std_m"] = s.std;
       j["p95_m"] = s.p95_abs;
+      add_accuracy_json(j, accuracy);
       f.envelope_json.push_back(j);
     }
     if (spec.axis == Axis::kHorizontal && l.is_grid_time[spec.time_index]) {
@@ -130,8 +145,9 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
   f.full_text = render_markdown(full);
   f.summary_text = render_horizontal_summary(
       horizontal, fmt::format("Horizontal RMS position error [{}] ± half-width of its {}% confidence interval, at "
-                              "t minutes on each scheme's clock; ready: minutes from the first switch-over until "
-                              "the vehicle may fly.",
+                              "t minutes on each scheme's clock; CEP50 (median radial error), 2DRMS (2·RMS) and the "
+                              "CEP50 rate (CEP50/t) from the same samples; ready: minutes from the first switch-over "
+                              "until the vehicle may fly.",
                               length_suffix(unit), format_number(100 * c.confidence)));
   f.envelope_svg = svg_line_plot("Horizontal RMS position error (shaded: confidence interval)",
                                  "time on the scheme's clock [min]",
@@ -163,7 +179,7 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
     if (spec.axis == Axis::kHorizontal)
       horizontal.push_back({key[0], std::string(clock_of(spec.scheme)), system_number(spec.system), t / 60.0,
                             k * map.predicted_rms()[o], std::nullopt,
-                            map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0});
+                            map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0, std::nullopt});
     Json j = Json::object();
     j["scheme"] = key[0];
     j["system"] = system_number(spec.system);

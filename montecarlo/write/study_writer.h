@@ -7,11 +7,9 @@
 
 #include "montecarlo/engine/engine.h"
 #include "montecarlo/write/json.h"
+#include "montecarlo/write/length_unit.h"
 
 namespace insmc::mc {
-
-/// SI columns (_m) or the paper's feet (_ft), chosen with --units.
-enum class LengthUnit { kMetre, kFoot };
 
 struct EnvelopeFiles {
   std::string envelope_csv, envelope_grid_csv, envelope_md, envelope_svg;

@@ -68,7 +68,9 @@ TEST(Cli, RunWritesTheOutputContractAndIsIdenticalForAnyThreadCount) {
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "t1" / f)) << f;
   const std::string csv = read_file(dir.path() / "t1" / "envelope.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "scheme,system,clock,axis,t_min,n,rms_m,rms_lo_m,rms_hi_m,mean_m,std_m,min_m,max_m,p95_m,ready_time_min");
+            "scheme,system,clock,axis,t_min,n,rms_m,rms_lo_m,rms_hi_m,mean_m,std_m,min_m,max_m,p95_m,ready_time_min,"
+            "cep50_m,cep50_lo_m,cep50_hi_m,cep95_m,cep95_lo_m,cep95_hi_m,drms2_m,drms2_lo_m,drms2_hi_m,"
+            "radial_rate_nmiph,radial_rate_lo_nmiph,radial_rate_hi_nmiph");
   EXPECT_NE(csv.find("none,2,switchover,horizontal,84,5000,"), std::string::npos);
   EXPECT_NE(csv.find("5.2,1,test_end,x,42,5000,"), std::string::npos);
   EXPECT_EQ(line_count(csv), 1 + 2 * 2 * 3 * 4);  // schemes × systems × times × axes

@@ -62,7 +62,7 @@ TEST(Readers, BoundsOtherThanRmsAtMostAreRefused) {
     const std::string path =
         write(dir, "b.txt", std::string("scheme=none system=2 axis=horizontal t_min=84 ") + limit + "\n");
     expect_refused(run_insmc("check --samples 3000 --bounds " + path),
-                   path + ":1:47: limit '" + limit + "': expected rms_m<=NUMBER or rms_ft<=NUMBER");
+                   path + ":1:47: limit '" + limit + "': expected METRIC_UNIT<=NUMBER or METRIC<=NUMBERUNIT");
   }
   const std::string twice = write(dir, "twice.txt", "scheme=none system=2 axis=x system=1 t_min=84 rms_m<=5\n");
   expect_refused(run_insmc("check --samples 3000 --bounds " + twice),

@@ -32,16 +32,17 @@ TEST(BoundsFile, ReadsBounds) {
   EXPECT_EQ(b[0].system, System::kGyrocompass);
   EXPECT_EQ(b[0].axis, mc::Axis::kHorizontal);
   EXPECT_EQ(b[0].t_s, 84 * 60.0);
-  EXPECT_EQ(b[0].rms_limit_m, 9000.0);
+  EXPECT_EQ(b[0].limit_m, 9000.0);
   EXPECT_FALSE(b[0].confidence);
   EXPECT_EQ(b[1].scheme, Scheme::k5_2);
-  EXPECT_EQ(b[1].rms_limit_m, 100 * kFtToM);
+  EXPECT_EQ(b[1].limit_m, 100 * kFtToM);
   EXPECT_EQ(b[1].confidence, 0.99);
 }
 
 TEST(BoundsFile, OtherLimitFormsAreRefusedNotIgnored) {
   const std::string base = "scheme=none system=2 axis=horizontal t_min=84 ";
-  EXPECT_NE(error_of(base + "rms_m>=5").find("bounds.txt:1:47: limit 'rms_m>=5': expected rms_m<=NUMBER or rms_ft<=NUMBER"),
+  EXPECT_NE(error_of(base + "rms_m>=5")
+                .find("bounds.txt:1:47: limit 'rms_m>=5': expected METRIC_UNIT<=NUMBER or METRIC<=NUMBERUNIT"),
             std::string::npos)
       << error_of(base + "rms_m>=5");
   EXPECT_NE(error_of(base + "rms_km<=5").find("bounds.txt:1:47: limit 'rms_km<=5'"), std::string::npos);
@@ -52,6 +53,50 @@ TEST(BoundsFile, OtherLimitFormsAreRefusedNotIgnored) {
   EXPECT_NE(error_of(base + "rms_m<=abc").find("bounds.txt:1:54: rms_m = 'abc': not a number"), std::string::npos)
       << error_of(base + "rms_m<=abc");
   EXPECT_NE(error_of(base + "rms_m<=-1").find("the limit must be >= 0"), std::string::npos);
+}
+
+TEST(BoundsFile, ReadsPercentileLimitsAndNauticalMiles) {
+  const std::string h = "scheme=none system=2 axis=horizontal t_min=84 ";
+  const auto b = parse_bounds_text(h + "cep50_m<=3000\n" + h + "p95_nmi<=2\n" + h + "cep50<=3nmi\n" + h +
+                                       "rms<=500ft\n" + h + "cep95_ft<=100\n" + h + "rms_nmi<=1.5\n",
+                                   "bounds.txt");
+  ASSERT_EQ(b.size(), 6u);
+  EXPECT_EQ(b[0].metric, BoundMetric::kCep50);
+  EXPECT_EQ(b[0].limit_m, 3000.0);
+  EXPECT_EQ(b[1].metric, BoundMetric::kCep95);
+  EXPECT_EQ(b[1].limit_m, 2 * kNmiToM);
+  EXPECT_EQ(b[2].metric, BoundMetric::kCep50);
+  EXPECT_EQ(b[2].limit_m, 3 * kNmiToM);
+  EXPECT_EQ(b[3].metric, BoundMetric::kRms);
+  EXPECT_EQ(b[3].limit_m, 500 * kFtToM);
+  EXPECT_EQ(b[4].metric, BoundMetric::kCep95);
+  EXPECT_EQ(b[4].limit_m, 100 * kFtToM);
+  EXPECT_EQ(b[5].metric, BoundMetric::kRms);
+  EXPECT_EQ(b[5].limit_m, 1.5 * kNmiToM);
+}
+
+TEST(BoundsFile, PercentileLimitsNeedTheHorizontalAxis) {
+  const std::string e = error_of("scheme=none system=2 axis=x t_min=84 cep50_m<=5");
+  EXPECT_NE(e.find("bounds.txt:1:38: limit 'cep50_m<=5': cep50 is a percentile of the horizontal radial error; it "
+                   "needs axis=horizontal, not axis=x"),
+            std::string::npos)
+      << e;
+}
+
+TEST(BoundsFile, ALimitsUnitIsCheckedWhereverItIsWritten) {
+  const std::string base = "scheme=none system=2 axis=horizontal t_min=84 ";
+  EXPECT_NE(error_of(base + "cep50<=3").find("bounds.txt:1:54: cep50 = 3: a unit is required"), std::string::npos)
+      << error_of(base + "cep50<=3");
+  EXPECT_NE(error_of(base + "p95<=3parsec").find("bounds.txt:1:52: p95 = 3parsec: unknown unit 'parsec'"),
+            std::string::npos)
+      << error_of(base + "p95<=3parsec");
+  EXPECT_NE(error_of(base + "cep50_m<=3nmi").find("bounds.txt:1:56: cep50_m = '3nmi'"), std::string::npos)
+      << error_of(base + "cep50_m<=3nmi");
+  EXPECT_NE(error_of(base + "cep50_furlong<=3").find("bounds.txt:1:47: limit 'cep50_furlong<=3': expected"),
+            std::string::npos)
+      << error_of(base + "cep50_furlong<=3");
+  EXPECT_NE(error_of(base + "p95<=-1m").find("bounds.txt:1:52: 'p95<=-1m': the limit must be >= 0"), std::string::npos)
+      << error_of(base + "p95<=-1m");
 }
 
 TEST(BoundsFile, DuplicateKeysOnALineAreRefused) {

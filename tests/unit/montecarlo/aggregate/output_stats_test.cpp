@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "montecarlo/random/philox.h"
+#include "tests/unit/montecarlo/aggregate/binomial_acceptance.h"
 #include "tests/unit/montecarlo/aggregate/permutation.h"
 
 namespace insmc::mc {
@@ -72,7 +73,7 @@ OutputStats one_pass(const std::vector<double>& v, double shift, double scale, s
   return s;
 }
 
-using testing::permutation;
+using testing::Acceptance, testing::acceptance_probability, testing::binomial_acceptance, testing::permutation;
 
 // ---------------------------------------------------------------- merge
 
@@ -414,27 +415,6 @@ constexpr int kAssertions = 3;  // normal+delta, uniform+delta, normal+chi-squar
 constexpr int kReps = 2000;
 constexpr std::size_t kSamplesPerRep = 200;
 constexpr double kConfidence = 0.95;
-
-struct Acceptance {
-  int lo;
-  int hi;
-};
-
-Acceptance binomial_acceptance(int reps, double p, double alpha) {
-  const boost::math::binomial_distribution<double> bin(reps, p);
-  Acceptance a{0, reps};
-  while (a.lo < reps && boost::math::cdf(bin, a.lo) <= alpha / 2) ++a.lo;
-  // a.lo is the smallest k with P(X <= k) > a/2, so P(X < a.lo) <= a/2.
-  while (a.hi > 0 && boost::math::cdf(boost::math::complement(bin, a.hi - 1)) <= alpha / 2) --a.hi;
-  // a.hi is the smallest k with P(X > k) <= a/2.
-  return a;
-}
-
-double acceptance_probability(const Acceptance& a, int reps, double p) {
-  const boost::math::binomial_distribution<double> bin(reps, p);
-  const double below = a.lo > 0 ? boost::math::cdf(bin, a.lo - 1) : 0.0;
-  return boost::math::cdf(bin, a.hi) - below;
-}
 
 enum class Draw { Normal, Uniform };
 

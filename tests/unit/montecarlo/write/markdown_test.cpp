@@ -33,6 +33,18 @@ TEST(RenderMarkdown, ValuesWithTheirIntervalAreRightAligned) {
             "| 5.2    |    120 ± 15 | 1 ± 2 |\n");
 }
 
+TEST(RenderMarkdown, EmptyCellsLeaveANumberColumnRightAligned) {
+  // envelope.md's accuracy columns: filled on horizontal rows alone.
+  Table t({"axis", "cep50_m"});
+  t.add_row({"x", ""});
+  t.add_row({"horizontal", "8670 ± 260"});
+  EXPECT_EQ(render_markdown(t),
+            "| axis       |    cep50_m |\n"
+            "| ---------- | ---------: |\n"
+            "| x          |            |\n"
+            "| horizontal | 8670 ± 260 |\n");
+}
+
 TEST(RenderMarkdown, HeaderOnlyUsesMinimumDelimiter) {
   const Table t({"a", "bb"});
   EXPECT_EQ(render_markdown(t),
