@@ -15,6 +15,8 @@
 #include "lib/common/input_text.h"
 #include "lib/imu/imu_samples.h"
 #include "lib/imu/strapdown.h"
+#include "lib/noise/noise_analysis.h"
+#include "lib/noise/noise_budget.h"
 #include "lib/records/record_io.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
@@ -33,6 +35,37 @@ RunsFrom parse_runs_from(const std::string& text) {
 }
 
 std::string join_columns(const std::array<std::string, 3>& c) { return fmt::format("{},{},{}", c[0], c[1], c[2]); }
+
+/// The raw-sensor stage on the inputs (docs/noise.md), its fitted terms kept
+/// in the header as imu.noise.<channel>.<term>_si (with _lower_si,
+/// _upper_si), .equivalent_si (the terms as a constant error over one
+/// Schuler period) and .warm_up_excluded; imu.noise = "skipped: ..." when the
+/// inputs cannot be analysed (too short, not on one sample grid).
+void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& header) {
+  noise::NoiseAnalysis a;
+  try {
+    for (const ImuSamples& s : samples)
+      if (s.size() < 300) throw InputError("--input", s.source, "fewer than 300 samples");
+    a = noise::analyse_noise(noise::make_recording(samples));
+  } catch (const std::exception& e) {
+    header.set("imu.noise", one_line_value(std::string("skipped: ") + e.what()));
+    return;
+  }
+  header.set("imu.noise", std::string("on"));
+  for (const noise::ChannelNoise& ch : a.channels) {
+    const std::string key = "imu.noise." + ch.name + ".";
+    for (const noise::TermFit& t : ch.fit.terms) {
+      const std::string term(noise::term_name(t.term, ch.kind));
+      header.set(key + term + "_si", t.value_si);
+      header.set(key + term + "_lower_si", t.lower_si);
+      header.set(key + term + "_upper_si", t.upper_si);
+    }
+    if (ch.fit.model[noise::NoiseTerm::kGaussMarkov] > 0) header.set(key + "correlation_time_s", ch.fit.model.correlation_time_s);
+    header.set(key + "equivalent_si", noise::equivalent_constant(ch.fit.model));
+    header.set(key + "warm_up_excluded", ch.first_part_excluded ? 1.0 : 0.0);
+  }
+  header.set("imu.noise.masked_s", static_cast<double>(a.mask.masked_samples) * a.dt_s);
+}
 
 }  // namespace
 
@@ -54,7 +87,10 @@ int run_import_imu(const Args& args) {
       "interval", po::value<std::string>()->default_value("10s"),
       "output interval, also the filter interval tau of the accelerometer error f")(
       "gyro-bias", po::value<std::string>()->default_value("remove"),
-      "remove: subtract the gyro bias estimated during alignment; keep: navigate on the raw gyros");
+      "remove: subtract the gyro bias estimated during alignment; keep: navigate on the raw gyros")(
+      "noise", po::value<std::string>()->default_value("on"),
+      "on: run the raw-sensor noise stage (insmc noise) on the inputs and keep its fitted terms in the header "
+      "(imu.noise.*), where gap reads them; off: skip it");
   add_imu_csv_options(opts);
   const auto vm = parse_args(args, "import-imu",
                              "--input FILE [--input FILE]... --out FILE --latitude ANGLE (--rate RATE | "
@@ -118,10 +154,18 @@ int run_import_imu(const Args& args) {
   file.header.set("imu.runs_from", std::string(runs_from == RunsFrom::kFile ? "file" : "split"));
   file.header.set("imu.site_gravity_mps2", stationary_site(nav).gravity_mps2);
 
+  const std::string noise_mode = (*vm)["noise"].as<std::string>();
+  if (noise_mode != "on" && noise_mode != "off") throw InputError("--noise", echo_input(noise_mode), "must be on or off");
+  const std::vector<std::string> inputs = (*vm)["input"].as<std::vector<std::string>>();
+  std::vector<ImuSamples> all_samples;
+  for (const std::string& input : inputs) all_samples.push_back(read_imu_csv(input, csv));
+  if (noise_mode == "on") write_noise_header(all_samples, file.header);
+
   const double T = nav.test_duration_s;
   std::int64_t run_id = 0;
-  for (const std::string& input : (*vm)["input"].as<std::vector<std::string>>()) {
-    const ImuSamples samples = read_imu_csv(input, csv);
+  for (std::size_t input_index = 0; input_index < inputs.size(); ++input_index) {
+    const std::string& input = inputs[input_index];
+    const ImuSamples& samples = all_samples[input_index];
     const int runs = runs_from == RunsFrom::kFile ? 1 : std::max(1, runs_available(samples, nav));
     for (int j = 0; j < runs; ++j, ++run_id) {
       const StrapdownRun r = run_strapdown(samples, j * nav.run_duration_s(), nav);

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <optional>
 
-#include "lib/uncertainty/catalogue.h"
+#include "lib/noise/noise_budget.h"
 #include "lib/units/units.h"
 #include "montecarlo/write/svg_frame.h"
 #include "montecarlo/write/svg_plot.h"
@@ -20,37 +20,9 @@ using noise::SensorKind;
 
 constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c"};
 
-/// One Schuler period, the report's flight horizon (84.4 min).
-double schuler_period_s() { return 2 * std::numbers::pi / schuler_frequency_radps(); }
-
-/// Table 3.1's bound for the in-run error of a channel: the gyro drift ω_do
-/// (10 meru) for gyros; the accelerometer bias change ∂f between alignment
-/// and flight (0.1 mg: its constant and per-alignment halves) for
-/// accelerometers, the part of the bias the test run cannot take out.
-double table31_bound_si(SensorKind kind) {
-  if (kind == SensorKind::kGyro) return find_uncertainty("gyro_drift_x")->default_bound_si;
-  return find_uncertainty("bias_change_const_x")->default_bound_si + find_uncertainty("bias_change_align_x")->default_bound_si;
-}
-
-/// A term's size as a constant rate error over one Schuler period T_s:
-/// Q/T_s, N/√T_s, B, K√(T_s/3), R T_s, and for the Gauss–Markov process the
-/// RMS of its average over T_s, σ√(2x(1 − (1 − e^{−1/x})x)), x = T_c/T_s
-/// (σ for T_c ≫ T_s, white noise for T_c ≪ T_s) (docs/noise.md §6).
-double equivalent_constant(NoiseTerm t, double value_si, double tc_s) {
-  const double ts = schuler_period_s();
-  switch (t) {
-    case NoiseTerm::kQuantization: return value_si / ts;
-    case NoiseTerm::kWhiteRate: return value_si / std::sqrt(ts);
-    case NoiseTerm::kBiasInstability: return value_si;
-    case NoiseTerm::kRateRandomWalk: return value_si * std::sqrt(ts / 3);
-    case NoiseTerm::kRateRamp: return value_si * ts;
-    case NoiseTerm::kGaussMarkov: {
-      const double x = tc_s / ts;
-      return value_si * std::sqrt(std::max(0.0, 2 * x * (1 - x * (-std::expm1(-1 / x)))));
-    }
-  }
-  return 0;
-}
+using noise::equivalent_constant;
+using noise::schuler_period_s;
+using noise::table31_bound_si;
 
 std::string g3(double v) { return fmt::format("{:.3g}", v); }
 

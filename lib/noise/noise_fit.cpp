@@ -316,6 +316,13 @@ double crossing(F&& excess, double inside, double outside) {
 
 NoiseFit fit_noise(std::span<const AllanLevel> levels, const NoiseFitOptions& options) {
   if (levels.size() < 2) throw std::invalid_argument("fit_noise: at least two Allan levels are needed");
+  // A channel that never changes (a constant or synthetic output): no noise
+  // to fit, every term absent.
+  if (std::none_of(levels.begin(), levels.end(), [](const AllanLevel& l) { return l.avar > 0; })) {
+    NoiseFit none;
+    none.edf.assign(levels.size(), 1.0);
+    return none;
+  }
   // Pilot: (N.2) with the degrees of freedom of each level's dominant noise
   // type, every allowed term (its model weights the fit below).
   Levels L;

@@ -1,4 +1,6 @@
 #include "montecarlo/gap/diagnosis.h"
+
+#include "montecarlo/gap/records/raw_stage.h"
 // The orchestrator: one call per stage, in the order of README.md.
 
 #include <algorithm>
@@ -31,6 +33,14 @@ Evaluated evaluate_under(const Prepared& p, const Build& build, std::vector<std:
   return evaluate_runs(p.runs, p.layout_of, pointers, p.keys);
 }
 
+}  // namespace
+
+namespace {
+/// The raw-sensor stage's verdict, when import-imu left one in the header.
+void add_raw_stage(Diagnosis& d, const RecordFile& file) {
+  if (const auto raw = raw_stage_from_header(file.header))
+    for (std::string& s : raw_stage_statements(*raw, d.top)) d.statements.push_back(std::move(s));
+}
 }  // namespace
 
 Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
@@ -91,6 +101,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
   if (n < options.minimum_runs) {
     d.statements.push_back(fmt::format("{} runs: too few to fit candidate effects on one half and score them on "
                                        "the other (at least {} needed); no ranking", n, options.minimum_runs));
+    add_raw_stage(d, file);
     return d;
   }
   if (!d.significant) {
@@ -99,10 +110,12 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
   }
   if (options.rank == RankWhen::kNever || (options.rank == RankWhen::kIfSignificant && !d.significant)) {
     d.statements.push_back("candidate effects not fitted (--rank)");
+    add_raw_stage(d, file);
     return d;
   }
   rank_and_select(d, p, null, options);
   honest_statements(d);
+  add_raw_stage(d, file);
   return d;
 }
 

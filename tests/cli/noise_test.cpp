@@ -63,6 +63,27 @@ TEST(Noise, WhiteNoiseRecordingIsReportedWithItsTruthInsideTheInterval) {
   EXPECT_TRUE(has(r.out, "\"channels\""));
 }
 
+TEST(Noise, ImportImuKeepsTheRawStageAndGapReportsIt) {
+  TempDir dir;
+  const std::string input = write_recording(dir, false);
+  const std::string records = (dir.path() / "records.csv").string();
+  const ProgramResult imp = run_insmc(fmt::format(
+      "import-imu --input {} --rate 10Hz --latitude 45deg --test-duration 5min --nav-duration 20min --out {}", input, records));
+  ASSERT_EQ(imp.exit_code, 0) << imp.err;
+  const std::string text = read_file(records);
+  EXPECT_TRUE(has(text, "imu.noise.gyro_x.angle_random_walk_si")) << text.substr(0, 3000);
+  EXPECT_TRUE(has(text, "imu.noise.accel_z.equivalent_si"));
+  const ProgramResult gap = run_insmc(fmt::format("gap --records {} --rank never --format json", records));
+  ASSERT_EQ(gap.exit_code, 0) << gap.err;
+  EXPECT_TRUE(has(gap.out, "raw-sensor stage")) << gap.out;
+  // --noise off: no keys.
+  const ProgramResult off = run_insmc(fmt::format(
+      "import-imu --input {} --rate 10Hz --latitude 45deg --test-duration 5min --nav-duration 20min --noise off --out {}",
+      input, records));
+  ASSERT_EQ(off.exit_code, 0) << off.err;
+  EXPECT_FALSE(has(read_file(records), "imu.noise"));
+}
+
 TEST(Noise, BadInputExitsTwoNamingTheOption) {
   TempDir dir;
   const std::string input = write_recording(dir, false);

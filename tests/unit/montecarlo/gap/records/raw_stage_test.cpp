@@ -1,0 +1,49 @@
+// The raw-sensor stage's keys in a record header, read back and compared
+// with the navigation-level ranking.
+#include "montecarlo/gap/records/raw_stage.h"
+
+#include <gtest/gtest.h>
+
+#include "lib/noise/noise_budget.h"
+
+namespace insmc::mc {
+namespace {
+
+RecordHeader header_with(double gyro_equivalent_radps, double accel_equivalent_mps2) {
+  RecordHeader h = RecordHeader::make(51.0, System::kTheodolite, 900.0, Scheme::kNone);
+  h.set("imu.noise", std::string("on"));
+  for (const char* c : {"gyro_x", "gyro_y", "gyro_z"}) h.set(std::string("imu.noise.") + c + ".equivalent_si", gyro_equivalent_radps);
+  for (const char* c : {"accel_x", "accel_y", "accel_z"})
+    h.set(std::string("imu.noise.") + c + ".equivalent_si", accel_equivalent_mps2);
+  h.set("imu.noise.gyro_z.warm_up_excluded", 1.0);
+  return h;
+}
+
+TEST(RawStage, ReadsTheRatiosToTable31) {
+  const double gyro_bound = noise::table31_bound_si(noise::SensorKind::kGyro);
+  const double accel_bound = noise::table31_bound_si(noise::SensorKind::kAccelerometer);
+  const auto raw = raw_stage_from_header(header_with(200 * gyro_bound, 3 * accel_bound));
+  ASSERT_TRUE(raw);
+  EXPECT_EQ(raw->channels.size(), 6u);
+  EXPECT_NEAR(raw->gyro_ratio, 200, 1e-9);
+  EXPECT_NEAR(raw->accel_ratio, 3, 1e-9);
+  EXPECT_TRUE(raw->channels[2].warm_up_excluded);
+  EXPECT_FALSE(raw_stage_from_header(RecordHeader::make(51.0, System::kTheodolite, 900.0, Scheme::kNone)));
+}
+
+TEST(RawStage, SaysWhenTheTopCandidateIsOfTheOtherSensor) {
+  const double gyro_bound = noise::table31_bound_si(noise::SensorKind::kGyro);
+  const auto raw = raw_stage_from_header(header_with(200 * gyro_bound, 1e-6));
+  ASSERT_TRUE(raw);
+  EXPECT_EQ(raw_stage_statements(*raw, "gyro_drift_instability").size(), 1u);
+  const auto disagree = raw_stage_statements(*raw, "accel_bias_instability|velocity_random_walk");
+  ASSERT_EQ(disagree.size(), 2u);
+  EXPECT_NE(disagree[1].find("disagree"), std::string::npos);
+  EXPECT_NE(disagree[0].find("warm-up"), std::string::npos);
+  EXPECT_EQ(raw_stage_statements(*raw, "sway").size(), 1u);  // neither sensor: nothing to compare
+  EXPECT_EQ(sensor_of_effect("angle_random_walk|gyro_drift_instability"), "gyro");
+  EXPECT_EQ(sensor_of_effect("angle_random_walk|accel_bias_instability"), "");
+}
+
+}  // namespace
+}  // namespace insmc::mc
