@@ -5,6 +5,8 @@
 // and latitude from the user, gyro bias from the alignment window, then test
 // run and navigation.
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <fmt/format.h>
 #include <sstream>
 
@@ -62,6 +64,23 @@ void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& he
     }
     if (ch.fit.model[noise::NoiseTerm::kGaussMarkov] > 0) header.set(key + "correlation_time_s", ch.fit.model.correlation_time_s);
     header.set(key + "equivalent_si", noise::equivalent_constant(ch.fit.model));
+    // What the Allan deviation allows each term at most, selected or not
+    // (σ(τ)² ≥ each term's own σ²(τ) at every τ; upper interval ends):
+    // white N ≤ min σ⁺√τ (after 1 h: × √3600 s), wander ≤ the larger of
+    // B ≤ min σ⁺/0.664 and K after 1 h ≤ min σ⁺ √(3/τ) √3600 s,
+    // quantization Q ≤ min σ⁺ τ/√3.
+    double white = std::numeric_limits<double>::infinity(), flat = white, walk = white, quant = white;
+    for (const noise::AllanRow& r : ch.allan) {
+      quant = std::min(quant, r.upper * r.tau_s / std::sqrt(3.0));  // σ² = 3Q²/τ²
+      white = std::min(white, r.upper * std::sqrt(r.tau_s));
+      flat = std::min(flat, r.upper / std::sqrt(2 * std::numbers::ln2 / std::numbers::pi));
+      walk = std::min(walk, r.upper * std::sqrt(3 / r.tau_s));
+    }
+    if (std::isfinite(white)) {
+      header.set(key + "white_1h_bound_si", white * std::sqrt(kHourToS));
+      header.set(key + "wander_bound_si", std::max(flat, walk * std::sqrt(kHourToS)));
+      header.set(key + "quantization_bound_si", quant);
+    }
     header.set(key + "warm_up_excluded", ch.first_part_excluded ? 1.0 : 0.0);
   }
   header.set("imu.noise.masked_s", static_cast<double>(a.mask.masked_samples) * a.dt_s);

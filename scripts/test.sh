@@ -35,9 +35,11 @@ bash scripts/build.sh build/sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DINSMC_W
 # code they drive runs under the sanitizers in the gap unit tests and the
 # short Gap.* cases) and the output sets' kill and two-writer tests
 # (file-system behaviour repeated many times, no code path of their own),
-# and the noise fit's coverage studies (many files through the code that
-# NoiseFit.QuantizationAndRamp and the Noise.* end-to-end cases run once).
-sanitizer_skip='^(GapValidate[.]|RealDataDocs[.]|NoiseFit[.](WhiteAndRandomWalk|GaussMarkovCorrelationTime)|GapLinearNull[.]|GapImportedNull[.]|Outputs[.](ASigkill|OfTwoRuns)'
+# the noise fit's coverage studies (many files through the code that
+# NoiseFit.QuantizationAndRamp and the Noise.* end-to-end cases run once),
+# the raw-ranking files and the documented real-data commands (import-imu
+# and gap end to end, as Noise.ImportImuKeepsTheRawStageAndGapReportsIt).
+sanitizer_skip='^(GapValidate[.]|RealDataDocs[.]|RawRanking[.]|NoiseFit[.](WhiteAndRandomWalk|GaussMarkovCorrelationTime)|GapLinearNull[.]|GapImportedNull[.]|Outputs[.](ASigkill|OfTwoRuns)'
 sanitizer_skip+='|Gap[.](FilterWindows|RecordsAfterEachKind|AnEffectAfterAScheme|RecordsOfOtherSoftware|AWithheld|RecordsOfTheModelItself))'
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 run_suite build/sanitize 1800 -E "$sanitizer_skip"
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <memory>
 #include <optional>
 
 #include "lib/common/input_error.h"
@@ -43,8 +44,12 @@ void add_raw_stage(Diagnosis& d, const RecordFile& file) {
 }
 }  // namespace
 
-Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& options) {
+Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
+  DiagnosisOptions options = given;
   Diagnosis d;
+  if (const auto raw = raw_stage_from_header(file.header); raw && !options.candidates)
+    options.candidates = std::make_shared<const std::vector<gap::Candidate>>(
+        limit_candidates(gap::candidate_registry(), *raw, d.statements));
   const Records records = records_for_diagnosis(file, options, d.statements, d.site);
   Prepared p = prepare(records, options);
   d.alpha = options.alpha;

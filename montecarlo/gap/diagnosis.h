@@ -26,6 +26,7 @@
 #include <functional>
 #include <string_view>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -76,7 +77,16 @@ struct DiagnosisOptions {
   int likelihood_pair_candidates = 0;
   RankWhen rank = RankWhen::kAlways;
   DiagnosisProgress progress;  ///< may be empty
+  /// The candidates to rank; empty: the registry's. diagnose() sets it to the
+  /// registry limited by the raw-sensor stage when the records carry one
+  /// (records/raw_stage.h).
+  std::shared_ptr<const std::vector<gap::Candidate>> candidates;
 };
+
+/// options.candidates, or the registry's.
+inline const std::vector<gap::Candidate>& candidates_of(const DiagnosisOptions& options) {
+  return options.candidates ? *options.candidates : gap::candidate_registry();
+}
 
 /// Calls options.progress when it is set.
 inline void report_progress(const DiagnosisOptions& options, std::string_view stage, std::uint64_t done,

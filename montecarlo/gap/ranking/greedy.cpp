@@ -21,7 +21,7 @@ std::string fmt_params(const std::vector<ParameterEstimate>& ps) {
 }  // namespace
 
 void rank_and_select(Diagnosis& d, const PreparedRuns& p, const Null& null, const DiagnosisOptions& options) {
-  const auto& registry = gap::candidate_registry();
+  const auto& registry = candidates_of(options);
   std::vector<std::vector<gap::Extension>> selected(p.layouts.size());
   std::vector<std::string> taken;
   double before = d.heldout_gap_before;

@@ -148,7 +148,7 @@ double null_gain(const PreparedRuns& q, std::vector<Member> members, const Selec
 
 void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const PreparedRuns& p, const Null& null,
                        const DiagnosisOptions& options) {
-  const auto& registry = gap::candidate_registry();
+  const auto& registry = candidates_of(options);
   const std::size_t top = std::min(ranked.size(), static_cast<std::size_t>(std::max(0, options.likelihood_candidates)));
   if (top == 0) return;
   const Selected none(p.layouts.size());

@@ -76,7 +76,7 @@ PreparedRuns null_file(const PreparedRuns& p, const Null& null, int f) {
 std::vector<Scored> rank_candidates(const PreparedRuns& p, const std::vector<std::vector<gap::Extension>>& selected,
                                     const std::vector<std::string>& exclude, const gap::NullCalibration& m0,
                                     const DiagnosisOptions& options, std::string_view stage) {
-  const auto& registry = gap::candidate_registry();
+  const auto& registry = candidates_of(options);
   std::vector<Scored> scored(registry.size());
   std::vector<bool> used(registry.size(), false);
   std::atomic<std::uint64_t> done{0};
@@ -96,7 +96,7 @@ std::vector<Scored> rank_candidates(const PreparedRuns& p, const std::vector<std
 
 std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, const gap::NullCalibration& m0,
                                  const DiagnosisOptions& options) {
-  const auto& registry = gap::candidate_registry();
+  const auto& registry = candidates_of(options);
   const std::size_t n = p.runs.size();
   const int files = null_file_count(p, null, options);
   std::atomic<std::uint64_t> done{0};
@@ -125,7 +125,7 @@ std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, const 
 
 void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const PreparedRuns& p, const Null& null,
                     const DiagnosisOptions& options, double before) {
-  const auto& registry = gap::candidate_registry();
+  const auto& registry = candidates_of(options);
   const int n = d.runs;
   d.ranked = true;
   for (const Scored& s : ranked) {

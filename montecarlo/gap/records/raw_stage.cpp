@@ -1,11 +1,13 @@
 #include "montecarlo/gap/records/raw_stage.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fmt/format.h>
 
 #include "lib/noise/noise_budget.h"
 #include "lib/noise/recording.h"
+#include "lib/units/units.h"
 
 namespace insmc::mc {
 
@@ -24,6 +26,32 @@ std::optional<RawStage> raw_stage_from_header(const RecordHeader& header) {
     ch.ratio_to_bound = ch.equivalent_si / noise::table31_bound_si(noise::channel_kind(c));
     const std::string* warm = header.find("imu.noise." + name + ".warm_up_excluded");
     ch.warm_up_excluded = warm && *warm == "1";
+    const noise::SensorKind kind = noise::channel_kind(c);
+    auto number = [&](const std::string& suffix) {
+      const std::string* v = header.find("imu.noise." + name + "." + suffix);
+      const double x = v ? std::strtod(v->c_str(), nullptr) : -1.0;
+      return std::isfinite(x) ? x : -1.0;
+    };
+    ch.walk_1h_bound_si = number("white_1h_bound_si");
+    ch.wander_bound_si = number("wander_bound_si");
+    ch.quantization_bound_si = number("quantization_bound_si");
+    auto upper = [&](noise::NoiseTerm t) {
+      const std::string* v = header.find("imu.noise." + name + "." + std::string(noise::term_name(t, kind)) + "_upper_si");
+      const double x = v ? std::strtod(v->c_str(), nullptr) : -1.0;
+      return std::isfinite(x) ? x : -1.0;
+    };
+    const double root_hour = std::sqrt(kHourToS);
+    if (const double n = upper(noise::NoiseTerm::kWhiteRate); n >= 0) ch.walk_1h_upper_si = n * root_hour;
+    ch.quantization_upper_si = upper(noise::NoiseTerm::kQuantization);
+    const std::string* tc_text = header.find("imu.noise." + name + ".correlation_time_s");
+    const double tc = tc_text ? std::strtod(tc_text->c_str(), nullptr) : 0.0;
+    for (const double w : {upper(noise::NoiseTerm::kBiasInstability),
+                           upper(noise::NoiseTerm::kRateRandomWalk) >= 0 ? upper(noise::NoiseTerm::kRateRandomWalk) * root_hour : -1.0,
+                           upper(noise::NoiseTerm::kRateRamp) >= 0 ? upper(noise::NoiseTerm::kRateRamp) * kHourToS : -1.0,
+                           upper(noise::NoiseTerm::kGaussMarkov) >= 0 && tc > 0
+                               ? noise::equivalent_constant(noise::NoiseTerm::kGaussMarkov, upper(noise::NoiseTerm::kGaussMarkov), tc)
+                               : -1.0})
+      ch.wander_upper_si = std::max(ch.wander_upper_si, w);
     (c < 3 ? raw.gyro_ratio : raw.accel_ratio) = std::max(c < 3 ? raw.gyro_ratio : raw.accel_ratio, ch.ratio_to_bound);
     raw.channels.push_back(ch);
   }
@@ -44,6 +72,61 @@ std::string sensor_of_effect(const std::string& effect) {
     p = q + 1;
   }
   return gyro == accel ? "" : gyro ? "gyro" : "accelerometer";
+}
+
+std::vector<gap::Candidate> limit_candidates(const std::vector<gap::Candidate>& candidates, const RawStage& raw,
+                                             std::vector<std::string>& statements) {
+  enum class Kind { kWalk, kWander, kQuantization };
+  struct Limit {
+    const char* candidate;
+    const char* parameter;
+    bool gyro;
+    Kind kind;
+  };
+  static const Limit kLimits[] = {{"angle_random_walk", "angle_1h", true, Kind::kWalk},
+                                  {"gyro_drift_instability", "sigma", true, Kind::kWander},
+                                  {"velocity_random_walk", "velocity_1h", false, Kind::kWalk},
+                                  {"accel_bias_instability", "sigma", false, Kind::kWander},
+                                  {"quantization", "dv_pulse", false, Kind::kQuantization}};
+  std::vector<gap::Candidate> out = candidates;
+  for (gap::Candidate& c : out)
+    for (const Limit& l : kLimits) {
+      if (c.name != l.candidate) continue;
+      double cap = -1;
+      for (const RawChannel& ch : raw.channels) {
+        if ((ch.channel.rfind("gyro", 0) == 0) != l.gyro) continue;
+        // The selected term's interval upper end, or (not selected) what the
+        // Allan deviation allows it at most.
+        const auto [upper, bound] = l.kind == Kind::kWalk     ? std::pair{ch.walk_1h_upper_si, ch.walk_1h_bound_si}
+                                    : l.kind == Kind::kWander ? std::pair{ch.wander_upper_si, ch.wander_bound_si}
+                                                              : std::pair{ch.quantization_upper_si, ch.quantization_bound_si};
+        const double v = upper >= 0 ? upper : bound;
+        cap = std::max(cap, v);
+      }
+      if (cap < 0) continue;  // the header states nothing for this sensor
+      if (cap == 0) {         // the raw outputs of this sensor do not vary at all
+        statements.push_back(fmt::format("{}: left out (the raw {} outputs show no noise at all)", c.name,
+                                         l.gyro ? "gyro" : "accelerometer"));
+        c.name.clear();
+        break;
+      }
+      for (gap::CandidateParameter& p : c.parameters) {
+        if (p.name != l.parameter) continue;
+        std::vector<double> grid;
+        for (double g : p.grid)
+          if (g < cap) grid.push_back(g);
+        grid.push_back(cap);
+        p.grid = grid;
+        p.upper_si = std::min(p.upper_si, cap);
+        p.lower_si = std::min(p.lower_si, cap);
+        c.description += fmt::format(" ({} limited by the raw stage to {:.3g} SI)", p.name, cap);
+        statements.push_back(fmt::format("{}: {} limited to the raw outputs' {:.3g} (SI; the upper end of the raw "
+                                         "stage's interval)",
+                                         c.name, p.name, cap));
+      }
+    }
+  std::erase_if(out, [](const gap::Candidate& c) { return c.name.empty(); });
+  return out;
 }
 
 std::vector<std::string> raw_stage_statements(const RawStage& raw, const std::string& top) {

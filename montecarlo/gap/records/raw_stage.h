@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "lib/records/record.h"
+#include "montecarlo/gap/candidates/candidates.h"
 
 namespace insmc::mc {
 
@@ -19,6 +20,15 @@ struct RawChannel {
   double equivalent_si = 0;   ///< rad/s or m/s²
   double ratio_to_bound = 0;  ///< against Table 3.1 (docs/noise.md §4)
   bool warm_up_excluded = false;
+  /// Upper ends of the fitted intervals, in the candidates' terms (−1 when
+  /// the term was not selected): the white noise after 1 h (N·√3600 s, rad
+  /// or m/s) and the bias wander (the largest of B, K after 1 h, R over
+  /// 1 h and the Gauss–Markov average over one Schuler period).
+  double walk_1h_upper_si = -1, wander_upper_si = -1;
+  /// What the Allan deviation allows them at most, selected or not (−1: not stated).
+  double walk_1h_bound_si = -1, wander_bound_si = -1;
+  /// The quantization's interval upper end, and the Allan bound on it.
+  double quantization_upper_si = -1, quantization_bound_si = -1;
 };
 
 struct RawStage {
@@ -32,6 +42,18 @@ std::optional<RawStage> raw_stage_from_header(const RecordHeader& header);
 /// "gyro", "accelerometer" or "" for an effect (or class "a|b") the
 /// diagnosis ranked.
 std::string sensor_of_effect(const std::string& effect);
+
+/// The noise candidates limited to what the raw outputs allow (docs/gap.md
+/// §4): angle_random_walk and velocity_random_walk to the raw white noise's
+/// upper interval end, gyro_drift_instability and accel_bias_instability to
+/// the raw bias wander's (or, when the stage selected no such term, to what
+/// the Allan deviation allows it: the header's *_bound_si keys). So
+/// a gyro error cannot be absorbed by an accelerometer candidate the raw
+/// accelerometers rule out. The accelerometer quantization candidate's pulse
+/// weight likewise to the raw velocity quantization. A candidate whose
+/// sensor's raw outputs do not vary at all is left out. `statements` gets one line per limited candidate.
+std::vector<gap::Candidate> limit_candidates(const std::vector<gap::Candidate>& candidates, const RawStage& raw,
+                                             std::vector<std::string>& statements);
 
 /// The statements for the report: the raw stage's verdict and, when the
 /// navigation-level top candidate is of the other sensor than the one the

@@ -47,3 +47,44 @@ TEST(RawStage, SaysWhenTheTopCandidateIsOfTheOtherSensor) {
 
 }  // namespace
 }  // namespace insmc::mc
+
+namespace insmc::mc {
+namespace {
+
+TEST(RawStage, LimitsTheNoiseCandidatesToWhatTheRawOutputsAllow) {
+  RecordHeader h = header_with(1e-6, 1e-4);
+  // Gyro x: white noise selected (its interval's upper end), no wander term:
+  // the Allan bound stands in. Accelerometers: only bounds.
+  h.set("imu.noise.gyro_x.angle_random_walk_upper_si", 2e-6);
+  for (const char* c : {"gyro_x", "gyro_y", "gyro_z"}) h.set(std::string("imu.noise.") + c + ".wander_bound_si", 3e-7);
+  for (const char* c : {"accel_x", "accel_y", "accel_z"}) {
+    h.set(std::string("imu.noise.") + c + ".white_1h_bound_si", 0.02);
+    h.set(std::string("imu.noise.") + c + ".wander_bound_si", 5e-5);
+  }
+  const auto raw = raw_stage_from_header(h);
+  ASSERT_TRUE(raw);
+  std::vector<std::string> statements;
+  const auto limited = limit_candidates(gap::candidate_registry(), *raw, statements);
+  EXPECT_EQ(statements.size(), 4u);
+  auto cap_of = [&](const std::string& name, const std::string& parameter) {
+    for (const gap::Candidate& c : limited)
+      if (c.name == name)
+        for (const gap::CandidateParameter& p : c.parameters)
+          if (p.name == parameter) return p.grid.back();
+    return -1.0;
+  };
+  EXPECT_NEAR(cap_of("angle_random_walk", "angle_1h"), 2e-6 * 60, 1e-15);
+  EXPECT_NEAR(cap_of("gyro_drift_instability", "sigma"), 3e-7, 1e-18);
+  EXPECT_NEAR(cap_of("velocity_random_walk", "velocity_1h"), 0.02, 1e-15);
+  EXPECT_NEAR(cap_of("accel_bias_instability", "sigma"), 5e-5, 1e-15);
+  // Every other candidate is the registry's.
+  EXPECT_EQ(limited.size(), gap::candidate_registry().size());
+  for (std::size_t i = 0; i < limited.size(); ++i) {
+    if (limited[i].name == "sway") {
+      EXPECT_EQ(limited[i].parameters[0].grid, gap::candidate_registry()[i].parameters[0].grid);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace insmc::mc
