@@ -26,9 +26,9 @@ int run_noise(const Args& args) {
                      "IMU CSV file of a static recording (plain text), repeatable: one recording each")(
       "out", po::value<std::string>(), "folder for noise.md, noise.json, allan.csv, noise_terms.csv, allan.svg")(
       "format", po::value<std::string>()->default_value("markdown"), "what to print: markdown or json")(
-      "alpha", po::value<double>()->default_value(0.01),
+      "alpha", po::value<double>()->default_value(0.01, "0.01"),
       "family-wise level of the masking, the stationarity test and the term selection, in [1e-6, 0.2]")(
-      "confidence", po::value<double>()->default_value(0.95), "of every interval, in [0.5, 0.999999]")(
+      "confidence", po::value<double>()->default_value(0.95, "0.95"), "of every interval, in [0.5, 0.999999]")(
       "first-part", po::value<std::string>()->default_value("1h"),
       "start of each recording tested against the rest (warm-up); at most half the longest recording is used; 0s: no test")(
       "mask", po::value<std::string>()->default_value("on"), "on: mask disturbances; off: use every sample");
