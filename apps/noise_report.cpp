@@ -227,8 +227,7 @@ std::string allan_svg(const noise::NoiseAnalysis& a) {
     std::string frame = mc::frame_svg(f, panel == 0 ? "gyro Allan deviation [rad/s]" : "accelerometer Allan deviation [m/s^2]");
     // One clip path per panel.
     const std::string id = fmt::format("frame{}", panel);
-    for (std::size_t p = frame.find("\"frame\""); p != std::string::npos; p = frame.find("\"frame\"", p + 1))
-      frame.replace(p, 7, "\"" + id + "\"");
+    if (const std::size_t p = frame.find("id=\"frame\""); p != std::string::npos) frame.replace(p, 10, "id=\"" + id + "\"");
     svg += frame;
     svg += fmt::format("<g clip-path=\"url(#{})\">\n", id);
     for (int i = 0; i < 3; ++i) {

@@ -1,6 +1,7 @@
 // insmc noise end to end: a synthetic static recording with known white
 // noise, the report's files, the fitted random walk against the truth, and
 // bad input.
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
@@ -61,6 +62,29 @@ TEST(Noise, WhiteNoiseRecordingIsReportedWithItsTruthInsideTheInterval) {
   EXPECT_TRUE(has(md, "| 89")) << md;  // the masked interval starts near 900 s
   EXPECT_TRUE(has(md, "One static orientation")) << md;
   EXPECT_TRUE(has(r.out, "\"channels\""));
+
+  // allan.svg: every data point lies inside one of the two panels' frames.
+  const std::string svg = read_file(std::filesystem::path(out) / "allan.svg");
+  auto attr = [](const std::string& tag, const std::string& name) {
+    const std::size_t p = tag.find(" " + name + "=\"");
+    return p == std::string::npos ? std::nan("") : std::stod(tag.substr(p + name.size() + 3));
+  };
+  std::vector<std::array<double, 4>> frames;
+  for (std::size_t p = svg.find("<rect class=\"frame\""); p != std::string::npos; p = svg.find("<rect class=\"frame\"", p + 1)) {
+    const std::string tag = svg.substr(p, svg.find('>', p) - p);
+    frames.push_back({attr(tag, "x"), attr(tag, "y"), attr(tag, "width"), attr(tag, "height")});
+  }
+  ASSERT_EQ(frames.size(), 2u);
+  int points = 0;
+  for (std::size_t p = svg.find("<circle class=\"point\""); p != std::string::npos; p = svg.find("<circle class=\"point\"", p + 1)) {
+    const std::string tag = svg.substr(p, svg.find('>', p) - p);
+    const double x = attr(tag, "cx"), y = attr(tag, "cy");
+    bool inside = false;
+    for (const auto& f : frames) inside = inside || (x >= f[0] && x <= f[0] + f[2] && y >= f[1] && y <= f[1] + f[3]);
+    EXPECT_TRUE(inside) << tag;
+    ++points;
+  }
+  EXPECT_GE(points, 6 * 8);  // six channels, at least eight octaves each
 }
 
 TEST(Noise, ImportImuKeepsTheRawStageAndGapReportsIt) {
