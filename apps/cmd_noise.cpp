@@ -24,7 +24,7 @@ int run_noise(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("input", po::value<std::vector<std::string>>()->composing(),
                      "IMU CSV file of a static recording (plain text), repeatable: one recording each")(
-      "out", po::value<std::string>(), "folder for noise.md, noise.json, allan.csv, noise_terms.csv, allan.svg")(
+      "out", po::value<std::string>(), "folder for noise.md, noise.json, allan.csv, noise_terms.csv, allan.svg, stationarity.svg")(
       "format", po::value<std::string>()->default_value("markdown"), "what to print: markdown or json")(
       "alpha", po::value<double>()->default_value(0.01, "0.01"),
       "family-wise level of the masking, the stationarity test and the term selection, in [1e-6, 0.2]")(

@@ -258,6 +258,70 @@ std::string allan_svg(const noise::NoiseAnalysis& a) {
   return svg + "</svg>\n";
 }
 
+/// The stationarity picture: per channel, each recording's block means
+/// (τ_b = first part / 6) minus its mean after the first part, against time,
+/// the first part shaded; small multiples, 3 × 2.
+std::string stationarity_svg(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a) {
+  const double w = 360, h = 230;
+  std::string svg = mc::open_svg(60 + 2 * (w + 60), 60 + 3 * (h + 60),
+                                 "Block means of each recording minus its mean after the first part (shaded)");
+  for (std::size_t c = 0; c < noise::kChannels; ++c) {
+    const noise::ChannelNoise& ch = a.channels[c];
+    const bool gyro = ch.kind == SensorKind::kGyro;
+    const double unit = gyro ? kDegphToRadps : kUgToMps2;
+    const double part_s = ch.stationarity.first_part_s, block_s = ch.stationarity.block_s;
+    const auto block = static_cast<std::size_t>(std::llround(block_s / rec.dt_s));
+    std::vector<std::vector<std::pair<double, double>>> lines;
+    double x1 = 1e-9, y0 = 0, y1 = 0;
+    if (block > 0)
+      for (const noise::Segment& run : rec.runs) {
+        const std::vector<double>& y = rec.channel[c];
+        const auto part = static_cast<std::size_t>(std::llround(part_s / rec.dt_s));
+        double rest = 0;
+        for (std::size_t k = run.begin + std::min(part, run.size()); k < run.end; ++k) rest += y[k];
+        const std::size_t rest_n = run.size() > part ? run.size() - part : 0;
+        if (rest_n == 0) continue;
+        rest /= static_cast<double>(rest_n);
+        std::vector<std::pair<double, double>> line;
+        for (std::size_t b = run.begin; b + block <= run.end; b += block) {
+          double m = 0;
+          for (std::size_t k = b; k < b + block; ++k) m += y[k];
+          const double t_h = (static_cast<double>(b - run.begin) + block / 2.0) * rec.dt_s / 3600;
+          const double v = (m / static_cast<double>(block) - rest) / unit;
+          line.emplace_back(t_h, v);
+          x1 = std::max(x1, t_h), y0 = std::min(y0, v), y1 = std::max(y1, v);
+        }
+        lines.push_back(std::move(line));
+      }
+    const double pad = 0.05 * std::max(y1 - y0, 1e-12);
+    const mc::Frame f{60 + static_cast<double>(c / 3) * (w + 60), 50 + static_cast<double>(c % 3) * (h + 60), w, h,
+                      0, x1 * 1.02, y0 - pad, y1 + pad};
+    std::string frame = mc::frame_svg(f, "");
+    const std::string id = fmt::format("frame{}", c);
+    if (const std::size_t p = frame.find("id=\"frame\""); p != std::string::npos) frame.replace(p, 10, "id=\"" + id + "\"");
+    svg += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"#eee\"/>\n", f.left,
+                       f.top, std::max(0.0, std::min(f.px(part_s / 3600), f.left + w) - f.left), h);
+    svg += frame;
+    svg += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{} [{}] {}</text>\n", f.left, f.top - 6, mc::svg_escape(ch.name),
+                       gyro ? "deg/h" : "ug", ch.stationarity.tested ? (ch.stationarity.stationary ? "stationary" : "NON-STATIONARY") : "");
+    svg += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{:.3g}</text><text x=\"{:.1f}\" y=\"{:.1f}\" "
+                       "text-anchor=\"end\">{:.3g}</text><text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{:.3g} h</text>\n",
+                       f.left - 4, f.top + 10, f.y1, f.left - 4, f.top + h, f.y0, f.left + w, f.top + h + 14, f.x1);
+    svg += fmt::format("<g clip-path=\"url(#{})\">\n", id);
+    for (std::size_t r = 0; r < lines.size(); ++r) {
+      std::string pts;
+      for (const auto& [x, v] : lines[r]) {
+        pts += fmt::format("{:.1f},{:.1f} ", f.px(x), f.py(v));
+        svg += fmt::format("<circle class=\"point\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"2\" fill=\"{}\"/>", f.px(x), f.py(v),
+                           kColours[r % 3]);
+      }
+      svg += fmt::format("\n<polyline points=\"{}\" fill=\"none\" stroke=\"{}\"/>\n", pts, kColours[r % 3]);
+    }
+    svg += "</g>\n";
+  }
+  return svg + "</svg>\n";
+}
+
 }  // namespace
 
 std::pair<double, std::string> spec_value(NoiseTerm t, SensorKind kind, double v) {
@@ -347,7 +411,8 @@ std::vector<std::pair<std::string, std::string>> noise_report(const noise::Senso
   return {{"noise.md", markdown(rec, a, confidence)},
           {"allan.csv", allan_csv(a)},
           {"noise_terms.csv", terms_csv(a)},
-          {"allan.svg", allan_svg(a)}};
+          {"allan.svg", allan_svg(a)},
+          {"stationarity.svg", stationarity_svg(rec, a)}};
 }
 
 }  // namespace insmc::app

@@ -31,13 +31,38 @@ std::string write_recording(const TempDir& dir, bool bump) {
   return path;
 }
 
+/// The number of data points (circles of class "point") in an SVG, each
+/// checked to lie inside one of its `frames` frames (rects of class "frame").
+int points_inside_frames(const std::string& svg, std::size_t frames_expected) {
+  auto attr = [](const std::string& tag, const std::string& name) {
+    const std::size_t p = tag.find(" " + name + "=\"");
+    return p == std::string::npos ? std::nan("") : std::stod(tag.substr(p + name.size() + 3));
+  };
+  std::vector<std::array<double, 4>> frames;
+  for (std::size_t p = svg.find("<rect class=\"frame\""); p != std::string::npos; p = svg.find("<rect class=\"frame\"", p + 1)) {
+    const std::string tag = svg.substr(p, svg.find('>', p) - p);
+    frames.push_back({attr(tag, "x"), attr(tag, "y"), attr(tag, "width"), attr(tag, "height")});
+  }
+  EXPECT_EQ(frames.size(), frames_expected);
+  int points = 0;
+  for (std::size_t p = svg.find("<circle class=\"point\""); p != std::string::npos; p = svg.find("<circle class=\"point\"", p + 1)) {
+    const std::string tag = svg.substr(p, svg.find('>', p) - p);
+    const double x = attr(tag, "cx"), y = attr(tag, "cy");
+    bool inside = false;
+    for (const auto& f : frames) inside = inside || (x >= f[0] && x <= f[0] + f[2] && y >= f[1] && y <= f[1] + f[3]);
+    EXPECT_TRUE(inside) << tag;
+    ++points;
+  }
+  return points;
+}
+
 TEST(Noise, WhiteNoiseRecordingIsReportedWithItsTruthInsideTheInterval) {
   TempDir dir;
   const std::string input = write_recording(dir, true);
   const std::string out = (dir.path() / "out").string();
   const ProgramResult r = run_insmc(fmt::format("noise --input {} --rate 10Hz --out {} --format json", input, out));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* name : {"noise.md", "noise.json", "allan.csv", "noise_terms.csv", "allan.svg"})
+  for (const char* name : {"noise.md", "noise.json", "allan.csv", "noise_terms.csv", "allan.svg", "stationarity.svg"})
     EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / name)) << name;
   const std::string terms = read_file(std::filesystem::path(out) / "noise_terms.csv");
   // gyro_x's angle random walk: 0.3 deg/√h inside its interval.
@@ -63,28 +88,9 @@ TEST(Noise, WhiteNoiseRecordingIsReportedWithItsTruthInsideTheInterval) {
   EXPECT_TRUE(has(md, "One static orientation")) << md;
   EXPECT_TRUE(has(r.out, "\"channels\""));
 
-  // allan.svg: every data point lies inside one of the two panels' frames.
-  const std::string svg = read_file(std::filesystem::path(out) / "allan.svg");
-  auto attr = [](const std::string& tag, const std::string& name) {
-    const std::size_t p = tag.find(" " + name + "=\"");
-    return p == std::string::npos ? std::nan("") : std::stod(tag.substr(p + name.size() + 3));
-  };
-  std::vector<std::array<double, 4>> frames;
-  for (std::size_t p = svg.find("<rect class=\"frame\""); p != std::string::npos; p = svg.find("<rect class=\"frame\"", p + 1)) {
-    const std::string tag = svg.substr(p, svg.find('>', p) - p);
-    frames.push_back({attr(tag, "x"), attr(tag, "y"), attr(tag, "width"), attr(tag, "height")});
-  }
-  ASSERT_EQ(frames.size(), 2u);
-  int points = 0;
-  for (std::size_t p = svg.find("<circle class=\"point\""); p != std::string::npos; p = svg.find("<circle class=\"point\"", p + 1)) {
-    const std::string tag = svg.substr(p, svg.find('>', p) - p);
-    const double x = attr(tag, "cx"), y = attr(tag, "cy");
-    bool inside = false;
-    for (const auto& f : frames) inside = inside || (x >= f[0] && x <= f[0] + f[2] && y >= f[1] && y <= f[1] + f[3]);
-    EXPECT_TRUE(inside) << tag;
-    ++points;
-  }
-  EXPECT_GE(points, 6 * 8);  // six channels, at least eight octaves each
+  // Every data point of both plots lies inside one of its panels' frames.
+  EXPECT_GE(points_inside_frames(read_file(std::filesystem::path(out) / "allan.svg"), 2), 6 * 8);  // 8+ octaves
+  EXPECT_GE(points_inside_frames(read_file(std::filesystem::path(out) / "stationarity.svg"), 6), 6 * 6);
 }
 
 TEST(Noise, ImportImuKeepsTheRawStageAndGapReportsIt) {
