@@ -17,6 +17,7 @@
 #include "lib/common/input_text.h"
 #include "lib/imu/imu_samples.h"
 #include "lib/imu/strapdown.h"
+#include "lib/imu/strapdown_records.h"
 #include "lib/noise/noise_analysis.h"
 #include "lib/noise/noise_budget.h"
 #include "lib/records/record_io.h"
@@ -84,6 +85,7 @@ void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& he
     header.set(key + "warm_up_excluded", ch.first_part_excluded ? 1.0 : 0.0);
   }
   header.set("imu.noise.masked_s", static_cast<double>(a.mask.masked_samples) * a.dt_s);
+  header.set("imu.noise.sample_interval_s", a.dt_s);
 }
 
 }  // namespace
@@ -197,19 +199,7 @@ int run_import_imu(const Args& args) {
       file.header.set(key + "accel_magnitude_mps2", a.mean_accel_b_mps2.norm());
       file.header.set(key + "roll_deg", a.roll_rad / kDegToRad);
       file.header.set(key + "pitch_deg", a.pitch_rad / kDegToRad);
-      RecordRun out;
-      out.id = run_id;
-      for (std::size_t k = 0; k < r.t_s.size(); ++k) {
-        RecordRow row;
-        row.run = run_id;
-        row.t_s = r.t_s[k];
-        row.phase = r.t_s[k] <= T ? Phase::kTest : Phase::kNav;  // (docs/records.md: test for 0 ≤ t ≤ T)
-        for (int c = 0; c < 3; ++c)
-          if (std::isfinite(r.accel_error_ap_mps2[k][c])) row.f_mps2[c] = r.accel_error_ap_mps2[k][c];
-        row.r_ap_m = r.position_error_ap_m[k];
-        out.rows.push_back(row);
-      }
-      file.runs.push_back(std::move(out));
+      file.runs.push_back(record_run_of(r, T, run_id));
     }
   }
   out_file.write(write_record_file(file));

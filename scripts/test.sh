@@ -39,7 +39,7 @@ bash scripts/build.sh build/sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DINSMC_W
 # NoiseFit.QuantizationAndRamp and the Noise.* end-to-end cases run once),
 # the raw-ranking files and the documented real-data commands (import-imu
 # and gap end to end, as Noise.ImportImuKeepsTheRawStageAndGapReportsIt).
-sanitizer_skip='^(GapValidate[.]|RealDataDocs[.]|RawRanking[.]|NoiseFit[.](WhiteAndRandomWalk|GaussMarkovCorrelationTime)|GapLinearNull[.]|GapImportedNull[.]|Outputs[.](ASigkill|OfTwoRuns)'
+sanitizer_skip='^(GapValidate[.]|RealDataDocs[.]|RawRanking[.]|NoiseFit[.](WhiteAndRandomWalk|GaussMarkovCorrelationTime)|GapLinearNull[.]|GapImportedNull[.]|GapImportedNoise[.]|Outputs[.](ASigkill|OfTwoRuns)'
 sanitizer_skip+='|Gap[.](FilterWindows|RecordsAfterEachKind|AnEffectAfterAScheme|RecordsOfOtherSoftware|AWithheld|RecordsOfTheModelItself))'
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 run_suite build/sanitize 1800 -E "$sanitizer_skip"
 

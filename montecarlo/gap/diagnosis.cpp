@@ -11,6 +11,7 @@
 #include "lib/common/input_error.h"
 #include "montecarlo/gap/fit/candidate_fit.h"
 #include "montecarlo/gap/null/bootstrap.h"
+#include "montecarlo/gap/null/import_null.h"
 #include "montecarlo/gap/null/null_calibration.h"
 #include "montecarlo/gap/ranking/greedy.h"
 #include "montecarlo/gap/ranking/statements.h"
@@ -95,6 +96,34 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   d.pessimistic.critical = quantile(null.pessimistic, 1.0 - options.alpha);
   d.pessimistic.p_value = p_value_of(signed_gap.pessimistic, null.pessimistic);
   d.pessimistic.significant = signed_gap.pessimistic > 0 && d.pessimistic.p_value < options.alpha;
+  // Records from import-imu with its raw stage: the main verdict is against
+  // the null through the import; the model's own stays beside it and is
+  // what the candidates explain.
+  if (const std::optional<ImportNull> import = import_null_for(records.file, d.statements)) {
+    d.against_model = {true, d.unmodelled_gap, d.unmodelled_critical, d.p_value, d.significant, d.gap,
+                       d.null_gap_critical};
+    std::vector<Eigen::VectorXd> through_z;
+    std::vector<int> through_layout;
+    const Null through = calibrate(p, records.file, options, ncal, through_z, through_layout, &*import);
+    const gap::LogRatios through_ratios =
+        gap::log_ratios(observed, through.calibration, gap::CoherentReference::kAtLeastModelScatter);
+    d.gap = gap::gap_value(through_ratios);
+    d.null_gap_median = quantile(through.gaps, 0.5);
+    d.null_gap_critical = quantile(through.gaps, 1.0 - options.alpha);
+    d.unmodelled_gap = gap::signed_gap(through_ratios).unmodelled;
+    d.unmodelled_critical = quantile(through.unmodelled, 1.0 - options.alpha);
+    d.p_value = p_value_of(d.unmodelled_gap, through.unmodelled);
+    d.significant = d.p_value < options.alpha;
+    d.null_kind = "the model and the sensor's noise through the import";
+    d.statements.push_back(fmt::format(
+        "{}. Against it: G+ = {:.3g}, p = {:.3g}: {}. Against the model alone (a perfect sensor through the import): "
+        "G+ = {:.3g}, p = {:.3g}: {}{}",
+        import->description, d.unmodelled_gap, d.p_value,
+        d.significant ? "an effect beyond the sensor's own noise" : "nothing beyond the sensor's own noise",
+        d.against_model.value, d.against_model.p_value,
+        d.against_model.significant ? "significant" : "not significant",
+        d.against_model.significant ? " (the candidates below explain the gap against the model)" : ""));
+  }
   if (n < 20)
     d.statements.push_back(fmt::format("{} runs: the gap's power is reduced (a null file of {} runs scatters "
                                        "up to G = {:.3g} at alpha = {})", n, n, d.null_gap_critical, options.alpha));
@@ -109,11 +138,11 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
     add_raw_stage(d, file);
     return d;
   }
-  if (!d.significant) {
+  if (!d.model_gap_significant()) {
     d.statements.push_back(fmt::format("no significant gap (p = {:.3g} >= alpha = {}): no effect is selected",
-                                       d.p_value, options.alpha));
+                                       d.against_model.reported ? d.against_model.p_value : d.p_value, options.alpha));
   }
-  if (options.rank == RankWhen::kNever || (options.rank == RankWhen::kIfSignificant && !d.significant)) {
+  if (options.rank == RankWhen::kNever || (options.rank == RankWhen::kIfSignificant && !d.model_gap_significant())) {
     d.statements.push_back("candidate effects not fitted (--rank)");
     add_raw_stage(d, file);
     return d;

@@ -217,6 +217,16 @@ struct PessimisticFinding {
   std::vector<std::string> where;  ///< the groups below the model, most negative ℓ first
 };
 
+/// The verdict against the model alone when the main one is against the
+/// null through the import (null/import_null.h): G₊ of the data against
+/// null files of the model with a perfect sensor.
+struct ModelOnlyVerdict {
+  bool reported = false;
+  double value = 0, critical = 0, p_value = 1;  ///< G₊, its critical value, p
+  bool significant = false;
+  double gap = 0, null_gap_critical = 0;        ///< G and its critical value
+};
+
 struct Diagnosis {
   int runs = 0;
   std::string scheme = "none";  ///< the records' scheme (header)
@@ -230,6 +240,9 @@ struct Diagnosis {
   double null_gap_median = 0, null_gap_critical = 0;  ///< of G: quantiles 0.5 and 1 − α
   double unmodelled_gap = 0, unmodelled_critical = 0;  ///< G₊ and its quantile 1 − α on the null
   PessimisticFinding pessimistic;
+  /// What the null is: "the model" or "the model and the sensor's noise through the import".
+  std::string null_kind = "the model";
+  ModelOnlyVerdict against_model;
   std::vector<GroupResult> groups;
   std::vector<Share> by_kind, by_axis, by_stage, by_window;
   std::vector<TimeFunctionShares> time_functions;
@@ -242,6 +255,14 @@ struct Diagnosis {
   std::vector<PairResult> pairs;          ///< of the top candidates, by held-out log-likelihood gain
   std::vector<GreedyStep> greedy;         ///< the effects added, in order
   std::vector<std::string> selected;
+
+  /// The gap the candidates explain: against the model alone (the main
+  /// verdict unless the null goes through the import).
+  bool model_gap_significant() const { return against_model.reported ? against_model.significant : significant; }
+  /// The critical G of the model's own null (what the held-out gaps are read against).
+  double model_null_gap_critical() const {
+    return against_model.reported ? against_model.null_gap_critical : null_gap_critical;
+  }
 };
 
 /// Diagnoses the runs of one record file (already read and validated).

@@ -13,7 +13,7 @@
 namespace insmc::mc {
 
 Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
-               std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of) {
+               std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of, const ImportNull* import) {
   TruthOptions truth;
   truth.model = p.site.model;
   truth.system = p.site.system;
@@ -30,11 +30,13 @@ Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& 
   std::atomic<std::uint64_t> simulated{0};
   const auto total = static_cast<std::uint64_t>(runs);
   tbb::parallel_for(0, runs, [&](int j) {
-    report_progress(options, "null calibration", simulated++, total, "truth runs");
+    report_progress(options, import ? "null through the import" : "null calibration", simulated++, total, "truth runs");
     const RecordRun& pattern = file.runs[static_cast<std::size_t>(j) % file.runs.size()];
     RecordFile one;
     one.header = file.header;
     one.runs.push_back(simulate_like(pattern, truth, sampler, options.seed, static_cast<std::uint64_t>(j), spec));
+    if (import)
+      add_import_noise(one.runs.front(), file.header, pattern.id, *import, options.seed, static_cast<std::uint64_t>(j));
     sim[static_cast<std::size_t>(j)] = std::move(gap::extract_runs(one, p.site, options.extraction).front());
     if (p.site.estimators) {
       const std::optional<gap::SchemeEstimates> u = gap::record_estimates(one.runs.front(), p.site, *p.site.estimators);

@@ -9,6 +9,7 @@
 #include "montecarlo/gap/diagnosis.h"
 #include "montecarlo/gap/fit/candidate_fit.h"
 #include "montecarlo/gap/metric/gap_metric.h"
+#include "montecarlo/gap/null/import_null.h"
 
 namespace insmc::mc {
 
@@ -28,7 +29,9 @@ struct Null {
 /// site, pulses), their run set under the base model, the calibration, and
 /// the G of 2000 bootstrap files of the records' size. `z` and `layout_of`
 /// keep each null run's row values and layout (for the Allan curves).
+/// With `import`, every null run also carries the sensor's noise through
+/// the import (null/import_null.h).
 Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
-               std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of);
+               std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of, const ImportNull* import = nullptr);
 
 }  // namespace insmc::mc

@@ -30,7 +30,7 @@ void rank_and_select(Diagnosis& d, const PreparedRuns& p, const Null& null, cons
                                                        fmt::format("candidates, step {}", step + 1));
     if (ranked.empty()) break;
     if (step == 0) record_ranking(d, ranked, p, null, options, before);
-    if (!d.significant) break;
+    if (!d.model_gap_significant()) break;
     const Scored& best = ranked.front();
     const gap::Candidate& c = registry[static_cast<std::size_t>(best.candidate)];
     if (step > 0 && best.heldout_gap >= before) break;  // nothing left that helps on held-out runs

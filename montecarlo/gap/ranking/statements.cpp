@@ -10,7 +10,7 @@
 namespace insmc::mc {
 
 void honest_statements(Diagnosis& d) {
-  if (!d.ranked || !d.significant) return;
+  if (!d.ranked || !d.model_gap_significant()) return;
   const CandidateResult& top = d.ranking.front();
   for (const ParameterEstimate& p : top.parameters)
     if (p.at_grid_edge)
@@ -18,11 +18,11 @@ void honest_statements(Diagnosis& d) {
                                          "beyond what this candidate covers, so the ranking shows a direction, not a "
                                          "fitted effect", p.name, format_quantity(p.value, p.dimension)));
   const double left = d.greedy.empty() ? top.heldout_gap_after : d.greedy.back().heldout_gap;
-  if (!d.greedy.empty() && d.greedy.back().p_value < d.alpha && left > 3.0 * d.null_gap_critical)
+  if (!d.greedy.empty() && d.greedy.back().p_value < d.alpha && left > 3.0 * d.model_null_gap_critical())
     d.statements.push_back(fmt::format("after {} effect(s) the held-out gap is still G = {:.3g}, over three times the "
                                        "null's critical {:.3g}: no candidate (alone or combined) explains these data; "
                                        "the system lies far outside the model's priors or has disturbances the "
-                                       "candidates do not describe", d.greedy.size(), left, d.null_gap_critical));
+                                       "candidates do not describe", d.greedy.size(), left, d.model_null_gap_critical()));
   for (const CandidateResult& c : d.ranking) {
     if (c.effect != "bounds" || c.parameters.empty()) continue;
     const bool chosen = std::find(d.selected.begin(), d.selected.end(), c.effect) != d.selected.end() ||

@@ -35,16 +35,16 @@ std::optional<RawStage> raw_stage_from_header(const RecordHeader& header) {
     ch.walk_1h_bound_si = number("white_1h_bound_si");
     ch.wander_bound_si = number("wander_bound_si");
     ch.quantization_bound_si = number("quantization_bound_si");
-    auto upper = [&](noise::NoiseTerm t) {
-      const std::string* v = header.find("imu.noise." + name + "." + std::string(noise::term_name(t, kind)) + "_upper_si");
-      const double x = v ? std::strtod(v->c_str(), nullptr) : -1.0;
-      return std::isfinite(x) ? x : -1.0;
-    };
+    auto upper = [&](noise::NoiseTerm t) { return number(std::string(noise::term_name(t, kind)) + "_upper_si"); };
+    for (const noise::NoiseTerm t : noise::kAllNoiseTerms) {
+      const double v = number(std::string(noise::term_name(t, kind)) + "_si");
+      if (v > 0) ch.model[t] = v * v;
+    }
+    ch.model.correlation_time_s = std::max(0.0, number("correlation_time_s"));
     const double root_hour = std::sqrt(kHourToS);
     if (const double n = upper(noise::NoiseTerm::kWhiteRate); n >= 0) ch.walk_1h_upper_si = n * root_hour;
     ch.quantization_upper_si = upper(noise::NoiseTerm::kQuantization);
-    const std::string* tc_text = header.find("imu.noise." + name + ".correlation_time_s");
-    const double tc = tc_text ? std::strtod(tc_text->c_str(), nullptr) : 0.0;
+    const double tc = ch.model.correlation_time_s;
     for (const double w : {upper(noise::NoiseTerm::kBiasInstability),
                            upper(noise::NoiseTerm::kRateRandomWalk) >= 0 ? upper(noise::NoiseTerm::kRateRandomWalk) * root_hour : -1.0,
                            upper(noise::NoiseTerm::kRateRamp) >= 0 ? upper(noise::NoiseTerm::kRateRamp) * kHourToS : -1.0,

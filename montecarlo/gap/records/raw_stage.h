@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "lib/noise/noise_fit.h"
 #include "lib/records/record.h"
 #include "montecarlo/gap/candidates/candidates.h"
 
@@ -29,6 +30,9 @@ struct RawChannel {
   double walk_1h_bound_si = -1, wander_bound_si = -1;
   /// The quantization's interval upper end, and the Allan bound on it.
   double quantization_upper_si = -1, quantization_bound_si = -1;
+  /// The selected terms' fitted values (the null through the import
+  /// synthesizes them, null/import_null.h).
+  noise::NoiseModel model;
 };
 
 struct RawStage {

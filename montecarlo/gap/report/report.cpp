@@ -84,6 +84,17 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   for (const std::string& w : d.pessimistic.where) where_less.push_back(w);
   pessimistic["where"] = where_less;
   g["pessimistic"] = pessimistic;
+  g["null"] = d.null_kind;
+  if (d.against_model.reported) {
+    Json m = Json::object();
+    m["value"] = d.against_model.value;
+    m["critical"] = d.against_model.critical;
+    m["p_value"] = d.against_model.p_value;
+    m["significant"] = d.against_model.significant;
+    m["gap"] = d.against_model.gap;
+    m["null_critical"] = d.against_model.null_gap_critical;
+    g["against_model"] = m;
+  }
   g["significance"] = "significant: an unmodelled effect, one-sided: G+ (the groups with ln ratio > 0) against the "
                       "null files' G+ at alpha; pessimistic: the groups with ln ratio < 0 (G-), the same way";
   g["metric"] = "G = sqrt(mean over groups of ln(observed/expected)^2): scatter groups (mean normalized square per "
@@ -173,8 +184,15 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                                                                   const std::vector<std::string>& record_files) {
   std::string md = "# Sim-to-real gap diagnosis\n\n";
   md += fmt::format("Records: {} ({} runs, scheme {}). Null: {} truth-level runs of the model itself at the "
-                    "records' times, pulse weight, site and scheme.\n\n",
-                    fmt::join(record_files, ", "), d.runs, d.scheme, d.calibration_runs);
+                    "records' times, pulse weight, site and scheme{}.\n\n",
+                    fmt::join(record_files, ", "), d.runs, d.scheme, d.calibration_runs,
+                    d.against_model.reported
+                        ? fmt::format("; the verdict below is against the same runs with the sensor's own noise "
+                                      "through the import (against the model alone: G+ = {:.3g}, p = {:.3g}, {}; "
+                                      "the candidates explain that gap)",
+                                      d.against_model.value, d.against_model.p_value,
+                                      d.against_model.significant ? "significant" : "not significant")
+                        : "");
   md += "## 1. The gap\n\n";
   md += fmt::format("G = **{:.3g}** (null files of {} runs: median {:.3g}, critical {:.3g}). More than the model "
                     "(an unmodelled effect): G+ = {:.3g}, p = {:.3g}, alpha = {}: **{}**. Less than the model: G- = "
