@@ -7,9 +7,31 @@
 #include "apps/output_paths.h"
 #include "apps/stdout_choice.h"
 #include "apps/study_options.h"
+#include "lib/common/input_error.h"
 #include "montecarlo/study/study_map.h"
 
 namespace insmc::app {
+namespace {
+
+/// The covariance is exact and linear: no samples, no intervals, no
+/// time-domain alignment. An option that would change nothing is refused
+/// rather than accepted and ignored.
+void refuse_unused_options(const po::variables_map& vm) {
+  if (vm["fidelity"].as<std::string>() == "truth")
+    throw InputError("--fidelity", "truth",
+                     "covariance is the linear model's exact covariance: paper or linear (the truth level needs "
+                     "samples: insmc run --fidelity truth)");
+  if (!vm["confidence"].defaulted())
+    throw InputError("--confidence", fmt::format("{}", vm["confidence"].as<double>()),
+                     "not used by covariance (exact: no samples, no intervals); use insmc run");
+  for (const char* name : {"alignment-time", "coarse-misalignment"})
+    if (!vm[name].defaulted())
+      throw InputError(std::string("--") + name, vm[name].as<std::string>(),
+                       "not used by covariance (the steady-state alignment of the linear model); use insmc run "
+                       "--fidelity truth");
+}
+
+}  // namespace
 
 int run_covariance(const Args& args) {
   po::options_description opts("Options");
@@ -21,6 +43,7 @@ int run_covariance(const Args& args) {
   opts.add(study_options_description(false));
   const auto vm = parse_args(args, "covariance", "[options]", opts);
   if (!vm) return 0;
+  refuse_unused_options(*vm);
   const mc::StudyConfig config = read_study_config(*vm, false);
   const StdoutChoice shown = read_stdout_choice(*vm);
   const mc::LengthUnit unit = read_length_unit(*vm);
@@ -30,7 +53,7 @@ int run_covariance(const Args& args) {
   const mc::StudyMap map(config, layout);
   const mc::CovarianceFiles files = mc::render_covariance(config, layout, map, unit);
   mc::Json json = mc::Json::object();
-  json["settings"] = mc::settings_json(config);
+  json["settings"] = mc::settings_json(config, mc::SettingsOf::kCovariance);
   json["covariance"] = files.covariance_json;
   if (out) {
     out->write({{"covariance.csv", files.covariance_csv},

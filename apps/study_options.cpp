@@ -26,20 +26,28 @@ UncertaintyModel read_uncertainty_model(const po::variables_map& vm) {
 }  // namespace insmc::app
 
 #include <charconv>
+#include <cmath>
 #include <fmt/format.h>
 
 #include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
 #include "lib/units/quantity.h"
 
 namespace insmc::app {
 namespace {
 
+/// A count as an integer ("100000") or in exponent form when that is a
+/// whole number ("1e5", "2.5e6"), up to 2^53 in that form (every integer
+/// there is exact in a double).
 std::uint64_t parse_count(const std::string& text, const std::string& field) {
+  const char* end = text.data() + text.size();
   std::uint64_t v = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || ptr != text.data() + text.size())
-    throw InputError(field, text, "must be a non-negative integer");
-  return v;
+  if (const auto [ptr, ec] = std::from_chars(text.data(), end, v); ec == std::errc() && ptr == end) return v;
+  double x = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), end, x);
+  if (ec == std::errc() && ptr == end && x >= 0 && x <= 0x1p53 && x == std::floor(x))
+    return static_cast<std::uint64_t>(x);
+  throw InputError(field, echo_input(text), "must be a non-negative whole number (e.g. 100000 or 1e5)");
 }
 
 }  // namespace

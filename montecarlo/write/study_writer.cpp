@@ -208,13 +208,16 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
   return f;
 }
 
-Json settings_json(const StudyConfig& c) {
+Json settings_json(const StudyConfig& c, SettingsOf of) {
   Json s = Json::object();
   s["program"] = "insmc";
   s["version"] = kVersion;
-  s["seed"] = static_cast<double>(c.seed);
-  s["samples"] = static_cast<double>(c.samples);
-  s["threads"] = c.threads;
+  const bool monte_carlo = of == SettingsOf::kMonteCarlo;
+  if (monte_carlo) {
+    s["seed"] = static_cast<double>(c.seed);
+    s["samples"] = static_cast<double>(c.samples);
+    s["threads"] = c.threads;
+  }
   s["fidelity"] = std::string(to_string(c.fidelity));
   Json systems = Json::array(), schemes = Json::array();
   for (System sy : c.systems) systems.push_back(system_number(sy));
@@ -223,7 +226,7 @@ Json settings_json(const StudyConfig& c) {
   s["schemes"] = schemes;
   s["latitude_rad"] = c.model.latitude_rad;
   s["leveling_gain_ratio"] = c.model.leveling_gain_ratio;
-  s["confidence"] = c.confidence;
+  if (monte_carlo) s["confidence"] = c.confidence;
   s["grid_step_s"] = c.grid_step_s;
   s["grid_end_s"] = c.grid_end_s;
   Json report = Json::array();

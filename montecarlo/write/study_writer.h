@@ -31,6 +31,9 @@ CovarianceFiles render_covariance(const StudyConfig& config, const StudyLayout& 
                                   LengthUnit unit);
 
 /// Every setting that reproduces the study (without the results).
-Json settings_json(const StudyConfig& config);
+/// What a study's numbers depend on: a Monte Carlo run's settings, or a
+/// covariance's (no seed, samples, threads or confidence: it has none).
+enum class SettingsOf { kMonteCarlo, kCovariance };
+Json settings_json(const StudyConfig& config, SettingsOf of = SettingsOf::kMonteCarlo);
 
 }  // namespace insmc::mc

@@ -133,6 +133,10 @@ TEST(Cli, CsvOnStdoutIsTheEnvelopeFileByteForByte) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out, read_file(dir.path() / "envelope.csv"));
   EXPECT_EQ(r.out.find(" ± "), std::string::npos);  // full precision, no rounding
+  // A count in exponent form is the same count.
+  const auto e = run_insmc("run --samples 3e3 --scheme none,5.3 --format csv");
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  EXPECT_EQ(e.out, r.out);
 }
 
 TEST(Cli, HelpShowsDefaultsAsTyped) {

@@ -77,6 +77,12 @@ TEST(HostileInput, HugeAndTinyValuesAreRefusedBeforeAnyWork) {
       {"run --fidelity truth --alignment-time 10min --coarse-misalignment 1rad,0rad,0rad", "--coarse-misalignment"},
       {"covariance --bound gyro_drift=1e15meru", "gyro_drift_x"},
       {"covariance --dv-pulse 1e300mps", "--dv-pulse"},
+      {"covariance --fidelity truth", "--fidelity"},
+      {"covariance --confidence 0.9", "--confidence"},
+      {"covariance --alignment-time 10min", "--alignment-time"},
+      {"run --samples 1e300", "--samples"},
+      {"run --samples 2.5", "--samples"},
+      {"run --samples -1e3", "--samples"},
       {"simulate --bound gyro_drift=1e300meru" + rec, "gyro_drift_x"},
       {"simulate --effect accel_bias_instability:sigma=1e300mps2,tau=600s" + rec, "accel_bias_instability.sigma"},
       {"simulate --effect sway:accel_rms=1e300mps2" + rec, "sway.accel_rms"},
@@ -111,7 +117,8 @@ TEST(HostileInput, ValuesAtTheEdgesOfTheirRangesRun) {
            "run --samples 2048 --dist all=zero --leveling-gain 10 --scheme none",
            "run --samples 2048 --dv-pulse 1mps --position-resolution 1km --scheme 5.2,5.3",
            "run --samples 2048 --filter-interval 4s --test-duration 2h --system 1 --scheme none,5.3",
-           "covariance --confidence 0.999999 --bound accel_bias=100mg",
+           "run --samples 2048 --confidence 0.999999 --scheme none",
+           "covariance --bound accel_bias=100mg",
        }) {
     const ProgramResult r = run_bounded(args + " --format csv", 300);
     EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
