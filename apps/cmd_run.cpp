@@ -16,6 +16,7 @@
 #include "apps/interrupt.h"
 #include "apps/output_paths.h"
 #include "apps/ranks.h"
+#include "apps/run_file.h"
 #include "apps/stdout_choice.h"
 #include "apps/study_options.h"
 #include "apps/study_runner.h"
@@ -71,6 +72,11 @@ int replay(const mc::StudyConfig& c, const mc::StudyLayout& l, const mc::StudyMa
 
 /// The options a --resume command line may give; every other setting comes
 /// from the checkpoint.
+/// Where and how the results are shown, not what they are: left out of
+/// run.json's settings.arguments.
+const std::vector<std::string> kNotInRunJson = {"out",        "format",           "quiet",  "full", "threads",
+                                                "checkpoint", "checkpoint-every", "resume", "from", "replay"};
+
 const std::vector<std::string> kResumeOptions = {"out",     "format",     "quiet",           "full",
                                                  "threads", "checkpoint", "checkpoint-every"};
 
@@ -169,16 +175,46 @@ int run_command(const Args& args, Ranks& ranks) {
       "checkpoint-every", po::value<std::string>()->default_value("10s"), "work between two checkpoints, in [10ms, 24h]")(
       "resume", po::value<std::string>(),
       "continue the run of checkpoint FILE to the same result, byte for byte; no other option is needed, and only "
-      "--out, --format, --quiet, --full, --threads, --checkpoint (default FILE) and --checkpoint-every may be given");
+      "--out, --format, --quiet, --full, --threads, --checkpoint (default FILE) and --checkpoint-every may be given")(
+      "from", po::value<std::string>(),
+      "run again the run of DIR/run.json (its settings.arguments), to the same files byte for byte (run.json's "
+      "elapsed_s aside); options given here replace the file's");
   add_stdout_switches(opts, "the RMS of every axis at every report time");
   opts.add(study_options_description(true));
   const std::string synopsis = "[options]\n       insmc run --resume FILE [--out DIR] [--format F]";
   auto vm = parse_args(args, "run", synopsis, opts);
   if (!vm) return 0;
 
+  // --from: a run.json's arguments, with this command line's options in
+  // place of theirs, parsed as if typed again.
+  Args run_args = args;
+  if (vm->count("from")) {
+    const std::string from = (*vm)["from"].as<std::string>();
+    if (vm->count("resume"))
+      throw InputError("--from", echo_input(from), "cannot be given with --resume (a checkpoint restores its own run)");
+    std::vector<std::string> overrides;
+    Args override_tokens;
+    for (const GivenOption& o : given_options(args, opts)) {
+      if (o.name == "from") continue;
+      overrides.push_back(o.name);
+      override_tokens.insert(override_tokens.end(), o.tokens.begin(), o.tokens.end());
+    }
+    std::vector<GivenOption> kept;
+    try {
+      kept = given_options(read_run_arguments(from), opts);
+    } catch (const po::error& e) {
+      throw InputError("--from", echo_input(from), std::string("settings.arguments: ") + e.what());
+    }
+    for (const GivenOption& o : kept)
+      if (o.name == "from" || o.name == "resume" || o.name == "config")
+        throw InputError("--from", echo_input(from), fmt::format("settings.arguments may not hold --{}", o.name));
+    run_args = without_options(kept, overrides);
+    run_args.insert(run_args.end(), override_tokens.begin(), override_tokens.end());
+    vm = parse_args(run_args, "run", synopsis, opts);
+  }
+
   // --resume: the checkpoint's own arguments, with this command line's
   // --out, --format, ... in place of theirs, parsed as if typed again.
-  Args run_args = args;
   std::optional<Checkpoint> resumed;
   const std::string resume_path = vm->count("resume") ? (*vm)["resume"].as<std::string>() : "";
   if (vm->count("resume")) {
@@ -304,7 +340,11 @@ int run_command(const Args& args, Ranks& ranks) {
 
   const mc::EnvelopeFiles files = mc::render_envelope(config, layout, map, acc, unit);
   mc::Json run = mc::Json::object();
-  run["settings"] = mc::settings_json(config);
+  mc::Json settings = mc::settings_json(config);
+  mc::Json arguments = mc::Json::array();
+  for (const std::string& a : explicit_arguments(*vm, opts, kNotInRunJson)) arguments.push_back(a);
+  settings["arguments"] = arguments;
+  run["settings"] = settings;
   run["elapsed_s"] = elapsed_s;
   run["resumed_from_sample"] = resumed_from_sample;
   if (ranks.distributed()) {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzes every input reader (tests/fuzz: records, imu, bounds, config,
-# checkpoint, quantity) for SECONDS each with libFuzzer, AddressSanitizer and
+# checkpoint, quantity, run_json) for SECONDS each with libFuzzer, AddressSanitizer and
 # UndefinedBehaviorSanitizer. Quiet on success; on a crash prints the crash
 # input (kept under build/fuzz/crashes/<target>/) and exits 1.
 #   scripts/fuzz.sh SECONDS
@@ -12,10 +12,10 @@
 set -euo pipefail
 seconds=${1:?usage: scripts/fuzz.sh SECONDS}
 root=$(cd "$(dirname "$0")/.." && pwd)
-targets=(records imu bounds config checkpoint quantity)
+targets=(records imu bounds config checkpoint quantity run_json)
 
 packages=(clang libclang-rt-14-dev ccache cmake make libeigen3-dev libtbb-dev libboost-program-options-dev
-          libboost-dev libfmt-dev)
+          libboost-dev libfmt-dev nlohmann-json3-dev)
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then missing+=("$p"); fi

@@ -7,7 +7,7 @@
 #                                    libFuzzer and ccache (scripts/fuzz.sh)
 set -euo pipefail
 
-packages=(g++ cmake make libeigen3-dev libtbb-dev libboost-program-options-dev libboost-dev libfmt-dev)
+packages=(g++ cmake make libeigen3-dev libtbb-dev libboost-program-options-dev libboost-dev libfmt-dev nlohmann-json3-dev)
 if [[ "${1:-}" == "--test" ]]; then
   # openssh-client: Open MPI's mpirun refuses to start without an rsh/ssh agent,
   # even on one machine (Debian only recommends it).

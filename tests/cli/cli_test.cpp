@@ -139,6 +139,44 @@ TEST(Cli, CsvOnStdoutIsTheEnvelopeFileByteForByte) {
   EXPECT_EQ(e.out, r.out);
 }
 
+/// run.json without its wall time (the one value a rerun cannot repeat).
+std::string without_elapsed(std::string json) {
+  const auto at = json.find("\"elapsed_s\": ");
+  if (at != std::string::npos) json.erase(at, json.find('\n', at) - at);
+  return json;
+}
+
+TEST(Cli, RunFromRunJsonReproducesTheFilesByteForByte) {
+  TempDir dir;
+  std::ofstream(dir.path() / "study.ini") << "dv-pulse = 0.05ftps\n";
+  const auto first = run_insmc("run --samples 3000 --scheme none,5.4 --bound gyro_drift=20meru --sway 5mmps,6s "
+                               "--test-duration 10min --config " + dir.str() + "/study.ini --quiet --out " +
+                               dir.str() + "/a");
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const std::string run_json = read_file(dir.path() / "a" / "run.json");
+  // Every option that made the numbers, the --config file's too, and none that only shows them.
+  for (const char* kept : {"--samples=3000", "--bound=gyro_drift=20meru", "--sway=5mmps,6s", "--dv-pulse=0.05ftps"})
+    EXPECT_NE(run_json.find(kept), std::string::npos) << kept;
+  for (const char* left : {"--out", "--quiet", "--config"}) EXPECT_EQ(run_json.find(left), std::string::npos) << left;
+  const auto again = run_insmc("run --from " + dir.str() + "/a/run.json --quiet --out " + dir.str() + "/b");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  for (const char* f : {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.svg"})
+    EXPECT_EQ(read_file(dir.path() / "a" / f), read_file(dir.path() / "b" / f)) << f;
+  EXPECT_EQ(without_elapsed(run_json), without_elapsed(read_file(dir.path() / "b" / "run.json")));
+  // An option given with --from replaces the file's.
+  const auto other = run_insmc("run --from " + dir.str() + "/a/run.json --samples 2000 --format csv");
+  ASSERT_EQ(other.exit_code, 0) << other.err;
+  EXPECT_NE(other.out, read_file(dir.path() / "a" / "envelope.csv"));
+  // A file that is not a run.json, or names an unknown option: exit 2 naming --from.
+  std::ofstream(dir.path() / "bad.json") << R"({"settings": {"arguments": ["--nope=1"]}})";
+  std::ofstream(dir.path() / "none.json") << R"({"settings": {}})";
+  for (const char* bad : {"bad.json", "none.json"}) {
+    const auto r = run_insmc("run --from " + dir.str() + "/" + bad);
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.err.find("--from"), std::string::npos) << r.err;
+  }
+}
+
 TEST(Cli, HelpShowsDefaultsAsTyped) {
   for (const char* sub : {"run", "covariance", "check"}) {
     const auto r = run_insmc(std::string(sub) + " --help");

@@ -12,6 +12,7 @@
 #include "apps/bounds_file.h"
 #include "apps/checkpoint.h"
 #include "apps/config_file.h"
+#include "apps/run_file.h"
 #include "lib/common/input_error.h"
 #include "lib/imu/imu_samples.h"
 #include "lib/records/record_io.h"
@@ -97,6 +98,10 @@ Outcome checkpoint(std::string_view data) {
     bytes = std::string(data.substr(1));
   }
   return guarded([&] { app::decode_checkpoint(bytes, "fuzz.ck"); });
+}
+
+Outcome run_json(std::string_view data) {
+  return guarded([&] { app::run_arguments_from_json(data, "fuzz.json"); });
 }
 
 Outcome quantity(std::string_view data) {

@@ -29,12 +29,15 @@ Outcome config(std::string_view data);
 Outcome checkpoint(std::string_view data);
 /// parse_quantity; the first byte chooses the dimension (or parse_rate_hz).
 Outcome quantity(std::string_view data);
+/// run.json's settings.arguments (apps/run_file.h), as `run --from` reads them.
+Outcome run_json(std::string_view data);
 
 struct Target {
   std::string_view name;  ///< tests/fuzz/corpus/<name>, regressions/<name>, fuzz_<name>
   Outcome (*run)(std::string_view);
 };
 inline constexpr Target kTargets[] = {{"records", records}, {"imu", imu},               {"bounds", bounds},
-                                      {"config", config},   {"checkpoint", checkpoint}, {"quantity", quantity}};
+                                      {"config", config},   {"checkpoint", checkpoint}, {"quantity", quantity},
+                                      {"run_json", run_json}};
 
 }  // namespace insmc::fuzz
