@@ -77,6 +77,15 @@ int replay(const mc::StudyConfig& c, const mc::StudyLayout& l, const mc::StudyMa
 const std::vector<std::string> kNotInRunJson = {"out",        "format",           "quiet",  "full", "threads",
                                                 "checkpoint", "checkpoint-every", "resume", "from", "replay"};
 
+/// settings_json with the arguments that made the numbers (apps/run_file.h).
+mc::Json run_settings(const mc::StudyConfig& config, const po::variables_map& vm, const po::options_description& opts) {
+  mc::Json settings = mc::settings_json(config);
+  mc::Json arguments = mc::Json::array();
+  for (const std::string& a : explicit_arguments(vm, opts, kNotInRunJson)) arguments.push_back(a);
+  settings["arguments"] = arguments;
+  return settings;
+}
+
 const std::vector<std::string> kResumeOptions = {"out",     "format",     "quiet",           "full",
                                                  "threads", "checkpoint", "checkpoint-every"};
 
@@ -256,7 +265,7 @@ int run_command(const Args& args, Ranks& ranks) {
       const std::vector<std::string> names =
           sweeps.empty() ? std::vector<std::string>{"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.svg",
                                                     "run.json"}
-                         : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.svg"};
+                         : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.svg", "sweep.json"};
       out = prepare_output_folder(*vm, "run", names);
       if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path);
     });
@@ -274,9 +283,18 @@ int run_command(const Args& args, Ranks& ranks) {
           return run_study_blocks(c, m, ranks, StudyProgress{{}, mc::StudyAccumulator(m)}, plan).progress.state;
         });
     if (!ranks.root()) return 0;
+    mc::Json json = files.json;
+    json["settings"] = run_settings(config, *vm, opts);
+    const std::string sweep_json = json.dump();
     if (out)
-      out->write({{"sweep.csv", files.sweep_csv}, {"sweep.md", files.summary_md}, {"sweep.svg", files.plot_svg}});
-    if (!shown.quiet) fmt::print("{}", shown.format == OutputFormat::kCsv ? files.sweep_csv : files.summary_md);
+      out->write({{"sweep.csv", files.sweep_csv},
+                  {"sweep.md", files.summary_md},
+                  {"sweep.svg", files.plot_svg},
+                  {"sweep.json", sweep_json}});
+    if (!shown.quiet)
+      fmt::print("{}", shown.format == OutputFormat::kCsv    ? files.sweep_csv
+                       : shown.format == OutputFormat::kJson ? sweep_json
+                                                              : files.summary_md);
     return 0;
   }
   const mc::StudyLayout layout = mc::make_layout(config);
@@ -340,11 +358,7 @@ int run_command(const Args& args, Ranks& ranks) {
 
   const mc::EnvelopeFiles files = mc::render_envelope(config, layout, map, acc, unit);
   mc::Json run = mc::Json::object();
-  mc::Json settings = mc::settings_json(config);
-  mc::Json arguments = mc::Json::array();
-  for (const std::string& a : explicit_arguments(*vm, opts, kNotInRunJson)) arguments.push_back(a);
-  settings["arguments"] = arguments;
-  run["settings"] = settings;
+  run["settings"] = run_settings(config, *vm, opts);
   run["elapsed_s"] = elapsed_s;
   run["resumed_from_sample"] = resumed_from_sample;
   if (ranks.distributed()) {

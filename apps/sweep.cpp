@@ -130,6 +130,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
   check_sweep_size(axes);
   std::size_t points = 1;
   for (const auto& a : axes) points *= a.texts.size();
+  mc::Json point_list = mc::Json::array();
   std::vector<std::size_t> idx;
   // Every point is checked before the first is run: a value out of range
   // late in the list must not cost the points before it.
@@ -140,8 +141,11 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
     const mc::StudyMap map(c, layout);
     const mc::StudyAccumulator acc = run ? run(c, map) : mc::run_blocks(c, map, 0, mc::block_count(c.samples));
     std::string point_name;
-    for (std::size_t i = 0; i < axes.size(); ++i)
+    mc::Json point = mc::Json::object(), values = mc::Json::object(), rows = mc::Json::array();
+    for (std::size_t i = 0; i < axes.size(); ++i) {
       point_name += fmt::format("{}{}={}", i ? " " : "", axes[i].column, axes[i].texts[idx[i]]);
+      values[axes[i].column] = axes[i].values_si[idx[i]];
+    }
     for (std::size_t o = 0; o < layout.outputs.size(); ++o) {
       const auto& spec = layout.outputs[o];
       if (!layout.is_report_time[spec.time_index]) continue;
@@ -161,6 +165,24 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
             mc::format_number(map.ready_time_s(scheme_i) / 60), fitted})
         row.push_back(cell);
       table.add_row(row);
+      mc::Json r = mc::Json::object();
+      r["scheme"] = std::string(to_string(spec.scheme));
+      r["system"] = system_number(spec.system);
+      r["clock"] = std::string(clock_of(spec.scheme));
+      r["axis"] = std::string(to_string(spec.axis));
+      r["t_min"] = t / 60;
+      r["n"] = static_cast<double>(s.n);
+      r["rms_m"] = s.rms;
+      r["rms_lo_m"] = s.rms_lo;
+      r["rms_hi_m"] = s.rms_hi;
+      r["mean_m"] = s.mean;
+      r["std_m"] = s.std;
+      r["min_m"] = s.min;
+      r["max_m"] = s.max;
+      r["p95_m"] = s.p95_abs;
+      r["ready_time_min"] = map.ready_time_s(scheme_i) / 60;
+      r["fitted_terms"] = fitted;
+      rows.push_back(r);
       if (spec.axis == mc::Axis::kHorizontal && std::abs(t - c.report_times_s.back()) < 1e-6) {
         summary.add_row({point_name, row[axes.size()], row[axes.size() + 1],
                          mc::format_with_interval(k * s.rms, k * (s.rms_hi - s.rms_lo) / 2), fitted});
@@ -180,8 +202,25 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
         series->hi.push_back(k * s.rms_hi);
       }
     }
+    point["values_si"] = values;
+    point["rows"] = rows;
+    point_list.push_back(point);
   }
   SweepFiles f;
+  mc::Json swept = mc::Json::array();
+  for (const SweepAxis& a : axes) {
+    mc::Json axis = mc::Json::object(), texts = mc::Json::array(), values = mc::Json::array();
+    for (std::size_t i = 0; i < a.texts.size(); ++i) {
+      texts.push_back(a.texts[i]);
+      values.push_back(a.values_si[i]);
+    }
+    axis["column"] = a.column;
+    axis["texts"] = texts;
+    axis["values_si"] = values;
+    swept.push_back(axis);
+  }
+  f.json["axes"] = swept;
+  f.json["points"] = point_list;
   f.sweep_csv = mc::render_csv(table);
   f.summary_md = mc::render_markdown(summary);
   f.plot_svg = mc::svg_line_plot(fmt::format("Horizontal RMS at {} min against {}", mc::format_number(base.report_times_s.back() / 60),

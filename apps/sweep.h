@@ -10,6 +10,7 @@
 #include "apps/cli_common.h"
 #include "montecarlo/engine/engine.h"
 #include "montecarlo/study/study_config.h"
+#include "montecarlo/write/json.h"
 #include "montecarlo/write/length_unit.h"
 
 namespace insmc::app {
@@ -24,11 +25,13 @@ struct SweepAxis {
 /// The swept quantities of the command line (empty: no sweep).
 std::vector<SweepAxis> find_sweeps(const po::variables_map& vm);
 
-/// Runs every point of the sweep and returns sweep.csv, a Markdown summary
-/// and the SVG plot of the horizontal RMS at the last report time against
-/// the first swept quantity.
+/// Runs every point of the sweep and returns sweep.csv, a Markdown summary,
+/// the SVG plot of the horizontal RMS at the last report time against the
+/// first swept quantity, and sweep.json's axes and points (SI keys whatever
+/// --units; the caller adds the settings).
 struct SweepFiles {
   std::string sweep_csv, summary_md, plot_svg;
+  mc::Json json = mc::Json::object();
 };
 /// Runs the Monte Carlo study of one point (every block, merged).
 using StudyRunner = std::function<mc::StudyAccumulator(const mc::StudyConfig&, const mc::StudyMap&)>;

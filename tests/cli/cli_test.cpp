@@ -177,6 +177,21 @@ TEST(Cli, RunFromRunJsonReproducesTheFilesByteForByte) {
   }
 }
 
+TEST(Cli, ASweepWritesSweepJsonWithEveryPointAndRunsAgainFromIt) {
+  TempDir dir;
+  const auto r = run_insmc("run --samples 2000 --scheme none --test-duration 5min,10min --latitude 0deg,60deg "
+                           "--format json --out " + dir.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, read_file(dir.path() / "sweep.json"));
+  std::size_t points = 0;
+  for (auto at = r.out.find("\"rows\": ["); at != std::string::npos; at = r.out.find("\"rows\": [", at + 1)) ++points;
+  EXPECT_EQ(points, 4u);  // the product of the two lists
+  EXPECT_NE(r.out.find("\"latitude_rad\": 1.0471975511965976"), std::string::npos);
+  const auto again = run_insmc("run --from " + dir.str() + "/sweep.json --format csv");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(again.out, read_file(dir.path() / "sweep.csv"));
+}
+
 TEST(Cli, HelpShowsDefaultsAsTyped) {
   for (const char* sub : {"run", "covariance", "check"}) {
     const auto r = run_insmc(std::string(sub) + " --help");
