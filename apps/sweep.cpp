@@ -165,22 +165,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
             mc::format_number(map.ready_time_s(scheme_i) / 60), fitted})
         row.push_back(cell);
       table.add_row(row);
-      mc::Json r = mc::Json::object();
-      r["scheme"] = std::string(to_string(spec.scheme));
-      r["system"] = system_number(spec.system);
-      r["clock"] = std::string(clock_of(spec.scheme));
-      r["axis"] = std::string(to_string(spec.axis));
-      r["t_min"] = t / 60;
-      r["n"] = static_cast<double>(s.n);
-      r["rms_m"] = s.rms;
-      r["rms_lo_m"] = s.rms_lo;
-      r["rms_hi_m"] = s.rms_hi;
-      r["mean_m"] = s.mean;
-      r["std_m"] = s.std;
-      r["min_m"] = s.min;
-      r["max_m"] = s.max;
-      r["p95_m"] = s.p95_abs;
-      r["ready_time_min"] = map.ready_time_s(scheme_i) / 60;
+      mc::Json r = mc::output_row_json(spec, t, s, map.ready_time_s(scheme_i));
       r["fitted_terms"] = fitted;
       rows.push_back(r);
       if (spec.axis == mc::Axis::kHorizontal && std::abs(t - c.report_times_s.back()) < 1e-6) {

@@ -108,19 +108,7 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
         horizontal.push_back({row[0], row[2], system_number(spec.system), t / 60.0, k * s.rms, half,
                               map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0,
                               accuracy ? std::optional(figures_of(*accuracy, k)) : std::nullopt});
-      Json j = Json::object();
-      j["scheme"] = row[0];
-      j["system"] = system_number(spec.system);
-      j["clock"] = row[2];
-      j["axis"] = row[3];
-      j["t_min"] = t / 60.0;
-      j["n"] = static_cast<double>(s.n);
-      j["rms_m"] = s.rms;
-      j["rms_lo_m"] = s.rms_lo;
-      j["rms_hi_m"] = s.rms_hi;
-      j["mean_m"] = s.mean;
-      j["std_m"] = s.std;
-      j["p95_m"] = s.p95_abs;
+      Json j = output_row_json(spec, t, s, map.ready_time_s(scheme_index(c, spec.scheme)));
       add_accuracy_json(j, accuracy);
       f.envelope_json.push_back(j);
     }
@@ -206,6 +194,26 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
                               "scheme's clock; ready: minutes from the first switch-over until the vehicle may fly.",
                               length_suffix(unit)));
   return f;
+}
+
+Json output_row_json(const OutputSpec& spec, double t_s, const OutputSummary& s, double ready_time_s) {
+  Json j = Json::object();
+  j["scheme"] = std::string(to_string(spec.scheme));
+  j["system"] = system_number(spec.system);
+  j["clock"] = std::string(clock_of(spec.scheme));
+  j["axis"] = std::string(to_string(spec.axis));
+  j["t_min"] = t_s / 60.0;
+  j["n"] = static_cast<double>(s.n);
+  j["rms_m"] = s.rms;
+  j["rms_lo_m"] = s.rms_lo;
+  j["rms_hi_m"] = s.rms_hi;
+  j["mean_m"] = s.mean;
+  j["std_m"] = s.std;
+  j["min_m"] = s.min;
+  j["max_m"] = s.max;
+  j["p95_m"] = s.p95_abs;
+  j["ready_time_min"] = ready_time_s / 60.0;
+  return j;
 }
 
 Json settings_json(const StudyConfig& c, SettingsOf of) {

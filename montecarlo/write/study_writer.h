@@ -31,6 +31,10 @@ CovarianceFiles render_covariance(const StudyConfig& config, const StudyLayout& 
                                   LengthUnit unit);
 
 /// Every setting that reproduces the study (without the results).
+/// One output's statistics as run.json's envelope and sweep.json's points
+/// hold them (SI keys whatever the display units).
+Json output_row_json(const OutputSpec& spec, double t_s, const OutputSummary& summary, double ready_time_s);
+
 /// What a study's numbers depend on: a Monte Carlo run's settings, or a
 /// covariance's (no seed, samples, threads or confidence: it has none).
 enum class SettingsOf { kMonteCarlo, kCovariance };
