@@ -24,6 +24,10 @@ constexpr std::uint64_t kImportNoiseStream = std::uint64_t{1} << 20;
 /// the navigation sees it (filter windows of ≥ 1 s), not the raw rate; the
 /// synthesizer turns what is faster into its white-rate limit.
 constexpr double kMinSynthesisIntervalS = 0.1;
+/// At most this many samples per null run (a 48 h run at 0.86 s) unless the
+/// output interval is shorter: the memory and time of one null run stay
+/// bounded whatever the header says.
+constexpr double kMaxSynthesizedSamples = 2e5;
 
 std::optional<double> number(const RecordHeader& h, const std::string& key) {
   const std::string* v = h.find(key);
@@ -90,7 +94,8 @@ std::optional<ImportNull> import_null_for(const RecordFile& file, std::vector<st
   // a whole fraction of the output interval so the rows fall on samples.
   const double raw_dt = number(header, "imu.noise.sample_interval_s")
                             .value_or(1.0 / number(header, "imu.rate_hz").value_or(1.0 / kMinSynthesisIntervalS));
-  const double per_interval = std::floor(nav.output_interval_s / std::max(raw_dt, kMinSynthesisIntervalS));
+  const double shortest = std::max(kMinSynthesisIntervalS, nav.run_duration_s() / kMaxSynthesizedSamples);
+  const double per_interval = std::floor(nav.output_interval_s / std::max(raw_dt, shortest));
   in.sample_interval_s = nav.output_interval_s / std::max(1.0, per_interval);
   for (const RawChannel& ch : raw->channels) {
     std::size_t c = 0;
