@@ -53,8 +53,13 @@ TEST(Cli, ParamsListsTheCatalogue) {
   const auto r = run_insmc("params --format csv --bound gyro_drift=3meru --dist accel_bias_x=zero");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(line_count(r.out), 34);  // header + 33 parameters
-  EXPECT_NE(r.out.find("gyro_drift_y,ω_doy,radps,"), std::string::npos);
+  EXPECT_NE(r.out.find("gyro_drift_y,gyro_drift,ω_doy,radps,"), std::string::npos);
   EXPECT_NE(r.out.find("3 meru"), std::string::npos);
+  // The Markdown names the groups --bound and --dist accept.
+  const auto md = run_insmc("params");
+  ASSERT_EQ(md.exit_code, 0) << md.err;
+  EXPECT_NE(md.out.find("Groups ("), std::string::npos);
+  EXPECT_NE(md.out.find("gyro_drift, "), std::string::npos) << md.out;
 }
 
 TEST(Cli, RunWritesTheOutputContractAndIsIdenticalForAnyThreadCount) {
