@@ -62,12 +62,12 @@ mc::Json round_json(const Round& r) {
 int run_bench(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("samples", po::value<std::uint64_t>()->default_value(2000000),
-                     "samples per measurement of the uncompensated paper path")(
+                     "samples per measurement of the uncompensated paper path, in [1024, 2^40] (whole blocks of 1024)")(
       "pipeline-samples", po::value<std::uint64_t>()->default_value(102400),
-      "samples per measurement of the full pipelines (paper, linear)")(
-      "truth-samples", po::value<std::uint64_t>()->default_value(4096), "samples per measurement of the truth path")(
+      "samples per measurement of the full pipelines (paper, linear), in [1024, 2^40]")(
+      "truth-samples", po::value<std::uint64_t>()->default_value(4096), "samples per measurement of the truth path, in [1024, 2^40]")(
       "threads", po::value<int>()->default_value(0), "threads (0 = all cores)")(
-      "rounds", po::value<int>()->default_value(3), "paired rounds; the median ratio is reported")(
+      "rounds", po::value<int>()->default_value(3), "paired rounds, in [1, 50]; the median ratio is reported")(
       "json", po::bool_switch(), "print the JSON alone on stdout");
   const auto vm = parse_args(
       args, "bench", "[--samples N] [--pipeline-samples N] [--truth-samples N] [--threads N] [--rounds N] [--json]",
