@@ -12,6 +12,8 @@ if [[ "${1:-}" == "--test" ]]; then
   # openssh-client: Open MPI's mpirun refuses to start without an rsh/ssh agent,
   # even on one machine (Debian only recommends it).
   packages+=(libgtest-dev librandom123-dev openmpi-bin libopenmpi-dev openssh-client)
+  # tests/python: the Python entry (apps/python/insmc.py), standard library only.
+  packages+=(python3)
   # scripts/fuzz.sh: clang with libFuzzer (libclang-rt-14-dev), builds through ccache.
   packages+=(clang libclang-rt-14-dev ccache)
 fi
