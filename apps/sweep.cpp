@@ -9,6 +9,7 @@
 #include "lib/units/units.h"
 #include "montecarlo/engine/engine.h"
 #include "montecarlo/write/csv.h"
+#include "montecarlo/write/accuracy_cells.h"
 #include "montecarlo/write/interval_format.h"
 #include "montecarlo/write/markdown.h"
 #include "montecarlo/write/svg_plot.h"
@@ -122,10 +123,11 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
     header.push_back(fmt::format("{}_{}", q, u));
   header.emplace_back("ready_time_min");
   header.emplace_back("fitted_terms");
+  for (std::string& column : mc::accuracy_header(unit)) header.push_back(std::move(column));
   mc::Table table(header);
   mc::Table summary({"point", "scheme", "system", fmt::format("horizontal RMS [{}] at {} min", u,
                                                               mc::format_number(base.report_times_s.back() / 60)),
-                     "fitted"});
+                     mc::readable_accuracy_header(unit).front(), "fitted"});
   std::vector<mc::PlotSeries> plot;
   check_sweep_size(axes);
   std::size_t points = 1;
@@ -150,6 +152,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
       const auto& spec = layout.outputs[o];
       if (!layout.is_report_time[spec.time_index]) continue;
       const mc::OutputSummary s = acc.outputs()[o].summarize(c.confidence);
+      const std::optional<mc::HorizontalAccuracy> accuracy = acc.accuracy(layout, o, s, c.confidence);
       int scheme_i = 0;
       while (c.schemes[static_cast<std::size_t>(scheme_i)] != spec.scheme) ++scheme_i;
       std::vector<std::string> row;
@@ -164,13 +167,16 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
             mc::format_number(k * s.min), mc::format_number(k * s.max), mc::format_number(k * s.p95_abs),
             mc::format_number(map.ready_time_s(scheme_i) / 60), fitted})
         row.push_back(cell);
+      for (std::string& cell : mc::accuracy_cells(accuracy, unit)) row.push_back(std::move(cell));
       table.add_row(row);
       mc::Json r = mc::output_row_json(spec, t, s, map.ready_time_s(scheme_i));
       r["fitted_terms"] = fitted;
+      mc::add_accuracy_json(r, accuracy);
       rows.push_back(r);
       if (spec.axis == mc::Axis::kHorizontal && std::abs(t - c.report_times_s.back()) < 1e-6) {
         summary.add_row({point_name, row[axes.size()], row[axes.size() + 1],
-                         mc::format_with_interval(k * s.rms, k * (s.rms_hi - s.rms_lo) / 2), fitted});
+                         mc::format_with_interval(k * s.rms, k * (s.rms_hi - s.rms_lo) / 2),
+                         mc::readable_accuracy_cells(accuracy, unit).front(), fitted});
         const std::string name = fmt::format("{} sys {}", to_string(spec.scheme), system_number(spec.system));
         mc::PlotSeries* series = nullptr;
         for (auto& ps : plot)

@@ -192,6 +192,10 @@ TEST(Cli, ASweepWritesSweepJsonWithEveryPointAndRunsAgainFromIt) {
   for (auto at = r.out.find("\"rows\": ["); at != std::string::npos; at = r.out.find("\"rows\": [", at + 1)) ++points;
   EXPECT_EQ(points, 4u);  // the product of the two lists
   EXPECT_NE(r.out.find("\"latitude_rad\": 1.0471975511965976"), std::string::npos);
+  // The accuracy metrics as in envelope.csv and run.json.
+  const std::string csv = read_file(dir.path() / "sweep.csv");
+  EXPECT_NE(csv.substr(0, csv.find('\n')).find(",cep50_m,cep50_lo_m,cep50_hi_m,"), std::string::npos) << csv.substr(0, 400);
+  EXPECT_NE(r.out.find("\"cep50_m\": "), std::string::npos);
   const auto again = run_insmc("run --from " + dir.str() + "/sweep.json --format csv");
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_EQ(again.out, read_file(dir.path() / "sweep.csv"));
