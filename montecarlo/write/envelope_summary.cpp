@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <string_view>
 #include <fmt/format.h>
 
 #include "montecarlo/write/csv.h"
@@ -17,6 +18,31 @@ constexpr int kExactFigures = 5;
 
 std::string cell(const HorizontalPoint& p) {
   return p.half_width ? format_with_interval(p.rms, *p.half_width) : format_significant(p.rms, kExactFigures);
+}
+
+/// The caption's width on a terminal (the table below it is as wide as its columns).
+constexpr std::size_t kSummaryWidth = 100;
+
+/// `text` broken at spaces into lines of at most `width` characters (a word
+/// longer than that stands alone); width counts UTF-8 code points.
+std::string wrap_words(const std::string& text, std::size_t width) {
+  const auto points = [](std::string_view s) {
+    return static_cast<std::size_t>(std::count_if(s.begin(), s.end(), [](char ch) { return (ch & 0xC0) != 0x80; }));
+  };
+  std::string out, line;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(' ', start), text.size());
+    const std::string_view word(text.data() + start, end - start);
+    if (!line.empty() && points(line) + 1 + points(word) > width) {
+      out += line + "\n";
+      line.clear();
+    }
+    if (!line.empty()) line += ' ';
+    line += word;
+    start = end + 1;
+  }
+  return out + line;
 }
 
 }  // namespace
@@ -70,7 +96,7 @@ std::string render_horizontal_summary(const std::vector<HorizontalPoint>& points
     cells.push_back(format_number(r.first->ready_min));
     table.add_row(std::move(cells));
   }
-  return fmt::format("{}\n\n{}", caption, render_markdown(table));
+  return fmt::format("{}\n\n{}", wrap_words(caption, kSummaryWidth), render_markdown(table));
 }
 
 }  // namespace insmc::mc

@@ -99,6 +99,14 @@ TEST(Cli, RunPrintsASummaryWithTheIntervalAndWhereTheFullTablesAre) {
   EXPECT_NE(r.out.find("| 5.4 "), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("| x "), std::string::npos) << "axes are in the files only\n" << r.out;
   EXPECT_NE(r.out.find((dir.path() / "envelope.md").string()), std::string::npos) << r.out;
+  // The caption is wrapped for a terminal (the table is as wide as its columns).
+  const std::string before_table = r.out.substr(0, r.out.find("| scheme "));
+  std::size_t line_start = 0;
+  for (std::size_t end = before_table.find('\n'); end != std::string::npos; end = before_table.find('\n', line_start)) {
+    const std::string line = before_table.substr(line_start, end - line_start);
+    EXPECT_LE(std::count_if(line.begin(), line.end(), [](char ch) { return (ch & 0xC0) != 0x80; }), 100) << line;
+    line_start = end + 1;
+  }
   // The file keeps every row: schemes × systems × times × axes.
   const std::string md = read_file(dir.path() / "envelope.md");
   EXPECT_EQ(std::count(md.begin(), md.end(), '\n'), 4 + 2 + 7 * 2 * 3 * 4) << md;
