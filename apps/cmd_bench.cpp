@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "apps/cli_common.h"
+#include "apps/progress.h"
 #include "lib/common/input_error.h"
 #include "lib/common/version.h"
 #include "montecarlo/bench/pipeline_throughput.h"
@@ -87,10 +88,21 @@ int run_bench(const Args& args) {
     throw InputError("--threads", std::to_string(threads), fmt::format("must lie in [0, {}]", mc::kMaxThreads));
   if (threads == 0) threads = static_cast<int>(std::thread::hardware_concurrency());
   std::vector<Round> results;
-  for (int i = 0; i < rounds; ++i)
-    results.push_back({mc::measure_throughput(mc::benchmark_study(samples, threads)),
-                       mc::measure_pipeline_throughput(pipeline_samples, threads),
-                       mc::measure_truth_throughput(mc::truth_study(truth_samples, threads))});
+  {
+    // Three measurements a round (stderr, a terminal only).
+    Progress progress(static_cast<std::uint64_t>(3 * rounds), "measurements");
+    const auto measured = [&](int i, int k) { progress.update(static_cast<std::uint64_t>(3 * i + k)); };
+    for (int i = 0; i < rounds; ++i) {
+      Round r;
+      r.paper = mc::measure_throughput(mc::benchmark_study(samples, threads));
+      measured(i, 1);
+      r.pipeline = mc::measure_pipeline_throughput(pipeline_samples, threads);
+      measured(i, 2);
+      r.truth = mc::measure_truth_throughput(mc::truth_study(truth_samples, threads));
+      measured(i, 3);
+      results.push_back(r);
+    }
+  }
   const double engine_median = median(results, &Round::engine_over_floor);
   const double scaling_median = median(results, &Round::scaling);
   const double paper_full_median = median(results, &Round::paper_full_over_floor);

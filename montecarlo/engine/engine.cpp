@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <stdexcept>
 #include <tbb/blocked_range.h>
@@ -54,7 +55,8 @@ std::vector<TruthSchemeSetup> truth_setups(const StudyConfig& c, const StudyMap&
 /// sample. The draws besides x are those of the linear pipeline: the
 /// realignment's fresh ζ_r, ∂f_r, (u)V and the pulse counters' phases.
 void truth_rows(const StudyConfig& c, const StudyMap& map, const Sampler& sampler, const TruthSchemeSetup& setup,
-                std::uint64_t first, std::size_t n, const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
+                std::uint64_t first, std::size_t n, const Eigen::MatrixXd& x, Eigen::MatrixXd& y,
+                const std::function<void()>& sample_done) {
   const std::vector<double>& times = map.layout().times_s;
   const double T = c.test.duration_s;
   // One test run per sample serves every scheme that uses it.
@@ -76,6 +78,7 @@ void truth_rows(const StudyConfig& c, const StudyMap& map, const Sampler& sample
         y(si, base + 4) = ne[1];
       }
     }
+    if (sample_done) sample_done();
   }
 }
 
@@ -83,7 +86,7 @@ void truth_rows(const StudyConfig& c, const StudyMap& map, const Sampler& sample
 /// (the run's one store: distinct blocks are distinct memory).
 void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler,
                const std::vector<TruthSchemeSetup>& truth, std::uint64_t block, Workspace& ws, StudyAccumulator& acc,
-               KeptSamples& kept) {
+               KeptSamples& kept, const std::function<void()>& truth_sample_done) {
   const std::uint64_t first = block * kBlockSize;
   const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kBlockSize, c.samples - first));
   fill_uniform01(c.seed, Stream::Uncertainties, first, ux::kDim, n,
@@ -93,7 +96,7 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
   for (std::size_t j = 0; j < ws.y.size(); ++j) {
     const int sj = static_cast<int>(j);
     if (c.fidelity == Fidelity::kTruth) {  // the nonlinear simulator, sample by sample
-      truth_rows(c, map, sampler, truth[j], first, n, ws.x, ws.y[j]);
+      truth_rows(c, map, sampler, truth[j], first, n, ws.x, ws.y[j], truth_sample_done);
       continue;
     }
     if (map.depends_on_x_only(sj)) {  // z = [x; 0]: the same product on the rows that matter
@@ -200,6 +203,14 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
   // exactly [first_block, next).
   std::atomic<std::uint64_t> next{first_block};
   const auto stopped = [stop] { return stop != nullptr && stop->load(std::memory_order_acquire); };
+  // A truth sample takes milliseconds, a block of them seconds to minutes:
+  // progress counts them as they finish ((sample, system) pairs of blocks
+  // still running, over the systems), not only whole blocks.
+  std::atomic<std::uint64_t> truth_pairs{0};
+  const std::uint64_t systems = c.systems.size();
+  std::function<void()> truth_sample_done;
+  if (progress && c.fidelity == Fidelity::kTruth)
+    truth_sample_done = [&] { progress(done.load() + (truth_pairs.fetch_add(1) + 1) / systems); };
   tbb::parallel_for(
       tbb::blocked_range<int>(0, threads, 1),
       [&](const tbb::blocked_range<int>&) {
@@ -208,9 +219,10 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
         while (!stopped()) {
           const std::uint64_t b = next.fetch_add(1);
           if (b >= end_block) break;
-          run_block(c, map, sampler, truth, b, ws, acc, total.kept());
+          run_block(c, map, sampler, truth, b, ws, acc, total.kept(), truth_sample_done);
           const std::uint64_t n = std::min<std::uint64_t>(kBlockSize, c.samples - b * kBlockSize);
           const std::uint64_t samples_done = done.fetch_add(n) + n;
+          if (truth_sample_done) truth_pairs.fetch_sub(n * systems);
           if (progress) progress(samples_done);
         }
       },

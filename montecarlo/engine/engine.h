@@ -46,7 +46,9 @@ class StudyAccumulator {
   KeptSamples kept_;
 };
 
-/// Called from worker threads with the number of samples finished so far.
+/// Called from worker threads with the number of samples finished so far:
+/// after each block, and at the truth level also after each truth sample
+/// (then counting the samples of blocks still running, for display only).
 using ProgressCallback = std::function<void(std::uint64_t samples_done)>;
 
 /// Runs blocks [first_block, end_block) of the study (all blocks by default).
