@@ -1,4 +1,5 @@
 #include "lib/units/quantity.h"
+#include "lib/units/quantity_display.h"
 
 #include <cerrno>
 #include <cmath>
@@ -115,7 +116,7 @@ double parse_quantity(std::string_view text, Dimension dimension, std::string_vi
   throw InputError(std::string(field), shown, "unknown unit '" + echo_input(unit) + "'; expected " + allowed);
 }
 
-std::string format_quantity(double value_si, Dimension dimension) {
+std::string format_quantity_rounded(double value_si, Dimension dimension, int significant_digits) {
   // Prefer the paper's unit where one is natural for the quantity.
   const UnitFactor* chosen = &units_of(dimension)[0];
   for (const auto& u : units_of(dimension)) {
@@ -124,7 +125,11 @@ std::string format_quantity(double value_si, Dimension dimension) {
       chosen = &u;
   }
   if (dimension == Dimension::kDimensionless) chosen = &units_of(dimension)[0];
-  return fmt::format("{:.12g}{}", value_si / chosen->to_si, chosen->name);
+  return fmt::format("{:.{}g}{}", value_si / chosen->to_si, significant_digits, chosen->name);
+}
+
+std::string format_quantity(double value_si, Dimension dimension) {
+  return format_quantity_rounded(value_si, dimension, 12);
 }
 
 }  // namespace insmc

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lib/units/quantity.h"
+#include "lib/units/quantity_display.h"
 #include "montecarlo/gap/null/bootstrap.h"
 #include "montecarlo/gap/ranking/ranking.h"
 
@@ -14,7 +15,7 @@ namespace {
 
 std::string fmt_params(const std::vector<ParameterEstimate>& ps) {
   std::string s;
-  for (const ParameterEstimate& e : ps) s += (s.empty() ? "" : ", ") + e.name + "=" + format_quantity(e.value, e.dimension);
+  for (const ParameterEstimate& e : ps) s += (s.empty() ? "" : ", ") + e.name + "=" + format_quantity_rounded(e.value, e.dimension);
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "lib/units/quantity.h"
+#include "lib/units/quantity_display.h"
 
 namespace insmc::mc {
 
@@ -16,7 +17,7 @@ void honest_statements(Diagnosis& d) {
     if (p.at_grid_edge)
       d.statements.push_back(fmt::format("the top candidate's {} is fitted at the edge of its range ({}): the data lie "
                                          "beyond what this candidate covers, so the ranking shows a direction, not a "
-                                         "fitted effect", p.name, format_quantity(p.value, p.dimension)));
+                                         "fitted effect", p.name, format_quantity_rounded(p.value, p.dimension)));
   const double left = d.greedy.empty() ? top.heldout_gap_after : d.greedy.back().heldout_gap;
   if (!d.greedy.empty() && d.greedy.back().p_value < d.alpha && left > 3.0 * d.model_null_gap_critical())
     d.statements.push_back(fmt::format("after {} effect(s) the held-out gap is still G = {:.3g}, over three times the "

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lib/units/quantity.h"
+#include "lib/units/quantity_display.h"
 #include "montecarlo/write/markdown.h"
 
 namespace insmc::mc {
@@ -46,14 +47,14 @@ std::string gain_text(double gain, int runs) {
 }
 
 std::string interval_text(const ProfileRange& r, Dimension d) {
-  return fmt::format("[{}{} … {}{}]", r.open_low ? "limit " : "", format_quantity(r.low, d),
-                     r.open_high ? "limit " : "", format_quantity(r.high, d));
+  return fmt::format("[{}{} … {}{}]", r.open_low ? "limit " : "", format_quantity_rounded(r.low, d),
+                     r.open_high ? "limit " : "", format_quantity_rounded(r.high, d));
 }
 
 std::string parameters_text(const std::vector<MlParameter>& ps) {
   std::string s;
   for (const MlParameter& p : ps) {
-    s += (s.empty() ? "" : "; ") + p.name + " = " + format_quantity(p.value, p.dimension);
+    s += (s.empty() ? "" : "; ") + p.name + " = " + format_quantity_rounded(p.value, p.dimension);
     if (p.least_squares) s += " (least squares)";
     if (p.intervals) s += " " + interval_text(p.ci68, p.dimension) + " " + interval_text(p.ci95, p.dimension);
     if (p.at_limit) s += p.least_squares ? " (held at the magnitude it covers)" : " (runs to its physical limit)";

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "lib/units/quantity.h"
+#include "lib/units/quantity_display.h"
 #include "montecarlo/gap/report/gap_plots.h"
 #include "montecarlo/gap/report/likelihood_report.h"
 #include "montecarlo/write/markdown.h"
@@ -35,8 +36,8 @@ std::string params_text(const std::vector<ParameterEstimate>& ps) {
   std::string s;
   for (const ParameterEstimate& p : ps) {
     s += (s.empty() ? "" : ", ") +
-         fmt::format("{} = {} [{} … {}]{}", p.name, format_quantity(p.value, p.dimension),
-                     format_quantity(p.low, p.dimension), format_quantity(p.high, p.dimension),
+         fmt::format("{} = {} [{} … {}]{}", p.name, format_quantity_rounded(p.value, p.dimension),
+                     format_quantity_rounded(p.low, p.dimension), format_quantity_rounded(p.high, p.dimension),
                      p.at_grid_edge ? " (grid edge)" : "");
   }
   return s;

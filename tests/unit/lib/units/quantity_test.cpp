@@ -1,4 +1,5 @@
 #include "lib/units/quantity.h"
+#include "lib/units/quantity_display.h"
 
 #include <gtest/gtest.h>
 
@@ -64,6 +65,14 @@ TEST(ParseQuantity, ErrorNamesFieldValueAndAcceptedUnits) {
     EXPECT_NE(msg.find("gyro_drift_x = 10"), std::string::npos) << msg;
     EXPECT_NE(msg.find("meru"), std::string::npos) << msg;
   }
+}
+
+TEST(FormatQuantity, ReportsRoundToTheFiguresAsked) {
+  EXPECT_EQ(format_quantity_rounded(4.49740608052e-3 * kGravityMps2, Dimension::kAcceleration), "4.5mg");
+  EXPECT_EQ(format_quantity_rounded(3.16227766017 * kMeruToRadps, Dimension::kAngularRate), "3.16meru");
+  EXPECT_EQ(format_quantity_rounded(3.16227766017 * kMeruToRadps, Dimension::kAngularRate, 5), "3.1623meru");
+  // A report's value still parses back to itself at that precision.
+  EXPECT_NEAR(parse_quantity(format_quantity_rounded(0.123456, Dimension::kTime), Dimension::kTime, "f"), 0.123, 1e-12);
 }
 
 TEST(FormatQuantity, RoundTripsThroughParse) {
