@@ -73,7 +73,9 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
                               const StudyAccumulator& acc, LengthUnit unit) {
   const double k = length_factor(unit);
   Table report(envelope_header(unit)), grid(envelope_header(unit)), readable(readable_header(unit, c.confidence));
-  Table full({"scheme", "system", "axis", "t_min", rms_interval_column(unit, c.confidence), "n"});
+  std::vector<std::string> full_header = {"scheme", "system", "axis", "t_min", rms_interval_column(unit, c.confidence), "n"};
+  for (std::string& column : readable_accuracy_header(unit)) full_header.push_back(std::move(column));
+  Table full(full_header);
   std::vector<HorizontalPoint> horizontal;
   EnvelopeFiles f;
   f.envelope_json = Json::array();
@@ -97,7 +99,9 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
       const double half = 0.5 * k * (s.rms_hi - s.rms_lo);
       const std::string rms = format_with_interval(k * s.rms, half);
       const std::optional<int> place = interval_place(half);
-      full.add_row({row[0], row[1], row[3], row[4], rms, std::to_string(s.n)});
+      std::vector<std::string> full_row = {row[0], row[1], row[3], row[4], rms, std::to_string(s.n)};
+      for (std::string& cell : readable_accuracy_cells(accuracy, unit)) full_row.push_back(std::move(cell));
+      full.add_row(std::move(full_row));
       std::vector<std::string> readable_row = {row[0], row[1], row[2], row[3], row[4], row[5], rms,
                                                at_rms_precision(k * s.mean, place), at_rms_precision(k * s.std, place),
                                                at_rms_precision(k * s.min, place), at_rms_precision(k * s.max, place),

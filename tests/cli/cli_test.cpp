@@ -115,6 +115,7 @@ TEST(Cli, RunPrintsASummaryWithTheIntervalAndWhereTheFullTablesAre) {
   ASSERT_EQ(full.exit_code, 0) << full.err;
   EXPECT_GE(line_count(full.out), 7 * 2 * 3 * 4 + 2);
   EXPECT_NE(full.out.find("| horizontal "), std::string::npos);
+  EXPECT_NE(full.out.find("CEP50 ["), std::string::npos) << "the accuracy metrics on the horizontal rows";
   // Without --out the line tells how to get the full tables.
   const auto bare = run_insmc("run --samples 3000 --scheme none");
   ASSERT_EQ(bare.exit_code, 0) << bare.err;
