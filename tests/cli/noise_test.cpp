@@ -91,6 +91,20 @@ TEST(Noise, WhiteNoiseRecordingIsReportedWithItsTruthInsideTheInterval) {
   // Every data point of both plots lies inside one of its panels' frames.
   EXPECT_GE(points_inside_frames(read_file(std::filesystem::path(out) / "allan.svg"), 2), 6 * 8);  // 8+ octaves
   EXPECT_GE(points_inside_frames(read_file(std::filesystem::path(out) / "stationarity.svg"), 6), 6 * 6);
+  // Table 3.1's bound as a reference level in each Allan panel, inside it.
+  const std::string allan = read_file(std::filesystem::path(out) / "allan.svg");
+  EXPECT_TRUE(has(allan, "Table 3.1 bound (10 meru)") && has(allan, "Table 3.1 bound (0.1 mg)"));
+  std::string as_points;
+  for (std::size_t p = allan.find("<line class=\"reference\""); p != std::string::npos;
+       p = allan.find("<line class=\"reference\"", p + 1)) {
+    const std::string tag = allan.substr(p, allan.find('>', p) - p);
+    const auto number = [&](const char* name) { return tag.substr(tag.find(name) + std::string(name).size()); };
+    as_points += fmt::format("<circle class=\"point\" cx=\"{}\" cy=\"{}\"/>", std::stod(number(" x2=\"")),
+                             std::stod(number(" y1=\"")));
+  }
+  const std::string frames = allan.substr(0, allan.find("<g clip-path"));
+  const std::string second = allan.substr(allan.find("<rect class=\"frame\"", allan.find("<g clip-path")));
+  EXPECT_EQ(points_inside_frames(frames + second.substr(0, second.find('>') + 1) + as_points, 2), 2);
 }
 
 TEST(Noise, ImportImuKeepsTheRawStageAndGapReportsIt) {
