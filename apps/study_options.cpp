@@ -1,5 +1,9 @@
 #include "apps/study_options.h"
 
+#include "lib/uncertainty/random_fraction.h"
+#include "lib/units/physical_range.h"
+#include "lib/units/quantity.h"
+
 namespace insmc::app {
 
 po::options_description uncertainty_options_description() {
@@ -10,12 +14,24 @@ po::options_description uncertainty_options_description() {
                   "accelerations 100mg, velocities 10mps, scale factors 0.1, altitude 10km")(
       "dist", po::value<std::vector<std::string>>()->composing(),
       "NAME=uniform|normal:K|fixed:VALUE|zero (bound = K sigma for normal); repeatable, applied "
-      "in order, e.g. --dist all=zero --dist gyro_drift_z=fixed:10meru");
+      "in order, e.g. --dist all=zero --dist gyro_drift_z=fixed:10meru")(
+      "random-fraction", po::value<std::string>()->default_value("0.5"),
+      "share of Table 3.1's zeta (1 mrad) and df (0.1 mg) drawn anew at each alignment (misalign_align, "
+      "bias_change_align), the rest constant (misalign_const, bias_change_const), in [0, 1]; a comma list is a "
+      "sweep; --bound on those names wins");
   return d;
+}
+
+double parse_random_fraction(const std::string& text) {
+  const double f = parse_quantity(text, Dimension::kDimensionless, "--random-fraction");
+  require_in_range("--random-fraction", f, Dimension::kDimensionless, {0.0, 1.0});
+  return f;
 }
 
 UncertaintyModel read_uncertainty_model(const po::variables_map& vm) {
   UncertaintyModel model;
+  if (vm.count("random-fraction"))  // a comma list is a sweep: its first value
+    apply_random_fraction(model, parse_random_fraction(split_commas(vm["random-fraction"].as<std::string>()).front()));
   if (vm.count("bound"))
     for (const auto& a : vm["bound"].as<std::vector<std::string>>()) model.apply_bound(a);
   if (vm.count("dist"))

@@ -36,4 +36,7 @@ mc::LengthUnit read_length_unit(const po::variables_map& vm);
 /// Splits a comma list ("1,2", "none,5.2").
 std::vector<std::string> split_commas(const std::string& text);
 
+/// --random-fraction's value (lib/uncertainty/random_fraction.h), in [0, 1].
+double parse_random_fraction(const std::string& text);
+
 }  // namespace insmc::app

@@ -5,6 +5,7 @@
 
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
+#include "lib/uncertainty/random_fraction.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
 #include "montecarlo/engine/engine.h"
@@ -105,6 +106,22 @@ std::vector<SweepAxis> find_sweeps(const po::variables_map& vm) {
       SweepAxis a = axis_of(fmt::format("{}.bound_{}", name, si_suffix(spec.dimension)), fmt::format("bound {}", name), texts,
                             spec.dimension);
       a.apply = [name, texts](mc::StudyConfig& c, std::size_t i) { c.uncertainties.apply_bound(fmt::format("{}={}", name, texts[i])); };
+      axes.push_back(std::move(a));
+    }
+  }
+  if (vm.count("random-fraction")) {
+    const std::vector<std::string> texts = split_commas(vm["random-fraction"].as<std::string>());
+    if (texts.size() >= 2) {
+      SweepAxis a = axis_of("random_fraction", "random-fraction", texts, Dimension::kDimensionless);
+      for (const std::string& t : texts) parse_random_fraction(t);  // each in [0, 1] before any point runs
+      // --bound on the split's names wins over the fraction, as without a sweep
+      // (this axis is applied before the --bound axes: point_config goes last to first).
+      std::vector<std::string> bounds;
+      if (vm.count("bound")) bounds = vm["bound"].as<std::vector<std::string>>();
+      a.apply = [values = a.values_si, bounds](mc::StudyConfig& c, std::size_t i) {
+        apply_random_fraction(c.uncertainties, values[i]);
+        for (const std::string& b : bounds) c.uncertainties.apply_bound(b);
+      };
       axes.push_back(std::move(a));
     }
   }

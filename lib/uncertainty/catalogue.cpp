@@ -13,7 +13,8 @@ constexpr Applies kBoth = Applies::kBoth;
 // Table 3.1, with these defaults where the paper leaves a choice (it bounds ζ
 // and ∂f only as a whole):
 // ζ = ζ_c + ζ_r and ∂f = ∂f_c + ∂f_r are each split half and half, each part
-// bounded by half the Table 3.1 bound.
+// bounded by half the Table 3.1 bound (kDefaultRandomFraction; the split is a
+// study parameter, lib/uncertainty/random_fraction.h).
 constexpr double kMg = kMgToMps2;
 constexpr double kMeru = kMeruToRadps;
 constexpr double kMrad = kMradToRad;
@@ -25,10 +26,10 @@ constexpr std::array<UncertaintySpec, ux::kDim> kCatalogue = {{
     {"accel_scale_x", "accel_scale", "a_x", ux::kAccelScale + 0, D::kDimensionless, 1e-4, "ppm", kBoth, false, "Table 3.1 (<1e-4)"},
     {"accel_scale_y", "accel_scale", "a_y", ux::kAccelScale + 1, D::kDimensionless, 1e-4, "ppm", kBoth, false, "Table 3.1 (<1e-4)"},
     {"accel_scale_z", "accel_scale", "a_z", ux::kAccelScale + 2, D::kDimensionless, 1e-4, "ppm", kBoth, false, "Table 3.1 (<1e-4)"},
-    {"bias_change_const_x", "bias_change_const", "∂f_cx", ux::kBiasChangeConst + 0, D::kAcceleration, 0.05 * kMg, "mg", kBoth, false, "Table 3.1 ∂f (<0.1 mg), half constant"},
-    {"bias_change_const_y", "bias_change_const", "∂f_cy", ux::kBiasChangeConst + 1, D::kAcceleration, 0.05 * kMg, "mg", kBoth, false, "Table 3.1 ∂f (<0.1 mg), half constant"},
-    {"bias_change_align_x", "bias_change_align", "∂f_rx", ux::kBiasChangeAlign + 0, D::kAcceleration, 0.05 * kMg, "mg", kBoth, true, "Table 3.1 ∂f (<0.1 mg), half per alignment"},
-    {"bias_change_align_y", "bias_change_align", "∂f_ry", ux::kBiasChangeAlign + 1, D::kAcceleration, 0.05 * kMg, "mg", kBoth, true, "Table 3.1 ∂f (<0.1 mg), half per alignment"},
+    {"bias_change_const_x", "bias_change_const", "∂f_cx", ux::kBiasChangeConst + 0, D::kAcceleration, 0.05 * kMg, "mg", kBoth, false, "Table 3.1 ∂f (<0.1 mg), constant part (1 - --random-fraction)"},
+    {"bias_change_const_y", "bias_change_const", "∂f_cy", ux::kBiasChangeConst + 1, D::kAcceleration, 0.05 * kMg, "mg", kBoth, false, "Table 3.1 ∂f (<0.1 mg), constant part (1 - --random-fraction)"},
+    {"bias_change_align_x", "bias_change_align", "∂f_rx", ux::kBiasChangeAlign + 0, D::kAcceleration, 0.05 * kMg, "mg", kBoth, true, "Table 3.1 ∂f (<0.1 mg), part per alignment (--random-fraction)"},
+    {"bias_change_align_y", "bias_change_align", "∂f_ry", ux::kBiasChangeAlign + 1, D::kAcceleration, 0.05 * kMg, "mg", kBoth, true, "Table 3.1 ∂f (<0.1 mg), part per alignment (--random-fraction)"},
     {"gyro_drift_x", "gyro_drift", "ω_dox", ux::kGyroDrift + 0, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
     {"gyro_drift_y", "gyro_drift", "ω_doy", ux::kGyroDrift + 1, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
     {"gyro_drift_z", "gyro_drift", "ω_doz", ux::kGyroDrift + 2, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
@@ -38,12 +39,12 @@ constexpr std::array<UncertaintySpec, ux::kDim> kCatalogue = {{
     {"gyro_muy_drift_x", "gyro_muy_drift", "g·MUY_x", ux::kGyroMuyDrift + 0, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
     {"gyro_muy_drift_y", "gyro_muy_drift", "g·MUY_y", ux::kGyroMuyDrift + 1, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
     {"gyro_muy_drift_z", "gyro_muy_drift", "g·MUY_z", ux::kGyroMuyDrift + 2, D::kAngularRate, 10 * kMeru, "meru", kBoth, false, "Table 3.1 (<10 meru)"},
-    {"misalign_const_x", "misalign_const", "ζ_cx", ux::kMisalignConst + 0, D::kAngle, 0.5 * kMrad, "mrad", kBoth, false, "Table 3.1 ζ (<1 mrad), half constant"},
-    {"misalign_const_y", "misalign_const", "ζ_cy", ux::kMisalignConst + 1, D::kAngle, 0.5 * kMrad, "mrad", kBoth, false, "Table 3.1 ζ (<1 mrad), half constant"},
-    {"misalign_const_z", "misalign_const", "ζ_cz", ux::kMisalignConst + 2, D::kAngle, 0.5 * kMrad, "mrad", kBoth, false, "Table 3.1 ζ (<1 mrad), half constant"},
-    {"misalign_align_x", "misalign_align", "ζ_rx", ux::kMisalignAlign + 0, D::kAngle, 0.5 * kMrad, "mrad", kBoth, true, "Table 3.1 ζ (<1 mrad), half per alignment"},
-    {"misalign_align_y", "misalign_align", "ζ_ry", ux::kMisalignAlign + 1, D::kAngle, 0.5 * kMrad, "mrad", kBoth, true, "Table 3.1 ζ (<1 mrad), half per alignment"},
-    {"misalign_align_z", "misalign_align", "ζ_rz", ux::kMisalignAlign + 2, D::kAngle, 0.5 * kMrad, "mrad", kBoth, true, "Table 3.1 ζ (<1 mrad), half per alignment"},
+    {"misalign_const_x", "misalign_const", "ζ_cx", ux::kMisalignConst + 0, D::kAngle, 0.5 * kMrad, "mrad", kBoth, false, "Table 3.1 ζ (<1 mrad), constant part (1 - --random-fraction)"},
+    {"misalign_const_y", "misalign_const", "ζ_cy", ux::kMisalignConst + 1, D::kAngle, 0.5 * kMrad, "mrad", kBoth, false, "Table 3.1 ζ (<1 mrad), constant part (1 - --random-fraction)"},
+    {"misalign_const_z", "misalign_const", "ζ_cz", ux::kMisalignConst + 2, D::kAngle, 0.5 * kMrad, "mrad", kBoth, false, "Table 3.1 ζ (<1 mrad), constant part (1 - --random-fraction)"},
+    {"misalign_align_x", "misalign_align", "ζ_rx", ux::kMisalignAlign + 0, D::kAngle, 0.5 * kMrad, "mrad", kBoth, true, "Table 3.1 ζ (<1 mrad), part per alignment (--random-fraction)"},
+    {"misalign_align_y", "misalign_align", "ζ_ry", ux::kMisalignAlign + 1, D::kAngle, 0.5 * kMrad, "mrad", kBoth, true, "Table 3.1 ζ (<1 mrad), part per alignment (--random-fraction)"},
+    {"misalign_align_z", "misalign_align", "ζ_rz", ux::kMisalignAlign + 2, D::kAngle, 0.5 * kMrad, "mrad", kBoth, true, "Table 3.1 ζ (<1 mrad), part per alignment (--random-fraction)"},
     {"theodolite_azimuth", "theodolite_azimuth", "(u)ψ", ux::kTheodolite, D::kAngle, 1 * kMrad, "mrad", Applies::kSystem1Only, false, "Table 3.1 (<1 mrad), system 1"},
     {"deflection_xi", "deflection", "ξ", ux::kDeflection + 0, D::kAngle, 0.1 * kMrad, "mrad", kBoth, false, "Table 3.1 (<0.1 mrad)"},
     {"deflection_eta", "deflection", "η", ux::kDeflection + 1, D::kAngle, 0.1 * kMrad, "mrad", kBoth, false, "Table 3.1 (<0.1 mrad)"},

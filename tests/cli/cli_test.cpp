@@ -62,6 +62,34 @@ TEST(Cli, ParamsListsTheCatalogue) {
   EXPECT_NE(md.out.find("gyro_drift, "), std::string::npos) << md.out;
 }
 
+TEST(Cli, RandomFractionSplitsZetaAndDfAndSweeps) {
+  // F of Table 3.1's ζ (1 mrad) and ∂f (0.1 mg) redrawn at each alignment, 1 − F constant.
+  const auto r = run_insmc("params --format csv --random-fraction 0.2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("misalign_align_x,misalign_align,ζ_rx,rad,0.0002,"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("misalign_const_x,misalign_const,ζ_cx,rad,0.0008,"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(",0.02 mg,"), std::string::npos) << r.out;
+  // --bound on those names wins.
+  const auto b = run_insmc("params --format csv --random-fraction 0.2 --bound misalign_align=0.7mrad");
+  EXPECT_NE(b.out.find("misalign_align_x,misalign_align,ζ_rx,rad,0.0007,"), std::string::npos) << b.out;
+  // The default is today's half and half, bit for bit.
+  const auto half = run_insmc("run --samples 2048 --scheme 5.1.1 --system 1 --random-fraction 0.5 --format csv");
+  const auto plain = run_insmc("run --samples 2048 --scheme 5.1.1 --system 1 --format csv");
+  ASSERT_EQ(half.exit_code, 0) << half.err;
+  EXPECT_EQ(half.out, plain.out);
+  // A sweep: one point per fraction; the realignment of 5.1.1 draws ζ_r, ∂f_r anew, so the split matters.
+  const auto sweep = run_insmc("run --samples 2048 --scheme 5.1.1 --system 1 --random-fraction 0,1 --format csv");
+  ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
+  EXPECT_EQ(sweep.out.substr(0, 16), "random_fraction,");
+  EXPECT_NE(sweep.out.find("\n0,5.1.1,"), std::string::npos);
+  EXPECT_NE(sweep.out.find("\n1,5.1.1,"), std::string::npos);
+  for (const char* bad : {"1.5", "-0.1", "nan", "0,2"}) {
+    const auto refused = run_insmc(std::string("run --samples 2048 --random-fraction ") + bad);
+    EXPECT_EQ(refused.exit_code, 2) << bad;
+    EXPECT_NE(refused.err.find("--random-fraction"), std::string::npos) << refused.err;
+  }
+}
+
 TEST(Cli, RunWritesTheOutputContractAndIsIdenticalForAnyThreadCount) {
   TempDir dir;
   const std::string common = " --samples 5000 --seed 7 --grid-step 10min --scheme none,5.2";
