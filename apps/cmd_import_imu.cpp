@@ -55,16 +55,22 @@ void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& he
     return;
   }
   header.set("imu.noise", std::string("on"));
+  // A value the fit could not give (not finite) is left out, as an absent
+  // term: the record reader refuses a raw-stage key that is not a
+  // non-negative number.
+  const auto put = [&header](const std::string& key, double v) {
+    if (std::isfinite(v) && v >= 0) header.set(key, v);
+  };
   for (const noise::ChannelNoise& ch : a.channels) {
     const std::string key = "imu.noise." + ch.name + ".";
     for (const noise::TermFit& t : ch.fit.terms) {
       const std::string term(noise::term_name(t.term, ch.kind));
-      header.set(key + term + "_si", t.value_si);
-      header.set(key + term + "_lower_si", t.lower_si);
-      header.set(key + term + "_upper_si", t.upper_si);
+      put(key + term + "_si", t.value_si);
+      put(key + term + "_lower_si", t.lower_si);
+      put(key + term + "_upper_si", t.upper_si);
     }
-    if (ch.fit.model[noise::NoiseTerm::kGaussMarkov] > 0) header.set(key + "correlation_time_s", ch.fit.model.correlation_time_s);
-    header.set(key + "equivalent_si", noise::equivalent_constant(ch.fit.model));
+    if (ch.fit.model[noise::NoiseTerm::kGaussMarkov] > 0) put(key + "correlation_time_s", ch.fit.model.correlation_time_s);
+    put(key + "equivalent_si", noise::equivalent_constant(ch.fit.model));
     // What the Allan deviation allows each term at most, selected or not
     // (σ(τ)² ≥ each term's own σ²(τ) at every τ; upper interval ends):
     // white N ≤ min σ⁺√τ (after 1 h: × √3600 s), wander ≤ the larger of
@@ -78,14 +84,14 @@ void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& he
       walk = std::min(walk, r.upper * std::sqrt(3 / r.tau_s));
     }
     if (std::isfinite(white)) {
-      header.set(key + "white_1h_bound_si", white * std::sqrt(kHourToS));
-      header.set(key + "wander_bound_si", std::max(flat, walk * std::sqrt(kHourToS)));
-      header.set(key + "quantization_bound_si", quant);
+      put(key + "white_1h_bound_si", white * std::sqrt(kHourToS));
+      put(key + "wander_bound_si", std::max(flat, walk * std::sqrt(kHourToS)));
+      put(key + "quantization_bound_si", quant);
     }
     header.set(key + "warm_up_excluded", ch.first_part_excluded ? 1.0 : 0.0);
   }
-  header.set("imu.noise.masked_s", static_cast<double>(a.mask.masked_samples) * a.dt_s);
-  header.set("imu.noise.sample_interval_s", a.dt_s);
+  put("imu.noise.masked_s", static_cast<double>(a.mask.masked_samples) * a.dt_s);
+  put("imu.noise.sample_interval_s", a.dt_s);
 }
 
 }  // namespace

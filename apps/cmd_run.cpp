@@ -248,6 +248,9 @@ int run_command(const Args& args, Ranks& ranks) {
   }
 
   const mc::StudyConfig config = read_study_config(*vm, true);
+  // Now, before any work: an option run.json cannot keep fails here rather
+  // than after a finished study.
+  const mc::Json settings = run_settings(config, *vm, opts);
   const StdoutChoice shown = read_stdout_choice(*vm);
   const mc::LengthUnit unit = read_length_unit(*vm);
   const std::string checkpoint_path = vm->count("checkpoint") ? (*vm)["checkpoint"].as<std::string>() : "";
@@ -284,7 +287,7 @@ int run_command(const Args& args, Ranks& ranks) {
         });
     if (!ranks.root()) return 0;
     mc::Json json = files.json;
-    json["settings"] = run_settings(config, *vm, opts);
+    json["settings"] = settings;
     const std::string sweep_json = json.dump();
     if (out)
       out->write({{"sweep.csv", files.sweep_csv},
@@ -358,7 +361,7 @@ int run_command(const Args& args, Ranks& ranks) {
 
   const mc::EnvelopeFiles files = mc::render_envelope(config, layout, map, acc, unit);
   mc::Json run = mc::Json::object();
-  run["settings"] = run_settings(config, *vm, opts);
+  run["settings"] = settings;
   run["elapsed_s"] = elapsed_s;
   run["resumed_from_sample"] = resumed_from_sample;
   if (ranks.distributed()) {

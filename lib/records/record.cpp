@@ -68,10 +68,18 @@ std::optional<std::string> header_value_problem(std::string_view key, std::strin
     }
     return fmt::format("must be one of: {}", scheme_names());
   }
-  if (!known) return std::nullopt;
+  // The raw-sensor stage's results (import-imu, docs/noise.md): every
+  // imu.noise.* key below "imu.noise" itself is a number the null of
+  // imported records synthesizes noise from, so a corrupt one must not pass
+  // as an absent term.
+  const bool raw_stage = key.starts_with(kRawStagePrefix);
+  if (!known && !raw_stage) return std::nullopt;
   double v = 0.0;
   const NumberStatus status = parse_double(value, v);
   if (status != NumberStatus::kOk) return fmt::format("must be a finite number ({})", describe(status));
+  if (raw_stage && key.ends_with(".warm_up_excluded") && v != 0.0 && v != 1.0)
+    return "must be 0 or 1 (whether the raw stage left out the first, non-stationary part)";
+  if (raw_stage && !(v >= 0.0)) return "must be a non-negative number (SI; a fitted noise term, its interval or time)";
   const double max_h = kMaxRunDurationS / 3600.0;
   if (key == kKeyLatitudeDeg && !(v >= -90.0 && v <= 90.0)) return "must be in [-90, 90] (degrees)";
   if (key == kKeySystem && v != 1.0 && v != 2.0) return "must be 1 (theodolite azimuth) or 2 (gyrocompassing)";

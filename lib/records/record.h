@@ -41,6 +41,8 @@ inline constexpr std::string_view kKeyDvPulseMps = "dv_pulse_mps";
 inline constexpr std::string_view kKeyPositionResolutionM = "position_resolution_m";
 inline constexpr std::string_view kKeyNavStartS = "nav_start_s";
 inline constexpr std::string_view kKeyFilterIntervalS = "filter_interval_s";
+/// Prefix of the raw-sensor stage's numeric keys (import-imu; "imu.noise" alone is its status).
+inline constexpr std::string_view kRawStagePrefix = "imu.noise.";
 inline constexpr std::string_view kTruthKeyPrefix = "truth.";
 
 /// Required keys, in the order the writer's factory puts them.

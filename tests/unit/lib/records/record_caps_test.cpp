@@ -54,6 +54,25 @@ TEST(RecordCaps, HeaderValuesOutsideTheirPhysicalRangeNameLineAndKey) {
   EXPECT_NE(t.find("runs.csv:4:19: header test_duration_s = '1e7': must be in (0, 172800]"), std::string::npos) << t;
 }
 
+// The raw-sensor stage's keys feed the null of imported records: a corrupt
+// one is refused rather than read as an absent noise term.
+TEST(RecordCaps, RawStageKeysMustBeNonNegativeNumbers) {
+  const std::string rows = "0,10,test,0,0,0,0,0,0\n";
+  const std::string key = "imu.noise.gyro_x.angle_random_walk_si";
+  const std::string nan = error_of(header({"imu.noise=on", key + "=nan"}) + rows);
+  EXPECT_NE(nan.find("runs.csv:7:"), std::string::npos) << nan;
+  EXPECT_NE(nan.find("header " + key + " = 'nan': must be a finite number"), std::string::npos) << nan;
+  const std::string negative = error_of(header({"imu.noise=on", key + "=-5"}) + rows);
+  EXPECT_NE(negative.find("header " + key + " = '-5': must be a non-negative number"), std::string::npos) << negative;
+  const std::string flag = error_of(header({"imu.noise=on", "imu.noise.gyro_x.warm_up_excluded=2"}) + rows);
+  EXPECT_NE(flag.find("must be 0 or 1"), std::string::npos) << flag;
+  // Large is not corrupt: the diagnosis says such a sensor is beyond any
+  // synthesis and keeps the model's null.
+  EXPECT_EQ(error_of(header({"imu.noise=on", key + "=1e300"}) + rows),
+            "(accepted)");
+  EXPECT_EQ(error_of(header({"imu.noise=skipped: fewer than 300 samples"}) + rows), "(accepted)");
+}
+
 TEST(RecordCaps, InconsistentHeaderBlamesTheKeysLine) {
   const std::string tau = error_of(header({"filter_interval_s=1000"}) + "0,10,test,0,0,0,0,0,0\n");
   EXPECT_NE(tau.find("runs.csv:6:1: header filter_interval_s: filter_interval_s = 1000: must be no longer than "
