@@ -17,6 +17,7 @@
 #include "apps/output_paths.h"
 #include "apps/ranks.h"
 #include "apps/run_file.h"
+#include "montecarlo/write/plot/gnuplot.h"
 #include "apps/stdout_choice.h"
 #include "apps/study_options.h"
 #include "apps/study_runner.h"
@@ -266,10 +267,13 @@ int run_command(const Args& args, Ranks& ranks) {
   if (!vm->count("replay")) {
     on_root_input_errors(ranks, [&] {
       const std::vector<std::string> names =
-          sweeps.empty() ? std::vector<std::string>{"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.svg",
-                                                    "run.json"}
-                         : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.svg", "sweep.json"};
+          sweeps.empty() ? std::vector<std::string>{"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.gp",
+                                                    "envelope.svg", "envelope.png", "run.json"}
+                         : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.gp", "sweep.svg", "sweep.png",
+                                                    "sweep.json"};
       out = prepare_output_folder(*vm, "run", names);
+      if (out && !mc::gnuplot_available())
+        throw InputError("--out", (*vm)["out"].as<std::string>(), mc::gnuplot_missing_message());
       if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path);
     });
   }
@@ -289,11 +293,15 @@ int run_command(const Args& args, Ranks& ranks) {
     mc::Json json = files.json;
     json["settings"] = settings;
     const std::string sweep_json = json.dump();
-    if (out)
+    if (out) {
+      const mc::RenderedFigure plot = mc::render_panel_figure(files.plot);
       out->write({{"sweep.csv", files.sweep_csv},
                   {"sweep.md", files.summary_md},
-                  {"sweep.svg", files.plot_svg},
+                  {"sweep.gp", plot.script},
+                  {"sweep.svg", plot.svg},
+                  {"sweep.png", plot.png},
                   {"sweep.json", sweep_json}});
+    }
     if (!shown.quiet)
       fmt::print("{}", shown.format == OutputFormat::kCsv    ? files.sweep_csv
                        : shown.format == OutputFormat::kJson ? sweep_json
@@ -383,10 +391,13 @@ int run_command(const Args& args, Ranks& ranks) {
   const std::string run_json = run.dump();
 
   if (out) {
+    const mc::RenderedFigure plot = mc::render_panel_figure(files.envelope_plot);
     out->write({{"envelope.csv", files.envelope_csv},
                 {"envelope_grid.csv", files.envelope_grid_csv},
                 {"envelope.md", files.envelope_md},
-                {"envelope.svg", files.envelope_svg},
+                {"envelope.gp", plot.script},
+                {"envelope.svg", plot.svg},
+                {"envelope.png", plot.png},
                 {"run.json", run_json}});
   }
   if (shown.quiet) return 0;

@@ -10,7 +10,6 @@
 #include "lib/noise/noise_budget.h"
 #include "lib/units/units.h"
 #include "montecarlo/write/svg_frame.h"
-#include "montecarlo/write/svg_plot.h"
 
 namespace insmc::app {
 namespace {

@@ -13,7 +13,6 @@
 #include "montecarlo/write/accuracy_cells.h"
 #include "montecarlo/write/interval_format.h"
 #include "montecarlo/write/markdown.h"
-#include "montecarlo/write/svg_plot.h"
 
 namespace insmc::app {
 namespace {
@@ -79,6 +78,48 @@ mc::StudyConfig point_config(const mc::StudyConfig& base, const std::vector<Swee
   return c;
 }
 
+
+/// The first swept quantity as the user gave it: when every value carries
+/// the same unit (5min,10min,15min; 1meru,10meru), the numbers in that unit;
+/// otherwise SI. Logarithmic when it spans a factor of 20 or more.
+struct AxisInUserUnits {
+  std::vector<double> x;
+  std::string label;
+  bool logarithmic = false;
+};
+
+AxisInUserUnits in_user_units(const SweepAxis& a) {
+  AxisInUserUnits out{a.values_si, a.column};
+  std::string common;
+  std::vector<double> given;
+  for (std::size_t i = 0; i < a.texts.size(); ++i) {
+    const std::string& text = a.texts[i];
+    const std::size_t eq = text.rfind('=');
+    const std::string value = eq == std::string::npos ? text : text.substr(eq + 1);
+    char* end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    const std::string unit = end ? std::string(end) : std::string();
+    if (end == value.c_str() || unit.empty() || (i > 0 && unit != common)) {
+      given.clear();
+      break;
+    }
+    common = unit;
+    given.push_back(v);
+  }
+  if (!given.empty()) {
+    out.x = given;
+    std::string_view name = a.column;
+    for (const std::string_view si : {"_s", "_m", "_mps", "_mps2", "_rad", "_radps", "_si"})
+      if (name.size() > si.size() && name.ends_with(si)) {
+        name.remove_suffix(si.size());
+        break;
+      }
+    out.label = fmt::format("{} [{}]", name, common);
+  }
+  const auto [lo, hi] = std::minmax_element(out.x.begin(), out.x.end());
+  out.logarithmic = lo != out.x.end() && *lo > 0 && *hi / *lo >= 20;
+  return out;
+}
 }  // namespace
 
 std::vector<SweepAxis> find_sweeps(const po::variables_map& vm) {
@@ -145,8 +186,9 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
   mc::Table summary({"point", "scheme", "system", fmt::format("horizontal RMS [{}] at {} min", u,
                                                               mc::format_number(base.report_times_s.back() / 60)),
                      mc::readable_accuracy_header(unit).front(), "fitted"});
-  std::vector<mc::PlotSeries> plot;
+  mc::PanelFigure plot;
   check_sweep_size(axes);
+  const AxisInUserUnits x_axis = in_user_units(axes[0]);
   std::size_t points = 1;
   for (const auto& a : axes) points *= a.texts.size();
   mc::Json point_list = mc::Json::array();
@@ -194,20 +236,28 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
         summary.add_row({point_name, row[axes.size()], row[axes.size() + 1],
                          mc::format_with_interval(k * s.rms, k * (s.rms_hi - s.rms_lo) / 2),
                          mc::readable_accuracy_cells(accuracy, unit).front(), fitted});
-        const std::string name = fmt::format("{} sys {}", to_string(spec.scheme), system_number(spec.system));
-        mc::PlotSeries* series = nullptr;
-        for (auto& ps : plot)
-          if (ps.name == name) series = &ps;
-        if (!series) {
-          plot.push_back({name, {}, {}, {}, {}, scheme_i, spec.system == System::kGyrocompass});
-          series = &plot.back();
+        // One panel per scheme; one line per system and combination of the
+        // other swept quantities (every line of a product sweep).
+        if (plot.panels.size() <= static_cast<std::size_t>(scheme_i)) plot.panels.resize(static_cast<std::size_t>(scheme_i) + 1);
+        mc::PlotPanel& panel = plot.panels[static_cast<std::size_t>(scheme_i)];
+        panel.title = std::string(to_string(spec.scheme));
+        std::string name = fmt::format("system {}", system_number(spec.system));
+        std::size_t others = 0;
+        for (std::size_t i = 1; i < axes.size(); ++i) {
+          name += fmt::format(", {} {}", axes[i].column, axes[i].texts[idx[i]]);
+          others = others * axes[i].texts.size() + idx[i];
         }
-        if (idx.size() > 1 && std::any_of(idx.begin() + 1, idx.end(), [](std::size_t v) { return v != 0; }))
-          continue;  // the plot varies the first swept quantity, the others at their first value
-        series->x.push_back(axes[0].values_si[idx[0]]);
-        series->y.push_back(k * s.rms);
-        series->lo.push_back(k * s.rms_lo);
-        series->hi.push_back(k * s.rms_hi);
+        mc::PlotLine* line = nullptr;
+        for (mc::PlotLine& l : panel.lines)
+          if (l.name == name) line = &l;
+        if (!line) {
+          panel.lines.push_back({name, {}, {}, {}, {}, {}, static_cast<int>(others), spec.system == System::kGyrocompass});
+          line = &panel.lines.back();
+        }
+        line->x.push_back(x_axis.x[idx[0]]);
+        line->y.push_back(k * s.rms);
+        line->lo.push_back(k * s.rms_lo);
+        line->hi.push_back(k * s.rms_hi);
       }
     }
     point["values_si"] = values;
@@ -231,9 +281,15 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
   f.json["points"] = point_list;
   f.sweep_csv = mc::render_csv(table);
   f.summary_md = mc::render_markdown(summary);
-  f.plot_svg = mc::svg_line_plot(fmt::format("Horizontal RMS at {} min against {}", mc::format_number(base.report_times_s.back() / 60),
-                                             axes[0].column),
-                                 axes[0].column, fmt::format("RMS horizontal error [{}]", u), plot);
+  plot.stem = "sweep";
+  plot.title = fmt::format("Horizontal RMS at {} min against {} (shaded: {}% confidence interval)",
+                           mc::format_number(base.report_times_s.back() / 60), x_axis.label,
+                           mc::format_number(100 * base.confidence));
+  plot.x_label = x_axis.label;
+  plot.y_label = fmt::format("RMS horizontal error [{}]", u);
+  plot.log_x = x_axis.logarithmic;
+  std::erase_if(plot.panels, [](const mc::PlotPanel& p) { return p.lines.empty(); });
+  f.plot = plot;
   return f;
 }
 

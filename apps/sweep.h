@@ -12,6 +12,7 @@
 #include "montecarlo/study/study_config.h"
 #include "montecarlo/write/json.h"
 #include "montecarlo/write/length_unit.h"
+#include "montecarlo/write/plot/panel_figure.h"
 
 namespace insmc::app {
 
@@ -26,11 +27,13 @@ struct SweepAxis {
 std::vector<SweepAxis> find_sweeps(const po::variables_map& vm);
 
 /// Runs every point of the sweep and returns sweep.csv, a Markdown summary,
-/// the SVG plot of the horizontal RMS at the last report time against the
-/// first swept quantity, and sweep.json's axes and points (SI keys whatever
+/// the plot of the horizontal RMS at the last report time against the first
+/// swept quantity in the units it was given in (a panel per scheme, a line
+/// per system and combination of the other swept quantities), and sweep.json's axes and points (SI keys whatever
 /// --units; the caller adds the settings).
 struct SweepFiles {
-  std::string sweep_csv, summary_md, plot_svg;
+  std::string sweep_csv, summary_md;
+  mc::PanelFigure plot;
   mc::Json json = mc::Json::object();
 };
 /// Runs the Monte Carlo study of one point (every block, merged).

@@ -8,6 +8,9 @@
 set -euo pipefail
 
 packages=(g++ cmake make libeigen3-dev libtbb-dev libboost-program-options-dev libboost-dev libfmt-dev nlohmann-json3-dev)
+# gnuplot renders the plots of `insmc run` (envelope, sweep) to SVG and PNG
+# from the script insmc writes beside them (montecarlo/write/plot/gnuplot.h).
+packages+=(gnuplot-nox)
 if [[ "${1:-}" == "--test" ]]; then
   # openssh-client: Open MPI's mpirun refuses to start without an rsh/ssh agent,
   # even on one machine (Debian only recommends it).

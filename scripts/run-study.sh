@@ -8,4 +8,4 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh build/release -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF
 ./build/release/apps/insmc run --out results "$@"
-echo "files: results/envelope.csv envelope_grid.csv envelope.md envelope.svg run.json" >&2
+echo "files: results/envelope.csv envelope_grid.csv envelope.md envelope.svg envelope.png envelope.gp run.json" >&2

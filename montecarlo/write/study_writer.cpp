@@ -13,10 +13,30 @@
 #include "montecarlo/write/envelope_summary.h"
 #include "montecarlo/write/interval_format.h"
 #include "montecarlo/write/markdown.h"
-#include "montecarlo/write/svg_plot.h"
 
 namespace insmc::mc {
 namespace {
+
+/// Where t = 0 is on a scheme's clock (clock_of), for a plot's panel title.
+std::string clock_title(Scheme scheme) {
+  const std::string_view clock = clock_of(scheme);
+  return clock == "switchover" ? "switch-over" : clock == "realignment" ? "switch-over after the realignment" : "end of the test run";
+}
+
+/// The plot line of one scheme (its panel) and system, made on first use.
+PlotLine& envelope_line(PanelFigure& plot, std::size_t panel, const OutputSpec& spec) {
+  if (plot.panels.size() <= panel) plot.panels.resize(panel + 1);
+  PlotPanel& p = plot.panels[panel];
+  p.title = fmt::format("{} (t = 0: {})", to_string(spec.scheme), clock_title(spec.scheme));
+  const std::string name = fmt::format("system {}", system_number(spec.system));
+  for (PlotLine& line : p.lines)
+    if (line.name == name) return line;
+  const bool gyrocompass = spec.system == System::kGyrocompass;
+  p.lines.push_back({name, {}, {}, {}, {}, {}, gyrocompass ? 1 : 0, gyrocompass});
+  return p.lines.back();
+}
+
+
 
 std::string fmt_minutes(double t_s) { return format_number(t_s / 60.0); }
 
@@ -79,7 +99,7 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
   std::vector<HorizontalPoint> horizontal;
   EnvelopeFiles f;
   f.envelope_json = Json::array();
-  std::vector<PlotSeries> plot;
+  PanelFigure plot;
   for (size_t o = 0; o < l.outputs.size(); ++o) {
     const OutputSpec& spec = l.outputs[o];
     const OutputSummary s = acc.outputs()[o].summarize(c.confidence);
@@ -116,14 +136,15 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
       add_accuracy_json(j, accuracy);
       f.envelope_json.push_back(j);
     }
-    if (spec.axis == Axis::kHorizontal && l.is_grid_time[spec.time_index]) {
-      const std::string name = fmt::format("{} sys {}", to_string(spec.scheme), system_number(spec.system));
-      if (plot.empty() || plot.back().name != name)
-        plot.push_back({name, {}, {}, {}, {}, scheme_index(c, spec.scheme), spec.system == System::kGyrocompass});
-      plot.back().x.push_back(t / 60.0);
-      plot.back().y.push_back(k * s.rms);
-      plot.back().lo.push_back(k * s.rms_lo);
-      plot.back().hi.push_back(k * s.rms_hi);
+    if (spec.axis == Axis::kHorizontal && (l.is_grid_time[spec.time_index] || l.is_report_time[spec.time_index])) {
+      PlotLine& line = envelope_line(plot, scheme_index(c, spec.scheme), spec);
+      if (l.is_grid_time[spec.time_index]) {
+        line.x.push_back(t / 60.0);
+        line.y.push_back(k * s.rms);
+        line.lo.push_back(k * s.rms_lo);
+        line.hi.push_back(k * s.rms_hi);
+      }
+      if (l.is_report_time[spec.time_index]) line.marks.push_back({t / 60.0, k * s.rms, k * s.rms_lo, k * s.rms_hi});
     }
   }
   f.envelope_csv = render_csv(report);
@@ -141,9 +162,14 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
                               "CEP50 rate (CEP50/t) from the same samples; ready: minutes from the first switch-over "
                               "until the vehicle may fly.",
                               length_suffix(unit), format_number(100 * c.confidence)));
-  f.envelope_svg = svg_line_plot("Horizontal RMS position error (shaded: confidence interval)",
-                                 "time on the scheme's clock [min]",
-                                 fmt::format("RMS horizontal error [{}]", length_suffix(unit)), plot);
+  plot.stem = "envelope";
+  plot.title = fmt::format("Horizontal RMS position error, {} samples, fidelity {} (shaded: {}% confidence interval)",
+                           c.samples, to_string(c.fidelity), format_number(100 * c.confidence));
+  plot.x_label = "time on the scheme's clock [min]";
+  plot.y_label = fmt::format("RMS horizontal error [{}]", length_suffix(unit));
+  for (const double t : c.report_times_s) plot.marked_x.push_back(t / 60.0);
+  std::erase_if(plot.panels, [](const PlotPanel& p) { return p.lines.empty(); });
+  f.envelope_plot = plot;
   return f;
 }
 

@@ -1,18 +1,20 @@
 #pragma once
 /// The output contract of `insmc run` and `insmc covariance` (README,
 /// "Output files"): envelope.csv, envelope_grid.csv, envelope.md,
-/// envelope.svg, covariance.csv, budget.csv. Rendered to strings first, so
+/// envelope.gp (rendered to envelope.svg and envelope.png), covariance.csv, budget.csv. Rendered to strings first, so
 /// that nothing is written unless everything was computed.
 #include <string>
 
 #include "montecarlo/engine/engine.h"
 #include "montecarlo/write/json.h"
 #include "montecarlo/write/length_unit.h"
+#include "montecarlo/write/plot/panel_figure.h"
 
 namespace insmc::mc {
 
 struct EnvelopeFiles {
-  std::string envelope_csv, envelope_grid_csv, envelope_md, envelope_svg;
+  std::string envelope_csv, envelope_grid_csv, envelope_md;
+  PanelFigure envelope_plot;  ///< one panel per scheme, rendered by the program (plot/panel_figure.h)
   std::string summary_text;  ///< stdout: horizontal RMS per scheme × system (envelope_summary.h)
   std::string full_text;     ///< stdout with --full: every axis and report time
   Json envelope_json;        ///< the report-time envelope for run.json

@@ -3,9 +3,20 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "montecarlo/write/svg_plot.h"
 
 namespace insmc::mc {
+
+std::string svg_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else out += c;
+  }
+  return out;
+}
+
 
 std::string open_svg(double w, double h, const std::string& title) {
   return fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" font-family=\"sans-serif\" "

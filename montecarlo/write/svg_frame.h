@@ -15,6 +15,9 @@ struct Frame {
   double py(double y) const { return top + height - (y - y0) / (y1 - y0) * height; }
 };
 
+/// Text for SVG content and attributes: <, > and & escaped.
+std::string svg_escape(const std::string& text);
+
 std::string open_svg(double w, double h, const std::string& title);
 /// The frame, its clip path (id "frame") and the y label.
 std::string frame_svg(const Frame& f, const std::string& y_label);

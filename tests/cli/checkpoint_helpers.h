@@ -17,7 +17,7 @@ namespace insmc::testing {
 
 /// The files whose bytes the README promises for the same settings.
 inline void expect_same_envelopes(const std::filesystem::path& expected, const std::filesystem::path& actual) {
-  for (const char* f : {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.svg"}) {
+  for (const char* f : {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.gp", "envelope.svg", "envelope.png"}) {
     ASSERT_TRUE(std::filesystem::exists(actual / f)) << actual / f;
     EXPECT_TRUE(read_file(expected / f) == read_file(actual / f)) << f << " differs: " << expected << " " << actual;
   }

@@ -97,7 +97,7 @@ TEST(Cli, RunWritesTheOutputContractAndIsIdenticalForAnyThreadCount) {
   ASSERT_EQ(one.exit_code, 0) << one.err;
   const auto two = run_insmc("run" + common + " --threads 2 --out " + dir.str() + "/t2");
   ASSERT_EQ(two.exit_code, 0) << two.err;
-  for (const char* f : {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.svg", "run.json"})
+  for (const char* f : {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.gp", "envelope.svg", "envelope.png", "run.json"})
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "t1" / f)) << f;
   const std::string csv = read_file(dir.path() / "t1" / "envelope.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
@@ -156,7 +156,7 @@ TEST(Cli, QuietPrintsNothingAndWritesTheFiles) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(r.err, "");
-  for (const char* f : {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.svg", "run.json"})
+  for (const char* f : {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.gp", "envelope.svg", "envelope.png", "run.json"})
     EXPECT_TRUE(std::filesystem::exists(dir.path() / f)) << f;
   const auto cov = run_insmc("covariance --quiet --out " + dir.str() + "/cov");
   ASSERT_EQ(cov.exit_code, 0) << cov.err;
@@ -202,7 +202,7 @@ TEST(Cli, RunFromRunJsonReproducesTheFilesByteForByte) {
   for (const char* left : {"--out", "--quiet", "--config"}) EXPECT_EQ(run_json.find(left), std::string::npos) << left;
   const auto again = run_insmc("run --from " + dir.str() + "/a/run.json --quiet --out " + dir.str() + "/b");
   ASSERT_EQ(again.exit_code, 0) << again.err;
-  for (const char* f : {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.svg"})
+  for (const char* f : {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.gp", "envelope.svg", "envelope.png"})
     EXPECT_EQ(read_file(dir.path() / "a" / f), read_file(dir.path() / "b" / f)) << f;
   EXPECT_EQ(without_elapsed(run_json), without_elapsed(read_file(dir.path() / "b" / "run.json")));
   // An option given with --from replaces the file's.

@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kRunFiles = {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.svg",
+const std::vector<std::string> kRunFiles = {"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.gp", "envelope.svg", "envelope.png",
                                             "run.json"};
 
 std::set<std::string> entries(const fs::path& dir) {

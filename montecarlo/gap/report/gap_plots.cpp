@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "montecarlo/write/svg_frame.h"
-#include "montecarlo/write/svg_plot.h"
 
 namespace insmc::mc {
 namespace {

@@ -1,0 +1,32 @@
+#pragma once
+/// Plots through gnuplot (Debian gnuplot-nox): insmc writes a self-contained
+/// gnuplot script (data inline) beside its results, and gnuplot renders it
+/// to SVG and PNG. A script the user can edit and run again
+/// (`gnuplot envelope.gp`) is what a report needs; the drawing itself is
+/// gnuplot's (axes, ticks, clipping, transparency, fonts), not insmc's.
+#include <string>
+#include <vector>
+
+namespace insmc::mc {
+
+/// The program's name, looked up on PATH.
+inline constexpr const char* kGnuplotProgram = "gnuplot";
+
+/// Whether gnuplot can be run (on PATH and executable).
+bool gnuplot_available();
+
+/// The one-line reason plots cannot be made, naming the Debian package.
+std::string gnuplot_missing_message();
+
+/// Runs gnuplot on `script` in a fresh temporary folder and returns the
+/// bytes of `outputs` (the file names the script's `set output` lines use,
+/// relative), in that order. Throws std::runtime_error with gnuplot's first
+/// error line when it fails or does not write an output. The folder is
+/// removed in every case.
+std::vector<std::string> render_gnuplot(const std::string& script, const std::vector<std::string>& outputs);
+
+/// A string as a gnuplot string literal: double-quoted with \ and " escaped
+/// and line breaks as \n.
+std::string gnuplot_quote(const std::string& text);
+
+}  // namespace insmc::mc

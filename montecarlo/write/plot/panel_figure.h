@@ -1,0 +1,50 @@
+#pragma once
+/// A figure of line panels (small multiples) as a gnuplot script: each panel
+/// its own axes, each line with its shaded confidence band and its marks
+/// (points with error bars), and marked x values (the report times
+/// 42/63/84 min) as labelled dotted verticals. The script holds its data inline and writes
+/// `<stem>.svg` and `<stem>.png` in the folder it runs in (plot/gnuplot.h).
+#include <string>
+#include <vector>
+
+namespace insmc::mc {
+
+/// A point drawn with its interval (the report times' RMS).
+struct PlotMark {
+  double x, y, lo, hi;
+};
+
+struct PlotLine {
+  std::string name;            ///< legend entry
+  std::vector<double> x, y;
+  std::vector<double> lo, hi;  ///< the band (same length as y), or empty
+  std::vector<PlotMark> marks;
+  int colour = 0;              ///< palette index (panel_figure.cpp)
+  bool dashed = false;
+};
+
+struct PlotPanel {
+  std::string title;
+  std::vector<PlotLine> lines;
+};
+
+struct PanelFigure {
+  std::string stem;                ///< output names: stem.svg, stem.png
+  std::string title;               ///< over all panels
+  std::string x_label, y_label;    ///< every panel's axes
+  std::vector<PlotPanel> panels;
+  std::vector<double> marked_x;    ///< dotted verticals, labelled with their value
+  bool log_x = false;
+  int columns = 2;                 ///< panels per row (fewer when there are fewer panels)
+};
+
+/// The gnuplot script of `figure` (gnuplot 5.4).
+std::string panel_figure_script(const PanelFigure& figure);
+
+/// The script rendered: {svg bytes, png bytes}.
+struct RenderedFigure {
+  std::string script, svg, png;
+};
+RenderedFigure render_panel_figure(const PanelFigure& figure);
+
+}  // namespace insmc::mc

@@ -1,0 +1,149 @@
+// The plots as gnuplot renders them (montecarlo/write/plot/): each panel's
+// frame holds every drawn element, each legend line has its data inside
+// the frame (not collapsed onto an edge, not empty), the PNG is a PNG, and
+// the shipped script renders the same SVG again.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "tests/cli/run_program.h"
+
+namespace insmc::testing {
+namespace {
+
+struct Frame {
+  double x0, y0, x1, y1;
+};
+
+struct Group {
+  std::string id, title;
+  std::vector<std::pair<double, double>> points;
+};
+
+/// The panel frames (the border rectangles, stroke #333333), in drawing order.
+std::vector<Frame> frames_of(const std::string& svg) {
+  static const std::regex border(
+      R"(stroke='rgb\( 51,  51,  51\)'\s+d='M([\d.]+),([\d.]+) L([\d.]+),([\d.]+) L([\d.]+),([\d.]+) L([\d.]+),([\d.]+) L[\d.]+,[\d.]+ Z)");
+  std::vector<Frame> out;
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), border); it != std::sregex_iterator(); ++it) {
+    std::vector<double> v;
+    for (int i = 1; i <= 8; ++i) v.push_back(std::stod((*it)[i]));
+    const Frame f{std::min({v[0], v[2], v[4], v[6]}), std::min({v[1], v[3], v[5], v[7]}),
+                  std::max({v[0], v[2], v[4], v[6]}), std::max({v[1], v[3], v[5], v[7]})};
+    if (out.empty() || std::abs(out.back().x0 - f.x0) + std::abs(out.back().y0 - f.y0) > 1) out.push_back(f);
+  }
+  return out;
+}
+
+/// Each plotted element (gnuplot's <g id="gnuplot_plot_N<panel letter>">)
+/// with the coordinates of its paths, polygons and points.
+std::vector<Group> groups_of(const std::string& svg) {
+  static const std::regex open(R"re(<g id="(gnuplot_plot_\d+[a-z])" ><title>([^<]*)</title>)re");
+  static const std::regex pair(R"((-?[\d.]+),(-?[\d.]+))");
+  static const std::regex use(R"(<use xlink:href='#gpPt\d+' transform='translate\((-?[\d.]+),(-?[\d.]+)\))");
+  std::vector<Group> out;
+  std::vector<std::size_t> starts;
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), open); it != std::sregex_iterator(); ++it) {
+    out.push_back({(*it)[1], (*it)[2], {}});
+    starts.push_back(static_cast<std::size_t>(it->position()));
+  }
+  for (std::size_t g = 0; g < out.size(); ++g) {
+    // The group's own text: up to the </g> that closes it.
+    std::size_t at = starts[g], depth = 0;
+    while (at < svg.size()) {
+      const std::size_t open_at = svg.find("<g", at), close_at = svg.find("</g>", at);
+      if (close_at == std::string::npos) break;
+      if (open_at < close_at) {
+        ++depth;
+        at = open_at + 2;
+      } else {
+        at = close_at + 4;
+        if (--depth == 0) break;
+      }
+    }
+    const std::string body = svg.substr(starts[g], at - starts[g]);
+    // Only the drawing attributes: d='...' and points='...' hold coordinates.
+    static const std::regex attr(R"((?:\sd|points)\s*=\s*'([^']*)')");
+    for (auto a = std::sregex_iterator(body.begin(), body.end(), attr); a != std::sregex_iterator(); ++a) {
+      const std::string coords = (*a)[1];
+      for (auto p = std::sregex_iterator(coords.begin(), coords.end(), pair); p != std::sregex_iterator(); ++p)
+        out[g].points.emplace_back(std::stod((*p)[1]), std::stod((*p)[2]));
+    }
+    for (auto u = std::sregex_iterator(body.begin(), body.end(), use); u != std::sregex_iterator(); ++u)
+      out[g].points.emplace_back(std::stod((*u)[1]), std::stod((*u)[2]));
+  }
+  return out;
+}
+
+/// Checks one rendered figure with `panels` panels; `lines` legend lines in all.
+void expect_data_inside_frames(const std::string& svg, std::size_t panels, std::size_t lines) {
+  const std::vector<Frame> frames = frames_of(svg);
+  ASSERT_EQ(frames.size(), panels);
+  std::size_t named = 0;
+  std::set<std::string> curves;
+  for (const Group& g : groups_of(svg)) {
+    const std::size_t panel = static_cast<std::size_t>(g.id.back() - 'a');
+    ASSERT_LT(panel, frames.size()) << g.id;
+    const Frame& f = frames[panel];
+    for (const auto& [x, y] : g.points) {
+      EXPECT_GE(x, f.x0 - 0.5) << g.id << " " << g.title;
+      EXPECT_LE(x, f.x1 + 0.5) << g.id << " " << g.title;
+      EXPECT_GE(y, f.y0 - 0.5) << g.id << " " << g.title;
+      EXPECT_LE(y, f.y1 + 0.5) << g.id << " " << g.title;
+    }
+    // Each line is drawn as three elements, band, curve and marks
+    // (panel_figure.cpp): the curve is the second. gnuplot draws an opaque
+    // key's elements twice; each is counted once.
+    const int element = std::stoi(g.id.substr(std::string("gnuplot_plot_").size()));
+    if ((element - 1) % 3 != 1 || !curves.insert(g.id).second) continue;
+    ++named;
+    // A curve drawn across the panel: at least half its points strictly
+    // between the top and bottom edges (not clipped flat onto one).
+    const auto inside = std::count_if(g.points.begin(), g.points.end(), [&](const auto& p) {
+      return p.second > f.y0 + 0.5 && p.second < f.y1 - 0.5;
+    });
+    EXPECT_GE(g.points.size(), 2u) << g.title;
+    EXPECT_GE(2 * static_cast<std::size_t>(inside), g.points.size()) << g.title;
+  }
+  EXPECT_EQ(named, lines);
+}
+
+void expect_png(const std::string& png) {
+  ASSERT_GE(png.size(), 1000u);
+  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+}
+
+TEST(Plots, EnvelopeHasAPanelPerSchemeWithEveryLineInsideItsFrame) {
+  TempDir out;
+  const ProgramResult r = run_insmc("run --samples 300 --scheme none,5.1.1,5.4 --out " + out.str() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = read_file(out.path() / "envelope.svg");
+  expect_data_inside_frames(svg, 3, 6);  // 3 schemes x 2 systems
+  expect_png(read_file(out.path() / "envelope.png"));
+  // The marks at the report times: 42, 63 and 84 min labelled in each panel.
+  for (const char* t : {">42<", ">63<", ">84<"}) EXPECT_NE(svg.find(t), std::string::npos) << t;
+  // The script is the figure: gnuplot run on it again gives the same SVG.
+  const ProgramResult again = run_shell("cd " + out.str() + " && mkdir again && cp envelope.gp again/ && cd again && "
+                                        "gnuplot envelope.gp");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(read_file(out.path() / "again" / "envelope.svg"), svg);
+}
+
+TEST(Plots, AProductSweepDrawsEveryLineInTheUnitsGiven) {
+  TempDir out;
+  const ProgramResult r = run_insmc("run --samples 200 --scheme 5.2 --system 1 --test-duration 5min,10min,20min "
+                                    "--latitude 0deg,60deg --out " + out.str() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = read_file(out.path() / "sweep.svg");
+  expect_data_inside_frames(svg, 1, 2);  // one scheme; system 1 at two latitudes
+  EXPECT_NE(svg.find("test_duration [min]"), std::string::npos);
+  EXPECT_NE(svg.find("system 1, latitude_rad 60deg"), std::string::npos);
+  expect_png(read_file(out.path() / "sweep.png"));
+}
+
+}  // namespace
+}  // namespace insmc::testing
