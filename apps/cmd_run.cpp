@@ -175,7 +175,8 @@ StudyProgress restore_progress(const Checkpoint& ck, const std::string& path, co
 int run_command(const Args& args, Ranks& ranks) {
   po::options_description opts("Options");
   opts.add_options()("out", po::value<std::string>(), "folder for envelope.csv, envelope_grid.csv, envelope.md, "
-                                                      "envelope.svg and run.json (created if needed)")(
+                                                      "envelope.gp with the envelope.svg and envelope.png gnuplot "
+                                                      "draws from it, and run.json (created if needed)")(
       "format", po::value<std::string>()->default_value("markdown"),
       "stdout: markdown (horizontal RMS per scheme and system), csv (envelope.csv alone) or json (run.json alone)")(
       "replay", po::value<std::string>(), "recompute sample INDEX alone and print its uncertainties and errors")(
