@@ -36,7 +36,8 @@ void refuse_unused_options(const po::variables_map& vm) {
 int run_covariance(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("out", po::value<std::string>(), "folder for covariance.csv, covariance_grid.csv, budget.csv, "
-                                                      "covariance.md (created if needed)")(
+                                                      "budget.gp/.svg/.png (the error budget as bars, drawn by "
+                                                      "gnuplot) and covariance.md (created if needed)")(
       "format", po::value<std::string>()->default_value("markdown"),
       "stdout: markdown (horizontal RMS per scheme and system), csv (covariance.csv alone) or json");
   add_stdout_switches(opts, "covariance.md (the RMS of every axis at every report time)");
@@ -48,7 +49,9 @@ int run_covariance(const Args& args) {
   const StdoutChoice shown = read_stdout_choice(*vm);
   const mc::LengthUnit unit = read_length_unit(*vm);
   std::optional<OutputFolderOption> out = prepare_output_folder(
-      *vm, "covariance", {"covariance.csv", "covariance_grid.csv", "budget.csv", "covariance.md"});
+      *vm, "covariance",
+      {"covariance.csv", "covariance_grid.csv", "budget.csv", "budget.gp", "budget.svg", "budget.png", "covariance.md"});
+  require_gnuplot(*vm, out);
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
   const mc::CovarianceFiles files = mc::render_covariance(config, layout, map, unit);
@@ -56,9 +59,13 @@ int run_covariance(const Args& args) {
   json["settings"] = mc::settings_json(config, mc::SettingsOf::kCovariance);
   json["covariance"] = files.covariance_json;
   if (out) {
+    const mc::RenderedFigure budget = mc::render_bar_figure(files.budget_plot);
     out->write({{"covariance.csv", files.covariance_csv},
                 {"covariance_grid.csv", files.covariance_grid_csv},
                 {"budget.csv", files.budget_csv},
+                {"budget.gp", budget.script},
+                {"budget.svg", budget.svg},
+                {"budget.png", budget.png},
                 {"covariance.md", files.covariance_md}});
   }
   if (shown.quiet) return 0;

@@ -273,8 +273,7 @@ int run_command(const Args& args, Ranks& ranks) {
                          : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.gp", "sweep.svg", "sweep.png",
                                                     "sweep.json"};
       out = prepare_output_folder(*vm, "run", names);
-      if (out && !mc::gnuplot_available())
-        throw InputError("--out", (*vm)["out"].as<std::string>(), mc::gnuplot_missing_message());
+      require_gnuplot(*vm, out);
       if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path);
     });
   }

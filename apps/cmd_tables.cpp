@@ -1,5 +1,7 @@
 // insmc tables: the report's Tables 3.1, 4.1, 4.2, 4.3, 5.1, 5.2 and the data
 // of Figure 3.2, every cell computed from the model beside the printed value.
+#include <cmath>
+#include <cstdlib>
 #include <fmt/format.h>
 
 #include "apps/cli_common.h"
@@ -7,6 +9,7 @@
 #include "lib/common/input_error.h"
 #include "montecarlo/write/csv.h"
 #include "montecarlo/write/markdown.h"
+#include "montecarlo/write/plot/panel_figure.h"
 #include "tables/generate.h"
 
 namespace insmc::app {
@@ -45,6 +48,34 @@ std::string render_markdown_report(const std::vector<tables::TableCell>& cells, 
   return out;
 }
 
+/// Figure 3.2 drawn again from its data: the position error per unit of each
+/// term of (3.29) against time, magnitudes on a log axis (the cells keep
+/// their signs).
+mc::PanelFigure figure_3_2(const std::vector<tables::TableCell>& cells, tables::TableConvention conv) {
+  mc::PanelFigure f;
+  f.stem = "fig3_2";
+  f.title = fmt::format("Figure 3.2: position error propagation, per unit of each term of (3.29) ({} convention)",
+                        to_string(conv));
+  f.x_label = "time since the switch-over [min]";
+  f.y_label = "|position error| per unit [ft]";
+  f.log_y = true;
+  f.columns = 1;
+  mc::PlotPanel panel;
+  panel.title = "uncompensated run under 1.5 h";
+  for (const auto& c : cells) {
+    if (c.table != "fig3.2") continue;
+    if (panel.lines.empty() || panel.lines.back().name != c.row)
+      panel.lines.push_back({c.row, {}, {}, {}, {}, {}, static_cast<int>(panel.lines.size()), false, false});
+    const double t_min = std::strtod(c.column.c_str(), nullptr);  // "42 min"
+    if (std::abs(c.computed) > 0) {  // the log axis has no 0 (every term is 0 at t = 0)
+      panel.lines.back().x.push_back(t_min);
+      panel.lines.back().y.push_back(std::abs(c.computed));
+    }
+  }
+  f.panels.push_back(std::move(panel));
+  return f;
+}
+
 }  // namespace
 
 int run_tables(const Args& args) {
@@ -53,7 +84,8 @@ int run_tables(const Args& args) {
                      "stdout: markdown (one table per printed table) or csv (one long table)")(
       "convention", po::value<std::string>()->default_value("paper"),
       "paper (the report's formulas as printed) or corrected (errors of the original fixed)")(
-      "out", po::value<std::string>(), "folder for tables.md and tables.csv (created if needed)");
+      "out", po::value<std::string>(), "folder for tables.md, tables.csv and Figure 3.2 drawn by gnuplot (fig3_2.gp/.svg/.png; created if "
+                                       "needed)");
   opts.add(model_options_description());
   const auto vm = parse_args(args, "tables", "[--format markdown|csv] [--convention paper|corrected] [--out DIR]", opts);
   if (!vm) return 0;
@@ -62,11 +94,20 @@ int run_tables(const Args& args) {
   const tables::TableConvention conv =
       tables::parse_table_convention((*vm)["convention"].as<std::string>(), "--convention");
   const ModelOptions model = read_model_options(*vm, true);
-  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "tables", {"tables.md", "tables.csv"});
+  std::optional<OutputFolderOption> out =
+      prepare_output_folder(*vm, "tables", {"tables.md", "tables.csv", "fig3_2.gp", "fig3_2.svg", "fig3_2.png"});
+  require_gnuplot(*vm, out);
   const std::vector<tables::TableCell> cells = tables::compute_tables(model, conv);
   const std::string csv = mc::render_csv(cells_table(cells, true));
   const std::string md = render_markdown_report(cells, conv);
-  if (out) out->write({{"tables.md", md}, {"tables.csv", csv}});
+  if (out) {
+    const mc::RenderedFigure figure = mc::render_panel_figure(figure_3_2(cells, conv));
+    out->write({{"tables.md", md},
+                {"tables.csv", csv},
+                {"fig3_2.gp", figure.script},
+                {"fig3_2.svg", figure.svg},
+                {"fig3_2.png", figure.png}});
+  }
   fmt::print("{}", format == OutputFormat::kCsv ? csv : md);
   return 0;
 }

@@ -6,6 +6,7 @@
 
 #include "lib/common/input_error.h"
 #include "montecarlo/write/output_error.h"
+#include "montecarlo/write/plot/gnuplot.h"
 
 namespace insmc::app {
 
@@ -59,6 +60,10 @@ OutputFileOption::OutputFileOption(std::string option, std::string path)
 
 void OutputFileOption::write(std::string_view contents) const {
   as_input_errors(option_, text_, [&] { file_->write(contents); });
+}
+
+void require_gnuplot(const po::variables_map& vm, const std::optional<OutputFolderOption>& out) {
+  if (out && !mc::gnuplot_available()) throw InputError("--out", vm["out"].as<std::string>(), mc::gnuplot_missing_message());
 }
 
 }  // namespace insmc::app

@@ -9,6 +9,7 @@
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
 #include "montecarlo/write/accuracy_cells.h"
+#include "montecarlo/write/budget_plot.h"
 #include "montecarlo/write/csv.h"
 #include "montecarlo/write/envelope_summary.h"
 #include "montecarlo/write/interval_format.h"
@@ -24,15 +25,20 @@ std::string clock_title(Scheme scheme) {
 }
 
 /// The plot line of one scheme (its panel) and system, made on first use.
-PlotLine& envelope_line(PanelFigure& plot, std::size_t panel, const OutputSpec& spec) {
+/// `covariance`: the line of the exact linear-covariance prediction (at
+/// `map_fidelity`) beside the Monte Carlo one.
+PlotLine& envelope_line(PanelFigure& plot, std::size_t panel, const OutputSpec& spec, bool covariance,
+                        Fidelity map_fidelity) {
   if (plot.panels.size() <= panel) plot.panels.resize(panel + 1);
   PlotPanel& p = plot.panels[panel];
   p.title = fmt::format("{} (t = 0: {})", to_string(spec.scheme), clock_title(spec.scheme));
-  const std::string name = fmt::format("system {}", system_number(spec.system));
+  const std::string name =
+      covariance ? fmt::format("system {}, covariance ({})", system_number(spec.system), to_string(map_fidelity))
+                 : fmt::format("system {}", system_number(spec.system));
   for (PlotLine& line : p.lines)
     if (line.name == name) return line;
   const bool gyrocompass = spec.system == System::kGyrocompass;
-  p.lines.push_back({name, {}, {}, {}, {}, {}, gyrocompass ? 1 : 0, gyrocompass});
+  p.lines.push_back({name, {}, {}, {}, {}, {}, gyrocompass ? 1 : 0, gyrocompass && !covariance, covariance});
   return p.lines.back();
 }
 
@@ -137,12 +143,15 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
       f.envelope_json.push_back(j);
     }
     if (spec.axis == Axis::kHorizontal && (l.is_grid_time[spec.time_index] || l.is_report_time[spec.time_index])) {
-      PlotLine& line = envelope_line(plot, scheme_index(c, spec.scheme), spec);
+      PlotLine& line = envelope_line(plot, scheme_index(c, spec.scheme), spec, false, c.map_fidelity());
       if (l.is_grid_time[spec.time_index]) {
         line.x.push_back(t / 60.0);
         line.y.push_back(k * s.rms);
         line.lo.push_back(k * s.rms_lo);
         line.hi.push_back(k * s.rms_hi);
+        PlotLine& predicted = envelope_line(plot, scheme_index(c, spec.scheme), spec, true, c.map_fidelity());
+        predicted.x.push_back(t / 60.0);
+        predicted.y.push_back(k * map.predicted_rms()[o]);
       }
       if (l.is_report_time[spec.time_index]) line.marks.push_back({t / 60.0, k * s.rms, k * s.rms_lo, k * s.rms_hi});
     }
@@ -163,7 +172,8 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
                               "until the vehicle may fly.",
                               length_suffix(unit), format_number(100 * c.confidence)));
   plot.stem = "envelope";
-  plot.title = fmt::format("Horizontal RMS position error, {} samples, fidelity {} (shaded: {}% confidence interval)",
+  plot.title = fmt::format("Horizontal RMS position error: {} samples at fidelity {} (shaded: {}% interval), "
+                           "dotted: covariance",
                            c.samples, to_string(c.fidelity), format_number(100 * c.confidence));
   plot.x_label = "time on the scheme's clock [min]";
   plot.y_label = fmt::format("RMS horizontal error [{}]", length_suffix(unit));
@@ -216,6 +226,7 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
   f.covariance_csv = render_csv(cov);
   f.covariance_grid_csv = render_csv(cov_grid);
   f.budget_csv = render_csv(budget);
+  f.budget_plot = budget_figure(c, l, map);
   f.covariance_md = fmt::format("# insmc covariance: exact linear RMS\n\nfidelity {}, latitude {} deg.\n\n{}",
                                 to_string(c.fidelity), format_number(c.model.latitude_rad / kDegToRad),
                                 render_markdown(cov));

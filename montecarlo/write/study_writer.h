@@ -8,6 +8,7 @@
 #include "montecarlo/engine/engine.h"
 #include "montecarlo/write/json.h"
 #include "montecarlo/write/length_unit.h"
+#include "montecarlo/write/plot/bar_figure.h"
 #include "montecarlo/write/plot/panel_figure.h"
 
 namespace insmc::mc {
@@ -25,6 +26,7 @@ EnvelopeFiles render_envelope(const StudyConfig& config, const StudyLayout& layo
 
 struct CovarianceFiles {
   std::string covariance_csv, covariance_grid_csv, budget_csv, covariance_md;
+  BarFigure budget_plot;  ///< the largest sources per scheme at the last report time (budget_plot.h)
   std::string summary_text;  ///< stdout: horizontal RMS per scheme × system (envelope_summary.h)
   Json covariance_json;
 };

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <regex>
 #include <set>
 #include <string>
@@ -21,7 +22,7 @@ struct Frame {
 
 struct Group {
   std::string id, title;
-  std::vector<std::pair<double, double>> points;
+  std::vector<std::vector<std::pair<double, double>>> paths;  ///< subpaths, polygons, points
 };
 
 /// The panel frames (the border rectangles, stroke #333333), in drawing order.
@@ -70,17 +71,29 @@ std::vector<Group> groups_of(const std::string& svg) {
     static const std::regex attr(R"((?:\sd|points)\s*=\s*'([^']*)')");
     for (auto a = std::sregex_iterator(body.begin(), body.end(), attr); a != std::sregex_iterator(); ++a) {
       const std::string coords = (*a)[1];
-      for (auto p = std::sregex_iterator(coords.begin(), coords.end(), pair); p != std::sregex_iterator(); ++p)
-        out[g].points.emplace_back(std::stod((*p)[1]), std::stod((*p)[2]));
+      // Each subpath ("M ...") apart: the key's sample of a line is one.
+      std::vector<std::pair<double, double>> path;
+      for (auto p = std::sregex_iterator(coords.begin(), coords.end(), pair); p != std::sregex_iterator(); ++p) {
+        const std::size_t pos = static_cast<std::size_t>(p->position());
+        const std::size_t letter = pos == 0 ? std::string::npos : coords.find_last_not_of(" \t\n", pos - 1);
+        if (letter != std::string::npos && coords[letter] == 'M' && !path.empty()) {
+          out[g].paths.push_back(path);
+          path.clear();
+        }
+        path.emplace_back(std::stod((*p)[1]), std::stod((*p)[2]));
+      }
+      if (!path.empty()) out[g].paths.push_back(std::move(path));
     }
     for (auto u = std::sregex_iterator(body.begin(), body.end(), use); u != std::sregex_iterator(); ++u)
-      out[g].points.emplace_back(std::stod((*u)[1]), std::stod((*u)[2]));
+      out[g].paths.push_back({{std::stod((*u)[1]), std::stod((*u)[2])}});
   }
   return out;
 }
 
-/// Checks one rendered figure with `panels` panels; `lines` legend lines in all.
-void expect_data_inside_frames(const std::string& svg, std::size_t panels, std::size_t lines) {
+/// Checks one rendered figure with `panels` panels and `lines` curves in all
+/// (panel_figure.h: band, curve and marks per line); for a bar figure
+/// (bar_figure.h: one element per series and panel) `lines` counts those.
+void expect_data_inside_frames(const std::string& svg, std::size_t panels, std::size_t lines, bool bars = false) {
   const std::vector<Frame> frames = frames_of(svg);
   ASSERT_EQ(frames.size(), panels);
   std::size_t named = 0;
@@ -89,7 +102,14 @@ void expect_data_inside_frames(const std::string& svg, std::size_t panels, std::
     const std::size_t panel = static_cast<std::size_t>(g.id.back() - 'a');
     ASSERT_LT(panel, frames.size()) << g.id;
     const Frame& f = frames[panel];
-    for (const auto& [x, y] : g.points) {
+    // Everything inside the frame but the key's samples: with the key under
+    // the axes, a line's sample is a horizontal two-point subpath below it.
+    std::vector<std::pair<double, double>> points;
+    for (const auto& path : g.paths) {
+      const bool key_sample = path.size() == 2 && path[0].second == path[1].second && path[0].second > f.y1 + 0.5;
+      if (!key_sample) points.insert(points.end(), path.begin(), path.end());
+    }
+    for (const auto& [x, y] : points) {
       EXPECT_GE(x, f.x0 - 0.5) << g.id << " " << g.title;
       EXPECT_LE(x, f.x1 + 0.5) << g.id << " " << g.title;
       EXPECT_GE(y, f.y0 - 0.5) << g.id << " " << g.title;
@@ -99,15 +119,20 @@ void expect_data_inside_frames(const std::string& svg, std::size_t panels, std::
     // (panel_figure.cpp): the curve is the second. gnuplot draws an opaque
     // key's elements twice; each is counted once.
     const int element = std::stoi(g.id.substr(std::string("gnuplot_plot_").size()));
-    if ((element - 1) % 3 != 1 || !curves.insert(g.id).second) continue;
+    if ((!bars && (element - 1) % 3 != 1) || !curves.insert(g.id).second) continue;
     ++named;
+    if (bars) {  // each bar a box on the axis: some must rise above it
+      EXPECT_TRUE(std::any_of(points.begin(), points.end(), [&](const auto& p) { return p.second < f.y1 - 1; }))
+          << g.id;
+      continue;
+    }
     // A curve drawn across the panel: at least half its points strictly
     // between the top and bottom edges (not clipped flat onto one).
-    const auto inside = std::count_if(g.points.begin(), g.points.end(), [&](const auto& p) {
+    const auto inside = std::count_if(points.begin(), points.end(), [&](const auto& p) {
       return p.second > f.y0 + 0.5 && p.second < f.y1 - 0.5;
     });
-    EXPECT_GE(g.points.size(), 2u) << g.title;
-    EXPECT_GE(2 * static_cast<std::size_t>(inside), g.points.size()) << g.title;
+    EXPECT_GE(points.size(), 2u) << g.title;
+    EXPECT_GE(2 * static_cast<std::size_t>(inside), points.size()) << g.title;
   }
   EXPECT_EQ(named, lines);
 }
@@ -122,7 +147,7 @@ TEST(Plots, EnvelopeHasAPanelPerSchemeWithEveryLineInsideItsFrame) {
   const ProgramResult r = run_insmc("run --samples 300 --scheme none,5.1.1,5.4 --out " + out.str() + " --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string svg = read_file(out.path() / "envelope.svg");
-  expect_data_inside_frames(svg, 3, 6);  // 3 schemes x 2 systems
+  expect_data_inside_frames(svg, 3, 12);  // 3 schemes x 2 systems x (Monte Carlo, covariance)
   expect_png(read_file(out.path() / "envelope.png"));
   // The marks at the report times: 42, 63 and 84 min labelled in each panel.
   for (const char* t : {">42<", ">63<", ">84<"}) EXPECT_NE(svg.find(t), std::string::npos) << t;
@@ -131,6 +156,35 @@ TEST(Plots, EnvelopeHasAPanelPerSchemeWithEveryLineInsideItsFrame) {
                                         "gnuplot envelope.gp");
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_EQ(read_file(out.path() / "again" / "envelope.svg"), svg);
+}
+
+TEST(Plots, TheErrorBudgetHasBarsPerSystemInEachSchemesFrame) {
+  TempDir out;
+  const ProgramResult r = run_insmc("covariance --scheme none,5.4 --out " + out.str() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = read_file(out.path() / "budget.svg");
+  expect_data_inside_frames(svg, 2, 4, true);  // 2 schemes x 2 systems
+  EXPECT_NE(svg.find("gyro_drift_x"), std::string::npos);  // a source named on the axis
+  expect_png(read_file(out.path() / "budget.png"));
+}
+
+TEST(Plots, Figure3Point2IsDrawnOnALogAxisWithEveryTerm) {
+  TempDir out;
+  const ProgramResult r = run_insmc("tables --out " + out.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = read_file(out.path() / "fig3_2.svg");
+  expect_data_inside_frames(svg, 1, 5);  // δV(0), U2, U3, U4, U5
+  EXPECT_NE(svg.find("1e+03"), std::string::npos);  // decade labels of the log axis
+  expect_png(read_file(out.path() / "fig3_2.png"));
+}
+
+TEST(Plots, WithoutGnuplotTheFolderIsRefusedBeforeTheWork) {
+  TempDir out;
+  const ProgramResult r = run_shell("PATH=/nonexistent " + insmc_path() + " run --samples 200 --out " + out.str() + "/r");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(has(r.err, "gnuplot is not on PATH")) << r.err;
+  EXPECT_TRUE(has(r.err, "gnuplot-nox")) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out.path() / "r" / "envelope.csv"));
 }
 
 TEST(Plots, AProductSweepDrawsEveryLineInTheUnitsGiven) {

@@ -124,6 +124,30 @@ std::vector<std::string> render_gnuplot(const std::string& script, const std::ve
   return bytes;
 }
 
+std::string figure_script(const FigureScript& f) {
+  std::string out = fmt::format(
+      "# {}\n# Written by insmc with its data inline; render again with: gnuplot {}.gp\n"
+      "# (writes {}.svg and {}.png in the current folder).\n",
+      f.title, f.stem, f.stem, f.stem);
+  out += f.data_and_settings;
+  out += "set border linecolor \"#333333\"\n";
+  out += fmt::format("set terminal svg size {},{} noenhanced font \"sans,11\" background \"white\"\nset output {}\n",
+                     f.width, f.height, gnuplot_quote(f.stem + ".svg"));
+  out += f.body;
+  out += fmt::format("set terminal pngcairo size {},{} noenhanced font \"sans,10\" background \"white\"\nset output {}\n",
+                     f.width, f.height, gnuplot_quote(f.stem + ".png"));
+  return out + f.body + "unset output\n";
+}
+
+RenderedFigure render_figure(const std::string& stem, std::string script) {
+  RenderedFigure r;
+  std::vector<std::string> bytes = render_gnuplot(script, {stem + ".svg", stem + ".png"});
+  r.script = std::move(script);
+  r.svg = std::move(bytes[0]);
+  r.png = std::move(bytes[1]);
+  return r;
+}
+
 std::string gnuplot_quote(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {

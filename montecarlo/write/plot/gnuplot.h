@@ -25,6 +25,22 @@ std::string gnuplot_missing_message();
 /// removed in every case.
 std::vector<std::string> render_gnuplot(const std::string& script, const std::vector<std::string>& outputs);
 
+/// A figure's script: a head comment, the data blocks and settings, then
+/// `body` drawn twice, to `<stem>.svg` and `<stem>.png` (width × height px).
+struct FigureScript {
+  std::string stem, title;
+  std::string data_and_settings, body;
+  int width = 1120, height = 800;
+};
+std::string figure_script(const FigureScript& figure);
+
+/// A figure's script and what gnuplot drew from it.
+struct RenderedFigure {
+  std::string script, svg, png;
+};
+/// Runs `script` (from figure_script) and returns it with its SVG and PNG.
+RenderedFigure render_figure(const std::string& stem, std::string script);
+
 /// A string as a gnuplot string literal: double-quoted with \ and " escaped
 /// and line breaks as \n.
 std::string gnuplot_quote(const std::string& text);

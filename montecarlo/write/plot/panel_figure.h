@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "montecarlo/write/plot/gnuplot.h"
+
 namespace insmc::mc {
 
 /// A point drawn with its interval (the report times' RMS).
@@ -21,6 +23,7 @@ struct PlotLine {
   std::vector<PlotMark> marks;
   int colour = 0;              ///< palette index (panel_figure.cpp)
   bool dashed = false;
+  bool thin = false;           ///< a reference (e.g. the covariance prediction): 1 px, dotted
 };
 
 struct PlotPanel {
@@ -35,16 +38,14 @@ struct PanelFigure {
   std::vector<PlotPanel> panels;
   std::vector<double> marked_x;    ///< dotted verticals, labelled with their value
   bool log_x = false;
+  bool log_y = false;              ///< else linear from 0
   int columns = 2;                 ///< panels per row (fewer when there are fewer panels)
 };
 
 /// The gnuplot script of `figure` (gnuplot 5.4).
 std::string panel_figure_script(const PanelFigure& figure);
 
-/// The script rendered: {svg bytes, png bytes}.
-struct RenderedFigure {
-  std::string script, svg, png;
-};
+/// The script rendered by gnuplot.
 RenderedFigure render_panel_figure(const PanelFigure& figure);
 
 }  // namespace insmc::mc
