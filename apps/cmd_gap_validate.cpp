@@ -6,6 +6,7 @@
 
 #include "apps/cli_common.h"
 #include "apps/output_paths.h"
+#include "montecarlo/write/plot/matrix_figure.h"
 #include "apps/progress.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
@@ -17,7 +18,7 @@ namespace insmc::app {
 int run_gap_validate(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("quick", "the CI subset (10-run files, magnitude 30x the defaults, 4 null files)")(
-      "out", po::value<std::string>(), "folder for validation.md, confusion.md/csv, validation.json")(
+      "out", po::value<std::string>(), "folder for validation.md, confusion.md/csv, confusion.svg/png/gp (drawn by gnuplot), validation.json")(
       "seed", po::value<std::uint64_t>()->default_value(1000), "seed of the first simulated file")(
       "null-files", po::value<int>(), "null files (default 100, quick 4)")(
       "seeds", po::value<int>(), "files per effect and magnitude (default 3, quick 1)")(
@@ -54,6 +55,7 @@ int run_gap_validate(const Args& args) {
     }
   }
   std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "gap-validate");
+  require_gnuplot(*vm, out);
   mc::ValidationResult r;
   {
     Progress progress(0, "files");
@@ -62,7 +64,18 @@ int run_gap_validate(const Args& args) {
     r = mc::validate_diagnosis(options);
   }
   const auto files = mc::validation_report(r, options);
-  if (out) out->write(OutputFiles(files.begin(), files.end()));
+  if (out) {
+    OutputFiles written(files.begin(), files.end());
+    const mc::Confusion m = mc::confusion_of(r);
+    const mc::RenderedFigure figure = mc::render_matrix_figure(
+        {"confusion", fmt::format("gap-validate: the top candidate of each file against the effect it holds ({} files)",
+                                  r.cases.size()),
+         "reported top candidate", "true effect", m.rows, m.columns, m.counts});
+    written.emplace_back("confusion.gp", figure.script);
+    written.emplace_back("confusion.svg", figure.svg);
+    written.emplace_back("confusion.png", figure.png);
+    out->write(written);
+  }
   fmt::print("{}", files.front().second);
   for (const std::string& f : r.failures) fmt::print(stderr, "gap-validate: target not met: {}\n", f);
   return r.failures.empty() ? 0 : 1;

@@ -2,9 +2,11 @@
 // run leaves it out; the diagnosis it drives is covered there by gap_test).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "tests/cli/run_program.h"
+#include "tests/cli/svg_figure.h"
 
 namespace insmc::testing {
 namespace {
@@ -48,6 +50,25 @@ TEST(GapValidate, QuickSubsetScoresEveryEffectBlind) {
   const std::string full_row = sway_row(read_file(std::filesystem::path(out) / "validation.md"));
   EXPECT_FALSE(full_row.empty());
   EXPECT_EQ(sway_row(read_file(std::filesystem::path(one) / "validation.md")), full_row);
+  // The confusion matrix drawn: every cell inside the frame, at least one
+  // square (the sway row's; the only row of this run).
+  const std::string svg = read_file(std::filesystem::path(one) / "confusion.svg");
+  // The plot's frame and the colour box's: the plot is the wider.
+  std::vector<Frame> frames = frames_of(svg);
+  ASSERT_EQ(frames.size(), 2u);
+  std::sort(frames.begin(), frames.end(), [](const Frame& a, const Frame& b) { return a.x1 - a.x0 > b.x1 - b.x0; });
+  std::size_t corners = 0;
+  for (const Group& g : groups_of(svg))
+    for (const auto& path : g.paths)
+      for (const auto& [x, y] : path) {
+        EXPECT_TRUE(x >= frames[0].x0 - 0.5 && x <= frames[0].x1 + 0.5 && y >= frames[0].y0 - 0.5 &&
+                    y <= frames[0].y1 + 0.5)
+            << g.id << " " << x << "," << y;
+        ++corners;
+      }
+  EXPECT_GE(corners, 4u);
+  EXPECT_TRUE(has(svg, "sway"));
+  EXPECT_EQ(read_file(std::filesystem::path(one) / "confusion.png").substr(1, 3), "PNG");
   const std::string one_json = read_file(std::filesystem::path(one) / "validation.json");
   EXPECT_TRUE(has(one_json, "\"sway\"")) << one_json;
   EXPECT_FALSE(has(one_json, "\"quantization\"")) << one_json;  // scored: only what was asked

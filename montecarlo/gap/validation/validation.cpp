@@ -254,24 +254,33 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
   return result;
 }
 
-std::vector<std::pair<std::string, std::string>> validation_report(const ValidationResult& r,
-                                                                   const ValidationOptions& options) {
-  // Confusion: true effect (rows) × reported top (columns).
-  std::vector<std::string> columns;
+Confusion confusion_of(const ValidationResult& r) {
+  Confusion m;
   std::map<std::string, std::map<std::string, int>> counts;
   for (const ValidationCase& c : r.cases) {
     const std::string top = c.significant ? (c.top.empty() ? "(not ranked)" : c.top) : "no gap";
-    if (std::find(columns.begin(), columns.end(), top) == columns.end()) columns.push_back(top);
+    if (std::find(m.columns.begin(), m.columns.end(), top) == m.columns.end()) m.columns.push_back(top);
     counts[c.effect][top]++;
   }
+  m.rows = {"none"};
+  for (const EffectInfo& info : effect_registry()) m.rows.emplace_back(info.name);
+  for (const std::string& row : m.rows) {
+    m.counts.emplace_back();
+    for (const std::string& col : m.columns) m.counts.back().push_back(counts[row][col]);
+  }
+  return m;
+}
+
+std::vector<std::pair<std::string, std::string>> validation_report(const ValidationResult& r,
+                                                                   const ValidationOptions& options) {
+  // Confusion: true effect (rows) × reported top (columns).
+  const Confusion m = confusion_of(r);
   std::vector<std::string> header = {"true effect"};
-  header.insert(header.end(), columns.begin(), columns.end());
+  header.insert(header.end(), m.columns.begin(), m.columns.end());
   Table confusion(header);
-  std::vector<std::string> rows = {"none"};
-  for (const EffectInfo& info : effect_registry()) rows.emplace_back(info.name);
-  for (const std::string& row : rows) {
-    std::vector<std::string> cells = {row};
-    for (const std::string& col : columns) cells.push_back(std::to_string(counts[row][col]));
+  for (std::size_t row = 0; row < m.rows.size(); ++row) {
+    std::vector<std::string> cells = {m.rows[row]};
+    for (const int n : m.counts[row]) cells.push_back(std::to_string(n));
     confusion.add_row(cells);
   }
   Table scores({"effect", "detectable at (x default)", "detected files", "identified", "rate", "median shrink",

@@ -73,6 +73,15 @@ struct ValidationResult {
 
 ValidationResult validate_diagnosis(const ValidationOptions& options);
 
+/// The confusion matrix: files per true effect (rows: "none", then the
+/// registry's effects) and reported top (columns, first seen first: an
+/// effect, "(not ranked)" or "no gap").
+struct Confusion {
+  std::vector<std::string> rows, columns;
+  std::vector<std::vector<int>> counts;  ///< [row][column]
+};
+Confusion confusion_of(const ValidationResult& r);
+
 /// validation.md, confusion.md, confusion.csv, validation.json.
 std::vector<std::pair<std::string, std::string>> validation_report(const ValidationResult& r,
                                                                    const ValidationOptions& options);
