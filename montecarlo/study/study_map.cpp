@@ -67,6 +67,7 @@ StudyMap::StudyMap(const StudyConfig& c, const StudyLayout& l) : config_(&c), la
       mean_.push_back(mo.m);
       rms_.push_back(std::sqrt(mo.m * mo.m + mo.v));
       var_r2_.push_back(var_sq(row, mo));
+      horizontal_.emplace_back();
     } else {
       const Moments n = moments(base + 3), e = moments(base + 4);
       const auto a = s.col(base + 3), b = s.col(base + 4);
@@ -75,6 +76,10 @@ StudyMap::StudyMap(const StudyConfig& c, const StudyLayout& l) : config_(&c), la
       mean_.push_back(std::hypot(n.m, e.m));  // the value when the spread is zero
       rms_.push_back(std::sqrt(n.m * n.m + e.m * e.m + n.v + e.v));
       var_r2_.push_back(var_sq(base + 3, n) + var_sq(base + 4, e) + 2 * cov_sq);
+      HorizontalMoments h;
+      h.mean = {n.m, e.m};
+      h.covariance << n.v, cov, cov, e.v;
+      horizontal_.push_back(h);
     }
   }
 }

@@ -17,6 +17,13 @@ namespace insmc::mc {
 
 inline constexpr int kRowsPerMap = 5;  // x, y, z, north, east
 
+/// The exact first and second moments of a horizontal output's (north,
+/// east) error: its mean and 2×2 covariance.
+struct HorizontalMoments {
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
+};
+
 class StudyMap {
  public:
   StudyMap(const StudyConfig& config, const StudyLayout& layout);
@@ -40,6 +47,8 @@ class StudyMap {
   const std::vector<double>& predicted_mean() const { return mean_; }
   const std::vector<double>& predicted_rms() const { return rms_; }
   const std::vector<double>& predicted_var_r2() const { return var_r2_; }
+  /// Of a horizontal output (zero for the others).
+  const HorizontalMoments& predicted_horizontal(std::size_t output) const { return horizontal_[output]; }
 
   /// Error budget per output: named sources and their shares of E[r²]
   /// (catalogue parameters, realignment draws, measurement noises, and
@@ -59,6 +68,7 @@ class StudyMap {
   std::vector<bool> x_only_;
   std::vector<Eigen::MatrixXd> input_map_t_;  // W × rows: (G^T M^T) per system
   std::vector<double> mean_, rms_, var_r2_, ready_time_s_;
+  std::vector<HorizontalMoments> horizontal_;
 };
 
 }  // namespace insmc::mc

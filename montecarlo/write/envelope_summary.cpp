@@ -20,6 +20,11 @@ std::string cell(const HorizontalPoint& p) {
   return p.half_width ? format_with_interval(p.rms, *p.half_width) : format_significant(p.rms, kExactFigures);
 }
 
+/// An accuracy figure: with its interval (Monte Carlo), or exact (half-width 0: the covariance level).
+std::string figure(double value, double half) {
+  return half > 0 ? format_with_interval(value, half) : format_significant(value, kExactFigures);
+}
+
 /// The caption's width on a terminal (the table below it is as wide as its columns).
 constexpr std::size_t kSummaryWidth = 100;
 
@@ -89,9 +94,9 @@ std::string render_horizontal_summary(const std::vector<HorizontalPoint>& points
     if (accuracy_t) {
       const HorizontalPoint* p = at(*accuracy_t);
       const std::optional<AccuracyFigures> a = p ? p->accuracy : std::nullopt;
-      cells.push_back(a ? format_with_interval(a->cep50, a->cep50_half) : "");
-      cells.push_back(a ? format_with_interval(a->drms2, a->drms2_half) : "");
-      cells.push_back(a ? format_with_interval(a->rate_nmiph, a->rate_half_nmiph) : "");
+      cells.push_back(a ? figure(a->cep50, a->cep50_half) : "");
+      cells.push_back(a ? figure(a->drms2, a->drms2_half) : "");
+      cells.push_back(a ? figure(a->rate_nmiph, a->rate_half_nmiph) : "");
     }
     cells.push_back(format_number(r.first->ready_min));
     table.add_row(std::move(cells));

@@ -9,8 +9,9 @@
 
 namespace insmc::mc {
 
-/// The accuracy metrics of one horizontal output (Monte Carlo only), in the
-/// printed unit, with the half-widths of their confidence intervals.
+/// The accuracy metrics of one horizontal output, in the printed unit, with
+/// the half-widths of their confidence intervals (0 for the covariance
+/// level's exact values).
 struct AccuracyFigures {
   double cep50 = 0, cep50_half = 0, drms2 = 0, drms2_half = 0;
   double rate_nmiph = 0, rate_half_nmiph = 0;  ///< CEP50 / t in n.mi./h

@@ -9,6 +9,7 @@
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
 #include "montecarlo/write/accuracy_cells.h"
+#include "montecarlo/aggregate/gaussian_cep.h"
 #include "montecarlo/write/budget_plot.h"
 #include "montecarlo/write/csv.h"
 #include "montecarlo/write/envelope_summary.h"
@@ -91,6 +92,24 @@ AccuracyFigures figures_of(const HorizontalAccuracy& a, double k) {
   const auto half = [](const QuantileEstimate& e) { return 0.5 * (e.hi - e.lo); };
   return {k * a.cep50_m.value, k * half(a.cep50_m), k * a.drms2_m.value, k * half(a.drms2_m),
           mps_to_nmiph(a.radial_rate_mps.value), mps_to_nmiph(half(a.radial_rate_mps))};
+}
+
+/// The accuracy metrics of the covariance level: 2DRMS = 2·RMS exactly; CEP50
+/// and CEP95 of the Gaussian with the output's exact mean and covariance
+/// (gaussian_cep.h); the radial rate CEP50/t (none at t = 0).
+struct CovarianceAccuracy {
+  double cep50_m = 0, cep95_m = 0, drms2_m = 0;
+  std::optional<double> rate_nmiph;
+};
+
+CovarianceAccuracy covariance_accuracy(const StudyMap& map, std::size_t output, double t_s) {
+  const HorizontalMoments& h = map.predicted_horizontal(output);
+  CovarianceAccuracy a;
+  a.cep50_m = gaussian_cep(h.mean, h.covariance, 0.5);
+  a.cep95_m = gaussian_cep(h.mean, h.covariance, 0.95);
+  a.drms2_m = 2 * map.predicted_rms()[output];
+  if (t_s > 0) a.rate_nmiph = mps_to_nmiph(a.cep50_m / t_s);
+  return a;
 }
 
 }  // namespace
@@ -186,7 +205,9 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
 CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, const StudyMap& map, LengthUnit unit) {
   const double k = length_factor(unit);
   const std::string rms_col = fmt::format("rms_{}", length_suffix(unit));
-  Table cov({"scheme", "system", "axis", "t_min", rms_col}), cov_grid({"scheme", "system", "axis", "t_min", rms_col});
+  const std::string u = length_suffix(unit);
+  Table cov({"scheme", "system", "axis", "t_min", rms_col, "cep50_" + u, "cep95_" + u, "drms2_" + u, "radial_rate_nmiph"});
+  Table cov_grid({"scheme", "system", "axis", "t_min", rms_col});
   Table budget({"scheme", "system", "axis", "t_min", "parameter", "variance_share"});
   const std::vector<std::string> sources = map.budget_sources();
   const std::vector<std::vector<double>> shares = map.budget_shares();
@@ -203,17 +224,29 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
     row.push_back(format_number(k * map.predicted_rms()[o]));
     if (l.is_grid_time[spec.time_index]) cov_grid.add_row(row);
     if (!l.is_report_time[spec.time_index]) continue;
-    cov.add_row(row);
-    if (spec.axis == Axis::kHorizontal)
-      horizontal.push_back({key[0], std::string(clock_of(spec.scheme)), system_number(spec.system), t / 60.0,
-                            k * map.predicted_rms()[o], std::nullopt,
-                            map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0, std::nullopt});
     Json j = Json::object();
     j["scheme"] = key[0];
     j["system"] = system_number(spec.system);
     j["axis"] = key[2];
     j["t_min"] = t / 60.0;
     j["rms_m"] = map.predicted_rms()[o];
+    if (spec.axis == Axis::kHorizontal) {
+      const CovarianceAccuracy a = covariance_accuracy(map, o, t);
+      for (const double v : {k * a.cep50_m, k * a.cep95_m, k * a.drms2_m}) row.push_back(format_number(v));
+      row.push_back(a.rate_nmiph ? format_number(*a.rate_nmiph) : "");
+      j["cep50_m"] = a.cep50_m;
+      j["cep95_m"] = a.cep95_m;
+      j["drms2_m"] = a.drms2_m;
+      j["radial_rate_nmiph"] = a.rate_nmiph ? Json(*a.rate_nmiph) : Json();
+      // Exact values: no interval (the RMS and 2DRMS exact, the CEP exact for the Gaussian).
+      horizontal.push_back({key[0], std::string(clock_of(spec.scheme)), system_number(spec.system), t / 60.0,
+                            k * map.predicted_rms()[o], std::nullopt,
+                            map.ready_time_s(scheme_index(c, spec.scheme)) / 60.0,
+                            AccuracyFigures{k * a.cep50_m, 0, k * a.drms2_m, 0, a.rate_nmiph.value_or(0), 0}});
+    } else {
+      row.insert(row.end(), 4, "");
+    }
+    cov.add_row(row);
     f.covariance_json.push_back(j);
     for (std::size_t p = 0; p < sources.size(); ++p) {
       if (shares[o][p] <= 0) continue;
@@ -232,7 +265,9 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
                                 render_markdown(cov));
   f.summary_text = render_horizontal_summary(
       horizontal, fmt::format("Horizontal RMS position error [{}], exact for the linear model, at t minutes on each "
-                              "scheme's clock; ready: minutes from the first switch-over until the vehicle may fly.",
+                              "scheme's clock; 2DRMS (2·RMS) exact; CEP50 (median radial error) and its rate "
+                              "CEP50/t of a Gaussian with the exact mean and covariance; ready: minutes from the first "
+                              "switch-over until the vehicle may fly.",
                               length_suffix(unit)));
   return f;
 }

@@ -258,7 +258,23 @@ TEST(Cli, CovarianceWritesRmsAndABudgetSummingToOne) {
   const auto r = run_insmc("covariance --out " + dir.str());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string cov = read_file(dir.path() / "covariance.csv");
-  EXPECT_EQ(cov.substr(0, cov.find('\n')), "scheme,system,axis,t_min,rms_m");
+  EXPECT_EQ(cov.substr(0, cov.find('\n')), "scheme,system,axis,t_min,rms_m,cep50_m,cep95_m,drms2_m,radial_rate_nmiph");
+  // A horizontal row: 2DRMS = 2·RMS exactly, CEP50 < CEP95, the rate CEP50/t.
+  const std::size_t h = cov.find("\nnone,1,horizontal,84,");
+  ASSERT_NE(h, std::string::npos) << cov;
+  std::vector<double> v;
+  std::string line = cov.substr(h + 1, cov.find('\n', h + 1) - h - 1);
+  for (std::size_t at = 0, i = 0; at != std::string::npos; ++i) {
+    const std::size_t next = line.find(',', at);
+    if (i >= 3) v.push_back(std::stod(line.substr(at, next == std::string::npos ? next : next - at)));
+    at = next == std::string::npos ? next : next + 1;
+  }
+  ASSERT_EQ(v.size(), 6u) << line;  // t_min, rms, cep50, cep95, drms2, rate
+  EXPECT_NEAR(v[4], 2 * v[1], 1e-8 * v[4]);
+  EXPECT_LT(v[2], v[3]);
+  EXPECT_NEAR(v[5], v[2] / (84 * 60.0) * 3600 / 1852, 1e-7 * v[5]);  // 9 significant digits written
+  EXPECT_NE(cov.find("\nnone,1,x,84,"), std::string::npos);  // other axes keep empty accuracy cells
+  EXPECT_NE(cov.find(",,,,\n"), std::string::npos);
   const std::string budget = read_file(dir.path() / "budget.csv");
   EXPECT_EQ(budget.substr(0, budget.find('\n')), "scheme,system,axis,t_min,parameter,variance_share");
   // stdout: the horizontal RMS per scheme × system; --full: covariance.md.
