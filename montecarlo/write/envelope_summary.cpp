@@ -4,6 +4,7 @@
 #include <optional>
 #include <string_view>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "montecarlo/write/csv.h"
 #include "montecarlo/write/interval_format.h"
@@ -23,6 +24,12 @@ std::string cell(const HorizontalPoint& p) {
 /// An accuracy figure: with its interval (Monte Carlo), or exact (half-width 0: the covariance level).
 std::string figure(double value, double half) {
   return half > 0 ? format_with_interval(value, half) : format_significant(value, kExactFigures);
+}
+
+/// Where t = 0 is, for a clock_of() name.
+std::string clock_phrase(const std::string& clock) {
+  return clock == "switchover" ? "switch-over" : clock == "realignment" ? "new switch-over"
+                                             : clock == "test_end"   ? "test end" : clock;
 }
 
 /// The caption's width on a terminal (the table below it is as wide as its columns).
@@ -70,17 +77,30 @@ std::string render_horizontal_summary(const std::vector<HorizontalPoint>& points
   std::optional<double> accuracy_t;
   for (const HorizontalPoint& p : points)
     if (p.accuracy && (!accuracy_t || p.t_min > *accuracy_t)) accuracy_t = p.t_min;
-  std::vector<std::string> header = {"scheme", "system", "clock"};
+  // Each scheme's clock goes in a line under the caption, not in a column:
+  // the table stays near a terminal's width.
+  std::vector<std::pair<std::string, std::vector<std::string>>> clocks;  // clock, its schemes
+  for (const Row& r : rows) {
+    auto c = std::find_if(clocks.begin(), clocks.end(), [&](const auto& e) { return e.first == r.first->clock; });
+    if (c == clocks.end()) c = clocks.insert(clocks.end(), {r.first->clock, {}});
+    if (std::find(c->second.begin(), c->second.end(), r.first->scheme) == c->second.end())
+      c->second.push_back(r.first->scheme);
+  }
+  std::string clock_line = "t = 0:";
+  for (std::size_t i = 0; i < clocks.size(); ++i)
+    clock_line += fmt::format("{} {} ({})", i ? ";" : "", clock_phrase(clocks[i].first),
+                              fmt::format("{}", fmt::join(clocks[i].second, ", ")));
+  std::vector<std::string> header = {"scheme", "sys"};
   for (double t : times) header.push_back(fmt::format("{} min", format_number(t)));
   if (accuracy_t) {
-    header.push_back(fmt::format("CEP50 {} min", format_number(*accuracy_t)));
-    header.push_back(fmt::format("2DRMS {} min", format_number(*accuracy_t)));
-    header.emplace_back("CEP50/t [n.mi./h]");
+    header.push_back(fmt::format("CEP50 {}", format_number(*accuracy_t)));
+    header.push_back(fmt::format("2DRMS {}", format_number(*accuracy_t)));
+    header.emplace_back("CEP/t nmi/h");
   }
-  header.emplace_back("ready [min]");
+  header.emplace_back("ready");
   Table table(header);
   for (Row& r : rows) {
-    std::vector<std::string> cells = {r.first->scheme, std::to_string(r.first->system), r.first->clock};
+    std::vector<std::string> cells = {r.first->scheme, std::to_string(r.first->system)};
     const auto at = [&](double t) {
       const auto p = std::find_if(points.begin(), points.end(), [&](const HorizontalPoint& q) {
         return q.scheme == r.first->scheme && q.system == r.first->system && q.t_min == t;
@@ -101,7 +121,8 @@ std::string render_horizontal_summary(const std::vector<HorizontalPoint>& points
     cells.push_back(format_number(r.first->ready_min));
     table.add_row(std::move(cells));
   }
-  return fmt::format("{}\n\n{}", wrap_words(caption, kSummaryWidth), render_markdown(table));
+  return fmt::format("{}\n{}\n\n{}", wrap_words(caption, kSummaryWidth), wrap_words(clock_line + ".", kSummaryWidth),
+                     render_markdown(table));
 }
 
 }  // namespace insmc::mc

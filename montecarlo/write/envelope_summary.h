@@ -28,10 +28,11 @@ struct HorizontalPoint {
   std::optional<AccuracyFigures> accuracy;
 };
 
-/// A caption line, then a Markdown table: scheme | system | clock | one
-/// "T min" column per report time | then, when the points carry accuracy
-/// metrics, "CEP50 T min" | "2DRMS T min" | "CEP50/t [n.mi./h]" at the
-/// latest such time T | ready [min]. Rows and columns keep the
+/// The caption, a line naming each scheme's clock (where t = 0 is), then a
+/// Markdown table: scheme | sys | one "T min" column per report time | then,
+/// when the points carry accuracy metrics, "CEP50 T" | "2DRMS T" |
+/// "CEP/t nmi/h" (CEP50/t in n.mi./h) at the latest such time T | ready
+/// (minutes). Rows and columns keep the
 /// order of first appearance in `points`. Values with an interval are
 /// printed "28830 ± 480" (interval_format.h), exact ones to five
 /// significant figures. `caption` names the quantity and its unit.

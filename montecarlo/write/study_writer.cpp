@@ -185,10 +185,8 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
       format_number(100 * c.confidence), render_markdown(readable));
   f.full_text = render_markdown(full);
   f.summary_text = render_horizontal_summary(
-      horizontal, fmt::format("Horizontal RMS position error [{}] ± half-width of its {}% confidence interval, at "
-                              "t minutes on each scheme's clock; CEP50 (median radial error), 2DRMS (2·RMS) and the "
-                              "CEP50 rate (CEP50/t) from the same samples; ready: minutes from the first switch-over "
-                              "until the vehicle may fly.",
+      horizontal, fmt::format("Horizontal RMS position error [{}] ± half its {}% interval; CEP50 (median radial "
+                              "error), 2DRMS (2·RMS), CEP/t (CEP50 rate) from the samples; ready: minutes to flight.",
                               length_suffix(unit), format_number(100 * c.confidence)));
   plot.stem = "envelope";
   plot.title = fmt::format("Horizontal RMS position error: {} samples at fidelity {} (shaded: {}% interval), "
@@ -264,10 +262,8 @@ CovarianceFiles render_covariance(const StudyConfig& c, const StudyLayout& l, co
                                 to_string(c.fidelity), format_number(c.model.latitude_rad / kDegToRad),
                                 render_markdown(cov));
   f.summary_text = render_horizontal_summary(
-      horizontal, fmt::format("Horizontal RMS position error [{}], exact for the linear model, at t minutes on each "
-                              "scheme's clock; 2DRMS (2·RMS) exact; CEP50 (median radial error) and its rate "
-                              "CEP50/t of a Gaussian with the exact mean and covariance; ready: minutes from the first "
-                              "switch-over until the vehicle may fly.",
+      horizontal, fmt::format("Horizontal RMS position error [{}], exact (linear model); 2DRMS = 2·RMS; CEP50, "
+                              "CEP/t of a Gaussian of the exact mean and covariance; ready: minutes to flight.",
                               length_suffix(unit)));
   return f;
 }

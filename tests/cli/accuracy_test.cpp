@@ -100,7 +100,7 @@ TEST(Accuracy, JsonHasTheMetricsOnHorizontalRowsAndNullElsewhere) {
 TEST(Accuracy, SummaryShowsCep50And2drmsAtTheLastReportTimeAndUnitsNmiWork) {
   const auto r = run_insmc("run --samples 2000 --scheme none,5.2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_TRUE(has(r.out, "| CEP50 84 min | 2DRMS 84 min | CEP50/t [n.mi./h] |")) << r.out;
+  for (const char* column : {" CEP50 84 |", " 2DRMS 84 |", " CEP/t nmi/h |"}) EXPECT_TRUE(has(r.out, column)) << r.out;
   const auto nmi = run_insmc("run --samples 2000 --scheme none --units nmi --format csv");
   ASSERT_EQ(nmi.exit_code, 0) << nmi.err;
   EXPECT_TRUE(has(nmi.out, ",rms_nmi,rms_lo_nmi,")) << nmi.out.substr(0, 300);
