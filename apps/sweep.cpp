@@ -79,6 +79,17 @@ mc::StudyConfig point_config(const mc::StudyConfig& base, const std::vector<Swee
 }
 
 
+/// A sweep column without its SI unit (test_duration_s → test_duration), for
+/// labels that carry the unit the user typed.
+std::string quantity_name(std::string_view column) {
+  for (const std::string_view si : {"_s", "_m", "_mps", "_mps2", "_rad", "_radps", "_si"})
+    if (column.size() > si.size() && column.ends_with(si)) {
+      column.remove_suffix(si.size());
+      break;
+    }
+  return std::string(column);
+}
+
 /// The first swept quantity as the user gave it: when every value carries
 /// the same unit (5min,10min,15min; 1meru,10meru), the numbers in that unit;
 /// otherwise SI. Logarithmic when it spans a factor of 20 or more.
@@ -108,13 +119,7 @@ AxisInUserUnits in_user_units(const SweepAxis& a) {
   }
   if (!given.empty()) {
     out.x = given;
-    std::string_view name = a.column;
-    for (const std::string_view si : {"_s", "_m", "_mps", "_mps2", "_rad", "_radps", "_si"})
-      if (name.size() > si.size() && name.ends_with(si)) {
-        name.remove_suffix(si.size());
-        break;
-      }
-    out.label = fmt::format("{} [{}]", name, common);
+    out.label = fmt::format("{} [{}]", quantity_name(a.column), common);
   }
   const auto [lo, hi] = std::minmax_element(out.x.begin(), out.x.end());
   out.logarithmic = lo != out.x.end() && *lo > 0 && *hi / *lo >= 20;
@@ -244,7 +249,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
         std::string name = fmt::format("system {}", system_number(spec.system));
         std::size_t others = 0;
         for (std::size_t i = 1; i < axes.size(); ++i) {
-          name += fmt::format(", {} {}", axes[i].column, axes[i].texts[idx[i]]);
+          name += fmt::format(", {} {}", quantity_name(axes[i].column), axes[i].texts[idx[i]]);
           others = others * axes[i].texts.size() + idx[i];
         }
         mc::PlotLine* line = nullptr;

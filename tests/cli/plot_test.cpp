@@ -122,7 +122,7 @@ TEST(Plots, AProductSweepDrawsEveryLineInTheUnitsGiven) {
   const std::string svg = read_file(out.path() / "sweep.svg");
   expect_data_inside_frames(svg, 1, 2);  // one scheme; system 1 at two latitudes
   EXPECT_NE(svg.find("test_duration [min]"), std::string::npos);
-  EXPECT_NE(svg.find("system 1, latitude_rad 60deg"), std::string::npos);
+  EXPECT_NE(svg.find("system 1, latitude 60deg"), std::string::npos);
   expect_png(read_file(out.path() / "sweep.png"));
 }
 
