@@ -263,6 +263,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
         line->y.push_back(k * s.rms);
         line->lo.push_back(k * s.rms_lo);
         line->hi.push_back(k * s.rms_hi);
+        line->marks.push_back({x_axis.x[idx[0]], k * s.rms, k * s.rms_lo, k * s.rms_hi});  // the studied points
       }
     }
     point["values_si"] = values;

@@ -77,7 +77,7 @@ std::string panel_figure_script(const PanelFigure& f) {
   script.height += rows * 14 * static_cast<int>((most_lines + 1) / 2);  // the keys' rows
   settings += "set grid xtics ytics mytics linecolor \"#dddddd\"\n";
   // Under the axes, where it hides no data: two entries a row.
-  settings += "set key outside below horizontal maxcols 2 font \",9\"\n";
+  settings += "set key outside below horizontal maxcols 2 font \",9\" height 1\n";
   if (f.log_x) settings += "set logscale x\n";
   // A log y axis from the data; a linear one from 0 with room above the top.
   settings += f.log_y ? "set logscale y\nset format y \"%.0e\"\n"
