@@ -31,7 +31,10 @@ int run_noise(const Args& args) {
       "confidence", po::value<double>()->default_value(0.95, "0.95"), "of every interval, in [0.5, 0.999999]")(
       "first-part", po::value<std::string>()->default_value("1h"),
       "start of each recording tested against the rest (warm-up); at most half the longest recording is used; 0s: no test")(
-      "mask", po::value<std::string>()->default_value("on"), "on: mask disturbances; off: use every sample");
+      "mask", po::value<std::string>()->default_value("on"), "on: mask disturbances; off: use every sample")(
+      "datasheet", po::value<std::vector<std::string>>()->composing(),
+      "a data-sheet value to draw on allan.svg and compare with the fit, repeatable: gyro_arw=0.15degprth, "
+      "gyro_bias_instability=1degph, accel_vrw=0.03mpsprth, accel_bias_instability=50ug");
   add_imu_csv_options(opts);
   const auto vm = parse_args(args, "noise", "--input FILE [--input FILE]... (--rate RATE | --time-column NAME) [options]", opts);
   if (!vm) return 0;
@@ -50,6 +53,9 @@ int run_noise(const Args& args) {
                      "must be 0s (no warm-up test) or lie in [1min, 24h]");
   const std::string mask = (*vm)["mask"].as<std::string>();
   if (mask != "on" && mask != "off") throw InputError("--mask", echo_input(mask), "must be on or off");
+  Datasheet sheet;
+  if (vm->count("datasheet"))
+    for (const std::string& entry : (*vm)["datasheet"].as<std::vector<std::string>>()) parse_datasheet_entry(entry, sheet);
   options.mask = mask == "on";
   const std::string format = (*vm)["format"].as<std::string>();
   if (format != "markdown" && format != "json") throw InputError("--format", echo_input(format), "must be markdown or json");
@@ -71,8 +77,8 @@ int run_noise(const Args& args) {
     progress.update("noise analysis", 0, 1, "");
     analysis = noise::analyse_noise(rec, options);
   }
-  const std::string json = noise_json(rec, analysis, options.confidence).dump(2) + "\n";
-  const auto report = noise_report(rec, analysis, options.confidence);
+  const std::string json = noise_json(rec, analysis, options.confidence, sheet).dump(2) + "\n";
+  const auto report = noise_report(rec, analysis, options.confidence, sheet);
   if (out) {
     OutputFiles files(report.begin(), report.end());
     files.emplace_back("noise.json", json);

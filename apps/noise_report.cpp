@@ -7,7 +7,11 @@
 #include <numbers>
 #include <optional>
 
+#include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
 #include "lib/noise/noise_budget.h"
+#include "lib/units/physical_range.h"
+#include "lib/units/quantity.h"
 #include "lib/units/units.h"
 #include "montecarlo/write/svg_frame.h"
 
@@ -22,6 +26,9 @@ constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c"};
 using noise::equivalent_constant;
 using noise::schuler_period_s;
 using noise::table31_bound_si;
+
+/// The Allan deviation's floor per unit of bias instability: √(2 ln 2 / π) ≈ 0.664 (IEEE Std 952, C.1).
+const double kFlatFactor = std::sqrt(2 * std::numbers::ln2 / std::numbers::pi);
 
 std::string g3(double v) { return fmt::format("{:.3g}", v); }
 
@@ -92,7 +99,37 @@ std::string identifiability(const std::vector<Orientation>& o) {
   return s;
 }
 
-std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence) {
+/// The fitted white noise and bias instability beside the data sheet's:
+/// the ratio, and whether the sheet's value lies inside the fitted interval.
+std::string datasheet_section(const noise::NoiseAnalysis& a, const Datasheet& sheet) {
+  std::string md = "\n## Against the data sheet\n\nThe fitted term (with its interval) beside the value given with "
+                   "--datasheet; \"not selected\" when the fit found the term indistinguishable from zero.\n\n"
+                   "| channel | term | fitted | interval | data sheet | fitted / sheet | sheet inside interval |\n"
+                   "|---|---|---:|---|---:|---:|---|\n";
+  for (const noise::ChannelNoise& ch : a.channels)
+    for (const auto& [term, given] : {std::pair{NoiseTerm::kWhiteRate, sheet.white(ch.kind)},
+                                      std::pair{NoiseTerm::kBiasInstability, sheet.instability(ch.kind)}}) {
+      if (!given) continue;
+      const auto [sheet_value, unit] = spec_value(term, ch.kind, *given);
+      const double f = *given > 0 ? sheet_value / *given : 1.0;
+      const auto fit = std::find_if(ch.fit.terms.begin(), ch.fit.terms.end(),
+                                    [term = term](const noise::TermFit& t) { return t.term == term; });
+      if (fit == ch.fit.terms.end()) {
+        md += fmt::format("| {} | {} | not selected | | {} {} | | |\n", ch.name, noise::term_name(term, ch.kind),
+                          g3(sheet_value), unit);
+        continue;
+      }
+      const bool inside = *given >= fit->lower_si && *given <= fit->upper_si;
+      md += fmt::format("| {} | {} | {} {} | [{}, {}] | {} {} | {} | {} |\n", ch.name, noise::term_name(term, ch.kind),
+                        g3(fit->value_si * f), unit, g3(fit->lower_si * f), g3(fit->upper_si * f), g3(sheet_value), unit,
+                        *given > 0 ? fmt::format("{:.3g}", fit->value_si / *given) : "-",
+                        inside ? "yes" : fit->lower_si > *given ? "**no: worse than the sheet**" : "no: better");
+    }
+  return md;
+}
+
+std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
+                     const Datasheet& sheet) {
   std::string md = "# Sensor noise: overlapping Allan deviation and fitted terms\n\n";
   double total_s = 0;
   for (const noise::Segment& r : rec.runs) total_s += static_cast<double>(r.size()) * rec.dt_s;
@@ -120,6 +157,8 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
                                              : fmt::format("{:.2g} (within)", std::sqrt(rss) / bound),
                       name);
   }
+
+  if (!sheet.empty()) md += datasheet_section(a, sheet);
 
   md += "\n## Fitted terms\n\n| channel | term | value | interval | unit | value (SI) | unit (SI) |\n|---|---|---:|---|---|---:|---|\n";
   for (const noise::ChannelNoise& ch : a.channels) {
@@ -210,7 +249,7 @@ std::string terms_csv(const noise::NoiseAnalysis& a) {
 /// Two log–log panels (gyros, accelerometers): each axis's Allan deviation
 /// with its interval bars, the fitted model (dashed) and Table 3.1's bound
 /// (dotted grey).
-std::string allan_svg(const noise::NoiseAnalysis& a) {
+std::string allan_svg(const noise::NoiseAnalysis& a, const Datasheet& sheet) {
   std::string svg = mc::open_svg(760, 860, "Overlapping Allan deviation: data with intervals, fitted model dashed");
   for (int panel = 0; panel < 2; ++panel) {
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
@@ -227,6 +266,12 @@ std::string allan_svg(const noise::NoiseAnalysis& a) {
     const noise::SensorKind kind = panel == 0 ? noise::SensorKind::kGyro : noise::SensorKind::kAccelerometer;
     const double bound = std::log10(noise::table31_bound_si(kind));
     y0 = std::min(y0, bound), y1 = std::max(y1, bound);
+    // The data sheet's bias instability floor 0.664 B, inside the frame too.
+    const std::optional<double> sheet_white = sheet.white(kind), sheet_flat = sheet.instability(kind);
+    if (sheet_flat && *sheet_flat > 0) {
+      const double level = std::log10(kFlatFactor * *sheet_flat);
+      y0 = std::min(y0, level), y1 = std::max(y1, level);
+    }
     x0 = std::floor(x0), x1 = std::max(std::ceil(x1), x0 + 1), y0 = std::floor(y0), y1 = std::max(std::ceil(y1), y0 + 1);
     const mc::Frame f{90, 50 + 410.0 * panel, 520, 330, x0, x1, y0, y1};
     svg += mc::decade_grid_svg(f, " s");
@@ -256,6 +301,22 @@ std::string allan_svg(const noise::NoiseAnalysis& a) {
                        "stroke-dasharray=\"2,3\"/><text x=\"{0:.1f}\" y=\"{3:.1f}\" fill=\"#555\">Table 3.1 bound ({4})</text>\n",
                        f.px(x0) + 4, f.px(x1), f.py(bound), f.py(bound) - 4,
                        kind == noise::SensorKind::kGyro ? "10 meru" : "0.1 mg");
+    // The data sheet: its white noise as σ = N/√τ (slope −1/2 across the
+    // frame, clipped) and its bias instability as the floor 0.664 B.
+    if (sheet_white && *sheet_white > 0) {
+      const double n = std::log10(*sheet_white);
+      svg += fmt::format("<line class=\"datasheet\" x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#000\" "
+                         "stroke-dasharray=\"8,3,2,3\"/><text x=\"{:.1f}\" y=\"{:.1f}\">data sheet {}</text>\n",
+                         f.px(x0), f.py(n - 0.5 * x0), f.px(x1), f.py(n - 0.5 * x1), f.px(x0) + 4,
+                         f.py(n - 0.5 * x0) + 14, kind == SensorKind::kGyro ? "ARW" : "VRW");
+    }
+    if (sheet_flat && *sheet_flat > 0) {
+      const double level = f.py(std::log10(kFlatFactor * *sheet_flat));
+      svg += fmt::format("<line class=\"datasheet\" x1=\"{0:.1f}\" y1=\"{2:.1f}\" x2=\"{1:.1f}\" y2=\"{2:.1f}\" stroke=\"#000\" "
+                         "stroke-dasharray=\"8,3,2,3\"/><text x=\"{3:.1f}\" y=\"{4:.1f}\" text-anchor=\"end\">data sheet "
+                         "bias instability (0.664 B)</text>\n",
+                         f.px(x0), f.px(x1), level, f.px(x1) - 4, level - 4);
+    }
     svg += "</g>\n";
     for (int i = 0; i < 3; ++i)
       svg += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"3\"/>"
@@ -357,7 +418,8 @@ std::pair<double, std::string> spec_value(NoiseTerm t, SensorKind kind, double v
   return {v, ""};
 }
 
-mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence) {
+mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
+                    const Datasheet& sheet) {
   mc::Json j = mc::Json::object();
   j["sample_interval_s"] = rec.dt_s;
   j["samples"] = rec.size();
@@ -413,15 +475,54 @@ mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysi
     masked.push_back(std::move(x));
   }
   j["masked"] = std::move(masked);
+  mc::Json given = mc::Json::object();
+  if (sheet.gyro_arw_radprts) given["gyro_arw_radprts"] = *sheet.gyro_arw_radprts;
+  if (sheet.gyro_bias_instability_radps) given["gyro_bias_instability_radps"] = *sheet.gyro_bias_instability_radps;
+  if (sheet.accel_vrw_mpsprts) given["accel_vrw_mpsprts"] = *sheet.accel_vrw_mpsprts;
+  if (sheet.accel_bias_instability_mps2) given["accel_bias_instability_mps2"] = *sheet.accel_bias_instability_mps2;
+  j["datasheet"] = std::move(given);
   return j;
 }
 
+std::optional<double> Datasheet::white(noise::SensorKind kind) const {
+  return kind == SensorKind::kGyro ? gyro_arw_radprts : accel_vrw_mpsprts;
+}
+
+std::optional<double> Datasheet::instability(noise::SensorKind kind) const {
+  return kind == SensorKind::kGyro ? gyro_bias_instability_radps : accel_bias_instability_mps2;
+}
+
+void parse_datasheet_entry(const std::string& text, Datasheet& sheet) {
+  struct Key {
+    const char* name;
+    Dimension dimension;
+    std::optional<double> Datasheet::*slot;
+  };
+  static const Key kKeys[] = {{"gyro_arw", Dimension::kAngleRandomWalk, &Datasheet::gyro_arw_radprts},
+                              {"gyro_bias_instability", Dimension::kAngularRate, &Datasheet::gyro_bias_instability_radps},
+                              {"accel_vrw", Dimension::kVelocityRandomWalk, &Datasheet::accel_vrw_mpsprts},
+                              {"accel_bias_instability", Dimension::kAcceleration, &Datasheet::accel_bias_instability_mps2}};
+  const std::size_t eq = text.find('=');
+  const std::string key = eq == std::string::npos ? text : text.substr(0, eq);
+  for (const Key& k : kKeys) {
+    if (key != k.name) continue;
+    const double v = parse_quantity(text.substr(eq + 1), k.dimension, "--datasheet " + key);
+    require_in_range("--datasheet " + key, v, k.dimension, non_negative_range(k.dimension));
+    sheet.*k.slot = v;
+    return;
+  }
+  throw InputError("--datasheet", echo_input(text),
+                   "must be KEY=VALUE with KEY gyro_arw (e.g. 0.15degprth), gyro_bias_instability (1degph), "
+                   "accel_vrw (0.03mpsprth) or accel_bias_instability (50ug)");
+}
+
 std::vector<std::pair<std::string, std::string>> noise_report(const noise::SensorRecording& rec,
-                                                              const noise::NoiseAnalysis& a, double confidence) {
-  return {{"noise.md", markdown(rec, a, confidence)},
+                                                              const noise::NoiseAnalysis& a, double confidence,
+                                                              const Datasheet& sheet) {
+  return {{"noise.md", markdown(rec, a, confidence, sheet)},
           {"allan.csv", allan_csv(a)},
           {"noise_terms.csv", terms_csv(a)},
-          {"allan.svg", allan_svg(a)},
+          {"allan.svg", allan_svg(a, sheet)},
           {"stationarity.svg", stationarity_svg(rec, a)}};
 }
 

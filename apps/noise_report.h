@@ -3,6 +3,7 @@
 // allan.csv and noise_terms.csv for tables, noise.json for programs,
 // allan.svg and stationarity.svg for the eye. Values in SI and in the units engineers quote
 // (deg/sqrt(h), deg/h, m/s/sqrt(h), ug), beside Table 3.1's bounds.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,13 +13,35 @@
 
 namespace insmc::app {
 
+/// A sensor's data-sheet values (`insmc noise --datasheet KEY=VALUE`), SI;
+/// absent when not given. Drawn on allan.svg (the white noise as its
+/// −1/2 slope N/√τ, the bias instability as its flat floor 0.664 B) and set
+/// against the fitted terms in noise.md and noise.json.
+struct Datasheet {
+  std::optional<double> gyro_arw_radprts, gyro_bias_instability_radps;
+  std::optional<double> accel_vrw_mpsprts, accel_bias_instability_mps2;
+  bool empty() const {
+    return !gyro_arw_radprts && !gyro_bias_instability_radps && !accel_vrw_mpsprts && !accel_bias_instability_mps2;
+  }
+  /// The sensor's white-noise and bias-instability values.
+  std::optional<double> white(noise::SensorKind kind) const;
+  std::optional<double> instability(noise::SensorKind kind) const;
+};
+
+/// Parses one `KEY=VALUE` (gyro_arw=0.15degprth, gyro_bias_instability=1degph,
+/// accel_vrw=0.03mpsprth, accel_bias_instability=50ug) into `sheet`; throws
+/// InputError naming --datasheet, the text and what is allowed.
+void parse_datasheet_entry(const std::string& text, Datasheet& sheet);
+
 /// The value of a fitted term in the units engineers quote: (value, unit).
 std::pair<double, std::string> spec_value(noise::NoiseTerm term, noise::SensorKind kind, double value_si);
 
 /// The files of the report: noise.md first, then allan.csv, noise_terms.csv,
 /// allan.svg, stationarity.svg.
 std::vector<std::pair<std::string, std::string>> noise_report(const noise::SensorRecording& rec,
-                                                              const noise::NoiseAnalysis& a, double confidence);
-mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence);
+                                                              const noise::NoiseAnalysis& a, double confidence,
+                                                              const Datasheet& sheet = {});
+mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
+                    const Datasheet& sheet = {});
 
 }  // namespace insmc::app
