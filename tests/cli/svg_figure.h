@@ -1,9 +1,11 @@
 #pragma once
 // Reading back what gnuplot drew (montecarlo/write/plot/): the panels'
-// frames and each plotted element's coordinates, from the SVG.
+// frames and each plotted element's coordinates, from the SVG. Plain string
+// scanning (std::regex trips GCC 12's -Wmaybe-uninitialized in the
+// sanitizer build).
 #include <algorithm>
 #include <cmath>
-#include <regex>
+#include <cstdlib>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,16 +21,65 @@ struct Group {
   std::vector<std::vector<std::pair<double, double>>> paths;  ///< subpaths, polygons, points
 };
 
+/// The "x,y" pairs of an SVG path or points attribute, split into subpaths
+/// at each M.
+inline std::vector<std::vector<std::pair<double, double>>> subpaths_of(const std::string& coords) {
+  std::vector<std::vector<std::pair<double, double>>> out;
+  std::vector<std::pair<double, double>> path;
+  const char* p = coords.c_str();
+  while (*p) {
+    if (*p == 'M' && !path.empty()) {
+      out.push_back(path);
+      path.clear();
+    }
+    if ((*p >= '0' && *p <= '9') || *p == '-' || *p == '.') {
+      char* end = nullptr;
+      const double x = std::strtod(p, &end);
+      if (end == p || *end != ',') break;
+      const char* y_at = end + 1;
+      const double y = std::strtod(y_at, &end);
+      if (end == y_at) break;
+      path.emplace_back(x, y);
+      p = end;
+      continue;
+    }
+    ++p;
+  }
+  if (!path.empty()) out.push_back(path);
+  return out;
+}
+
+/// The text of attribute `name` (name='...' or name = '...') at or after `from` in `tag`.
+inline std::vector<std::string> attributes(const std::string& text, const std::string& name) {
+  std::vector<std::string> out;
+  for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+    if (at > 0 && text[at - 1] != ' ' && text[at - 1] != '\t') continue;
+    std::size_t q = at + name.size();
+    while (q < text.size() && text[q] == ' ') ++q;
+    if (q >= text.size() || text[q] != '=') continue;
+    ++q;
+    while (q < text.size() && text[q] == ' ') ++q;
+    if (q >= text.size() || text[q] != '\'') continue;
+    const std::size_t end = text.find('\'', q + 1);
+    if (end == std::string::npos) break;
+    out.push_back(text.substr(q + 1, end - q - 1));
+  }
+  return out;
+}
+
 /// The panel frames (the border rectangles, stroke #333333), in drawing order.
 inline std::vector<Frame> frames_of(const std::string& svg) {
-  static const std::regex border(
-      R"(stroke='rgb\( 51,  51,  51\)'\s+d='M([\d.]+),([\d.]+) L([\d.]+),([\d.]+) L([\d.]+),([\d.]+) L([\d.]+),([\d.]+) L[\d.]+,[\d.]+ Z)");
+  const std::string border = "stroke='rgb( 51,  51,  51)'";
   std::vector<Frame> out;
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), border); it != std::sregex_iterator(); ++it) {
-    std::vector<double> v;
-    for (int i = 1; i <= 8; ++i) v.push_back(std::stod((*it)[i]));
-    const Frame f{std::min({v[0], v[2], v[4], v[6]}), std::min({v[1], v[3], v[5], v[7]}),
-                  std::max({v[0], v[2], v[4], v[6]}), std::max({v[1], v[3], v[5], v[7]})};
+  for (std::size_t at = svg.find(border); at != std::string::npos; at = svg.find(border, at + 1)) {
+    const std::string tag = svg.substr(at, svg.find('>', at) - at);
+    const std::vector<std::string> d = attributes(tag, "d");
+    if (d.empty() || d[0].find('Z') == std::string::npos) continue;
+    const auto paths = subpaths_of(d[0]);
+    if (paths.size() != 1 || paths[0].size() != 5) continue;
+    Frame f{1e300, 1e300, -1e300, -1e300};
+    for (const auto& [x, y] : paths[0])
+      f = {std::min(f.x0, x), std::min(f.y0, y), std::max(f.x1, x), std::max(f.y1, y)};
     if (out.empty() || std::abs(out.back().x0 - f.x0) + std::abs(out.back().y0 - f.y0) > 1) out.push_back(f);
   }
   return out;
@@ -37,18 +88,16 @@ inline std::vector<Frame> frames_of(const std::string& svg) {
 /// Each plotted element (gnuplot's <g id="gnuplot_plot_N<panel letter>">)
 /// with the coordinates of its paths, polygons and points.
 inline std::vector<Group> groups_of(const std::string& svg) {
-  static const std::regex open(R"re(<g id="(gnuplot_plot_\d+[a-z]?)" ><title>([^<]*)</title>)re");
-  static const std::regex pair(R"((-?[\d.]+),(-?[\d.]+))");
-  static const std::regex use(R"(<use xlink:href='#gpPt\d+' transform='translate\((-?[\d.]+),(-?[\d.]+)\))");
+  const std::string open = "<g id=\"gnuplot_plot_";
   std::vector<Group> out;
-  std::vector<std::size_t> starts;
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), open); it != std::sregex_iterator(); ++it) {
-    out.push_back({(*it)[1], (*it)[2], {}});
-    starts.push_back(static_cast<std::size_t>(it->position()));
-  }
-  for (std::size_t g = 0; g < out.size(); ++g) {
+  for (std::size_t start = svg.find(open); start != std::string::npos; start = svg.find(open, start + 1)) {
+    Group g;
+    const std::size_t id_at = start + 7, id_end = svg.find('"', id_at);
+    g.id = svg.substr(id_at, id_end - id_at);
+    const std::size_t title_at = svg.find("<title>", id_end), title_end = svg.find("</title>", title_at);
+    if (title_at != std::string::npos && title_end != std::string::npos) g.title = svg.substr(title_at + 7, title_end - title_at - 7);
     // The group's own text: up to the </g> that closes it.
-    std::size_t at = starts[g], depth = 0;
+    std::size_t at = start, depth = 0;
     while (at < svg.size()) {
       const std::size_t open_at = svg.find("<g", at), close_at = svg.find("</g>", at);
       if (close_at == std::string::npos) break;
@@ -60,26 +109,18 @@ inline std::vector<Group> groups_of(const std::string& svg) {
         if (--depth == 0) break;
       }
     }
-    const std::string body = svg.substr(starts[g], at - starts[g]);
-    // Only the drawing attributes: d='...' and points='...' hold coordinates.
-    static const std::regex attr(R"((?:\sd|points)\s*=\s*'([^']*)')");
-    for (auto a = std::sregex_iterator(body.begin(), body.end(), attr); a != std::sregex_iterator(); ++a) {
-      const std::string coords = (*a)[1];
-      // Each subpath ("M ...") apart: the key's sample of a line is one.
-      std::vector<std::pair<double, double>> path;
-      for (auto p = std::sregex_iterator(coords.begin(), coords.end(), pair); p != std::sregex_iterator(); ++p) {
-        const std::size_t pos = static_cast<std::size_t>(p->position());
-        const std::size_t letter = pos == 0 ? std::string::npos : coords.find_last_not_of(" \t\n", pos - 1);
-        if (letter != std::string::npos && coords[letter] == 'M' && !path.empty()) {
-          out[g].paths.push_back(path);
-          path.clear();
-        }
-        path.emplace_back(std::stod((*p)[1]), std::stod((*p)[2]));
-      }
-      if (!path.empty()) out[g].paths.push_back(std::move(path));
+    const std::string body = svg.substr(start, at - start);
+    // Only the drawing attributes hold coordinates: d='...', points='...',
+    // and the translate(x,y) of a point symbol.
+    for (const std::string& name : {std::string("d"), std::string("points")})
+      for (const std::string& coords : attributes(body, name))
+        for (auto& path : subpaths_of(coords)) g.paths.push_back(std::move(path));
+    for (std::size_t u = body.find("<use "); u != std::string::npos; u = body.find("<use ", u + 1)) {
+      const std::size_t t = body.find("translate(", u);
+      if (t == std::string::npos || t > body.find('>', u)) continue;
+      for (auto& path : subpaths_of(body.substr(t + 10, body.find(')', t) - t - 10))) g.paths.push_back(std::move(path));
     }
-    for (auto u = std::sregex_iterator(body.begin(), body.end(), use); u != std::sregex_iterator(); ++u)
-      out[g].paths.push_back({{std::stod((*u)[1]), std::stod((*u)[2])}});
+    out.push_back(std::move(g));
   }
   return out;
 }
