@@ -48,10 +48,8 @@ int run_covariance(const Args& args) {
   const mc::StudyConfig config = read_study_config(*vm, false);
   const StdoutChoice shown = read_stdout_choice(*vm);
   const mc::LengthUnit unit = read_length_unit(*vm);
-  std::optional<OutputFolderOption> out = prepare_output_folder(
-      *vm, "covariance",
-      {"covariance.csv", "covariance_grid.csv", "budget.csv", "budget.gp", "budget.svg", "budget.png", "covariance.md"});
-  require_gnuplot(*vm, out);
+  std::optional<OutputFolderOption> out = prepare_figure_folder(
+      *vm, "covariance", {"covariance.csv", "covariance_grid.csv", "budget.csv", "covariance.md"}, "budget");
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
   const mc::CovarianceFiles files = mc::render_covariance(config, layout, map, unit);
@@ -59,14 +57,12 @@ int run_covariance(const Args& args) {
   json["settings"] = mc::settings_json(config, mc::SettingsOf::kCovariance);
   json["covariance"] = files.covariance_json;
   if (out) {
-    const mc::RenderedFigure budget = mc::render_bar_figure(files.budget_plot);
-    out->write({{"covariance.csv", files.covariance_csv},
-                {"covariance_grid.csv", files.covariance_grid_csv},
-                {"budget.csv", files.budget_csv},
-                {"budget.gp", budget.script},
-                {"budget.svg", budget.svg},
-                {"budget.png", budget.png},
-                {"covariance.md", files.covariance_md}});
+    OutputFiles written{{"covariance.csv", files.covariance_csv},
+                        {"covariance_grid.csv", files.covariance_grid_csv},
+                        {"budget.csv", files.budget_csv},
+                        {"covariance.md", files.covariance_md}};
+    for (auto& f : mc::figure_files("budget", mc::render_bar_figure(files.budget_plot))) written.push_back(std::move(f));
+    out->write(written);
   }
   if (shown.quiet) return 0;
   switch (shown.format) {

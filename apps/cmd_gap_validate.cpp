@@ -54,8 +54,7 @@ int run_gap_validate(const Args& args) {
       options.magnitudes.push_back(m);
     }
   }
-  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "gap-validate");
-  require_gnuplot(*vm, out);
+  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "gap-validate", {}, "confusion");
   mc::ValidationResult r;
   {
     Progress progress(0, "files");
@@ -71,9 +70,7 @@ int run_gap_validate(const Args& args) {
         {"confusion", fmt::format("gap-validate: the top candidate of each file against the effect it holds ({} files)",
                                   r.cases.size()),
          "reported top candidate", "true effect", m.rows, m.columns, m.counts});
-    written.emplace_back("confusion.gp", figure.script);
-    written.emplace_back("confusion.svg", figure.svg);
-    written.emplace_back("confusion.png", figure.png);
+    for (auto& f : mc::figure_files("confusion", figure)) written.push_back(std::move(f));
     out->write(written);
   }
   fmt::print("{}", files.front().second);

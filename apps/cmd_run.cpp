@@ -17,7 +17,6 @@
 #include "apps/output_paths.h"
 #include "apps/ranks.h"
 #include "apps/run_file.h"
-#include "montecarlo/write/plot/gnuplot.h"
 #include "apps/stdout_choice.h"
 #include "apps/study_options.h"
 #include "apps/study_runner.h"
@@ -32,6 +31,7 @@
 #include "lib/compensation/extended_vector.h"
 #include "montecarlo/sampler/sampler.h"
 #include "montecarlo/write/csv.h"
+#include "montecarlo/write/plot/gnuplot.h"
 
 namespace insmc::app {
 namespace {
@@ -268,12 +268,9 @@ int run_command(const Args& args, Ranks& ranks) {
   if (!vm->count("replay")) {
     on_root_input_errors(ranks, [&] {
       const std::vector<std::string> names =
-          sweeps.empty() ? std::vector<std::string>{"envelope.csv", "envelope_grid.csv", "envelope.md", "envelope.gp",
-                                                    "envelope.svg", "envelope.png", "run.json"}
-                         : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.gp", "sweep.svg", "sweep.png",
-                                                    "sweep.json"};
-      out = prepare_output_folder(*vm, "run", names);
-      require_gnuplot(*vm, out);
+          sweeps.empty() ? std::vector<std::string>{"envelope.csv", "envelope_grid.csv", "envelope.md", "run.json"}
+                         : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.json"};
+      out = prepare_figure_folder(*vm, "run", names, sweeps.empty() ? "envelope" : "sweep");
       if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path);
     });
   }
@@ -294,13 +291,9 @@ int run_command(const Args& args, Ranks& ranks) {
     json["settings"] = settings;
     const std::string sweep_json = json.dump();
     if (out) {
-      const mc::RenderedFigure plot = mc::render_panel_figure(files.plot);
-      out->write({{"sweep.csv", files.sweep_csv},
-                  {"sweep.md", files.summary_md},
-                  {"sweep.gp", plot.script},
-                  {"sweep.svg", plot.svg},
-                  {"sweep.png", plot.png},
-                  {"sweep.json", sweep_json}});
+      OutputFiles written{{"sweep.csv", files.sweep_csv}, {"sweep.md", files.summary_md}, {"sweep.json", sweep_json}};
+      for (auto& f : mc::figure_files("sweep", mc::render_panel_figure(files.plot))) written.push_back(std::move(f));
+      out->write(written);
     }
     if (!shown.quiet)
       fmt::print("{}", shown.format == OutputFormat::kCsv    ? files.sweep_csv
@@ -391,14 +384,13 @@ int run_command(const Args& args, Ranks& ranks) {
   const std::string run_json = run.dump();
 
   if (out) {
-    const mc::RenderedFigure plot = mc::render_panel_figure(files.envelope_plot);
-    out->write({{"envelope.csv", files.envelope_csv},
-                {"envelope_grid.csv", files.envelope_grid_csv},
-                {"envelope.md", files.envelope_md},
-                {"envelope.gp", plot.script},
-                {"envelope.svg", plot.svg},
-                {"envelope.png", plot.png},
-                {"run.json", run_json}});
+    OutputFiles written{{"envelope.csv", files.envelope_csv},
+                        {"envelope_grid.csv", files.envelope_grid_csv},
+                        {"envelope.md", files.envelope_md},
+                        {"run.json", run_json}};
+    for (auto& f : mc::figure_files("envelope", mc::render_panel_figure(files.envelope_plot)))
+      written.push_back(std::move(f));
+    out->write(written);
   }
   if (shown.quiet) return 0;
   switch (shown.format) {

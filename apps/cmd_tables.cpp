@@ -66,9 +66,8 @@ mc::PanelFigure figure_3_2(const std::vector<tables::TableCell>& cells, tables::
     if (c.table != "fig3.2") continue;
     if (panel.lines.empty() || panel.lines.back().name != c.row)
       panel.lines.push_back({c.row, {}, {}, {}, {}, {}, static_cast<int>(panel.lines.size()), false, false});
-    const double t_min = std::strtod(c.column.c_str(), nullptr);  // "42 min"
-    if (std::abs(c.computed) > 0) {  // the log axis has no 0 (every term is 0 at t = 0)
-      panel.lines.back().x.push_back(t_min);
+    if (c.time_min && std::abs(c.computed) > 0) {  // the log axis has no 0 (every term is 0 at t = 0)
+      panel.lines.back().x.push_back(*c.time_min);
       panel.lines.back().y.push_back(std::abs(c.computed));
     }
   }
@@ -95,18 +94,15 @@ int run_tables(const Args& args) {
       tables::parse_table_convention((*vm)["convention"].as<std::string>(), "--convention");
   const ModelOptions model = read_model_options(*vm, true);
   std::optional<OutputFolderOption> out =
-      prepare_output_folder(*vm, "tables", {"tables.md", "tables.csv", "fig3_2.gp", "fig3_2.svg", "fig3_2.png"});
-  require_gnuplot(*vm, out);
+      prepare_figure_folder(*vm, "tables", {"tables.md", "tables.csv"}, "fig3_2");
   const std::vector<tables::TableCell> cells = tables::compute_tables(model, conv);
   const std::string csv = mc::render_csv(cells_table(cells, true));
   const std::string md = render_markdown_report(cells, conv);
   if (out) {
-    const mc::RenderedFigure figure = mc::render_panel_figure(figure_3_2(cells, conv));
-    out->write({{"tables.md", md},
-                {"tables.csv", csv},
-                {"fig3_2.gp", figure.script},
-                {"fig3_2.svg", figure.svg},
-                {"fig3_2.png", figure.png}});
+    OutputFiles written{{"tables.md", md}, {"tables.csv", csv}};
+    for (auto& f : mc::figure_files("fig3_2", mc::render_panel_figure(figure_3_2(cells, conv))))
+      written.push_back(std::move(f));
+    out->write(written);
   }
   fmt::print("{}", format == OutputFormat::kCsv ? csv : md);
   return 0;

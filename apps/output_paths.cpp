@@ -62,8 +62,13 @@ void OutputFileOption::write(std::string_view contents) const {
   as_input_errors(option_, text_, [&] { file_->write(contents); });
 }
 
-void require_gnuplot(const po::variables_map& vm, const std::optional<OutputFolderOption>& out) {
+std::optional<OutputFolderOption> prepare_figure_folder(const po::variables_map& vm, const std::string& command,
+                                                        std::vector<std::string> other_files,
+                                                        const std::string& figure_stem) {
+  for (std::string& name : mc::figure_file_names(figure_stem)) other_files.push_back(std::move(name));
+  std::optional<OutputFolderOption> out = prepare_output_folder(vm, command, other_files);
   if (out && !mc::gnuplot_available()) throw InputError("--out", vm["out"].as<std::string>(), mc::gnuplot_missing_message());
+  return out;
 }
 
 }  // namespace insmc::app

@@ -34,9 +34,12 @@ class OutputFolderOption {
 std::optional<OutputFolderOption> prepare_output_folder(const po::variables_map& vm, const std::string& command,
                                                         const std::vector<std::string>& expected_files = {});
 
-/// For a folder whose files include plots: gnuplot must be there, or the
-/// command stops now (exit 2, naming the package), before any work.
-void require_gnuplot(const po::variables_map& vm, const std::optional<OutputFolderOption>& out);
+/// The same for a set that also holds the figure `figure_stem` (.gp, .svg,
+/// .png): gnuplot must be there, or the command stops now (exit 2, naming
+/// the package), before any work.
+std::optional<OutputFolderOption> prepare_figure_folder(const po::variables_map& vm, const std::string& command,
+                                                        std::vector<std::string> other_files,
+                                                        const std::string& figure_stem);
 
 /// One output file (`--out FILE`, `--checkpoint FILE`), checked and locked.
 class OutputFileOption {

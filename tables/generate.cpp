@@ -678,6 +678,7 @@ std::vector<TableCell> run(const ModelOptions& options, TableConvention conventi
       cell.table = "fig3.2";
       cell.row = c.row;
       cell.column = fmt::format("{:g} min", m);
+      cell.time_min = m;
       cell.unit = c.unit;
       cell.computed = ev.value(spec, none, m * kMinToS);
       out.push_back(std::move(cell));

@@ -13,6 +13,7 @@ struct TableCell {
   /// of them (e.g. "2 | ω_doy, ω_doz | U4 [ω_doy, sys 2]").
   std::string row;
   std::string column;  ///< as printed, e.g. "10.5 min", "bound"
+  std::optional<double> time_min;  ///< the column's time for fig3.2 (its x axis); absent elsewhere
   std::string unit;    ///< the printed unit, e.g. "ft/meru", "μg/PPM"
   std::optional<double> printed;        ///< the printed value; absent for fig3.2
   double computed = 0.0;                ///< in `unit`; a magnitude where the report prints one

@@ -19,6 +19,7 @@ BarFigure budget_figure(const StudyConfig& c, const StudyLayout& l, const StudyM
   f.title = fmt::format("Error budget: shares of the horizontal mean-square error at {} min, fidelity {}",
                         format_number(last_s / 60), to_string(c.map_fidelity()));
   f.y_label = "share of E[r²]";
+  f.empty_note = "no error source: the horizontal error is zero";
   for (System s : c.systems) f.series.push_back(fmt::format("system {}", system_number(s)));
   for (Scheme scheme : c.schemes) {
     // The horizontal output at the last report time, per system.

@@ -94,6 +94,21 @@ TEST(Plots, TheErrorBudgetHasBarsPerSystemInEachSchemesFrame) {
   expect_png(read_file(out.path() / "budget.png"));
 }
 
+// Without any error source the shares have nothing to draw: each scheme's
+// panel stays, empty and saying why (gnuplot cannot autoscale a plot
+// without a point, so the empty panel has its own ranges).
+TEST(Plots, AnErrorFreeBudgetKeepsItsPanelsEmptyWithANote) {
+  TempDir out;
+  const ProgramResult r = run_insmc("covariance --scheme none,5.4 --dist all=zero --dv-pulse 0mps "
+                                    "--position-resolution 0m --torquer-pulse 0rad --out " + out.str() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = read_file(out.path() / "budget.svg");
+  EXPECT_EQ(frames_of(svg).size(), 2u);
+  for (const Group& g : groups_of(svg)) EXPECT_TRUE(g.paths.empty()) << g.id;  // no bars
+  EXPECT_NE(svg.find("no error source"), std::string::npos);
+  expect_png(read_file(out.path() / "budget.png"));
+}
+
 TEST(Plots, Figure3Point2IsDrawnOnALogAxisWithEveryTerm) {
   TempDir out;
   const ProgramResult r = run_insmc("tables --out " + out.str());

@@ -49,7 +49,7 @@ inline std::vector<std::vector<std::pair<double, double>>> subpaths_of(const std
   return out;
 }
 
-/// The text of attribute `name` (name='...' or name = '...') at or after `from` in `tag`.
+/// Every value of attribute `name` (name='...' or name = '...') in `text`, in order.
 inline std::vector<std::string> attributes(const std::string& text, const std::string& name) {
   std::vector<std::string> out;
   for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {

@@ -44,7 +44,7 @@ std::string bar_figure_script(const BarFigure& f) {
                           s + 2, plot_number(width), s == 0 ? ":xticlabels(1)" : "", palette_colour(static_cast<int>(s)),
                           gnuplot_quote(s < f.series.size() ? f.series[s] : ""));
     }
-    body += (f.panels[p].categories.empty() ? std::string("plot NaN notitle") : plot) + "\n";
+    body += f.panels[p].categories.empty() ? empty_panel_plot(f.empty_note) : plot + "\n";
   }
   body += "unset multiplot\n";
   return figure_script(script);

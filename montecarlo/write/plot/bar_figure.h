@@ -20,6 +20,7 @@ struct BarFigure {
   std::vector<std::string> series;  ///< legend entries, one colour each
   std::vector<BarPanel> panels;
   int columns = 2;
+  std::string empty_note = "nothing to draw";  ///< shown in a panel without categories
 };
 
 std::string bar_figure_script(const BarFigure& figure);

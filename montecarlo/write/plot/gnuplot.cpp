@@ -148,6 +148,24 @@ RenderedFigure render_figure(const std::string& stem, std::string script) {
   return r;
 }
 
+std::vector<std::string> figure_file_names(const std::string& stem) {
+  return {stem + ".gp", stem + ".svg", stem + ".png"};
+}
+
+std::vector<std::pair<std::string, std::string>> figure_files(const std::string& stem, RenderedFigure figure) {
+  return {{stem + ".gp", std::move(figure.script)},
+          {stem + ".svg", std::move(figure.svg)},
+          {stem + ".png", std::move(figure.png)}};
+}
+
+std::string empty_panel_plot(const std::string& note) {
+  // Label 99 is the note's own; the ranges in the plot command hold for
+  // this panel only.
+  return fmt::format("set label 99 {} at graph 0.5, graph 0.5 center textcolor \"#555555\"\n"
+                     "plot [0:1][1:10] NaN notitle\nunset label 99\n",
+                     gnuplot_quote(note));
+}
+
 std::string gnuplot_quote(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {

@@ -5,6 +5,7 @@
 /// (`gnuplot envelope.gp`) is what a report needs; the drawing itself is
 /// gnuplot's (axes, ticks, clipping, transparency, fonts), not insmc's.
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace insmc::mc {
@@ -40,6 +41,16 @@ struct RenderedFigure {
 };
 /// Runs `script` (from figure_script) and returns it with its SVG and PNG.
 RenderedFigure render_figure(const std::string& stem, std::string script);
+
+/// The names a figure adds to an output set: `<stem>.gp`, `.svg`, `.png`.
+std::vector<std::string> figure_file_names(const std::string& stem);
+/// Those files with their contents, in the same order.
+std::vector<std::pair<std::string, std::string>> figure_files(const std::string& stem, RenderedFigure figure);
+
+/// The plot command of a panel with nothing to draw: `note` in its middle
+/// over fixed ranges that are valid on linear and log axes (gnuplot refuses
+/// to autoscale a plot without a single point).
+std::string empty_panel_plot(const std::string& note);
 
 /// A string as a gnuplot string literal: double-quoted with \ and " escaped
 /// and line breaks as \n.

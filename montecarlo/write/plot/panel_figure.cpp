@@ -58,7 +58,7 @@ std::string panels(const PanelFigure& f, int columns, int rows) {
                           "notitle",
                           block, c, line.thin ? 3 : line.dashed ? 2 : 1, gnuplot_quote(line.name), line.thin ? 1 : 2);
     }
-    out += (panel.lines.empty() ? std::string("plot NaN notitle") : plot) + "\n";
+    out += panel.lines.empty() ? empty_panel_plot("nothing to draw") : plot + "\n";
   }
   return out + "unset multiplot\n";
 }
