@@ -11,6 +11,7 @@
 #include "apps/progress.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
+#include "lib/units/physical_range.h"
 #include "lib/noise/noise_analysis.h"
 #include "lib/units/quantity.h"
 
@@ -24,7 +25,7 @@ int run_noise(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("input", po::value<std::vector<std::string>>()->composing(),
                      "IMU CSV file of a static recording (plain text), repeatable: one recording each")(
-      "out", po::value<std::string>(), "folder for noise.md, noise.json, allan.csv, noise_terms.csv, allan.svg, stationarity.svg")(
+      "out", po::value<std::string>(), "folder for noise.md, noise.json, allan.csv, noise_terms.csv, allan.svg, stationarity.svg, calibration.csv")(
       "format", po::value<std::string>()->default_value("markdown"), "what to print: markdown or json")(
       "alpha", po::value<double>()->default_value(0.01, "0.01"),
       "family-wise level of the masking, the stationarity test and the term selection, in [1e-6, 0.2]")(
@@ -34,7 +35,9 @@ int run_noise(const Args& args) {
       "mask", po::value<std::string>()->default_value("on"), "on: mask disturbances; off: use every sample")(
       "datasheet", po::value<std::vector<std::string>>()->composing(),
       "a data-sheet value to draw on allan.svg and compare with the fit, repeatable: gyro_arw=0.15degprth, "
-      "gyro_bias_instability=1degph, accel_vrw=0.03mpsprth, accel_bias_instability=50ug");
+      "gyro_bias_instability=1degph, accel_vrw=0.03mpsprth, accel_bias_instability=50ug")(
+      "gravity", po::value<std::string>()->default_value("9.80665mps2"),
+      "the site's gravity magnitude, the reference of a multi-position calibration, in [9.7, 9.9] m/s2");
   add_imu_csv_options(opts);
   const auto vm = parse_args(args, "noise", "--input FILE [--input FILE]... (--rate RATE | --time-column NAME) [options]", opts);
   if (!vm) return 0;
@@ -59,6 +62,12 @@ int run_noise(const Args& args) {
   options.mask = mask == "on";
   const std::string format = (*vm)["format"].as<std::string>();
   if (format != "markdown" && format != "json") throw InputError("--format", echo_input(format), "must be markdown or json");
+  calibration::MultipositionOptions calibrate;
+  calibrate.confidence = options.confidence;
+  calibrate.gravity_mps2 = parse_quantity((*vm)["gravity"].as<std::string>(), Dimension::kAcceleration, "--gravity");
+  // From the equator at sea level (9.780) to the poles (9.832), with room
+  // for altitude and local anomalies.
+  require_in_range("--gravity", calibrate.gravity_mps2, Dimension::kAcceleration, {9.7, 9.9});
   std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "noise");
 
   std::vector<ImuSamples> recordings;
@@ -69,6 +78,11 @@ int run_noise(const Args& args) {
                        fmt::format("{} samples: a noise analysis needs at least {} per recording",
                                    recordings.back().size(), kMinNoiseSamples));
   }
+  // Each recording's still attitudes, and its multi-position calibration
+  // when it holds enough of them (apps/calibration_report.h).
+  std::vector<RecordingCalibration> calibrations;
+  for (const ImuSamples& r : recordings)
+    calibrations.push_back({r.source, calibration::calibrate_multiposition(r, calibrate), calibrate.gravity_mps2});
   const noise::SensorRecording rec = noise::make_recording(recordings);
   recordings.clear();
   noise::NoiseAnalysis analysis;
@@ -77,8 +91,8 @@ int run_noise(const Args& args) {
     progress.update("noise analysis", 0, 1, "");
     analysis = noise::analyse_noise(rec, options);
   }
-  const std::string json = noise_json(rec, analysis, options.confidence, sheet).dump(2) + "\n";
-  const auto report = noise_report(rec, analysis, options.confidence, sheet);
+  const std::string json = noise_json(rec, analysis, options.confidence, sheet, calibrations).dump(2) + "\n";
+  const auto report = noise_report(rec, analysis, options.confidence, sheet, calibrations);
   if (out) {
     OutputFiles files(report.begin(), report.end());
     files.emplace_back("noise.json", json);

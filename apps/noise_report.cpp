@@ -78,7 +78,14 @@ std::size_t distinct_orientations(const std::vector<Orientation>& o) {
   return seen.size();
 }
 
-std::string identifiability(const std::vector<Orientation>& o) {
+std::string identifiability(const std::vector<Orientation>& o, const std::vector<RecordingCalibration>& calibrations) {
+  if (any_calibrated(calibrations))
+    return "Recordings turned through several still attitudes: bias, scale factor and misalignment of both triads and "
+           "the gyros' g-sensitivity are fitted below (a multi-position calibration). The noise terms above come "
+           "from the still parts only: the turns are masked as disturbances.\n";
+  const RecordingCalibration* most = nullptr;  // the recording with the most still attitudes
+  for (const RecordingCalibration& rc : calibrations)
+    if (!most || rc.result.segments.size() > most->result.segments.size()) most = &rc;
   const std::size_t n = distinct_orientations(o);
   if (n <= 1)
     return "One static orientation: scale factor, misalignment and g-sensitivity are not identifiable from these data "
@@ -94,8 +101,11 @@ std::string identifiability(const std::vector<Orientation>& o) {
   s += both.empty() ? "No accelerometer axis sees both +g and −g, so scale factor and bias stay confounded on every axis. "
                     : fmt::format("Accelerometer axes that see both +g and −g, where bias and scale factor separate: {}. ", both);
   s += n >= 6 ? "With six or more orientations the accelerometer misalignments and the gyros' g-sensitivity become "
-                "identifiable too (a multi-position calibration; not fitted by this stage).\n"
+                "identifiable too, but across recordings the gyros cannot be calibrated (no turn between them): a "
+                "multi-position calibration needs the turns in one recording.\n"
               : "Misalignment and g-sensitivity need more orientations (six for a full multi-position calibration).\n";
+  if (most && most->result.segments.size() > 1)
+    s += fmt::format("Within one recording ({}): {}.\n", most->recording, most->result.accel.why_not);
   return s;
 }
 
@@ -129,7 +139,7 @@ std::string datasheet_section(const noise::NoiseAnalysis& a, const Datasheet& sh
 }
 
 std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
-                     const Datasheet& sheet) {
+                     const Datasheet& sheet, const std::vector<RecordingCalibration>& calibrations) {
   std::string md = "# Sensor noise: overlapping Allan deviation and fitted terms\n\n";
   double total_s = 0;
   for (const noise::Segment& r : rec.runs) total_s += static_cast<double>(r.size()) * rec.dt_s;
@@ -216,7 +226,8 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
       md += fmt::format("| {} | {:.1f} | {:.1f} | {} | {} | {:.3g}× |\n", rec.run_names[m.run], m.start_s, m.end_s,
                         m.channels, m.test, m.excess);
   }
-  md += "\n## What these data can identify\n\n" + identifiability(orientations(rec, a));
+  md += "\n## What these data can identify\n\n" + identifiability(orientations(rec, a), calibrations);
+  md += calibration_markdown(calibrations, confidence);
   return md;
 }
 
@@ -419,7 +430,7 @@ std::pair<double, std::string> spec_value(NoiseTerm t, SensorKind kind, double v
 }
 
 mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
-                    const Datasheet& sheet) {
+                    const Datasheet& sheet, const std::vector<RecordingCalibration>& calibrations) {
   mc::Json j = mc::Json::object();
   j["sample_interval_s"] = rec.dt_s;
   j["samples"] = rec.size();
@@ -481,6 +492,7 @@ mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysi
   if (sheet.accel_vrw_mpsprts) given["accel_vrw_mpsprts"] = *sheet.accel_vrw_mpsprts;
   if (sheet.accel_bias_instability_mps2) given["accel_bias_instability_mps2"] = *sheet.accel_bias_instability_mps2;
   j["datasheet"] = std::move(given);
+  j["calibration"] = calibration_json(calibrations);
   return j;
 }
 
@@ -518,12 +530,14 @@ void parse_datasheet_entry(const std::string& text, Datasheet& sheet) {
 
 std::vector<std::pair<std::string, std::string>> noise_report(const noise::SensorRecording& rec,
                                                               const noise::NoiseAnalysis& a, double confidence,
-                                                              const Datasheet& sheet) {
-  return {{"noise.md", markdown(rec, a, confidence, sheet)},
+                                                              const Datasheet& sheet,
+                                                              const std::vector<RecordingCalibration>& calibrations) {
+  return {{"noise.md", markdown(rec, a, confidence, sheet, calibrations)},
           {"allan.csv", allan_csv(a)},
           {"noise_terms.csv", terms_csv(a)},
           {"allan.svg", allan_svg(a, sheet)},
-          {"stationarity.svg", stationarity_svg(rec, a)}};
+          {"stationarity.svg", stationarity_svg(rec, a)},
+          {"calibration.csv", calibration_csv(calibrations)}};
 }
 
 }  // namespace insmc::app

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "apps/calibration_report.h"
 #include "lib/noise/noise_analysis.h"
 #include "montecarlo/write/json.h"
 
@@ -37,11 +38,12 @@ void parse_datasheet_entry(const std::string& text, Datasheet& sheet);
 std::pair<double, std::string> spec_value(noise::NoiseTerm term, noise::SensorKind kind, double value_si);
 
 /// The files of the report: noise.md first, then allan.csv, noise_terms.csv,
-/// allan.svg, stationarity.svg.
-std::vector<std::pair<std::string, std::string>> noise_report(const noise::SensorRecording& rec,
-                                                              const noise::NoiseAnalysis& a, double confidence,
-                                                              const Datasheet& sheet = {});
+/// allan.svg, stationarity.svg, calibration.csv (the multi-position
+/// calibrations, apps/calibration_report.h).
+std::vector<std::pair<std::string, std::string>> noise_report(
+    const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence, const Datasheet& sheet = {},
+    const std::vector<RecordingCalibration>& calibrations = {});
 mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
-                    const Datasheet& sheet = {});
+                    const Datasheet& sheet = {}, const std::vector<RecordingCalibration>& calibrations = {});
 
 }  // namespace insmc::app

@@ -27,7 +27,8 @@ SensorRecording make_recording(std::span<const ImuSamples> recordings) {
       if (std::abs(step / r.dt_s - 1) > kMaxSpacingJitter)
         throw InputError(fmt::format("{}: sample {} (t = {:.6g} s)", s.source, k + 1, s.t_s[k]), fmt::format("step {:.6g} s", step),
                          fmt::format("the noise stage needs one sample grid: every step within ±{:g} % of {:.6g} s "
-                                     "(split the recording at a gap into separate files)",
+                                     "(split the recording at a gap into separate files; when the time stamps only "
+                                     "jitter about a fixed rate, give --rate instead of the time column)",
                                      100 * kMaxSpacingJitter, r.dt_s));
     }
     Segment seg{r.size(), r.size() + s.size()};
