@@ -32,6 +32,7 @@ Vec3 mean_of(const std::vector<Vec3>& v, const StaticSegment& s) {
 std::size_t distinct_directions(const std::vector<Vec3>& f, double same_rad) {
   std::vector<Vec3> seen;
   for (const Vec3& x : f) {
+    if (!(x.norm() > 0)) continue;  // no direction (checked against gravity by the caller)
     const Vec3 u = x.normalized();
     if (std::none_of(seen.begin(), seen.end(), [&](const Vec3& v) { return u.dot(v) > std::cos(same_rad); }))
       seen.push_back(u);
@@ -179,6 +180,16 @@ MultipositionCalibration calibrate_multiposition(const ImuSamples& s, const Mult
     c.accel.why_not = c.gyro_static.why_not = c.gyro_turns.why_not = too_few;
     return c;
   }
+  // Gravity is the only reference: at rest the accelerometers must see
+  // about its magnitude (a unit or column mistake otherwise).
+  for (const Vec3& a : c.segment_accel_mps2)
+    if (!(a.norm() > 0.5 * o.gravity_mps2 && a.norm() < 2 * o.gravity_mps2)) {
+      c.accel.why_not = c.gyro_static.why_not = c.gyro_turns.why_not = fmt::format(
+          "a still attitude's mean specific force is {:.4g} m/s², not near gravity ({:.6g} m/s²): check the "
+          "accelerometer columns and their unit",
+          a.norm(), o.gravity_mps2);
+      return c;
+    }
   Eigen::VectorXd accel_x;
   c.accel = fit_accelerometers(c.segment_accel_mps2, o, accel_x);
   std::vector<Vec3> f;

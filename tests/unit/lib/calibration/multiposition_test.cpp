@@ -58,5 +58,14 @@ TEST(Multiposition, FewAttitudesAreNotCalibrated) {
   EXPECT_NE(c.accel.why_not.find("6 still attitudes"), std::string::npos) << c.accel.why_not;
 }
 
+TEST(Multiposition, AccelerometersThatDoNotSeeGravityAreNotCalibrated) {
+  std::mt19937_64 rng(9);
+  ImuSamples s = multiposition_recording(draw_errors(rng), 15, 6.0, rng);
+  for (Vec3& a : s.accel_b_mps2) a /= kGravityMps2;  // a unit mistake: g read as m/s²
+  const calibration::MultipositionCalibration c = calibration::calibrate_multiposition(s, {});
+  EXPECT_FALSE(c.accel.fitted);
+  EXPECT_NE(c.accel.why_not.find("not near gravity"), std::string::npos) << c.accel.why_not;
+}
+
 }  // namespace
 }  // namespace insmc::testing
