@@ -60,12 +60,18 @@ std::string one_recording(const RecordingCalibration& rc, double confidence) {
       c.segments.size(), c.orientations, rc.gravity_mps2, 100 * confidence, calibration::kMaxSeparableVif);
   md += "| sensor | parameter | value | interval | unit | separable (VIF) |\n|---|---|---:|---|---|---|\n";
   md += fit_rows(c.accel) + fit_rows(c.gyro_static) + fit_rows(c.gyro_turns);
+  md += "\nThe gyro biases and g-sensitivities are in the declared gyro units (the model removes them before the "
+        "scale factor, (C.4)): in calibrated units each row is 1 + s of its gyro axis times larger.\n";
+  if (!c.gyro_turns.fitted) md += fmt::format("\nGyro scale factors and misalignments not fitted: {}.\n", c.gyro_turns.why_not);
   md += fmt::format(
       "\nResidual scatter: |f| − g at rest (C.2) {:.3g} mg over {} attitudes; gyro means at rest (C.3) up to {:.3g} "
-      "deg/h; gravity direction after each turn (C.4) {:.3g} mrad over {} turns.\n\n",
-      c.accel.residual_rms_si / kMgToMps2, c.accel.residuals, c.gyro_static.residual_rms_si / kDegphToRadps,
-      1e3 * c.gyro_turns.residual_rms_si, c.gyro_turns.residuals / 3);
-  md += "g-sensitivity, F-test of each gyro axis's row of G = 0 in (C.3): ";
+      "deg/h",
+      c.accel.residual_rms_si / kMgToMps2, c.accel.residuals, c.gyro_static.residual_rms_si / kDegphToRadps);
+  if (c.gyro_turns.fitted)
+    md += fmt::format("; gravity direction after each turn (C.4) {:.3g} mrad over {} turns",
+                      1e3 * c.gyro_turns.residual_rms_si, c.gyro_turns.residuals / 3);
+  md += ".\n\ng-sensitivity, F-test of each gyro axis's row of G = 0 in (C.3) (the earth rate's vertical part "
+        "is in G too, below): ";
   for (std::size_t k = 0; k < c.g_sensitivity_p.size(); ++k)
     md += fmt::format("{}{} p = {:.2g}", k ? ", " : "", "xyz"[k], c.g_sensitivity_p[k]);
   md += fmt::format(

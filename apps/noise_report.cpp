@@ -79,13 +79,19 @@ std::size_t distinct_orientations(const std::vector<Orientation>& o) {
 }
 
 std::string identifiability(const std::vector<Orientation>& o, const std::vector<RecordingCalibration>& calibrations) {
+  // A recording turned through still attitudes speaks for itself: its
+  // calibration, or why there is none.
+  std::string turned;
+  for (const RecordingCalibration& rc : calibrations)
+    if (!rc.result.accel.fitted && rc.result.orientations > 1)
+      turned += fmt::format("{}: {} still attitudes, not calibrated: {}.\n", rc.recording, rc.result.segments.size(),
+                            rc.result.accel.why_not);
   if (any_calibrated(calibrations))
     return "Recordings turned through several still attitudes: bias, scale factor and misalignment of both triads and "
            "the gyros' g-sensitivity are fitted below (a multi-position calibration). The noise terms above come "
-           "from the still parts only: the turns are masked as disturbances.\n";
-  const RecordingCalibration* most = nullptr;  // the recording with the most still attitudes
-  for (const RecordingCalibration& rc : calibrations)
-    if (!most || rc.result.segments.size() > most->result.segments.size()) most = &rc;
+           "from the still parts only when the turns are masked as disturbances (--mask on, the default).\n" +
+           turned;
+  if (!turned.empty()) return turned;
   const std::size_t n = distinct_orientations(o);
   if (n <= 1)
     return "One static orientation: scale factor, misalignment and g-sensitivity are not identifiable from these data "
@@ -104,8 +110,6 @@ std::string identifiability(const std::vector<Orientation>& o, const std::vector
                 "identifiable too, but across recordings the gyros cannot be calibrated (no turn between them): a "
                 "multi-position calibration needs the turns in one recording.\n"
               : "Misalignment and g-sensitivity need more orientations (six for a full multi-position calibration).\n";
-  if (most && most->result.segments.size() > 1)
-    s += fmt::format("Within one recording ({}): {}.\n", most->recording, most->result.accel.why_not);
   return s;
 }
 

@@ -29,6 +29,18 @@ Vec3 mean_of(const std::vector<Vec3>& v, const StaticSegment& s) {
   return sum / static_cast<double>(s.end - s.begin);
 }
 
+/// The smallest eigenvalue of the mean outer product of the unit vectors
+/// of `v` (1/3 when they are spread evenly over the sphere, 0 when they
+/// lie in one plane).
+double direction_spread(const std::vector<Vec3>& v) {
+  Mat3 sum = Mat3::Zero();
+  int n = 0;
+  for (const Vec3& x : v)
+    if (x.norm() > 0) sum += x.normalized() * x.normalized().transpose(), ++n;
+  if (n == 0) return 0;
+  return Eigen::SelfAdjointEigenSolver<Mat3>(sum / n).eigenvalues().minCoeff();
+}
+
 std::size_t distinct_directions(const std::vector<Vec3>& f, double same_rad) {
   std::vector<Vec3> seen;
   for (const Vec3& x : f) {
@@ -94,7 +106,8 @@ FitSummary fit_gyro_static(const std::vector<Vec3>& mean_w, const std::vector<Ve
     for (const Vec3& w : mean_w) rss0 += (w[k] - mean) * (w[k] - mean);
     const double rss1 = fit.residual_rms * fit.residual_rms * fit.dof;
     const double stat = ((rss0 - rss1) / 3) / (rss1 / fit.dof);
-    p_values.push_back(std::isfinite(stat) && stat > 0
+    p_values.push_back(rss1 <= 0 ? (rss0 > 0 ? 0.0 : 1.0)  // an exact fit
+                       : std::isfinite(stat) && stat > 0
                            ? boost::math::cdf(boost::math::complement(boost::math::fisher_f(3, fit.dof), stat))
                            : 1.0);
     out.residual_rms_si = std::max(out.residual_rms_si, fit.residual_rms);
@@ -129,6 +142,11 @@ FitSummary fit_gyro_turns(const std::vector<Turn>& turns, const MultipositionOpt
     }
   };
   const LeastSquaresFit fit = fit_least_squares(residuals, Eigen::VectorXd::Zero(9), m, Eigen::VectorXd::Constant(9, 1e-6));
+  FitSummary out;
+  if (!fit.converged) {
+    out.why_not = "the fit through the turns did not converge in 100 iterations";
+    return out;
+  }
   // Each residual has 2 degrees of freedom (the unit vectors' difference is
   // perpendicular to them to first order): the scatter per component uses
   // 2 × turns − 9.
@@ -137,7 +155,13 @@ FitSummary fit_gyro_turns(const std::vector<Turn>& turns, const MultipositionOpt
   const double rescale = std::sqrt(static_cast<double>(fit.dof) / dof);
   LeastSquaresFit scaled = fit;
   scaled.covariance *= rescale * rescale;
-  FitSummary out;
+  if (fit.residual_rms * rescale > kMaxTurnResidualRad) {
+    out.why_not = fmt::format(
+        "the gravity direction after each turn is off by {:.3g} mrad RMS after the fit (more than {:g}): check the "
+        "gyro columns and their unit, or turns too fast for the sample rate",
+        1e3 * fit.residual_rms * rescale, 1e3 * kMaxTurnResidualRad);
+    return out;
+  }
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c)
       out.parameters.push_back(
@@ -180,6 +204,16 @@ MultipositionCalibration calibrate_multiposition(const ImuSamples& s, const Mult
     c.accel.why_not = c.gyro_static.why_not = c.gyro_turns.why_not = too_few;
     return c;
   }
+  // The attitudes must point gravity along every body axis: directions in
+  // one plane (turns about one axis) leave the axis across it unseen.
+  const double spread = direction_spread(c.segment_accel_mps2);
+  if (spread < kMinDirectionSpread) {
+    c.accel.why_not = c.gyro_static.why_not = c.gyro_turns.why_not = fmt::format(
+        "the still attitudes' gravity directions lie nearly in one plane (smallest eigenvalue of their mean "
+        "outer product {:.3g}, at least {:g} needed): turn the sensor so that every axis points up and down",
+        spread, kMinDirectionSpread);
+    return c;
+  }
   // Gravity is the only reference: at rest the accelerometers must see
   // about its magnitude (a unit or column mistake otherwise).
   for (const Vec3& a : c.segment_accel_mps2)
@@ -198,7 +232,11 @@ MultipositionCalibration calibrate_multiposition(const ImuSamples& s, const Mult
   Mat3 g_sensitivity;
   c.gyro_static = fit_gyro_static(c.segment_gyro_radps, f, o, gyro_bias, g_sensitivity, c.g_sensitivity_p);
   std::vector<Turn> turns;
+  std::vector<Vec3> turn_axes;
   for (std::size_t i = 0; i + 1 < n; ++i) {
+    // A long motion between two attitudes (carried, not turned) would bring
+    // its integrated gyro error into (C.4): left out.
+    if (s.t_s[c.segments[i + 1].begin] - s.t_s[c.segments[i].end - 1] > kMaxTurnS) continue;
     Turn t;
     for (std::size_t k = c.segments[i].end; k < c.segments[i + 1].begin; ++k) {
       t.rate_radps.push_back(s.gyro_b_radps[k] - gyro_bias - g_sensitivity * calibrated_accel(accel_x, s.accel_b_mps2[k]));
@@ -206,9 +244,21 @@ MultipositionCalibration calibrate_multiposition(const ImuSamples& s, const Mult
     }
     t.up_before = f[i].normalized();
     t.up_after = f[i + 1].normalized();
+    Vec3 angle = Vec3::Zero();
+    for (std::size_t k = 0; k < t.rate_radps.size(); ++k) angle += t.rate_radps[k] * t.dt_s[k];
+    turn_axes.push_back(angle);
     turns.push_back(std::move(t));
   }
-  c.gyro_turns = fit_gyro_turns(turns, o);
+  // (C.4) sees a gyro's scale and misalignment only through turns about
+  // its axis: the turns' rotation vectors must span all three.
+  const double turn_spread = direction_spread(turn_axes);
+  if (turns.size() < 6 || turn_spread < kMinDirectionSpread)
+    c.gyro_turns.why_not = fmt::format(
+        "{} turns of at most {:g} s between still attitudes, their axes' spread {:.3g} (at least 6 turns and {:g} "
+        "needed): turn the sensor about each of its axes",
+        turns.size(), kMaxTurnS, turn_spread, kMinDirectionSpread);
+  else
+    c.gyro_turns = fit_gyro_turns(turns, o);
   return c;
 }
 

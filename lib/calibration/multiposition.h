@@ -74,6 +74,19 @@ struct MultipositionCalibration {
 /// Fewest still attitudes for the accelerometer fit (9 parameters and a
 /// residual scatter worth estimating).
 inline constexpr std::size_t kMinCalibrationSegments = 12;
+/// The least spread of the attitudes' gravity directions, and of the
+/// turns' rotation axes: the smallest eigenvalue of the mean of u uᵀ over
+/// their unit vectors (1/3 for an even spread; 0.02 is about a direction
+/// 8° out of a plane on average). The project's choice: below it the
+/// unseen axis's parameters are fitted from noise.
+inline constexpr double kMinDirectionSpread = 0.02;
+/// Longest motion between two still attitudes that counts as a turn in
+/// (C.4); a longer one (the sensor carried about) is left out.
+inline constexpr double kMaxTurnS = 30.0;
+/// Largest RMS error of the gravity direction after the turns that (C.4)
+/// accepts; beyond it the gyro data do not follow the model (a wrong unit
+/// or column, or turns the samples cannot follow). The Xsens set: 1.7 mrad.
+inline constexpr double kMaxTurnResidualRad = 0.02;
 
 /// Calibrates from one recording. Fits that the data cannot carry (too few
 /// segments or orientations) are left unfitted with the reason.

@@ -2,13 +2,19 @@
 /// The still intervals of a recording in which the sensor was turned by hand
 /// between attitudes (a multi-position calibration): windows whose
 /// variance, on every gyro and accelerometer axis, stays near the quietest
-/// windows' (sensor noise), joined into segments.
+/// windows' (sensor noise), and whose gyro means stay near the median
+/// window's (a steady turn has noise-level variance), joined into segments.
+/// Needs most of the recording still (the medians are the still windows').
 #include <cstddef>
 #include <vector>
 
 #include "lib/imu/imu_samples.h"
 
 namespace insmc::calibration {
+
+/// Fewest samples per window: with fewer the windows' variances scatter so
+/// widely (χ²₁₉/19 < 2.9 at 0.9999) that still windows would pass for turns.
+inline constexpr std::size_t kMinWindowSamples = 20;
 
 /// Samples [begin, end) of one still interval.
 struct StaticSegment {
@@ -17,7 +23,7 @@ struct StaticSegment {
 
 struct StaticDetection {
   /// Window length; the variance test runs on consecutive windows of this
-  /// length (at least 5 samples each).
+  /// length (at least kMinWindowSamples each).
   double window_s = 0.5;
   /// A window is still when each axis's variance is at most this factor
   /// times the axis's reference: the 20th percentile of all windows'

@@ -33,7 +33,7 @@ TEST(MultipositionCoverage, EachIntervalCoversAtItsStatedRate) {
     const SensorErrors e = draw_errors(rng);
     const ImuSamples s = multiposition_recording(e, 20, 6.0, rng);
     const calibration::MultipositionCalibration c = calibration::calibrate_multiposition(s, {});
-    ASSERT_TRUE(c.gyro_turns.fitted);
+    ASSERT_TRUE(c.gyro_turns.fitted) << r << ": " << c.gyro_turns.why_not;
     const std::map<std::string, double> truth = truth_of(e);
     int missed = 0;
     for (const auto* f : {&c.accel, &c.gyro_static, &c.gyro_turns})

@@ -66,8 +66,10 @@ inline std::map<std::string, double> truth_of(const SensorErrors& e) {
 }
 
 /// `poses` still attitudes of `still_s` after a first one of 20 s, turns of
-/// 3 s between them, at 100 Hz; gravity 9.80665 m/s² along space up.
-inline ImuSamples multiposition_recording(const SensorErrors& e, int poses, double still_s, std::mt19937_64& rng) {
+/// 3 s between them (about random body axes, or all about `only_axis`
+/// when it is not zero), at 100 Hz; gravity 9.80665 m/s² along space up.
+inline ImuSamples multiposition_recording(const SensorErrors& e, int poses, double still_s, std::mt19937_64& rng,
+                                          const Vec3& only_axis = Vec3::Zero()) {
   constexpr double dt = 0.01, turn_s = 3.0;
   const Vec3 f_space(0, 0, kGravityMps2);
   const Mat3 accel_inverse = (Mat3::Identity() + e.accel_m).inverse();
@@ -89,7 +91,7 @@ inline ImuSamples multiposition_recording(const SensorErrors& e, int poses, doub
   };
   for (int k = 0; k < 2000; ++k) add(Vec3::Zero());
   for (int p = 0; p < poses; ++p) {
-    const Vec3 axis = Vec3(n(rng), n(rng), n(rng)).normalized();
+    const Vec3 axis = only_axis.norm() > 0 ? only_axis.normalized() : Vec3(n(rng), n(rng), n(rng)).normalized();
     const Vec3 w = axis * angle(rng) / turn_s;
     for (int k = 0; k < static_cast<int>(turn_s / dt); ++k) add(w);
     for (int k = 0; k < static_cast<int>(still_s / dt); ++k) add(Vec3::Zero());

@@ -67,5 +67,51 @@ TEST(Multiposition, AccelerometersThatDoNotSeeGravityAreNotCalibrated) {
   EXPECT_NE(c.accel.why_not.find("not near gravity"), std::string::npos) << c.accel.why_not;
 }
 
+// Turns about one body axis keep gravity in the plane across it: that
+// axis's accelerometer never sees gravity, and a fit would make up its
+// scale factor.
+TEST(Multiposition, AttitudesInOnePlaneAreNotCalibrated) {
+  std::mt19937_64 rng(13);
+  const ImuSamples s = multiposition_recording(draw_errors(rng), 20, 6.0, rng, Vec3::UnitX());
+  const calibration::MultipositionCalibration c = calibration::calibrate_multiposition(s, {});
+  EXPECT_GE(c.orientations, 6u);
+  EXPECT_FALSE(c.accel.fitted);
+  EXPECT_NE(c.accel.why_not.find("one plane"), std::string::npos) << c.accel.why_not;
+}
+
+// Gyro outputs read in the wrong unit (rad/s as deg/s): the turns do not
+// follow the model from the declared scale (the scale factor would be
+// 1/57.3 − 1), and (C.4) says so instead of fitting a local minimum.
+TEST(Multiposition, GyrosInTheWrongUnitFailTheTurnsFit) {
+  std::mt19937_64 rng(17);
+  ImuSamples s = multiposition_recording(draw_errors(rng), 20, 6.0, rng);
+  for (Vec3& w : s.gyro_b_radps) w /= kDegToRad;
+  const calibration::MultipositionCalibration c = calibration::calibrate_multiposition(s, {});
+  EXPECT_TRUE(c.accel.fitted);
+  EXPECT_FALSE(c.gyro_turns.fitted);
+  EXPECT_NE(c.gyro_turns.why_not.find("gyro columns and their unit"), std::string::npos) << c.gyro_turns.why_not;
+}
+
+// Turns at a steady rate about the vertical change neither the gravity
+// direction nor the gyro variance: the gyro means must tell them apart.
+TEST(StaticSegments, ASteadyTurnAboutTheVerticalIsNotStill) {
+  std::mt19937_64 rng(23);
+  const ImuSamples s = multiposition_recording(draw_errors(rng), 10, 6.0, rng, Vec3::UnitZ());
+  EXPECT_EQ(calibration::find_static_segments(s, {}).size(), 11u);
+}
+
+// A quiet quantized sensor: most windows have zero variance, and one step
+// of the quantum must not count as a turn (the reference is floored at q²/12).
+TEST(StaticSegments, AQuantizedQuietSensorKeepsItsAttitudesWhole) {
+  std::mt19937_64 rng(19);
+  SensorErrors e = draw_errors(rng);
+  e.accel_noise_mps2 = 0.2 * kMgToMps2;  // 0.2 of a 1 mg step
+  e.gyro_noise_radps = 0.2 * 1e-3;       // 0.2 of a 1 mrad/s step
+  ImuSamples s = multiposition_recording(e, 20, 6.0, rng);
+  for (Vec3& a : s.accel_b_mps2) a = (a / kMgToMps2).array().round().matrix() * kMgToMps2;
+  for (Vec3& w : s.gyro_b_radps) w = (w / 1e-3).array().round().matrix() * 1e-3;
+  EXPECT_EQ(calibration::find_static_segments(s, {}).size(), 21u);
+}
+
 }  // namespace
 }  // namespace insmc::testing
