@@ -78,12 +78,13 @@ int run_noise(const Args& args) {
                        fmt::format("{} samples: a noise analysis needs at least {} per recording",
                                    recordings.back().size(), kMinNoiseSamples));
   }
-  // Each recording's still attitudes, and its multi-position calibration
-  // when it holds enough of them (apps/calibration_report.h).
+  // The sample grid is checked first (a refusal costs no fit); then each
+  // recording's still attitudes, and its multi-position calibration when it
+  // holds enough of them (apps/calibration_report.h).
+  const noise::SensorRecording rec = noise::make_recording(recordings);
   std::vector<RecordingCalibration> calibrations;
   for (const ImuSamples& r : recordings)
     calibrations.push_back({r.source, calibration::calibrate_multiposition(r, calibrate), calibrate.gravity_mps2});
-  const noise::SensorRecording rec = noise::make_recording(recordings);
   recordings.clear();
   noise::NoiseAnalysis analysis;
   {
