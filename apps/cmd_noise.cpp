@@ -11,7 +11,6 @@
 #include "apps/progress.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
-#include "lib/units/physical_range.h"
 #include "lib/noise/noise_analysis.h"
 #include "lib/units/quantity.h"
 
@@ -64,10 +63,14 @@ int run_noise(const Args& args) {
   if (format != "markdown" && format != "json") throw InputError("--format", echo_input(format), "must be markdown or json");
   calibration::MultipositionOptions calibrate;
   calibrate.confidence = options.confidence;
-  calibrate.gravity_mps2 = parse_quantity((*vm)["gravity"].as<std::string>(), Dimension::kAcceleration, "--gravity");
+  const std::string gravity_text = (*vm)["gravity"].as<std::string>();
+  calibrate.gravity_mps2 = parse_quantity(gravity_text, Dimension::kAcceleration, "--gravity");
   // From the equator at sea level (9.780) to the poles (9.832), with room
-  // for altitude and local anomalies.
-  require_in_range("--gravity", calibrate.gravity_mps2, Dimension::kAcceleration, {9.7, 9.9});
+  // for altitude and local anomalies; said in m/s², the unit gravity is quoted in.
+  if (!(calibrate.gravity_mps2 >= 9.7 && calibrate.gravity_mps2 <= 9.9))
+    throw InputError("--gravity", echo_input(gravity_text),
+                     "must lie in [9.7, 9.9] m/s2 (surface gravity, equator to poles, with room for altitude), "
+                     "e.g. 9.80665mps2");
   std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "noise");
 
   std::vector<ImuSamples> recordings;
