@@ -78,8 +78,12 @@ std::vector<Sensitivity3> reset_propagation(System system, Fidelity fidelity, co
     const Sensitivity3 v0 = computed_velocity_error(sr.initial_velocity_mps);
     for (double tau : taus) {
       const double t = T + tau, p3 = std::pow(w * t, 3) - std::pow(w * T, 3);
-      out.push_back(sr.initial_position_m + std::sin(ws * tau) / ws * v0 + step_response(tau, ws) * a0 +
-                    ramp_response(tau, ws) * a1 + quadratic_response(tau, ws) * a2 + m.radius_m * p3 / 6 * sr.u5);
+      Sensitivity3 r = sr.initial_position_m + std::sin(ws * tau) / ws * v0 + step_response(tau, ws) * a0 +
+                       ramp_response(tau, ws) * a1 + quadratic_response(tau, ws) * a2 + m.radius_m * p3 / 6 * sr.u5;
+      // The resets' own errors, as δr̂(T) and δṙ̂(T) enter (5.8): cos ω_s t', sin ω_s t' / ω_s.
+      r.middleCols<3>(ux::kResetPositionError) += std::cos(ws * tau) * Mat3::Identity();
+      r.middleCols<3>(ux::kResetVelocityError) += std::sin(ws * tau) / ws * Mat3::Identity();
+      out.push_back(r);
     }
     return out;
   }
@@ -87,8 +91,12 @@ std::vector<Sensitivity3> reset_propagation(System system, Fidelity fidelity, co
   const Mat3 turn = C_ap_n(m.latitude_rad, m.earth_rate_radps * T);
   std::vector<double> times;
   for (double tau : taus) times.push_back(T + tau);
-  return integrate_schuler_ode([&](double t) { return model.forcing(t); }, turn * model.initial_position(),
-                               turn * computed_velocity_error(model.initial_velocity()), times,
+  // The integrators' state after the reset: the computed values (with the
+  // resets' own errors) less the truth.
+  Sensitivity3 r_reset = turn * model.initial_position(), v_reset = turn * computed_velocity_error(model.initial_velocity());
+  r_reset.middleCols<3>(ux::kResetPositionError) += Mat3::Identity();
+  v_reset.middleCols<3>(ux::kResetVelocityError) += Mat3::Identity();
+  return integrate_schuler_ode([&](double t) { return model.forcing(t); }, r_reset, v_reset, times,
                                m.schuler_radps(), 2.0, T);
 }
 
@@ -168,6 +176,8 @@ SchemeMaps scheme_position_maps(Scheme scheme, System system, Fidelity fidelity,
         Mat3 select = I;
         if (system == System::kGyrocompass) select(1, 1) = 0;  // (5.15c): no y estimate
         e.middleCols<3>(ez::kTorquerCommands) = torquer[n] * select;
+        // ω_ie E4 of (5.15) enters the applied rates as the commands do.
+        e.middleCols<3>(ux::kAlignDriftError) = torquer[n] * select;
         e.middleCols<3>(ez::kAlignAccel) = -r0s * I;
         break;
       }

@@ -11,18 +11,18 @@
 
 namespace insmc {
 namespace ez {
-inline constexpr int kX = 0;                  ///< x, the 33 uncertainties (ux::)
-inline constexpr int kRealignZeta = 33;       ///< ζ_r of the realignment [rad] (3)
-inline constexpr int kRealignBias = 36;       ///< ∂f_r of the realignment [m/s²] (2)
-inline constexpr int kRealignVelocity = 38;   ///< (u)V at the new switch-over [m/s] (3)
-inline constexpr int kU2 = 41;                ///< Û2 from position data (4.8b) (3)
-inline constexpr int kU3 = 44;                ///< Û3 from position data (4.8c) (3)
-inline constexpr int kU3Accel = 47;           ///< Û3 from the accelerometer data, slope of (5.12) (3)
-inline constexpr int kDfT = 50;               ///< filtered Δf̂(T) of (5.10) [m/s²] (3)
-inline constexpr int kTorquerCommands = 53;   ///< measured alignment torquer commands ω_c (5.14) [rad/s] (3)
-inline constexpr int kAlignAccel = 56;        ///< measured alignment accelerometer outputs Δf_m (5.19) [m/s²] (3)
-inline constexpr int kWiggleAtT = 59;         ///< velocity wiggle at T seen by the resets of 5.2/5.3 [m/s] (3)
-inline constexpr int kDim = 62;
+inline constexpr int kX = 0;                                ///< x, the catalogue's uncertainties (ux::)
+inline constexpr int kRealignZeta = ux::kDim;               ///< ζ_r of the realignment [rad] (3)
+inline constexpr int kRealignBias = kRealignZeta + 3;       ///< ∂f_r of the realignment [m/s²] (2)
+inline constexpr int kRealignVelocity = kRealignBias + 2;   ///< (u)V at the new switch-over [m/s] (3)
+inline constexpr int kU2 = kRealignVelocity + 3;            ///< Û2 from position data (4.8b) (3)
+inline constexpr int kU3 = kU2 + 3;                         ///< Û3 from position data (4.8c) (3)
+inline constexpr int kU3Accel = kU3 + 3;                    ///< Û3 from the accelerometer data, slope of (5.12) (3)
+inline constexpr int kDfT = kU3Accel + 3;                   ///< filtered Δf̂(T) of (5.10) [m/s²] (3)
+inline constexpr int kTorquerCommands = kDfT + 3;           ///< measured alignment torquer commands ω_c (5.14) [rad/s] (3)
+inline constexpr int kAlignAccel = kTorquerCommands + 3;    ///< measured alignment accelerometer outputs Δf_m (5.19) [m/s²] (3)
+inline constexpr int kWiggleAtT = kAlignAccel + 3;          ///< velocity wiggle at T seen by the resets of 5.2/5.3 [m/s] (3)
+inline constexpr int kDim = kWiggleAtT + 3;
 }  // namespace ez
 
 using ExtendedVector = Eigen::Matrix<double, ez::kDim, 1>;

@@ -135,6 +135,7 @@ TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& s, const 
     case Scheme::k5_4: {  // (5.15), (5.16) at point 4 from t = 0; (5.19) at point 2
       Vec3 commands, accel;
       alignment_measurements(s, sample, noise, commands, accel);
+      commands += x.segment<3>(ux::kAlignDriftError);  // ω_ie E4 of (5.15)
       if (s.truth.system == System::kGyrocompass) commands.y() = 0.0;  // (5.15c): no y estimate
       o.torquer_command_radps = [commands](double) { return commands; };
       c.step_mps2 = -accel;

@@ -568,6 +568,9 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
       const Mat3 to_i = turn * c_e_n;
       y.segment<3>(kDR) = offset_i - to_i * st.position_n;
       y.segment<3>(kDVel) = earth_axis.cross(offset_i) - to_i * (st.velocity_n + earth_axis_n.cross(st.position_n));
+      // The resets' own errors (catalogue: reset_position_error, reset_velocity_error), given in a'.
+      y.segment<3>(kDR) += c_ap_i * x.segment<3>(ux::kResetPositionError);
+      y.segment<3>(kDVel) += c_ap_i * x.segment<3>(ux::kResetVelocityError);
       rho0 = rho;
       remainder_integral.setZero();
       record(stop);

@@ -53,6 +53,23 @@ constexpr std::array<UncertaintySpec, ux::kDim> kCatalogue = {{
     {"initial_velocity_z", "initial_velocity", "(u)V_z", ux::kInitialVelocity + 2, D::kVelocity, 0.3, "mps", kBoth, true, "Table 3.1 δV(0) (<0.3 m/s)"},
     {"latitude_error", "latitude_error", "δL_0", ux::kLatitudeError, D::kAngle, 0.1 * kMrad, "mrad", kBoth, false, "Table 3.1 (<0.1 mrad)"},
     {"altitude_error", "altitude_error", "δh", ux::kAltitudeError, D::kLength, 100.0, "m", kBoth, false, "Table 3.1 (<100 m)"},
+    // The schemes' measurement errors (the report states no bounds; these
+    // are the project's choices, each acting only in its scheme):
+    // 5.4's drift estimate −ω_c − ω_ie E4 (5.15): E4 within 1e-4 (0.1 meru), the
+    // unit Table 5.2 quotes ε4 in, a torquer scale factor of 1e-4 (Table 3.1's
+    // bound on the accelerometers') acting on the earth-rate commands of (5.14).
+    {"alignment_drift_error_x", "alignment_drift_error", "ω_ie ε4x", ux::kAlignDriftError + 0, D::kAngularRate, 0.1 * kMeru, "meru", kBoth, false, "project's choice: 1e-4 ω_ie, (5.15a)"},
+    {"alignment_drift_error_y", "alignment_drift_error", "ω_ie ε4y", ux::kAlignDriftError + 1, D::kAngularRate, 0.1 * kMeru, "meru", kBoth, false, "project's choice: 1e-4 ω_ie, (5.15a)"},
+    {"alignment_drift_error_z", "alignment_drift_error", "ω_ie ε4z", ux::kAlignDriftError + 2, D::kAngularRate, 0.1 * kMeru, "meru", kBoth, false, "project's choice: 1e-4 ω_ie, (5.15a)"},
+    // 5.2/5.3's resets at T (points 5, 6 of (5.8)): the registers set to the
+    // resolution of what they hold, the position computer's (§4.3, "a few
+    // feet") and one ΔV pulse (§4.3, 0.1 ft/s).
+    {"reset_position_error_x", "reset_position_error", "δr_reset,x", ux::kResetPositionError + 0, D::kLength, 3 * kFtToM, "m", kBoth, false, "project's choice: 3 ft, the position resolution, (5.8)"},
+    {"reset_position_error_y", "reset_position_error", "δr_reset,y", ux::kResetPositionError + 1, D::kLength, 3 * kFtToM, "m", kBoth, false, "project's choice: 3 ft, the position resolution, (5.8)"},
+    {"reset_position_error_z", "reset_position_error", "δr_reset,z", ux::kResetPositionError + 2, D::kLength, 3 * kFtToM, "m", kBoth, false, "project's choice: 3 ft, the position resolution, (5.8)"},
+    {"reset_velocity_error_x", "reset_velocity_error", "δv_reset,x", ux::kResetVelocityError + 0, D::kVelocity, 0.1 * kFtpsToMps, "mps", kBoth, false, "project's choice: 0.1 ft/s, one ΔV pulse, (5.8)"},
+    {"reset_velocity_error_y", "reset_velocity_error", "δv_reset,y", ux::kResetVelocityError + 1, D::kVelocity, 0.1 * kFtpsToMps, "mps", kBoth, false, "project's choice: 0.1 ft/s, one ΔV pulse, (5.8)"},
+    {"reset_velocity_error_z", "reset_velocity_error", "δv_reset,z", ux::kResetVelocityError + 2, D::kVelocity, 0.1 * kFtpsToMps, "mps", kBoth, false, "project's choice: 0.1 ft/s, one ΔV pulse, (5.8)"},
 }};
 
 constexpr bool indices_match_positions() {
@@ -72,10 +89,13 @@ std::optional<UncertaintySpec> find_uncertainty(std::string_view name) {
   return std::nullopt;
 }
 
+bool is_scheme_error(const UncertaintySpec& spec) { return spec.index >= ux::kFirstSchemeError; }
+
 std::vector<int> select_uncertainties(std::string_view name_or_group) {
   std::vector<int> out;
   for (const auto& spec : kCatalogue) {
-    if (name_or_group == "all" || spec.name == name_or_group || spec.group == name_or_group)
+    if (name_or_group == "all" || spec.name == name_or_group || spec.group == name_or_group ||
+        (name_or_group == kSchemeErrorsGroup && is_scheme_error(spec)))
       out.push_back(spec.index);
   }
   return out;
@@ -85,6 +105,7 @@ std::vector<std::string> uncertainty_groups() {
   std::vector<std::string> out;
   for (const auto& spec : kCatalogue)
     if (out.empty() || out.back() != spec.group) out.emplace_back(spec.group);
+  out.emplace_back(kSchemeErrorsGroup);
   return out;
 }
 

@@ -33,17 +33,25 @@ struct UncertaintySpec {
   std::string_view source;       ///< where the bound comes from
 };
 
-/// All 33 entries, in UncertaintyVector order.
+/// All ux::kDim entries, in UncertaintyVector order.
 std::span<const UncertaintySpec> catalogue();
 
 /// The entry named `name`, or nullopt.
 std::optional<UncertaintySpec> find_uncertainty(std::string_view name);
 
+/// The group of every measurement error a compensation scheme relies on
+/// (alignment_drift_error, reset_position_error, reset_velocity_error):
+/// `--dist scheme_errors=zero` gives schemes with perfect measurements.
+inline constexpr std::string_view kSchemeErrorsGroup = "scheme_errors";
+
+/// A measurement error of a compensation scheme (no effect without it).
+bool is_scheme_error(const UncertaintySpec& spec);
+
 /// Indices selected by a catalogue name, a group prefix (e.g. "gyro_drift"
-/// for its x, y, z) or "all". Empty when nothing matches.
+/// for its x, y, z), "scheme_errors" or "all". Empty when nothing matches.
 std::vector<int> select_uncertainties(std::string_view name_or_group);
 
-/// Distinct group names in catalogue order.
+/// Distinct group names in catalogue order, then "scheme_errors".
 std::vector<std::string> uncertainty_groups();
 
 /// The physical range of an entry's bound (and of a fixed value's

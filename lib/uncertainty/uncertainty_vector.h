@@ -1,6 +1,7 @@
 #pragma once
-/// The flat view of one sample's uncertainties: a fixed-size vector of the 33
-/// catalogue parameters (Table 3.1 and chapter 2), SI units, in the order
+/// The flat view of one sample's uncertainties: a fixed-size vector of the 42
+/// catalogue parameters (Table 3.1 and chapter 2, then the measurement errors
+/// the compensation schemes of chapter 5 rely on), SI units, in the order
 /// below. The catalogue (catalogue.h) names each slot; everything else
 /// indexes through these constants.
 #include <Eigen/Core>
@@ -21,7 +22,13 @@ inline constexpr int kDeflection = 26;      ///< ξ, η [rad] (2)
 inline constexpr int kInitialVelocity = 28; ///< (u)V_x,y,z [m/s] at switch-over (3)
 inline constexpr int kLatitudeError = 31;   ///< δL_0 [rad] (1)
 inline constexpr int kAltitudeError = 32;   ///< δh [m] (1)
-inline constexpr int kDim = 33;
+// The schemes' own measurement errors (chapter 5): zero effect on an
+// uncompensated run, each acting only through the scheme that relies on it.
+inline constexpr int kFirstSchemeError = 33;
+inline constexpr int kAlignDriftError = 33;    ///< ω_ie E4 of (5.15), (5.15a): 5.4's drift-estimate error [rad/s] (3)
+inline constexpr int kResetPositionError = 36; ///< error of the position reset at T, points 5 of (5.8), (5.11) [m] (3)
+inline constexpr int kResetVelocityError = 39; ///< error of the velocity reset at T, point 6 of (5.8), (5.11) [m/s] (3)
+inline constexpr int kDim = 42;
 }  // namespace ux
 
 using UncertaintyVector = Eigen::Matrix<double, ux::kDim, 1>;

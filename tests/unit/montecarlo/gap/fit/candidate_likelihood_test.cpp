@@ -45,8 +45,11 @@ PreparedRuns drawn_runs(int runs, double s, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal;
   for (int r = 0; r < runs; ++r) {
-    const Eigen::VectorXd c =
-        m.prior_var.cwiseSqrt().cwiseProduct(Eigen::VectorXd::NullaryExpr(m.H.cols(), [&] { return normal(rng); }));
+    // Columns the layout does not see (a scheme's measurement errors on runs
+    // without it) draw nothing: the runs do not depend on the catalogue's width.
+    Eigen::VectorXd c = Eigen::VectorXd::Zero(m.H.cols());
+    for (Eigen::Index j = 0; j < c.size(); ++j)
+      if (m.H.col(j).squaredNorm() > 0) c[j] = std::sqrt(m.prior_var[j]) * normal(rng);
     const Eigen::VectorXd noise =
         m.noise_var.cwiseSqrt().cwiseProduct(Eigen::VectorXd::NullaryExpr(m.H.rows(), [&] { return normal(rng); }));
     const Eigen::VectorXd y = m.mean + m.H * c + noise;

@@ -1,0 +1,80 @@
+// The schemes' measurement errors in the scheme maps (compensation_maps.h):
+// each acts only in the scheme that relies on it; the resets' errors follow
+// (5.8)'s cos ω_s t' and sin ω_s t' / ω_s at the paper level and the
+// numerically integrated Schuler ODE at the linear level; 5.4's ω_ie E4
+// enters as the measured torquer commands do (5.15).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "lib/compensation/compensation_maps.h"
+#include "lib/uncertainty/catalogue.h"
+
+namespace insmc {
+namespace {
+
+std::vector<double> minutes(std::initializer_list<double> m) {
+  std::vector<double> out;
+  for (double v : m) out.push_back(60.0 * v);
+  return out;
+}
+
+TEST(SchemeErrors, EachActsOnlyInTheSchemeThatReliesOnIt) {
+  const std::vector<double> t = minutes({10, 42, 63, 84});
+  for (System s : {System::kTheodolite, System::kGyrocompass})
+    for (Fidelity f : {Fidelity::kPaper, Fidelity::kLinear})
+      for (Scheme scheme : all_schemes()) {
+        const SchemeMaps maps = scheme_position_maps(scheme, s, f, ModelOptions{}, TestRunOptions{}, t);
+        for (const ExtendedMap& e : maps.position) {
+          const double drift = e.middleCols<3>(ux::kAlignDriftError).norm();
+          const double reset = e.middleCols<6>(ux::kResetPositionError).norm();
+          EXPECT_EQ(drift > 0, scheme == Scheme::k5_4) << to_string(scheme);
+          EXPECT_EQ(reset > 0, resets_at_test_end(scheme)) << to_string(scheme);
+        }
+      }
+}
+
+TEST(SchemeErrors, ResetErrorsFollowEquation58AndTheSchulerOde) {
+  const ModelOptions m;
+  const double ws = m.schuler_radps();
+  const std::vector<double> t = minutes({1, 21, 42, 63, 84, 90});
+  for (Scheme scheme : {Scheme::k5_2, Scheme::k5_3}) {
+    const SchemeMaps paper = scheme_position_maps(scheme, System::kTheodolite, Fidelity::kPaper, m, TestRunOptions{}, t);
+    const SchemeMaps linear = scheme_position_maps(scheme, System::kTheodolite, Fidelity::kLinear, m, TestRunOptions{}, t);
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      const Mat3 r_paper = paper.position[k].middleCols<3>(ux::kResetPositionError);
+      const Mat3 v_paper = paper.position[k].middleCols<3>(ux::kResetVelocityError);
+      EXPECT_TRUE(r_paper.isApprox(std::cos(ws * t[k]) * Mat3::Identity(), 1e-15));
+      EXPECT_TRUE(v_paper.isApprox(std::sin(ws * t[k]) / ws * Mat3::Identity(), 1e-15));
+      // RK4 with 2 s steps over at most 90 min: far below a millimetre per metre or per m/s.
+      EXPECT_LT((linear.position[k].middleCols<3>(ux::kResetPositionError) - r_paper).norm(), 1e-6);
+      EXPECT_LT((linear.position[k].middleCols<3>(ux::kResetVelocityError) - v_paper).norm(), 1e-3);
+    }
+  }
+}
+
+TEST(SchemeErrors, TheDriftEstimateErrorEntersAsTheTorquerCommands) {
+  const std::vector<double> t = minutes({42, 84});
+  for (System s : {System::kTheodolite, System::kGyrocompass})
+    for (Fidelity f : {Fidelity::kPaper, Fidelity::kLinear}) {
+      const SchemeMaps maps = scheme_position_maps(Scheme::k5_4, s, f, ModelOptions{}, TestRunOptions{}, t);
+      for (const ExtendedMap& e : maps.position) {
+        EXPECT_EQ(e.middleCols<3>(ux::kAlignDriftError), e.middleCols<3>(ez::kTorquerCommands));
+        // (5.15c): system 2 estimates no y drift, so its ε4y acts nowhere.
+        if (s == System::kGyrocompass) {
+          EXPECT_EQ(e.col(ux::kAlignDriftError + 1).norm(), 0.0);
+        }
+      }
+    }
+}
+
+TEST(SchemeErrors, TheGroupSelectsTheNineAndNothingElse) {
+  const std::vector<int> all = select_uncertainties(kSchemeErrorsGroup);
+  ASSERT_EQ(all.size(), 9u);
+  for (int i : all) EXPECT_TRUE(is_scheme_error(catalogue()[i]));
+  EXPECT_EQ(select_uncertainties("alignment_drift_error").size(), 3u);
+  EXPECT_EQ(uncertainty_groups().back(), kSchemeErrorsGroup);
+}
+
+}  // namespace
+}  // namespace insmc
