@@ -23,6 +23,7 @@ struct Subcommand {
 constexpr Subcommand kSubcommands[] = {
     {"run", insmc::app::run_run, "Monte Carlo study: RMS position-error envelopes with confidence intervals"},
     {"covariance", insmc::app::run_covariance, "exact linear-covariance envelopes and the error budget"},
+    {"rank", insmc::app::run_rank, "the schemes in order with its significance, and the break-even assumptions"},
     {"check", insmc::app::run_check, "statistical bounds for CI: exit 1 when a bound is violated"},
     {"tables", insmc::app::run_tables, "the report's tables beside the values insmc computes"},
     {"simulate", insmc::app::run_simulate, "truth-level records (format v1) with chosen named effects"},

@@ -13,6 +13,7 @@ int run_params(const Args& args);
 int run_tables(const Args& args);
 int run_run(const Args& args);
 int run_covariance(const Args& args);
+int run_rank(const Args& args);
 int run_check(const Args& args);
 int run_bench(const Args& args);
 int run_effects(const Args& args);

@@ -1,0 +1,92 @@
+// insmc rank: the compensation schemes in order of their horizontal RMS, per
+// system and report time, with the significance of each adjacent pair's
+// order (paired Monte Carlo on the same samples), and the values of the
+// decisive assumptions at which the first place changes (the covariance
+// level, exact). Writes ranking.csv, breakeven.csv, rank.md, rank.json and
+// rank.gp/.svg/.png (montecarlo/rank/).
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "apps/cli_common.h"
+#include "apps/output_paths.h"
+#include "apps/stdout_choice.h"
+#include "apps/study_options.h"
+#include "apps/sweep.h"
+#include "lib/common/input_error.h"
+#include "montecarlo/engine/engine.h"
+#include "montecarlo/rank/rank_files.h"
+
+namespace insmc::app {
+namespace {
+
+/// The break-even points need the covariance level, and one study: an option
+/// that would change nothing, or a sweep, is refused rather than ignored.
+void refuse_unused_options(const po::variables_map& vm) {
+  if (vm["fidelity"].as<std::string>() == "truth")
+    throw InputError("--fidelity", "truth",
+                     "rank needs the exact covariance of its level for the break-even points: paper or linear");
+  for (const char* name : {"alignment-time", "coarse-misalignment"})
+    if (!vm[name].defaulted())
+      throw InputError(std::string("--") + name, vm[name].as<std::string>(),
+                       "not used by rank (the steady-state alignment of the paper and linear levels)");
+  const std::vector<SweepAxis> sweeps = find_sweeps(vm);
+  if (!sweeps.empty())
+    throw InputError(sweeps.front().column, fmt::format("{}", fmt::join(sweeps.front().texts, ",")),
+                     "rank takes one value, not a sweep (it finds the break-even values itself); use insmc run");
+}
+
+}  // namespace
+
+int run_rank(const Args& args) {
+  po::options_description opts("Options");
+  opts.add_options()("out", po::value<std::string>(),
+                     "folder for ranking.csv, breakeven.csv, rank.md, rank.json and rank.gp/.svg/.png (RMS along "
+                     "each assumption, drawn by gnuplot; created if needed)")(
+      "format", po::value<std::string>()->default_value("markdown"),
+      "stdout: markdown (the order and the first place's limits at the last report time), csv (ranking.csv "
+      "alone) or json (rank.json alone)");
+  add_stdout_switches(opts, "rank.md (every report time)");
+  opts.add(study_options_description(true));
+  const auto vm = parse_args(args, "rank", "[options]", opts);
+  if (!vm) return 0;
+  refuse_unused_options(*vm);
+  mc::StudyConfig config = read_study_config(*vm, true);
+  config.with_grid = false;  // the order and its limits are at the report times
+  const StdoutChoice shown = read_stdout_choice(*vm);
+  std::optional<OutputFolderOption> out =
+      prepare_figure_folder(*vm, "rank", {"ranking.csv", "breakeven.csv", "rank.md", "rank.json"}, "rank");
+  const mc::StudyLayout layout = mc::make_layout(config);
+  const mc::StudyMap map(config, layout);
+  const mc::StudyAccumulator state = mc::run_blocks(config, map, 0, mc::block_count(config.samples));
+  const std::vector<mc::SchemeOrder> orders = mc::order_schemes(config, layout, state);
+  const mc::BreakEven even = mc::break_even(config);
+  mc::RankFiles files = mc::render_rank(config, orders, even);
+  mc::Json json = mc::Json::object();
+  json["settings"] = mc::settings_json(config);
+  json["rank"] = std::move(files.rank_json);
+  const std::string json_text = json.dump();
+  if (out) {
+    OutputFiles written{{"ranking.csv", files.ranking_csv},
+                        {"breakeven.csv", files.breakeven_csv},
+                        {"rank.md", files.rank_md},
+                        {"rank.json", json_text}};
+    for (auto& f : mc::figure_files("rank", mc::render_panel_figure(files.plot))) written.push_back(std::move(f));
+    out->write(written);
+  }
+  if (shown.quiet) return 0;
+  switch (shown.format) {
+    case OutputFormat::kCsv: fmt::print("{}", files.ranking_csv); break;
+    case OutputFormat::kJson: fmt::print("{}", json_text); break;
+    case OutputFormat::kMarkdown:
+      if (shown.full) {
+        fmt::print("{}", files.rank_md);
+        break;
+      }
+      fmt::print("insmc rank: fidelity {}, {} samples\n\n{}\n{}", to_string(config.fidelity), config.samples,
+                 files.summary_text, full_tables_line(*vm, "rank", {"rank.md", "ranking.csv", "breakeven.csv"}));
+      break;
+  }
+  return 0;
+}
+
+}  // namespace insmc::app

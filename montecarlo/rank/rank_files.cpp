@@ -1,0 +1,260 @@
+#include "montecarlo/rank/rank_files.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+#include "lib/units/units.h"
+#include "montecarlo/write/csv.h"
+#include "montecarlo/write/interval_format.h"
+#include "montecarlo/write/markdown.h"
+
+namespace insmc::mc {
+namespace {
+
+std::string t_min_text(double t_s) { return format_number(t_s / 60.0); }
+
+/// An assumption's value in the unit a navigation engineer reads it in,
+/// with its SI value where that is another unit.
+struct DisplayUnit {
+  double per_si;
+  std::string unit;
+};
+
+DisplayUnit display_unit(Assumption a) {
+  switch (a) {
+    case Assumption::kAlignDriftError: return {1.0 / kMeruToRadps, "meru"};  // 1 meru = 1e-3 ω_ie
+    case Assumption::kResetVelocityError: return {1.0 / kFtpsToMps, "ft/s"};
+    case Assumption::kResetPositionError: return {1.0 / kFtToM, "ft"};
+    case Assumption::kRandomFraction: return {1.0, ""};
+    case Assumption::kTestDuration: return {1.0 / 60.0, "min"};
+  }
+  return {1.0, ""};
+}
+
+std::string value_text(Assumption a, double si, const StudyConfig& config) {
+  if (std::isnan(si)) return "—";
+  const DisplayUnit d = display_unit(a);
+  const std::string shown = fmt::format("{:.3g}{}{}", si * d.per_si, d.unit.empty() ? "" : " ", d.unit);
+  if (a == Assumption::kAlignDriftError)
+    return fmt::format("{} ({:.3g} ω_ie, {:.3g} rad/s)", shown, si / config.model.earth_rate_radps, si);
+  if (a == Assumption::kResetVelocityError) return fmt::format("{} ({:.3g} m/s)", shown, si);
+  if (a == Assumption::kResetPositionError) return fmt::format("{} ({:.3g} m)", shown, si);
+  return shown;
+}
+
+/// "5.4 stays first while E4 < 1.1 meru (then 5.1.2)": the nearest
+/// crossings below and above the study's value.
+std::string limits_sentence(const StudyConfig& config, System system, double t_s, Assumption a,
+                            const std::vector<Crossing>& crossings, Scheme leader) {
+  const double now = study_value(config, a);
+  const Crossing* below = nullptr;
+  const Crossing* above = nullptr;
+  for (const Crossing& c : crossings) {
+    if (c.system != system || c.t_s != t_s || c.assumption != a) continue;
+    if (std::isnan(now) || c.value_si > now) {
+      if (!above || c.value_si < above->value_si) above = &c;
+    } else if (!below || c.value_si > below->value_si) {
+      below = &c;
+    }
+  }
+  const std::string name(to_string(a));
+  if (!below && !above) return fmt::format("{} stays first over the whole searched range of {}", to_string(leader), name);
+  std::string s = fmt::format("{} stays first while ", to_string(leader));
+  if (below) s += fmt::format("{} > {} (below: {})", name, value_text(a, below->value_si, config), to_string(below->challenger));
+  if (below && above) s += " and ";
+  if (above) s += fmt::format("{} < {} (beyond: {})", name, value_text(a, above->value_si, config), to_string(above->challenger));
+  return s;
+}
+
+std::string order_line(const SchemeOrder& o) {
+  std::string s;
+  for (std::size_t r = 0; r < o.schemes.size(); ++r) {
+    const RankedScheme& x = o.schemes[r];
+    s += fmt::format("{} {}", to_string(x.scheme), format_with_interval(x.rms_m, (x.rms_hi_m - x.rms_lo_m) / 2));
+    if (r + 1 < o.schemes.size()) s += x.order_significant ? " < " : " ≈ ";
+  }
+  return s;
+}
+
+/// Linear interpolation of the leader's curve at a crossing (the mark).
+double curve_value(const AssumptionCurve& c, std::size_t j, std::size_t k, std::size_t i, double v) {
+  for (std::size_t q = 0; q + 1 < c.values_si.size(); ++q) {
+    const double a = c.values_si[q], b = c.values_si[q + 1];
+    if (v >= a && v <= b) {
+      const double w = b > a ? (v - a) / (b - a) : 0.0;
+      return (1 - w) * c.rms[q][j][k][i] + w * c.rms[q + 1][j][k][i];
+    }
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
+RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even) {
+  RankFiles f;
+  const std::string fidelity(to_string(config.fidelity));
+  Table ranking({"system", "t_min", "fidelity", "rank", "scheme", "rms_m", "rms_lo_m", "rms_hi_m", "order_significant"});
+  Json orders_json = Json::array();
+  for (const SchemeOrder& o : orders) {
+    Json schemes = Json::array();
+    for (std::size_t r = 0; r < o.schemes.size(); ++r) {
+      const RankedScheme& s = o.schemes[r];
+      const bool last = r + 1 == o.schemes.size();
+      ranking.add_row({std::to_string(system_number(o.system)), t_min_text(o.t_s), fidelity, std::to_string(r + 1),
+                       std::string(to_string(s.scheme)), format_number(s.rms_m), format_number(s.rms_lo_m),
+                       format_number(s.rms_hi_m), last ? "" : (s.order_significant ? "true" : "false")});
+      Json j = Json::object();
+      j["rank"] = static_cast<int>(r + 1);
+      j["scheme"] = std::string(to_string(s.scheme));
+      j["rms_m"] = s.rms_m;
+      j["rms_lo_m"] = s.rms_lo_m;
+      j["rms_hi_m"] = s.rms_hi_m;
+      if (!last) {
+        j["order_significant"] = s.order_significant;
+        j["paired_z"] = std::isfinite(s.paired_z) ? Json(s.paired_z) : Json();
+      }
+      schemes.push_back(std::move(j));
+    }
+    Json oj = Json::object();
+    oj["system"] = system_number(o.system);
+    oj["t_s"] = o.t_s;
+    oj["paired_samples"] = static_cast<unsigned long long>(o.paired_samples);
+    oj["schemes"] = std::move(schemes);
+    orders_json.push_back(std::move(oj));
+  }
+  f.ranking_csv = render_csv(ranking);
+
+  Table breakeven({"system", "t_min", "fidelity", "assumption", "leader", "challenger", "value", "unit"});
+  Json crossings_json = Json::array();
+  for (const Crossing& c : even.crossings) {
+    breakeven.add_row({std::to_string(system_number(c.system)), t_min_text(c.t_s), fidelity,
+                       std::string(to_string(c.assumption)), std::string(to_string(c.leader)),
+                       std::string(to_string(c.challenger)), format_number(c.value_si), std::string(si_unit(c.assumption))});
+    Json j = Json::object();
+    j["system"] = system_number(c.system);
+    j["t_s"] = c.t_s;
+    j["assumption"] = std::string(to_string(c.assumption));
+    j["leader"] = std::string(to_string(c.leader));
+    j["challenger"] = std::string(to_string(c.challenger));
+    j["value"] = c.value_si;
+    j["unit"] = std::string(si_unit(c.assumption));
+    crossings_json.push_back(std::move(j));
+  }
+  f.breakeven_csv = render_csv(breakeven);
+
+  // rank.md: the order with its significance, then the limits of the first place.
+  std::string md = fmt::format(
+      "# insmc rank: the schemes in order, and the assumptions that decide it\n\n"
+      "Fidelity {}, {} samples, seed {}, confidence {:g} %. Order by the horizontal RMS of the Monte Carlo "
+      "(interval: the RMS's {:g} % confidence interval over all samples). An adjacent pair's order is "
+      "*significant* when the paired test says so: each sample passes through every scheme, so the difference "
+      "of the two schemes' squared errors is tested against its own scatter (two-sided normal quantile of the "
+      "confidence, over the kept samples: up to 2^24 values in all).\n\n",
+      fidelity, config.samples, config.seed, 100 * config.confidence, 100 * config.confidence);
+  for (const SchemeOrder& o : orders) {
+    md += fmt::format("## System {}, {} min ({} paired samples)\n\n", system_number(o.system), t_min_text(o.t_s),
+                      o.paired_samples);
+    Table t({"rank", "scheme", "RMS [m] ± half-width", "order against the next"});
+    for (std::size_t r = 0; r < o.schemes.size(); ++r) {
+      const RankedScheme& s = o.schemes[r];
+      const std::string against =
+          r + 1 == o.schemes.size() ? ""
+                                    : fmt::format("{} (z = {:.3g})", s.order_significant ? "significant" : "not significant",
+                                                  s.paired_z);
+      t.add_row({std::to_string(r + 1), std::string(to_string(s.scheme)),
+                 format_with_interval(s.rms_m, (s.rms_hi_m - s.rms_lo_m) / 2), against});
+    }
+    md += render_markdown(t) + "\n";
+  }
+  std::string ranges;
+  for (Assumption a : kAllAssumptions)
+    if (const int slot = bound_slot(a); slot >= 0)
+      ranges += fmt::format("{}{} up to {}", ranges.empty() ? "" : ", ", to_string(a),
+                            value_text(a, bound_range(catalogue()[static_cast<std::size_t>(slot)]).max_si, config));
+  md += "## The first place's limits (covariance level, exact)\n\n"
+        "Each assumption moved alone, the others at the study's values: a scheme measurement error as uniform ±b "
+        "on every axis (alignment_drift_error is ω_ie E4 of (5.15); the reset errors act at T in (5.8)), the random "
+        "fraction F of ζ and ∂f drawn anew at each alignment, the test duration on whole filter intervals "
+        "(1 min to 40 min). A bound is searched over its catalogue range (" + ranges + "), F over 0 to 1. "
+        "breakeven.csv lists every crossing of the first scheme with another.\n\n";
+  Table limits({"system", "t [min]", "first", "assumption", "in the study", "limits of the first place"});
+  for (std::size_t j = 0; j < even.at_study.size(); ++j)
+    for (std::size_t k = 0; k < even.at_study[j].size(); ++k) {
+      const auto& rms = even.at_study[j][k];
+      const auto leader = static_cast<std::size_t>(std::min_element(rms.begin(), rms.end()) - rms.begin());
+      for (Assumption a : kAllAssumptions)
+        limits.add_row({std::to_string(system_number(config.systems[j])), t_min_text(config.report_times_s[k]),
+                        std::string(to_string(config.schemes[leader])), std::string(to_string(a)),
+                        value_text(a, study_value(config, a), config),
+                        limits_sentence(config, config.systems[j], config.report_times_s[k], a, even.crossings,
+                                        config.schemes[leader])});
+    }
+  md += render_markdown(limits);
+  f.rank_md = md;
+
+  // stdout: the order and the limits at the last report time.
+  std::string text;
+  const std::size_t last_k = config.report_times_s.size() - 1;
+  for (const SchemeOrder& o : orders) {
+    if (o.t_s != config.report_times_s[last_k]) continue;
+    text += fmt::format("system {}, {} min: {}\n", system_number(o.system), t_min_text(o.t_s), order_line(o));
+  }
+  text += "(< : significant, ≈ : not significant; RMS in m)\n\n";
+  for (std::size_t j = 0; j < even.at_study.size(); ++j) {
+    const auto& rms = even.at_study[j][last_k];
+    const auto leader = static_cast<std::size_t>(std::min_element(rms.begin(), rms.end()) - rms.begin());
+    for (Assumption a : kAllAssumptions)
+      text += fmt::format("system {}, {} min: {}\n", system_number(config.systems[j]), t_min_text(config.report_times_s[last_k]),
+                          limits_sentence(config, config.systems[j], config.report_times_s[last_k], a, even.crossings,
+                                          config.schemes[leader]));
+  }
+  f.summary_text = text;
+
+  // The figure: per assumption and system, every scheme's RMS at the last
+  // report time, the crossings marked on the first scheme's line.
+  f.plot.stem = "rank";
+  f.plot.title = fmt::format("Horizontal RMS at {} min along each assumption ({} level; scheme none, which none "
+                             "of them moves, left out; points: where the first place changes hands)",
+                             t_min_text(config.report_times_s[last_k]), fidelity);
+  f.plot.x_label = "the assumption's value (unit in the panel title)";
+  f.plot.y_label = "horizontal RMS [m]";
+  f.plot.columns = static_cast<int>(config.systems.size());
+  for (const AssumptionCurve& c : even.curves) {
+    const DisplayUnit d = display_unit(c.assumption);
+    for (std::size_t j = 0; j < config.systems.size(); ++j) {
+      PlotPanel panel;
+      panel.title = fmt::format("system {}: {}{}", system_number(config.systems[j]), to_string(c.assumption),
+                                d.unit.empty() ? "" : " [" + d.unit + "]");
+      const auto& rms = even.at_study[j][last_k];
+      const auto leader = static_cast<std::size_t>(std::min_element(rms.begin(), rms.end()) - rms.begin());
+      for (std::size_t i = 0; i < config.schemes.size(); ++i) {
+        // none depends on no assumption and would only squeeze the others.
+        if (config.schemes[i] == Scheme::kNone && config.schemes.size() > 1) continue;
+        PlotLine line;
+        line.name = std::string(to_string(config.schemes[i]));
+        line.colour = static_cast<int>(i);
+        for (std::size_t q = 0; q < c.values_si.size(); ++q) {
+          line.x.push_back(c.values_si[q] * d.per_si);
+          line.y.push_back(c.rms[q][j][last_k][i]);
+        }
+        if (i == leader)
+          for (const Crossing& x : even.crossings)
+            if (x.system == config.systems[j] && x.t_s == config.report_times_s[last_k] && x.assumption == c.assumption) {
+              const double y = curve_value(c, j, last_k, i, x.value_si);
+              if (std::isfinite(y)) line.marks.push_back({x.value_si * d.per_si, y, y, y});
+            }
+        panel.lines.push_back(std::move(line));
+      }
+      f.plot.panels.push_back(std::move(panel));
+    }
+  }
+
+  f.rank_json = Json::object();
+  f.rank_json["orders"] = std::move(orders_json);
+  f.rank_json["breakeven"] = std::move(crossings_json);
+  return f;
+}
+
+}  // namespace insmc::mc

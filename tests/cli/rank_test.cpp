@@ -1,0 +1,119 @@
+// insmc rank end to end: the order and its paired significance, the
+// break-even values checked against `insmc covariance` run on either side of
+// them (another path through the program than rank's polynomials), and bad
+// input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/cli/run_program.h"
+
+namespace insmc::testing {
+namespace {
+
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream l(line);
+    for (std::string cell; std::getline(l, cell, ',');) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+/// Horizontal RMS [m] per scheme of system `system` at `t_min` from `insmc covariance`.
+std::map<std::string, double> covariance_rms(const std::string& options, int system, int t_min) {
+  const ProgramResult r = run_insmc("covariance --format csv " + options);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  std::map<std::string, double> out;
+  for (const auto& row : csv_rows(r.out))
+    if (row.size() > 4 && row[1] == std::to_string(system) && row[2] == "horizontal" && row[3] == std::to_string(t_min))
+      out[row[0]] = std::stod(row[4]);
+  return out;
+}
+
+std::string first_of(const std::map<std::string, double>& rms) {
+  std::string best;
+  for (const auto& [scheme, value] : rms)
+    if (best.empty() || value < rms.at(best)) best = scheme;
+  return best;
+}
+
+TEST(Rank, ZeroSchemeErrorsPut54FirstAt84MinSignificantlyAndItsE4LimitHolds) {
+  TempDir out;
+  const ProgramResult r =
+      run_insmc("rank --samples 4000 --dist scheme_errors=zero --quiet --out " + out.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto ranking = csv_rows(read_file(out.path() / "ranking.csv"));
+  ASSERT_FALSE(ranking.empty());
+  EXPECT_EQ(ranking[0], (std::vector<std::string>{"system", "t_min", "fidelity", "rank", "scheme", "rms_m", "rms_lo_m",
+                                                  "rms_hi_m", "order_significant"}));
+  std::map<std::string, std::string> first;  // "system t" → first scheme
+  for (std::size_t i = 1; i < ranking.size(); ++i) {
+    const auto& row = ranking[i];
+    ASSERT_EQ(row.size(), 9u);
+    if (row[3] != "1") continue;
+    first[row[0] + " " + row[1]] = row[4];
+    // The first place at 84 min is 5.4's, ahead of the second with 4000 paired samples.
+    if (row[1] == "84") {
+      EXPECT_EQ(row[4], "5.4") << "system " << row[0];
+      EXPECT_EQ(row[8], "true") << "system " << row[0];
+      EXPECT_LE(std::stod(row[6]), std::stod(row[5]));
+      EXPECT_GE(std::stod(row[7]), std::stod(row[5]));
+    }
+  }
+  EXPECT_EQ(first.size(), 6u);
+
+  // E4's break-even value at 84 min, system 1: on either side of it
+  // `covariance` puts another scheme first.
+  const auto breakeven = csv_rows(read_file(out.path() / "breakeven.csv"));
+  EXPECT_EQ(breakeven[0], (std::vector<std::string>{"system", "t_min", "fidelity", "assumption", "leader", "challenger",
+                                                    "value", "unit"}));
+  double e4 = 0;
+  std::string challenger;
+  for (const auto& row : breakeven)
+    if (row[0] == "1" && row[1] == "84" && row[3] == "alignment_drift_error" && (e4 == 0 || std::stod(row[6]) < e4)) {
+      EXPECT_EQ(row[4], "5.4");
+      EXPECT_EQ(row[7], "radps");
+      e4 = std::stod(row[6]);
+      challenger = row[5];
+    }
+  ASSERT_GT(e4, 0) << "no crossing of E4 at 84 min";
+  // The report's condition is E4 below about 1e-3 ω_ie (7.3e-8 rad/s); the crossing must be of that order.
+  EXPECT_GT(e4, 1e-4 * 7.292115e-5);
+  EXPECT_LT(e4, 1e-2 * 7.292115e-5);
+  const auto first_at = [&](double factor) {
+    char bound[64];
+    std::snprintf(bound, sizeof bound, "%.17gmeru", e4 * factor / 7.292115e-8);
+    return first_of(covariance_rms(std::string("--dist scheme_errors=zero --dist alignment_drift_error=uniform "
+                                               "--bound alignment_drift_error=") + bound, 1, 84));
+  };
+  EXPECT_EQ(first_at(0.99), "5.4");
+  EXPECT_EQ(first_at(1.01), challenger);
+}
+
+}  // namespace
+}  // namespace insmc::testing
+
+namespace insmc::testing {
+namespace {
+
+TEST(Rank, EachOptionThatCannotApplyIsRefusedWithExit2) {
+  for (const char* args : {"rank --fidelity truth", "rank --test-duration 5min,10min", "rank --samples 1",
+                           "rank --alignment-time 30min"}) {
+    const ProgramResult r = run_insmc(args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find("insmc rank:"), std::string::npos) << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace insmc::testing
