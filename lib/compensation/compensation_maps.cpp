@@ -64,7 +64,7 @@ Sensitivity3 computed_velocity_error(const Sensitivity3& initial_velocity) {
 /// stationary vehicle, i.e. the errors of (3.22), (3.23) turned with the
 /// earth to time T; the uncompensated forcing goes on.
 std::vector<Sensitivity3> reset_propagation(System system, Fidelity fidelity, const ModelOptions& m, double T,
-                                            const std::vector<double>& taus) {
+                                            const std::vector<double>& taus, SchemeForms forms) {
   std::vector<Sensitivity3> out;
   if (fidelity == Fidelity::kPaper) {
     // Fig. 3.3 from T with the loop state y = δr − δr(0) reset to 0 and its
@@ -77,7 +77,10 @@ std::vector<Sensitivity3> reset_propagation(System system, Fidelity fidelity, co
     const Sensitivity3 a2 = g * w * w * sr.u4;
     const Sensitivity3 v0 = computed_velocity_error(sr.initial_velocity_mps);
     for (double tau : taus) {
-      const double t = T + tau, p3 = std::pow(w * t, 3) - std::pow(w * T, 3);
+      // (5.8) carries U5 ω_ie³t³/6 from the switch-over: after the resets its
+      // growth continues, (T + t')³ − T³; (5.9), (5.11b) print t'³ (errata.md#5-9).
+      const double t = T + tau;
+      const double p3 = forms == SchemeForms::kPrinted ? std::pow(w * tau, 3) : std::pow(w * t, 3) - std::pow(w * T, 3);
       Sensitivity3 r = sr.initial_position_m + std::sin(ws * tau) / ws * v0 + step_response(tau, ws) * a0 +
                        ramp_response(tau, ws) * a1 + quadratic_response(tau, ws) * a2 + m.radius_m * p3 / 6 * sr.u5;
       // The resets' own errors, as δr̂(T) and δṙ̂(T) enter (5.8): cos ω_s t', sin ω_s t' / ω_s.
@@ -132,13 +135,13 @@ Eigen::Matrix3d combined_integrator_selection(System system) {
 }
 
 SchemeMaps scheme_position_maps(Scheme scheme, System system, Fidelity fidelity, const ModelOptions& m,
-                                const TestRunOptions& test, const std::vector<double>& taus) {
+                                const TestRunOptions& test, const std::vector<double>& taus, SchemeForms forms) {
   INSMC_ASSERT(fidelity != Fidelity::kTruth, "scheme maps exist for the linear-in-x levels only");
   const double g = m.gravity_mps2, w = m.earth_rate_radps, ws = m.schuler_radps(), T = test.duration_s;
   SchemeMaps out;
   out.ready_time_s = realigns(scheme) ? T + test.realignment_duration_s : resets_at_test_end(scheme) ? T : 0.0;
   out.frame_time_offset_s = resets_at_test_end(scheme) ? T : 0.0;
-  const std::vector<Sensitivity3> s = resets_at_test_end(scheme) ? reset_propagation(system, fidelity, m, T, taus)
+  const std::vector<Sensitivity3> s = resets_at_test_end(scheme) ? reset_propagation(system, fidelity, m, T, taus, forms)
                                                                  : position_maps(system, fidelity, m, taus);
   const std::vector<Mat3> torquer = scheme == Scheme::k5_4 ? torquer_response(fidelity, m, taus) : std::vector<Mat3>{};
   const Mat3 w_from_u3 = torquer_rates_from_u3(system, m);
@@ -179,6 +182,12 @@ SchemeMaps scheme_position_maps(Scheme scheme, System system, Fidelity fidelity,
         // ω_ie E4 of (5.15) enters the applied rates as the commands do.
         e.middleCols<3>(ux::kAlignDriftError) = torquer[n] * select;
         e.middleCols<3>(ez::kAlignAccel) = -r0s * I;
+        // (5.20) as printed: U'2_z = δg − 2δh/r0, where −Δf_m/g at point 2 gives
+        // −δg/g − 2δh/r0; with δg/g = −3δh/r0 (§4.1) the printed z row is
+        // −5δh/r0 against the derived +δh/r0 (errata.md#5-20). (ε5's sign, the
+        // other difference, is immaterial: a zero-mean measurement error.)
+        if (fidelity == Fidelity::kPaper && forms == SchemeForms::kPrinted)
+          e(2, ux::kAltitudeError) += -6.0 * (1 - std::cos(ws * tau));  // r0 (−6δh/r0)(1 − cos ω_s t)
         break;
       }
     }

@@ -33,8 +33,17 @@ struct SchemeMaps {
   double ready_time_s = 0.0;
 };
 
+/// The closed forms of the paper level's schemes: as the report prints
+/// them, (5.9) and (5.11b) restarting the U5 growth at the reset and (5.20)
+/// with +δg (tables/notes/errata.md#5-9, #5-20), or corrected, derived from
+/// (5.8) and (5.19) (what the linear level integrates). The paper level
+/// means the printed forms; the corrected ones exist for the term-by-term
+/// check of the errata.
+enum class SchemeForms { kPrinted, kCorrected };
+
 SchemeMaps scheme_position_maps(Scheme scheme, System system, Fidelity fidelity, const ModelOptions& model,
-                                const TestRunOptions& test, const std::vector<double>& clock_times_s);
+                                const TestRunOptions& test, const std::vector<double>& clock_times_s,
+                                SchemeForms paper_forms = SchemeForms::kPrinted);
 
 /// Torquer compensation rates ω_cp (point 4) per unit of Û3 (5.5a, b):
 /// ω_ie[Û3y; −Û3x; 0] for system 1, ω_ie[Û3y; 0; 0] for system 2.

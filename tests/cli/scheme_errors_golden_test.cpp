@@ -3,12 +3,17 @@
 // zero give, byte for byte, the envelopes and covariances insmc wrote before
 // they existed. The golden files (tests/regression/golden/scheme_errors_zero/)
 // were written by the last commit without them, with the commands below
-// less `--dist scheme_errors=zero`.
+// less `--dist scheme_errors=zero`. One later change is excepted: the paper
+// level's 5.2, 5.3 and 5.4 follow the printed (5.9), (5.11b), (5.20) since
+// (tables/notes/errata.md#5-9, #5-20; their term-by-term test is
+// CompensationResiduals), so at the paper level those rows are not compared.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "tests/cli/run_program.h"
 
@@ -24,6 +29,20 @@ struct GoldenCase {
   std::string arguments, file, golden_name;
 };
 
+/// The lines of a CSV whose first cell (the scheme) is not one of `skipped`.
+std::string without_schemes(const std::string& csv, const std::vector<std::string>& skipped) {
+  std::string out;
+  std::size_t at = 0;
+  while (at < csv.size()) {
+    const std::size_t end = std::min(csv.find('\n', at), csv.size());
+    const std::string line = csv.substr(at, end - at);
+    const std::string scheme = line.substr(0, line.find(','));
+    if (std::find(skipped.begin(), skipped.end(), scheme) == skipped.end()) out += line + "\n";
+    at = end + 1;
+  }
+  return out;
+}
+
 TEST(SchemeErrorsGolden, AtZeroEveryEnvelopeAndCovarianceIsTheOneWrittenBeforeThem) {
   ASSERT_NE(std::getenv("INSMC_SOURCE_DIR"), nullptr) << "run through ctest (INSMC_SOURCE_DIR)";
   const GoldenCase cases[] = {
@@ -37,7 +56,12 @@ TEST(SchemeErrorsGolden, AtZeroEveryEnvelopeAndCovarianceIsTheOneWrittenBeforeTh
     TempDir dir;
     const ProgramResult r = run_insmc(c.arguments + " --dist scheme_errors=zero --quiet --out " + dir.str());
     ASSERT_EQ(r.exit_code, 0) << c.arguments << ": " << r.err;
-    EXPECT_EQ(read_file(dir.path() / c.file), read_file(golden(c.golden_name))) << c.arguments;
+    const std::vector<std::string> skipped =
+        c.arguments.find("paper") != std::string::npos ? std::vector<std::string>{"5.2", "5.3", "5.4"}
+                                                       : std::vector<std::string>{};
+    const std::string now = without_schemes(read_file(dir.path() / c.file), skipped);
+    EXPECT_EQ(now, without_schemes(read_file(golden(c.golden_name)), skipped)) << c.arguments;
+    EXPECT_GT(now.size(), 1000u) << c.arguments;
   }
 }
 

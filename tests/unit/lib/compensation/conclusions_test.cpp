@@ -173,7 +173,7 @@ TEST(CompensationConclusions, TextFiguresOfScheme52AreTheU4TermsAlone) {
   const double w = m.earth_rate_radps, ws = m.schuler_radps(), r0 = m.radius_m, x = 10 * kOneMeru;
   const int j = ux::kGyroDrift + 2;
   for (System sys : {System::kTheodolite, System::kGyrocompass}) {
-    const testing::FitResult fit = testing::scheme_coefficients(Scheme::k5_2, sys, m, test);
+    const testing::FitResult fit = testing::scheme_coefficients(Scheme::k5_2, sys, m, test, SchemeForms::kPrinted);
     const double c2 = fit.c[testing::kU2](0, j), c3 = fit.c[testing::kU3](0, j);
     const double u4x = 2 * std::cos(m.latitude_rad) / w;  // per unit ω_doz
     EXPECT_NEAR(c2, u4x * 0.5 * std::pow(w * kFigureTestS, 2), 1e-9 * std::abs(c2));

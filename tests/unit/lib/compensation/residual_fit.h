@@ -178,10 +178,12 @@ inline std::string perturbation_name(int p) {
   return slot("eps_rdot(T)", ez::kWiggleAtT);
 }
 
-/// The scheme's residual coefficients at the paper level for test run `test`.
-inline FitResult scheme_coefficients(Scheme scheme, System system, const ModelOptions& m, const TestRunOptions& test) {
+/// The scheme's residual coefficients at the paper level for test run `test`,
+/// with the printed or the corrected closed forms (compensation_maps.h).
+inline FitResult scheme_coefficients(Scheme scheme, System system, const ModelOptions& m, const TestRunOptions& test,
+                                     SchemeForms forms) {
   const std::vector<double> times = fit_times_s();
-  const SchemeMaps maps = scheme_position_maps(scheme, system, Fidelity::kPaper, m, test, times);
+  const SchemeMaps maps = scheme_position_maps(scheme, system, Fidelity::kPaper, m, test, times, forms);
   return fit_time_functions(maps.position, times, perturbations(system, m, test), m);
 }
 
