@@ -67,7 +67,7 @@ int run_simulate(const Args& args) {
   const double T = test.duration_s, tau = test.filter_interval_s;
   // After a realignment the second navigation starts at nav_start_s = T + the
   // realignment; its rows follow on the same filter grid.
-  const double nav_start_s = realigns(scheme) ? T + test.realignment_duration_s : T;
+  const double nav_start_s = realigns(scheme) ? ready_time_s(scheme, T, test.realignment_duration_s) : T;
   std::vector<double> times = uniform_times(T, tau, false);
   for (double t : uniform_times(nav_s, tau, false)) times.push_back(nav_start_s + t);
   RecordFile file;

@@ -139,11 +139,11 @@ SchemeMaps scheme_position_maps(Scheme scheme, System system, Fidelity fidelity,
   INSMC_ASSERT(fidelity != Fidelity::kTruth, "scheme maps exist for the linear-in-x levels only");
   const double g = m.gravity_mps2, w = m.earth_rate_radps, ws = m.schuler_radps(), T = test.duration_s;
   SchemeMaps out;
-  out.ready_time_s = realigns(scheme) ? T + test.realignment_duration_s : resets_at_test_end(scheme) ? T : 0.0;
-  out.frame_time_offset_s = resets_at_test_end(scheme) ? T : 0.0;
+  out.ready_time_s = ready_time_s(scheme, T, test.realignment_duration_s);
+  out.frame_time_offset_s = frame_time_offset_s(scheme, T);
   const std::vector<Sensitivity3> s = resets_at_test_end(scheme) ? reset_propagation(system, fidelity, m, T, taus, forms)
                                                                  : position_maps(system, fidelity, m, taus);
-  const std::vector<Mat3> torquer = scheme == Scheme::k5_4 ? torquer_response(fidelity, m, taus) : std::vector<Mat3>{};
+  const std::vector<Mat3> torquer = uses_alignment_data(scheme) ? torquer_response(fidelity, m, taus) : std::vector<Mat3>{};
   const Mat3 w_from_u3 = torquer_rates_from_u3(system, m);
   for (size_t n = 0; n < taus.size(); ++n) {
     const double tau = taus[n], r0s = step_response(tau, ws), r1s = ramp_response(tau, ws);

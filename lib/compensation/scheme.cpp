@@ -42,5 +42,16 @@ std::string_view clock_of(Scheme s) {
 bool realigns(Scheme s) { return s == Scheme::k5_1_1 || s == Scheme::k5_1_2 || s == Scheme::kCombined; }
 bool resets_at_test_end(Scheme s) { return s == Scheme::k5_2 || s == Scheme::k5_3; }
 bool uses_test_run(Scheme s) { return s != Scheme::kNone && s != Scheme::k5_4; }
+bool uses_alignment_data(Scheme s) { return s == Scheme::k5_4; }
+
+double clock_start_s(Scheme s, double T, double nav_start_s) {
+  return realigns(s) ? nav_start_s : resets_at_test_end(s) ? T : 0.0;
+}
+
+double ready_time_s(Scheme s, double T, double realignment_duration_s) {
+  return realigns(s) ? T + realignment_duration_s : resets_at_test_end(s) ? T : 0.0;
+}
+
+double frame_time_offset_s(Scheme s, double T) { return resets_at_test_end(s) ? T : 0.0; }
 
 }  // namespace insmc

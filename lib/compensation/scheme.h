@@ -33,5 +33,20 @@ bool realigns(Scheme s);
 bool resets_at_test_end(Scheme s);
 /// Needs the preflight test run (all but none and 5.4).
 bool uses_test_run(Scheme s);
+/// Needs the alignment phase's torquer commands and accelerometer outputs
+/// (5.4: (5.14), (5.19)).
+bool uses_alignment_data(Scheme s);
+
+/// Where the scheme's clock (clock_of) starts, in time since the first
+/// switch-over: the second switch-over `nav_start_s` after a realignment,
+/// the test's end T after the resets, else 0.
+double clock_start_s(Scheme s, double test_duration_s, double nav_start_s);
+/// From the first switch-over until the vehicle may fly: T plus the
+/// realignment where there is one, T with the resets, 0 for none and 5.4.
+double ready_time_s(Scheme s, double test_duration_s, double realignment_duration_s);
+/// Time since the switch-over of the platform frame a' the scheme's errors
+/// are expressed in, at t = 0 on its clock: T after the resets (the same
+/// navigation goes on), 0 otherwise (a realignment switches over anew).
+double frame_time_offset_s(Scheme s, double test_duration_s);
 
 }  // namespace insmc

@@ -142,7 +142,7 @@ TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& s, const 
       break;
     }
   }
-  const double offset = resets_at_test_end(scheme) ? T : 0.0;
+  const double offset = frame_time_offset_s(scheme, T);
   run.flight = simulate_truth(o, x, shifted(clock_times_s, offset), flight_noise);
   return run;
 }

@@ -68,7 +68,7 @@ void truth_rows(const StudyConfig& c, const StudyMap& map, const Sampler& sample
     for (std::size_t i = 0; i < c.schemes.size(); ++i) {
       const Scheme scheme = c.schemes[i];
       const TruthRun run = run_truth_scheme(scheme, setup, sample, times, {}, any_test ? &test : nullptr).flight;
-      const double frame_offset = resets_at_test_end(scheme) ? T : 0.0;
+      const double frame_offset = frame_time_offset_s(scheme, T);
       for (std::size_t k = 0; k < times.size(); ++k) {
         const Vec3& r = run.position_error_ap_m[k];
         const Eigen::Vector2d ne = local_level_horizontal(frame_offset + times[k], c.model) * r;

@@ -31,7 +31,7 @@ SystemPipeline::SystemPipeline(const StudyConfig& c, System system)
     : config_(&c), system_(system), sampler_(c.uncertainties), test_(c.test) {
   for (Scheme s : c.schemes) {
     needs_test_ |= uses_test_run(s);
-    needs_alignment_data_ |= s == Scheme::k5_4;
+    needs_alignment_data_ |= uses_alignment_data(s);
     needs_realignment_ |= realigns(s);
   }
   const ModelOptions& m = c.model;

@@ -30,12 +30,12 @@ SchemeRows scheme_rows(const Layout& layout, const RecordSite& site, const TestR
   const double T = site.test_duration_s;
   // The r rows after the scheme on its clock (clock_of): 5.4 acts from
   // switch-over, 5.2 and 5.3 from T, a realignment from the second switch-over.
-  const double zero = realigns(scheme) ? site.nav_start_s : resets_at_test_end(scheme) ? T : 0.0;
+  const double zero = clock_start_s(scheme, T, site.nav_start_s);
   std::vector<std::size_t> rows;
   std::vector<double> clock;
   for (std::size_t i = 0; i < layout.rows.size(); ++i) {
     if (layout.rows[i].quantity != Quantity::kR) continue;
-    if (scheme != Scheme::k5_4 && static_cast<int>(i) < layout.test_rows) continue;
+    if (!uses_alignment_data(scheme) && static_cast<int>(i) < layout.test_rows) continue;
     rows.push_back(i);
     clock.push_back(layout.rows[i].t_s - zero);
   }
@@ -67,7 +67,7 @@ SchemeRows scheme_rows(const Layout& layout, const RecordSite& site, const TestR
   // 5.4: the measured torquer commands (5.14) and accelerometer outputs
   // (5.19), each a map of x plus two pulse remainders over the averaging time.
   Eigen::Matrix<double, 6, ux::kDim> measured = Eigen::Matrix<double, 6, ux::kDim>::Zero();
-  if (scheme == Scheme::k5_4) {
+  if (uses_alignment_data(scheme)) {
     const Sensitivity3 steady = full_steady_state_misalignment(site.system, site.model);
     measured.topRows<3>() = torquer_commands(steady, site.model);
     measured.bottomRows<3>() = alignment_accelerometer_outputs(steady, site.model);
@@ -93,7 +93,7 @@ SchemeRows scheme_rows(const Layout& layout, const RecordSite& site, const TestR
         if (!rounding.empty()) extra[rounding[static_cast<std::size_t>(b)]][i] = -coefficient;
       }
     }
-    if (scheme == Scheme::k5_4) {
+    if (uses_alignment_data(scheme)) {
       const Eigen::Matrix<double, 1, 6> effect = e.row(a).segment<6>(ez::kTorquerCommands);
       s.x_columns.row(i) += effect * measured;
       for (int j = 0; j < 6; ++j) extra[counting[static_cast<std::size_t>(j)]][i] = effect[j];

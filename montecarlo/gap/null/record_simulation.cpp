@@ -54,7 +54,7 @@ RecordRun scheme_record_run(const Sampler& sampler, std::uint64_t seed, std::uin
   INSMC_ASSERT(spec.setup != nullptr, "a scheme record needs its setup");
   const TruthSchemeSample sample = draw_truth_sample(sampler, seed, run, sampler.draw(seed, run));
   const double T = spec.test_duration_s;
-  const double clock_zero = realigns(spec.scheme) ? spec.nav_start_s : resets_at_test_end(spec.scheme) ? T : 0.0;
+  const double clock_zero = clock_start_s(spec.scheme, T, spec.nav_start_s);
   std::vector<double> clock;
   for (double t : times_s)
     if (t > T + 1e-9 || !uses_test_run(spec.scheme)) clock.push_back(t - clock_zero);

@@ -175,7 +175,7 @@ std::vector<RunData> extract_runs(const RecordFile& file, const RecordSite& site
       const Stage stage = test ? Stage::kTest : Stage::kNav;
       const int window = test ? 0 : window_of(row.t_s);
       // (f rows modelled are on the first navigation's clock, t_s.)
-      const bool f_modelled = site.scheme != Scheme::k5_4 && (test || segment != NavSegment::kRestart);
+      const bool f_modelled = !uses_alignment_data(site.scheme) && (test || segment != NavSegment::kRestart);
       for (int k = 0; k < 3 && f_modelled; ++k) {
         // A window must lie after switch-over and not overlap the last one.
         const double spacing = test ? tau : std::max(tau, options.nav_f_spacing_s);
