@@ -7,6 +7,7 @@
 #include <numbers>
 #include <optional>
 
+#include "lib/calibration/multiposition.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 #include "lib/noise/noise_budget.h"
@@ -67,15 +68,11 @@ std::vector<Orientation> orientations(const noise::SensorRecording& rec, const n
 }
 
 /// Distinct orientations: mean specific-force directions more than 5° apart.
+/// Orientations more than the calibration's 5° apart.
 std::size_t distinct_orientations(const std::vector<Orientation>& o) {
-  std::vector<Vec3> seen;
-  for (const Orientation& x : o) {
-    const Vec3 u = x.mean_g.normalized();
-    bool known = false;
-    for (const Vec3& v : seen) known = known || u.dot(v) > std::cos(5 * kDegToRad);
-    if (!known) seen.push_back(u);
-  }
-  return seen.size();
+  std::vector<Vec3> mean_g;
+  for (const Orientation& x : o) mean_g.push_back(x.mean_g);
+  return calibration::distinct_directions(mean_g, calibration::MultipositionOptions{}.same_orientation_rad);
 }
 
 std::string identifiability(const std::vector<Orientation>& o, const std::vector<RecordingCalibration>& calibrations) {

@@ -41,16 +41,6 @@ double direction_spread(const std::vector<Vec3>& v) {
   return Eigen::SelfAdjointEigenSolver<Mat3>(sum / n).eigenvalues().minCoeff();
 }
 
-std::size_t distinct_directions(const std::vector<Vec3>& f, double same_rad) {
-  std::vector<Vec3> seen;
-  for (const Vec3& x : f) {
-    if (!(x.norm() > 0)) continue;  // no direction (checked against gravity by the caller)
-    const Vec3 u = x.normalized();
-    if (std::none_of(seen.begin(), seen.end(), [&](const Vec3& v) { return u.dot(v) > std::cos(same_rad); }))
-      seen.push_back(u);
-  }
-  return seen.size();
-}
 
 /// (C.1)-(C.2): ‖(I + M_a)(ā_i − b_a)‖ − g over the still attitudes.
 FitSummary fit_accelerometers(const std::vector<Vec3>& mean_a, const MultipositionOptions& o, Eigen::VectorXd& x) {
@@ -175,6 +165,17 @@ FitSummary fit_gyro_turns(const std::vector<Turn>& turns, const MultipositionOpt
 }
 
 }  // namespace
+
+std::size_t distinct_directions(const std::vector<Vec3>& f, double same_rad) {
+  std::vector<Vec3> seen;
+  for (const Vec3& x : f) {
+    if (!(x.norm() > 0)) continue;  // no direction (checked against gravity by the caller)
+    const Vec3 u = x.normalized();
+    if (std::none_of(seen.begin(), seen.end(), [&](const Vec3& v) { return u.dot(v) > std::cos(same_rad); }))
+      seen.push_back(u);
+  }
+  return seen.size();
+}
 
 Vec3 calibrated_accel(const Eigen::VectorXd& x, const Vec3& raw_mps2) {
   Mat3 m = Mat3::Identity();
