@@ -17,18 +17,12 @@ namespace {
 /// time-domain alignment. An option that would change nothing is refused
 /// rather than accepted and ignored.
 void refuse_unused_options(const po::variables_map& vm) {
-  if (vm["fidelity"].as<std::string>() == "truth")
-    throw InputError("--fidelity", "truth",
-                     "covariance is the linear model's exact covariance: paper or linear (the truth level needs "
-                     "samples: insmc run --fidelity truth)");
+  refuse_truth_level_options(vm, "covariance",
+                             "covariance is the linear model's exact covariance: paper or linear (the truth level "
+                             "needs samples: insmc run --fidelity truth)");
   if (!vm["confidence"].defaulted())
     throw InputError("--confidence", fmt::format("{}", vm["confidence"].as<double>()),
                      "not used by covariance (exact: no samples, no intervals); use insmc run");
-  for (const char* name : {"alignment-time", "coarse-misalignment"})
-    if (!vm[name].defaulted())
-      throw InputError(std::string("--") + name, vm[name].as<std::string>(),
-                       "not used by covariance (the steady-state alignment of the linear model); use insmc run "
-                       "--fidelity truth");
 }
 
 }  // namespace

@@ -22,13 +22,8 @@ namespace {
 /// The break-even points need the covariance level, and one study: an option
 /// that would change nothing, or a sweep, is refused rather than ignored.
 void refuse_unused_options(const po::variables_map& vm) {
-  if (vm["fidelity"].as<std::string>() == "truth")
-    throw InputError("--fidelity", "truth",
-                     "rank needs the exact covariance of its level for the break-even points: paper or linear");
-  for (const char* name : {"alignment-time", "coarse-misalignment"})
-    if (!vm[name].defaulted())
-      throw InputError(std::string("--") + name, vm[name].as<std::string>(),
-                       "not used by rank (the steady-state alignment of the paper and linear levels)");
+  refuse_truth_level_options(vm, "rank",
+                             "rank needs the exact covariance of its level for the break-even points: paper or linear");
   const std::vector<SweepAxis> sweeps = find_sweeps(vm);
   if (!sweeps.empty())
     throw InputError(sweeps.front().column, fmt::format("{}", fmt::join(sweeps.front().texts, ",")),

@@ -68,6 +68,16 @@ std::uint64_t parse_count(const std::string& text, const std::string& field) {
 
 }  // namespace
 
+void refuse_truth_level_options(const po::variables_map& vm, const std::string& command,
+                                const std::string& why_not_truth) {
+  if (vm["fidelity"].as<std::string>() == "truth") throw InputError("--fidelity", "truth", why_not_truth);
+  for (const char* name : {"alignment-time", "coarse-misalignment"})
+    if (!vm[name].defaulted())
+      throw InputError(std::string("--") + name, vm[name].as<std::string>(),
+                       "not used by " + command +
+                           " (the steady-state alignment of the paper and linear levels); use insmc run --fidelity truth");
+}
+
 std::vector<std::string> split_commas(const std::string& text) {
   std::vector<std::string> out;
   std::string cur;

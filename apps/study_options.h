@@ -30,6 +30,13 @@ mc::StudyConfig read_study_config(const po::variables_map& vm, bool monte_carlo)
 po::options_description test_run_options_description();
 TestRunOptions read_test_run_options(const po::variables_map& vm);
 
+/// For commands on the exact covariance of the paper and linear levels
+/// (covariance, rank): refuses --fidelity truth (`why_not_truth` says why)
+/// and the truth level's time-domain alignment options, which would change
+/// nothing there.
+void refuse_truth_level_options(const po::variables_map& vm, const std::string& command,
+                                const std::string& why_not_truth);
+
 /// --units si|paper.
 mc::LengthUnit read_length_unit(const po::variables_map& vm);
 

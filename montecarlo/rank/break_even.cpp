@@ -14,11 +14,6 @@ namespace {
 
 bool is_bound(Assumption a) { return bound_slot(a) >= 0; }
 
-/// Index of the smallest RMS (the first place) among the schemes.
-std::size_t leader_of(const std::vector<double>& rms) {
-  return static_cast<std::size_t>(std::min_element(rms.begin(), rms.end()) - rms.begin());
-}
-
 /// Real roots in [lo, hi] of c0 + c1 v + c2 v² (c2 may be 0).
 std::vector<double> roots_in(double c0, double c1, double c2, double lo, double hi) {
   std::vector<double> r;
@@ -41,6 +36,10 @@ std::vector<double> roots_in(double c0, double c1, double c2, double lo, double 
 }
 
 }  // namespace
+
+std::size_t leader_of(const std::vector<double>& rms) {
+  return static_cast<std::size_t>(std::min_element(rms.begin(), rms.end()) - rms.begin());
+}
 
 int bound_slot(Assumption a) {
   switch (a) {

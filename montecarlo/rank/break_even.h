@@ -51,6 +51,9 @@ double study_value(const StudyConfig& config, Assumption a);
 using RmsTable = std::vector<std::vector<std::vector<double>>>;
 RmsTable predicted_horizontal_rms(const StudyConfig& config);
 
+/// Index of the smallest RMS (the first place) among one RmsTable entry's schemes.
+std::size_t leader_of(const std::vector<double>& rms);
+
 /// The scheme first at the study's own settings and a challenger that ties
 /// with it at `value_si` of the assumption.
 struct Crossing {

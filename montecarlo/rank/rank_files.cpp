@@ -183,7 +183,7 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
   for (std::size_t j = 0; j < even.at_study.size(); ++j)
     for (std::size_t k = 0; k < even.at_study[j].size(); ++k) {
       const auto& rms = even.at_study[j][k];
-      const auto leader = static_cast<std::size_t>(std::min_element(rms.begin(), rms.end()) - rms.begin());
+      const auto leader = leader_of(rms);
       for (Assumption a : kAllAssumptions)
         limits.add_row({std::to_string(system_number(config.systems[j])), t_min_text(config.report_times_s[k]),
                         std::string(to_string(config.schemes[leader])), std::string(to_string(a)),
@@ -204,7 +204,7 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
   text += "(< : significant, ≈ : not significant; RMS in m)\n\n";
   for (std::size_t j = 0; j < even.at_study.size(); ++j) {
     const auto& rms = even.at_study[j][last_k];
-    const auto leader = static_cast<std::size_t>(std::min_element(rms.begin(), rms.end()) - rms.begin());
+    const auto leader = leader_of(rms);
     for (Assumption a : kAllAssumptions)
       text += fmt::format("system {}, {} min: {}\n", system_number(config.systems[j]), t_min_text(config.report_times_s[last_k]),
                           limits_sentence(config, config.systems[j], config.report_times_s[last_k], a, even.crossings,
@@ -228,7 +228,7 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
       panel.title = fmt::format("system {}: {}{}", system_number(config.systems[j]), to_string(c.assumption),
                                 d.unit.empty() ? "" : " [" + d.unit + "]");
       const auto& rms = even.at_study[j][last_k];
-      const auto leader = static_cast<std::size_t>(std::min_element(rms.begin(), rms.end()) - rms.begin());
+      const auto leader = leader_of(rms);
       for (std::size_t i = 0; i < config.schemes.size(); ++i) {
         // none depends on no assumption and would only squeeze the others.
         if (config.schemes[i] == Scheme::kNone && config.schemes.size() > 1) continue;
