@@ -46,7 +46,6 @@ int run_rank(const Args& args) {
   if (!vm) return 0;
   refuse_unused_options(*vm);
   mc::StudyConfig config = read_study_config(*vm, true);
-  config.with_grid = false;  // the order and its limits are at the report times
   const StdoutChoice shown = read_stdout_choice(*vm);
   std::optional<OutputFolderOption> out =
       prepare_figure_folder(*vm, "rank", {"ranking.csv", "breakeven.csv", "rank.md", "rank.json"}, "rank");

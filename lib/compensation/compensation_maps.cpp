@@ -12,10 +12,10 @@
 namespace insmc {
 namespace {
 
-// Responses of the Schuler loop ÿ + ω_s² y = a(τ) from rest to a unit
-// step, ramp τ and τ²/2 (Laplace pairs of fig. 3.3).
-double step_response(double tau, double ws) { return (1 - std::cos(ws * tau)) / (ws * ws); }
-double ramp_response(double tau, double ws) { return (tau - std::sin(ws * tau) / ws) / (ws * ws); }
+using scheme_terms::ramp_response;
+using scheme_terms::step_response;
+
+// Response of the Schuler loop ÿ + ω_s² y = a(τ) from rest to τ²/2 (fig. 3.3).
 double quadratic_response(double tau, double ws) { return (tau * tau / 2 - step_response(tau, ws)) / (ws * ws); }
 
 /// Position response to unit torquer rates (point 4) applied from t = 0 in
@@ -113,84 +113,33 @@ ExtendedMap extend(const Sensitivity3& s, bool realigned) {
       e.col(r.z_index) = s.col(r.x_index);
       e.col(r.x_index).setZero();
     }
+    // The realignment keeps the theodolite's (u)ψ and adds its re-sighting
+    // change δψ_r: the same column (zero for system 2).
+    e.col(ux::kRealignAzimuthError) = s.col(ux::kTheodolite);
   }
   return e;
 }
 
 }  // namespace
 
-Eigen::Matrix3d torquer_rates_from_u3(System system, const ModelOptions& m) {
-  const double w = m.earth_rate_radps;
-  Eigen::Matrix3d t = Eigen::Matrix3d::Zero();
-  t(0, 1) = w;  // ω_cp,x = ω_ie Û3y
-  if (system == System::kTheodolite) t(1, 0) = -w;  // ω_cp,y = −ω_ie Û3x (5.5a)
-  return t;
-}
-
-Eigen::Matrix3d combined_integrator_selection(System system) {
-  Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
-  s(2, 2) = 1;
-  if (system == System::kGyrocompass) s(0, 0) = 1;
-  return s;
-}
-
 SchemeMaps scheme_position_maps(Scheme scheme, System system, Fidelity fidelity, const ModelOptions& m,
                                 const TestRunOptions& test, const std::vector<double>& taus, SchemeForms forms) {
   INSMC_ASSERT(fidelity != Fidelity::kTruth, "scheme maps exist for the linear-in-x levels only");
-  const double g = m.gravity_mps2, w = m.earth_rate_radps, ws = m.schuler_radps(), T = test.duration_s;
+  const double ws = m.schuler_radps(), T = test.duration_s;
+  const SchemeDefinition& definition = scheme.definition();
   SchemeMaps out;
   out.ready_time_s = ready_time_s(scheme, T, test.realignment_duration_s);
   out.frame_time_offset_s = frame_time_offset_s(scheme, T);
-  const std::vector<Sensitivity3> s = resets_at_test_end(scheme) ? reset_propagation(system, fidelity, m, T, taus, forms)
-                                                                 : position_maps(system, fidelity, m, taus);
-  const std::vector<Mat3> torquer = uses_alignment_data(scheme) ? torquer_response(fidelity, m, taus) : std::vector<Mat3>{};
-  const Mat3 w_from_u3 = torquer_rates_from_u3(system, m);
+  const std::vector<Sensitivity3> s = definition.resets_at_test_end ? reset_propagation(system, fidelity, m, T, taus, forms)
+                                                                    : position_maps(system, fidelity, m, taus);
+  const std::vector<Mat3> torquer =
+      definition.uses_alignment_data ? torquer_response(fidelity, m, taus) : std::vector<Mat3>(taus.size(), Mat3::Zero());
   for (size_t n = 0; n < taus.size(); ++n) {
-    const double tau = taus[n], r0s = step_response(tau, ws), r1s = ramp_response(tau, ws);
-    const Mat3 I = Mat3::Identity();
-    ExtendedMap e = extend(s[n], realigns(scheme));
-    switch (scheme) {
-      case Scheme::kNone: break;
-      case Scheme::k5_1_1:  // (5.2) at point 2, (5.3) through integrators
-        e.middleCols<3>(ez::kU2) = -g * r0s * I;
-        e.middleCols<3>(ez::kU3) = -g * w * r1s * I;
-        break;
-      case Scheme::k5_1_2:
-      case Scheme::kCombined: {
-        e.middleCols<3>(ez::kU2) = -g * r0s * I;
-        // (5.5): torquer rates active through the realignment and after it,
-        // i.e. the level-platform drift becomes ω_do + ω_cp everywhere.
-        e.middleCols<3>(ez::kU3) = s[n].middleCols<3>(ux::kGyroDrift) * w_from_u3;
-        if (scheme == Scheme::kCombined)
-          e.middleCols<3>(ez::kU3) += -g * w * r1s * combined_integrator_selection(system);
-        break;
-      }
-      case Scheme::k5_2:  // (5.8): point 2 −g(Û2 + Û3 ω_ie T), integrators −g ω_ie Û3, resets
-        e.middleCols<3>(ez::kU2) = -g * r0s * I;
-        e.middleCols<3>(ez::kU3) = -g * w * (T * r0s + r1s) * I;
-        e.middleCols<3>(ez::kWiggleAtT) = std::sin(ws * tau) / ws * I;
-        break;
-      case Scheme::k5_3:  // (5.11): point 2 −Δf̂(T), integrators −g ω_ie Û3, resets
-        e.middleCols<3>(ez::kDfT) = -r0s * I;
-        e.middleCols<3>(ez::kU3Accel) = -g * w * r1s * I;
-        e.middleCols<3>(ez::kWiggleAtT) = std::sin(ws * tau) / ws * I;
-        break;
-      case Scheme::k5_4: {  // (5.15), (5.16) at point 4 from t = 0; (5.19) at point 2
-        Mat3 select = I;
-        if (system == System::kGyrocompass) select(1, 1) = 0;  // (5.15c): no y estimate
-        e.middleCols<3>(ez::kTorquerCommands) = torquer[n] * select;
-        // ω_ie E4 of (5.15) enters the applied rates as the commands do.
-        e.middleCols<3>(ux::kAlignDriftError) = torquer[n] * select;
-        e.middleCols<3>(ez::kAlignAccel) = -r0s * I;
-        // (5.20) as printed: U'2_z = δg − 2δh/r0, where −Δf_m/g at point 2 gives
-        // −δg/g − 2δh/r0; with δg/g = −3δh/r0 (§4.1) the printed z row is
-        // −5δh/r0 against the derived +δh/r0 (errata.md#5-20). (ε5's sign, the
-        // other difference, is immaterial: a zero-mean measurement error.)
-        if (fidelity == Fidelity::kPaper && forms == SchemeForms::kPrinted)
-          e(2, ux::kAltitudeError) += -6.0 * (1 - std::cos(ws * tau));  // r0 (−6δh/r0)(1 − cos ω_s t)
-        break;
-      }
-    }
+    const double tau = taus[n];
+    ExtendedMap e = extend(s[n], definition.realigns);
+    // The resets at T leave the velocity wiggle (u)V(T) in the integrators (5.8), (5.11).
+    if (definition.resets_at_test_end) e.middleCols<3>(ez::kWiggleAtT) = std::sin(ws * tau) / ws * Mat3::Identity();
+    definition.position_map({system, fidelity, forms, m, T, tau, s[n], torquer[n]}, e);
     out.position.push_back(e);
   }
   return out;

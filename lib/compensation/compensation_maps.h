@@ -9,6 +9,9 @@
 ///              the computer calculates for a stationary vehicle;
 ///   realignment a new alignment with fresh ζ_r, ∂f_r, (u)V (and any torquer
 ///              compensation already active), then a new switch-over.
+/// Each scheme adds its own terms (schemes/); this file holds what the
+/// traits switch on: the realignment's fresh draws, the resets at T and the
+/// torquer response.
 /// The residual is what propagating the compensated model gives; the
 /// report's printed residual matrices are only used to check it (tests).
 #include <vector>
@@ -17,6 +20,7 @@
 #include "lib/common/system.h"
 #include "lib/compensation/extended_vector.h"
 #include "lib/compensation/scheme.h"
+#include "lib/compensation/schemes/scheme_definition.h"
 #include "lib/preflight/test_run.h"
 
 namespace insmc {
@@ -33,24 +37,8 @@ struct SchemeMaps {
   double ready_time_s = 0.0;
 };
 
-/// The closed forms of the paper level's schemes: as the report prints
-/// them, (5.9) and (5.11b) restarting the U5 growth at the reset and (5.20)
-/// with +δg (tables/notes/errata.md#5-9, #5-20), or corrected, derived from
-/// (5.8) and (5.19) (what the linear level integrates). The paper level
-/// means the printed forms; the corrected ones exist for the term-by-term
-/// check of the errata.
-enum class SchemeForms { kPrinted, kCorrected };
-
 SchemeMaps scheme_position_maps(Scheme scheme, System system, Fidelity fidelity, const ModelOptions& model,
                                 const TestRunOptions& test, const std::vector<double>& clock_times_s,
                                 SchemeForms paper_forms = SchemeForms::kPrinted);
-
-/// Torquer compensation rates ω_cp (point 4) per unit of Û3 (5.5a, b):
-/// ω_ie[Û3y; −Û3x; 0] for system 1, ω_ie[Û3y; 0; 0] for system 2.
-Eigen::Matrix3d torquer_rates_from_u3(System system, const ModelOptions& model);
-
-/// Which Û3 components go through integrators to point 2 in `combined`
-/// (end of 5.1.2): z for system 1; x and z for system 2.
-Eigen::Matrix3d combined_integrator_selection(System system);
 
 }  // namespace insmc

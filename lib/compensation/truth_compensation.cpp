@@ -1,7 +1,7 @@
 #include "lib/compensation/truth_compensation.h"
 
 #include "lib/common/assert.h"
-#include "lib/compensation/compensation_maps.h"
+#include "lib/compensation/schemes/scheme_definition.h"
 #include "lib/preflight/observables.h"
 
 namespace insmc {
@@ -83,7 +83,8 @@ TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& s, const 
                                 const std::vector<double>& clock_times_s, const NormalSource& noise,
                                 const TruthRun* test_run) {
   const ModelOptions& m = s.truth.model;
-  const double g = m.gravity_mps2, w = m.earth_rate_radps, T = s.test.duration_s;
+  const double T = s.test.duration_s;
+  const SchemeDefinition& definition = scheme.definition();
   TruthOptions o = s.truth;
   o.pulse_phase = sample.pulse_phase;
   TruthSchemeRun run;
@@ -102,46 +103,19 @@ TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& s, const 
   if (realigns(scheme)) {
     o.alignment_loops.reset();
     o.pulse_phase = sample.align_pulse_phase01 - Vec3::Constant(0.5);
+    x[ux::kTheodolite] += x[ux::kRealignAzimuthError];  // the theodolite re-sighted: (u)ψ + δψ_r
     if (noise) flight_noise = [noise](std::uint64_t stream, std::uint64_t counter) {
       return noise(stream + kRealignedNoiseStreams, counter);
     };
   }
-  switch (scheme) {
-    case Scheme::kNone: break;
-    case Scheme::k5_1_1:  // (5.2) at point 2, (5.3) through integrators, from the new switch-over
-      c.step_mps2 = -g * e.u2;
-      c.ramp_mps3 = -g * w * e.u3;
-      break;
-    case Scheme::k5_1_2:
-    case Scheme::kCombined: {
-      c.step_mps2 = -g * e.u2;
-      // (5.5): ω_cp on the torquers through the realignment and after it.
-      x.segment<3>(ux::kGyroDrift) += torquer_rates_from_u3(s.truth.system, m) * e.u3;
-      if (scheme == Scheme::kCombined) c.ramp_mps3 = -g * w * (combined_integrator_selection(s.truth.system) * e.u3);
-      break;
-    }
-    case Scheme::k5_2:  // (5.8): from T, −g(Û2 + Û3 ω_ie T) at point 2, −g ω_ie Û3 through integrators, resets
-      c.start_s = T;
-      c.step_mps2 = -g * (e.u2 + w * T * e.u3);
-      c.ramp_mps3 = -g * w * e.u3;
-      o.reset_at_s = T;
-      break;
-    case Scheme::k5_3:  // (5.11): from T, −Δf̂(T) at point 2, −g ω_ie Û3 (accelerometer slope), resets
-      c.start_s = T;
-      c.step_mps2 = -e.df_at_test_end_mps2;
-      c.ramp_mps3 = -g * w * e.u3_accel;
-      o.reset_at_s = T;
-      break;
-    case Scheme::k5_4: {  // (5.15), (5.16) at point 4 from t = 0; (5.19) at point 2
-      Vec3 commands, accel;
-      alignment_measurements(s, sample, noise, commands, accel);
-      commands += x.segment<3>(ux::kAlignDriftError);  // ω_ie E4 of (5.15)
-      if (s.truth.system == System::kGyrocompass) commands.y() = 0.0;  // (5.15c): no y estimate
-      o.torquer_command_radps = [commands](double) { return commands; };
-      c.step_mps2 = -accel;
-      break;
-    }
+  TruthSchemeContext context{s.truth.system, m, T, e};
+  if (definition.uses_alignment_data)
+    alignment_measurements(s, sample, noise, context.alignment_commands_radps, context.alignment_accel_mps2);
+  if (definition.resets_at_test_end) {  // points 5, 6 at T; the compensation acts from T
+    c.start_s = T;
+    o.reset_at_s = T;
   }
+  definition.truth_action(context, o, x);
   const double offset = frame_time_offset_s(scheme, T);
   run.flight = simulate_truth(o, x, shifted(clock_times_s, offset), flight_noise);
   return run;

@@ -1,5 +1,6 @@
 #pragma once
 /// The compensation schemes of chapter 5 acting on the truth simulator
+/// (each scheme's own action: schemes/, its truth_action)
 /// (docs/truth-vs-models.md) through the same injection points of fig. 5.1 as
 /// compensation_maps.h uses on the linear model:
 ///   * the test run is a truth run; its data are what the instruments give
@@ -22,18 +23,11 @@
 #include <vector>
 
 #include "lib/compensation/scheme.h"
+#include "lib/preflight/test_run_estimates.h"
 #include "lib/preflight/test_run.h"
 #include "lib/truth/simulator.h"
 
 namespace insmc {
-
-/// What the preflight test run revealed (the estimates a scheme uses).
-struct TestRunEstimates {
-  Vec3 u2 = Vec3::Zero();        ///< Û2 from position data (4.8b)
-  Vec3 u3 = Vec3::Zero();        ///< Û3 from position data (4.8c)
-  Vec3 u3_accel = Vec3::Zero();  ///< Û3 from the accelerometer data, slope of (5.12)
-  Vec3 df_at_test_end_mps2 = Vec3::Zero();  ///< filtered Δf̂(T) (5.10)
-};
 
 /// Estimates from a test run sampled at t_k = kτ, k = 0..K (uniform_times(T, τ)):
 /// Δf^a per filter interval as recorded, Δr_k from the position error at the

@@ -70,6 +70,7 @@ constexpr std::array<UncertaintySpec, ux::kDim> kCatalogue = {{
     {"reset_velocity_error_x", "reset_velocity_error", "δv_reset,x", ux::kResetVelocityError + 0, D::kVelocity, 0.1 * kFtpsToMps, "mps", kBoth, false, "project's choice: 0.1 ft/s, one ΔV pulse, (5.8)"},
     {"reset_velocity_error_y", "reset_velocity_error", "δv_reset,y", ux::kResetVelocityError + 1, D::kVelocity, 0.1 * kFtpsToMps, "mps", kBoth, false, "project's choice: 0.1 ft/s, one ΔV pulse, (5.8)"},
     {"reset_velocity_error_z", "reset_velocity_error", "δv_reset,z", ux::kResetVelocityError + 2, D::kVelocity, 0.1 * kFtpsToMps, "mps", kBoth, false, "project's choice: 0.1 ft/s, one ΔV pulse, (5.8)"},
+    {"realignment_azimuth_error", "realignment_azimuth_error", "δψ_r", ux::kRealignAzimuthError, D::kAngle, 0.1 * kMrad, "mrad", Applies::kSystem1Only, false, "project's choice: 0.1 mrad, a tenth of (u)ψ, theodolite re-sighting at 5.1.x's realignment"},
 }};
 
 constexpr bool indices_match_positions() {

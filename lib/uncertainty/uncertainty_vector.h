@@ -1,5 +1,5 @@
 #pragma once
-/// The flat view of one sample's uncertainties: a fixed-size vector of the 42
+/// The flat view of one sample's uncertainties: a fixed-size vector of the 43
 /// catalogue parameters (Table 3.1 and chapter 2, then the measurement errors
 /// the compensation schemes of chapter 5 rely on), SI units, in the order
 /// below. The catalogue (catalogue.h) names each slot; everything else
@@ -28,7 +28,10 @@ inline constexpr int kFirstSchemeError = 33;
 inline constexpr int kAlignDriftError = 33;    ///< ω_ie E4 of (5.15), (5.15a): 5.4's drift-estimate error [rad/s] (3)
 inline constexpr int kResetPositionError = 36; ///< error of the position reset at T, points 5 of (5.8), (5.11) [m] (3)
 inline constexpr int kResetVelocityError = 39; ///< error of the velocity reset at T, point 6 of (5.8), (5.11) [m/s] (3)
-inline constexpr int kDim = 42;
+/// δψ_r: the change of system 1's theodolite azimuth at a realignment of
+/// 5.1.x (re-sighting), on top of (u)ψ which the realignment keeps (1)
+inline constexpr int kRealignAzimuthError = 42;
+inline constexpr int kDim = 43;
 }  // namespace ux
 
 using UncertaintyVector = Eigen::Matrix<double, ux::kDim, 1>;

@@ -46,8 +46,13 @@ int bound_slot(Assumption a) {
     case Assumption::kAlignDriftError: return ux::kAlignDriftError;
     case Assumption::kResetVelocityError: return ux::kResetVelocityError;
     case Assumption::kResetPositionError: return ux::kResetPositionError;
+    case Assumption::kRealignAzimuthError: return ux::kRealignAzimuthError;
     default: return -1;
   }
+}
+
+int bound_slot_count(Assumption a) {
+  return a == Assumption::kRealignAzimuthError ? 1 : is_bound(a) ? 3 : 0;
 }
 
 std::string_view to_string(Assumption a) {
@@ -55,6 +60,7 @@ std::string_view to_string(Assumption a) {
     case Assumption::kAlignDriftError: return "alignment_drift_error";
     case Assumption::kResetVelocityError: return "reset_velocity_error";
     case Assumption::kResetPositionError: return "reset_position_error";
+    case Assumption::kRealignAzimuthError: return "realignment_azimuth_error";
     case Assumption::kRandomFraction: return "random_fraction";
     case Assumption::kTestDuration: return "test_duration";
   }
@@ -66,6 +72,7 @@ std::string_view si_unit(Assumption a) {
     case Assumption::kAlignDriftError: return "radps";
     case Assumption::kResetVelocityError: return "mps";
     case Assumption::kResetPositionError: return "m";
+    case Assumption::kRealignAzimuthError: return "rad";
     case Assumption::kRandomFraction: return "1";
     case Assumption::kTestDuration: return "s";
   }
@@ -75,7 +82,7 @@ std::string_view si_unit(Assumption a) {
 StudyConfig with_assumption(const StudyConfig& config, Assumption a, double value) {
   StudyConfig c = config;
   if (is_bound(a)) {
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < bound_slot_count(a); ++k) {
       ParameterDistribution& p = c.uncertainties.at(bound_slot(a) + k);
       p.kind = DistributionKind::kUniform;
       p.bound_si = value;
@@ -93,7 +100,7 @@ double study_value(const StudyConfig& config, Assumption a) {
   const UncertaintyModel& u = config.uncertainties;
   if (is_bound(a)) {
     const ParameterDistribution& p = u.at(bound_slot(a));
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < bound_slot_count(a); ++k) {
       const ParameterDistribution& q = u.at(bound_slot(a) + k);
       if (q.kind != p.kind || q.bound_si != p.bound_si) return nan;
     }

@@ -7,7 +7,8 @@
 /// How each is found, exactly rather than by a tolerance:
 ///   * a scheme's measurement error set to uniform ±b per axis
 ///     (alignment_drift_error = ω_ie E4 of (5.15), reset_velocity_error,
-///     reset_position_error of (5.8)): every output's mean square is
+///     reset_position_error of (5.8), the realignment's re-sighting
+///     realignment_azimuth_error): every output's mean square is
 ///     A + C b² (a variance b²/3 through a fixed map), so two evaluations give
 ///     A and C and a crossing solves a linear equation in b²;
 ///   * the random fraction F (lib/uncertainty/random_fraction.h): the
@@ -23,19 +24,28 @@
 
 namespace insmc::mc {
 
-enum class Assumption { kAlignDriftError, kResetVelocityError, kResetPositionError, kRandomFraction, kTestDuration };
-inline constexpr Assumption kAllAssumptions[] = {Assumption::kAlignDriftError, Assumption::kResetVelocityError,
-                                                 Assumption::kResetPositionError, Assumption::kRandomFraction,
-                                                 Assumption::kTestDuration};
+enum class Assumption {
+  kAlignDriftError,
+  kResetVelocityError,
+  kResetPositionError,
+  kRealignAzimuthError,
+  kRandomFraction,
+  kTestDuration
+};
+inline constexpr Assumption kAllAssumptions[] = {Assumption::kAlignDriftError,     Assumption::kResetVelocityError,
+                                                 Assumption::kResetPositionError,  Assumption::kRealignAzimuthError,
+                                                 Assumption::kRandomFraction,      Assumption::kTestDuration};
 
 /// The name in breakeven.csv (a catalogue group, `random_fraction` or
 /// `test_duration`) and its SI unit.
 std::string_view to_string(Assumption a);
 std::string_view si_unit(Assumption a);
 
-/// The first catalogue slot of an assumption that is a bound (its x, y, z),
-/// or -1 (the random fraction, the test duration).
+/// The first catalogue slot of an assumption that is a bound (its x, y, z,
+/// or its one slot), or -1 (the random fraction, the test duration); and
+/// how many slots it bounds.
 int bound_slot(Assumption a);
+int bound_slot_count(Assumption a);
 
 /// The study with the assumption at `value` (SI): a bound of a uniform
 /// ±value on each axis, the random fraction, or the test duration.

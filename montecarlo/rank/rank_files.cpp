@@ -27,6 +27,7 @@ DisplayUnit display_unit(Assumption a) {
     case Assumption::kAlignDriftError: return {1.0 / kMeruToRadps, "meru"};  // 1 meru = 1e-3 ω_ie
     case Assumption::kResetVelocityError: return {1.0 / kFtpsToMps, "ft/s"};
     case Assumption::kResetPositionError: return {1.0 / kFtToM, "ft"};
+    case Assumption::kRealignAzimuthError: return {1.0 / kMradToRad, "mrad"};
     case Assumption::kRandomFraction: return {1.0, ""};
     case Assumption::kTestDuration: return {1.0 / 60.0, "min"};
   }
@@ -41,6 +42,7 @@ std::string value_text(Assumption a, double si, const StudyConfig& config) {
     return fmt::format("{} ({:.3g} ω_ie, {:.3g} rad/s)", shown, si / config.model.earth_rate_radps, si);
   if (a == Assumption::kResetVelocityError) return fmt::format("{} ({:.3g} m/s)", shown, si);
   if (a == Assumption::kResetPositionError) return fmt::format("{} ({:.3g} m)", shown, si);
+  if (a == Assumption::kRealignAzimuthError) return fmt::format("{} ({:.3g} rad)", shown, si);
   return shown;
 }
 
@@ -76,6 +78,26 @@ std::string order_line(const SchemeOrder& o) {
     if (r + 1 < o.schemes.size()) s += x.order_significant ? " < " : " ≈ ";
   }
   return s;
+}
+
+/// Per system, the first and second scheme at every time of the study
+/// (report times and the grid): who leads when.
+std::string first_place_over_time(const StudyConfig& config, const std::vector<SchemeOrder>& orders) {
+  std::string md;
+  for (System system : config.systems) {
+    Table t({"t [min]", "first", "RMS [m]", "second", "RMS [m]", "order", "test"});
+    for (const SchemeOrder& o : orders) {
+      if (o.system != system || o.schemes.size() < 2) continue;
+      const RankedScheme &a = o.schemes[0], &b = o.schemes[1];
+      t.add_row({t_min_text(o.t_s), std::string(to_string(a.scheme)),
+                 format_with_interval(a.rms_m, (a.rms_hi_m - a.rms_lo_m) / 2), std::string(to_string(b.scheme)),
+                 format_with_interval(b.rms_m, (b.rms_hi_m - b.rms_lo_m) / 2),
+                 a.order_significant ? "significant" : "not significant", o.paired ? "paired" : "intervals"});
+    }
+    if (t.rows().empty()) continue;
+    md += fmt::format("## System {}: the first place over time\n\n", system_number(system)) + render_markdown(t) + "\n";
+  }
+  return md;
 }
 
 /// Linear interpolation of the leader's curve at a crossing (the mark).
@@ -120,6 +142,7 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
     Json oj = Json::object();
     oj["system"] = system_number(o.system);
     oj["t_s"] = o.t_s;
+    oj["test"] = o.paired ? "paired" : "intervals";
     oj["paired_samples"] = static_cast<unsigned long long>(o.paired_samples);
     oj["schemes"] = std::move(schemes);
     orders_json.push_back(std::move(oj));
@@ -151,9 +174,12 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
       "(interval: the RMS's {:g} % confidence interval over all samples). An adjacent pair's order is "
       "*significant* when the paired test says so: each sample passes through every scheme, so the difference "
       "of the two schemes' squared errors is tested against its own scatter (two-sided normal quantile of the "
-      "confidence, over the kept samples: up to 2^24 values in all).\n\n",
+      "confidence, over the kept samples: up to 2^24 values in all). On the envelope grid (ranking.csv, and the "
+      "last table of each system below) the samples are not kept: there an order is significant when the two RMS "
+      "intervals do not overlap, a weaker (unpaired) test.\n\n",
       fidelity, config.samples, config.seed, 100 * config.confidence, 100 * config.confidence);
   for (const SchemeOrder& o : orders) {
+    if (!o.paired) continue;
     md += fmt::format("## System {}, {} min ({} paired samples)\n\n", system_number(o.system), t_min_text(o.t_s),
                       o.paired_samples);
     Table t({"rank", "scheme", "RMS [m] ± half-width", "order against the next"});
@@ -168,6 +194,7 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
     }
     md += render_markdown(t) + "\n";
   }
+  md += first_place_over_time(config, orders);
   std::string ranges;
   for (Assumption a : kAllAssumptions)
     if (const int slot = bound_slot(a); slot >= 0)
@@ -175,7 +202,8 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
                             value_text(a, bound_range(catalogue()[static_cast<std::size_t>(slot)]).max_si, config));
   md += "## The first place's limits (covariance level, exact)\n\n"
         "Each assumption moved alone, the others at the study's values: a scheme measurement error as uniform ±b "
-        "on every axis (alignment_drift_error is ω_ie E4 of (5.15); the reset errors act at T in (5.8)), the random "
+        "on each of its axes (alignment_drift_error is ω_ie E4 of (5.15); the reset errors act at T in (5.8); realignment_azimuth_error is system 1's theodolite re-sighting at the "
+        "realignment of 5.1.x), the random "
         "fraction F of ζ and ∂f drawn anew at each alignment, the test duration on whole filter intervals "
         "(1 min to 40 min). A bound is searched over its catalogue range (" + ranges + "), F over 0 to 1. "
         "breakeven.csv lists every crossing of the first scheme with another.\n\n";

@@ -32,14 +32,14 @@ std::vector<SchemeOrder> order_schemes(const StudyConfig& config, const StudyLay
   std::vector<SchemeOrder> out;
   for (int j = 0; j < layout.n_systems; ++j) {
     for (int k = 0; k < layout.n_times; ++k) {
-      if (!layout.is_report_time[static_cast<std::size_t>(k)]) continue;
-      SchemeOrder order{config.systems[static_cast<std::size_t>(j)], layout.times_s[static_cast<std::size_t>(k)], 0, {}};
+      const bool paired = layout.is_report_time[static_cast<std::size_t>(k)];
+      SchemeOrder order{config.systems[static_cast<std::size_t>(j)], layout.times_s[static_cast<std::size_t>(k)], paired, 0, {}};
       std::vector<std::vector<float>> kept;
       for (std::size_t i = 0; i < config.schemes.size(); ++i) {
         const auto o = static_cast<std::size_t>(layout.index(static_cast<int>(i), j, k, Axis::kHorizontal));
         const OutputSummary s = state.outputs()[o].summarize(config.confidence);
         order.schemes.push_back({config.schemes[i], s.rms, s.rms_lo, s.rms_hi, false, 0.0});
-        kept.push_back(state.kept().values(static_cast<std::uint64_t>(layout.kept_slot[o])));
+        if (paired) kept.push_back(state.kept().values(static_cast<std::uint64_t>(layout.kept_slot[o])));
       }
       std::vector<std::size_t> by_rms(order.schemes.size());
       std::iota(by_rms.begin(), by_rms.end(), std::size_t{0});
@@ -48,10 +48,13 @@ std::vector<SchemeOrder> order_schemes(const StudyConfig& config, const StudyLay
       std::vector<RankedScheme> sorted;
       for (std::size_t r = 0; r < by_rms.size(); ++r) {
         RankedScheme s = order.schemes[by_rms[r]];
-        if (r + 1 < by_rms.size()) {
+        if (r + 1 < by_rms.size() && paired) {
           const auto [mean, se] = paired_difference(kept[by_rms[r + 1]], kept[by_rms[r]]);
           s.paired_z = se > 0 ? mean / se : (mean > 0 ? std::numeric_limits<double>::infinity() : 0.0);
           s.order_significant = std::isfinite(mean) && s.paired_z > z_crit;
+        } else if (r + 1 < by_rms.size()) {
+          s.paired_z = std::numeric_limits<double>::quiet_NaN();
+          s.order_significant = s.rms_hi_m < order.schemes[by_rms[r + 1]].rms_lo_m;
         }
         sorted.push_back(s);
       }

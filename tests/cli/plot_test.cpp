@@ -152,8 +152,8 @@ TEST(Plots, RankDrawsEveryAssumptionWithEachSchemesCurveInsideItsFrame) {
       run_insmc("rank --samples 1000 --system 1 --scheme none,5.1.2,5.4 --quiet --out " + out.str());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string svg = read_file(out.path() / "rank.svg");
-  // Five assumptions × one system, two schemes each (none, which no assumption moves, is left out).
-  expect_data_inside_frames(svg, 5, 10);
+  // Six assumptions × one system, two schemes each (none, which no assumption moves, is left out).
+  expect_data_inside_frames(svg, 6, 12);
   expect_png(read_file(out.path() / "rank.png"));
   EXPECT_NE(svg.find("alignment_drift_error [meru]"), std::string::npos);
 }

@@ -280,22 +280,13 @@ Coefficients printed_none(const Report& r) {
 }
 
 Coefficients printed(Scheme scheme, const Report& r) {
-  switch (scheme) {
-    case Scheme::kNone:
-      return printed_none(r);
-    case Scheme::k5_1_1:
-      return printed_5_1_1(r);
-    case Scheme::k5_1_2:
-      return printed_5_1_2(r);
-    case Scheme::kCombined:
-      return printed_combined(r);
-    case Scheme::k5_2:
-      return printed_5_2(r);
-    case Scheme::k5_3:
-      return printed_5_3(r);
-    case Scheme::k5_4:
-      return printed_5_4(r);
-  }
+  if (scheme == Scheme::kNone) return printed_none(r);
+  if (scheme == Scheme::k5_1_1) return printed_5_1_1(r);
+  if (scheme == Scheme::k5_1_2) return printed_5_1_2(r);
+  if (scheme == Scheme::kCombined) return printed_combined(r);
+  if (scheme == Scheme::k5_2) return printed_5_2(r);
+  if (scheme == Scheme::k5_3) return printed_5_3(r);
+  if (scheme == Scheme::k5_4) return printed_5_4(r);
   return testing::zero_coefficients();
 }
 
@@ -366,20 +357,12 @@ constexpr Neglect k3_29Terms{Neglect::kFeet, 1300.0, "(5.17a, b) as (3.29): term
 constexpr Neglect k5_17cTerms{Neglect::kFeet, 260.0, "(5.17c): terms < 260 ft over 1.5 h"};
 
 std::array<Neglect, kFns> neglect(Scheme scheme) {
-  switch (scheme) {
-    case Scheme::kNone:
-      return {kExact, kExact, kExact, kExact, kExact, kExact};
-    case Scheme::k5_1_1:
-      return {kExact, kExact, k5_4Terms, k5_4Terms, k5_4Terms, k5_4Terms};
-    case Scheme::k5_1_2:
-    case Scheme::kCombined:
-      return {kExact, kExact, k5_7Terms, k5_7Terms, k5_7Terms, k5_7Terms};
-    case Scheme::k5_2:
-    case Scheme::k5_3:
-      return {k5_9Terms, k5_9Terms, k5_9Terms, k5_9Terms, k5_9Terms, k5_9Terms};
-    case Scheme::k5_4:
-      return {kExact, kExact, kExact, k3_29Terms, k3_29Terms, k5_17cTerms};
-  }
+  if (scheme == Scheme::kNone) return {kExact, kExact, kExact, kExact, kExact, kExact};
+  if (scheme == Scheme::k5_1_1) return {kExact, kExact, k5_4Terms, k5_4Terms, k5_4Terms, k5_4Terms};
+  if (scheme == Scheme::k5_1_2 || scheme == Scheme::kCombined)
+    return {kExact, kExact, k5_7Terms, k5_7Terms, k5_7Terms, k5_7Terms};
+  if (resets_at_test_end(scheme)) return {k5_9Terms, k5_9Terms, k5_9Terms, k5_9Terms, k5_9Terms, k5_9Terms};
+  if (scheme == Scheme::k5_4) return {kExact, kExact, kExact, k3_29Terms, k3_29Terms, k5_17cTerms};
   return {};
 }
 
@@ -559,7 +542,7 @@ TEST(CompensationResiduals, CombinedIs512WithThe511RowsOfU3) {
     const Coefficients comb = testing::scheme_coefficients(Scheme::kCombined, sys, m, test, SchemeForms::kPrinted).c;
     const Coefficients c511 = testing::scheme_coefficients(Scheme::k5_1_1, sys, m, test, SchemeForms::kPrinted).c;
     const Coefficients c512 = testing::scheme_coefficients(Scheme::k5_1_2, sys, m, test, SchemeForms::kPrinted).c;
-    const Eigen::Matrix3d integrated = combined_integrator_selection(sys);
+    const Eigen::Matrix3d integrated = scheme_terms::combined_integrator_selection(sys);
     for (int fn = 0; fn < kFns; ++fn) {
       for (int axis = 0; axis < 3; ++axis) {
         const bool from_511 = fn == kU3 && integrated(axis, axis) == 1.0;

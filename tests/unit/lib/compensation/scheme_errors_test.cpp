@@ -68,11 +68,12 @@ TEST(SchemeErrors, TheDriftEstimateErrorEntersAsTheTorquerCommands) {
     }
 }
 
-TEST(SchemeErrors, TheGroupSelectsTheNineAndNothingElse) {
+TEST(SchemeErrors, TheGroupSelectsTheTenAndNothingElse) {
   const std::vector<int> all = select_uncertainties(kSchemeErrorsGroup);
-  ASSERT_EQ(all.size(), 9u);
+  ASSERT_EQ(all.size(), 10u);
   for (int i : all) EXPECT_TRUE(is_scheme_error(catalogue()[i]));
   EXPECT_EQ(select_uncertainties("alignment_drift_error").size(), 3u);
+  EXPECT_EQ(select_uncertainties("realignment_azimuth_error"), std::vector<int>{ux::kRealignAzimuthError});
   EXPECT_EQ(uncertainty_groups().back(), kSchemeErrorsGroup);
 }
 
