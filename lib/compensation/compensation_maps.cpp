@@ -139,7 +139,9 @@ SchemeMaps scheme_position_maps(Scheme scheme, System system, Fidelity fidelity,
     ExtendedMap e = extend(s[n], definition.realigns);
     // The resets at T leave the velocity wiggle (u)V(T) in the integrators (5.8), (5.11).
     if (definition.resets_at_test_end) e.middleCols<3>(ez::kWiggleAtT) = std::sin(ws * tau) / ws * Mat3::Identity();
-    definition.position_map({system, fidelity, forms, m, T, tau, s[n], torquer[n]}, e);
+    const ShortRunFunctions paper =
+        fidelity == Fidelity::kPaper ? short_run_functions_3_29(tau, m) : ShortRunFunctions{0, 0, 0, 0, 0, 0};
+    definition.position_map({system, fidelity, forms, m, T, tau, s[n], torquer[n], paper}, e);
     out.position.push_back(e);
   }
   return out;

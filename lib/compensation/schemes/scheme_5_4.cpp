@@ -34,8 +34,18 @@ const SchemeDefinition& scheme_5_4() {
             // −δg/g − 2δh/r0; with δg/g = −3δh/r0 (§4.1) the printed z row is
             // −5δh/r0 against the derived +δh/r0 (errata.md#5-20). (ε5's sign, the
             // other difference, is immaterial: a zero-mean measurement error.)
-            if (c.fidelity == Fidelity::kPaper && c.forms == SchemeForms::kPrinted)
+            if (c.fidelity == Fidelity::kPaper && c.forms == SchemeForms::kPrinted) {
               e(2, ux::kAltitudeError) += -6.0 * (1 - std::cos(ws * c.tau_s));  // r0 (−6δh/r0)(1 − cos ω_s t)
+              // (5.17b) as printed: U'4_z = −2 cos L0 C_y cos L0 where (3.29d) with
+              // (5.16a) gives −2 cos L0 C_y sin L0 (errata.md#5-17b), C_y taken as
+              // printed, −δf_x/g + ζ_cy; through r0 (ω_ie/ω_s)²[½ ω_s² t² − (1 − cos ω_s t)].
+              const double L = c.model.latitude_rad;
+              const double per_cy = c.model.radius_m * c.paper_functions.u4 * -2 * std::cos(L) *
+                                    (std::cos(L) - std::sin(L));
+              e(2, ux::kAccelBias + 0) += -per_cy / c.model.gravity_mps2;
+              e(2, ux::kMisalignConst + 1) += per_cy;
+              e(2, ux::kMisalignAlign + 1) += per_cy;
+            }
           },
       .truth_action =
           [](const TruthSchemeContext& c, TruthOptions& o, UncertaintyVector& x) {

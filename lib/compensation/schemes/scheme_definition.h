@@ -23,6 +23,7 @@
 #include "lib/frames/frames.h"
 #include "lib/compensation/extended_vector.h"
 #include "lib/preflight/test_run_estimates.h"
+#include "lib/propagation/closed_form.h"
 #include "lib/truth/simulator.h"
 
 namespace insmc {
@@ -49,6 +50,8 @@ struct SchemeMapContext {
   /// δr per unit torquer rate applied from t = 0 in the navigation mode
   /// (point 4); computed for schemes that use the alignment data, else zero.
   const Mat3& torquer_response;
+  /// The time functions of (3.29) at τ (paper level; zero at the linear).
+  const ShortRunFunctions& paper_functions;
 };
 
 /// What a truth-level scheme acts on: the test run's estimates and, for a
