@@ -21,16 +21,12 @@ TestRunEstimates estimate_test_run(const TruthRun& run, const TestRunOptions& te
       accel_data(k - 1, a) = run.accel_error_ap_mps2[k][a];
     }
   }
-  const Eigen::Matrix<double, 4, 3> u_pos = est.position * pos_data;  // (4.8): Û1..Û4 per axis
-  const Eigen::Matrix<double, 3, 3> u_acc = est.accel * accel_data;   // (4.4): Â1, Û3, Û4 per axis
-  const double g = m.gravity_mps2, w = m.earth_rate_radps, T = test.duration_s;
+  const Eigen::Matrix<double, kEstimateRows, 3> u = apply_estimators<3>(est, m, test.duration_s, pos_data, accel_data);
   TestRunEstimates e;
-  for (int a = 0; a < 3; ++a) {
-    e.u2[a] = u_pos(1, a);
-    e.u3[a] = u_pos(2, a);
-    e.u3_accel[a] = u_acc(1, a);
-    e.df_at_test_end_mps2[a] = g * (u_acc(0, a) + w * T * u_acc(1, a) + w * w * T * T / 2 * u_acc(2, a));  // (5.10)
-  }
+  e.u2 = u.row(kU2Row).transpose();
+  e.u3 = u.row(kU3Row).transpose();
+  e.u3_accel = u.row(kU3AccelRow).transpose();
+  e.df_at_test_end_mps2 = u.row(kDfAtTestEndRow).transpose();
   return e;
 }
 

@@ -112,6 +112,30 @@ struct TestRunEstimators {
   std::string fitted_terms;
 };
 
+/// What the compensation schemes take from the test run, one row each per
+/// column of the data (an axis, or a column of a linear map of the data).
+enum EstimateRow { kU2Row, kU3Row, kU3AccelRow, kDfAtTestEndRow, kEstimateRows };
+
+/// The one application of the estimators: from K rows of position data Δr_k
+/// and of interval-averaged accelerometer data Δf_k (any number of columns),
+/// Û2, Û3 (4.8b, c), Û3 from the accelerometer data (the slope of (4.4),
+/// (5.12)) and the filtered Δf̂(T) = g(Â1 + Û3 ω_ie T + Û4 ω_ie² T²/2) (5.10).
+/// `Cols` fixed (3 axes) keeps the per-sample path free of allocations.
+template <int Cols = Eigen::Dynamic, typename Position, typename Accel>
+Eigen::Matrix<double, kEstimateRows, Cols> apply_estimators(const TestRunEstimators& est, const ModelOptions& m,
+                                                            double test_duration_s, const Position& position,
+                                                            const Accel& accel) {
+  const Eigen::Matrix<double, 4, Cols> u_pos = est.position * position;  // (4.8): Û1..Û4
+  const Eigen::Matrix<double, 3, Cols> u_acc = est.accel * accel;        // (4.4): Â1, Û3, Û4
+  const double g = m.gravity_mps2, w = m.earth_rate_radps, T = test_duration_s;
+  Eigen::Matrix<double, kEstimateRows, Cols> out(static_cast<Eigen::Index>(kEstimateRows), position.cols());
+  out.row(kU2Row) = u_pos.row(1);
+  out.row(kU3Row) = u_pos.row(2);
+  out.row(kU3AccelRow) = u_acc.row(1);
+  out.row(kDfAtTestEndRow) = g * (u_acc.row(0) + w * T * u_acc.row(1) + w * w * T * T / 2 * u_acc.row(2));  // (5.10)
+  return out;
+}
+
 /// Builds the estimators. `u4_resolvable`/`u3_resolvable` follow
 /// resolvable_terms(); with FitU4::kYes and U4 not resolvable this throws
 /// InputError (the report's Table 4.3: e.g. U4 needs more than 15–20 min).

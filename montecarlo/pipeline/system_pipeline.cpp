@@ -76,7 +76,7 @@ void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const 
     }
   }
   if (!needs_test_ && !needs_alignment_data_) return;
-  const double g = m.gravity_mps2, w = m.earth_rate_radps, T = test_.duration_s, tau = test_.filter_interval_s;
+  const double g = m.gravity_mps2, T = test_.duration_s, tau = test_.filter_interval_s;
   const double dv = test_.dv_pulse_mps, q = test_.position_resolution_m;
   double phases[kPhaseDraws];
   // The observations of the block, in per-thread buffers kept across calls:
@@ -123,13 +123,12 @@ void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const 
           pos_data(k - 1, a) = at_resolution(truth + r0(a, si) + pos(3 * (k - 1) + a, si), q) - truth - base_pos;
         }
       }
-      const Eigen::Matrix<double, 4, 3> u_pos = est_.position * pos_data;  // (4.8): Û1..Û4 per axis
-      const Eigen::Matrix<double, 3, 3> u_acc = est_.accel * accel_data;   // (4.4): Â1, Û3, Û4 per axis
+      const Eigen::Matrix<double, kEstimateRows, 3> u = apply_estimators<3>(est_, m, T, pos_data, accel_data);
       for (int a = 0; a < 3; ++a) {
-        z(ez::kU2 + a, si) = u_pos(1, a);
-        z(ez::kU3 + a, si) = u_pos(2, a);
-        z(ez::kU3Accel + a, si) = u_acc(1, a);
-        z(ez::kDfT + a, si) = g * (u_acc(0, a) + w * T * u_acc(1, a) + w * w * T * T / 2 * u_acc(2, a));  // (5.10)
+        z(ez::kU2 + a, si) = u(kU2Row, a);
+        z(ez::kU3 + a, si) = u(kU3Row, a);
+        z(ez::kU3Accel + a, si) = u(kU3AccelRow, a);
+        z(ez::kDfT + a, si) = u(kDfAtTestEndRow, a);
         z(ez::kWiggleAtT + a, si) = -sway(k_, a);  // computed − true velocity after the reset
       }
     }
@@ -154,7 +153,7 @@ void SystemPipeline::build_covariance_map(const StudyConfig& c, const TestRunMap
   const int kx = 0, kr = ux::kDim, ke = kr + kRealignDraws, ku = ke + 3 * n1, kn = ku + 3 * n1, kt = kn + 3 * n1,
             kf = kt + 6, W = kf + 6;
   const ModelOptions& m = c.model;
-  const double g = m.gravity_mps2, w = m.earth_rate_radps, T = test_.duration_s, tau = test_.filter_interval_s;
+  const double T = test_.duration_s, tau = test_.filter_interval_s;
   const double dv = test_.dv_pulse_mps, q = test_.position_resolution_m, dtheta = test_.torquer_pulse_rad;
   const double ta = test_.alignment_average_s;
   g_ = Eigen::MatrixXd::Zero(ez::kDim, W);
@@ -204,11 +203,11 @@ void SystemPipeline::build_covariance_map(const StudyConfig& c, const TestRunMap
         for (int j = 0; j < n1; ++j)
           acc_rows(k - 1, kn + 3 * j + a) += (l(k, j) - l(k - 1, j)) / tau;
       }
-      const Eigen::MatrixXd up = est_.position * pos_rows, ua = est_.accel * acc_rows;
-      g_.row(ez::kU2 + a) = up.row(1);
-      g_.row(ez::kU3 + a) = up.row(2);
-      g_.row(ez::kU3Accel + a) = ua.row(1);
-      g_.row(ez::kDfT + a) = g * (ua.row(0) + w * T * ua.row(1) + w * w * T * T / 2 * ua.row(2));
+      const Eigen::MatrixXd u = apply_estimators(est_, m, T, pos_rows, acc_rows);
+      g_.row(ez::kU2 + a) = u.row(kU2Row);
+      g_.row(ez::kU3 + a) = u.row(kU3Row);
+      g_.row(ez::kU3Accel + a) = u.row(kU3AccelRow);
+      g_.row(ez::kDfT + a) = u.row(kDfAtTestEndRow);
       for (int j = 0; j < n1; ++j) g_(ez::kWiggleAtT + a, kn + 3 * j + a) = -l(K, j);
     }
   }

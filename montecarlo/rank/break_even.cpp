@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "lib/common/assert.h"
+#include "lib/uncertainty/catalogue.h"
 #include "lib/uncertainty/random_fraction.h"
 #include "montecarlo/study/study_map.h"
 
@@ -53,6 +54,11 @@ int bound_slot(Assumption a) {
 
 int bound_slot_count(Assumption a) {
   return a == Assumption::kRealignAzimuthError ? 1 : is_bound(a) ? 3 : 0;
+}
+
+bool applies_to(Assumption a, System system) {
+  if (!is_bound(a)) return true;
+  return catalogue()[static_cast<std::size_t>(bound_slot(a))].applies == Applies::kBoth || system == System::kTheodolite;
 }
 
 std::string_view to_string(Assumption a) {

@@ -46,6 +46,9 @@ std::string_view si_unit(Assumption a);
 /// how many slots it bounds.
 int bound_slot(Assumption a);
 int bound_slot_count(Assumption a);
+/// False for a bound that acts in the other system only (the theodolite's
+/// realignment_azimuth_error in system 2).
+bool applies_to(Assumption a, System system);
 
 /// The study with the assumption at `value` (SI): a bound of a uniform
 /// ±value on each axis, the random fraction, or the test duration.

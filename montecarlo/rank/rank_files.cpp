@@ -117,7 +117,8 @@ double curve_value(const AssumptionCurve& c, std::size_t j, std::size_t k, std::
 RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even) {
   RankFiles f;
   const std::string fidelity(to_string(config.fidelity));
-  Table ranking({"system", "t_min", "fidelity", "rank", "scheme", "rms_m", "rms_lo_m", "rms_hi_m", "order_significant"});
+  Table ranking(
+      {"system", "t_min", "fidelity", "rank", "scheme", "rms_m", "rms_lo_m", "rms_hi_m", "order_significant", "test"});
   Json orders_json = Json::array();
   for (const SchemeOrder& o : orders) {
     Json schemes = Json::array();
@@ -126,7 +127,8 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
       const bool last = r + 1 == o.schemes.size();
       ranking.add_row({std::to_string(system_number(o.system)), t_min_text(o.t_s), fidelity, std::to_string(r + 1),
                        std::string(to_string(s.scheme)), format_number(s.rms_m), format_number(s.rms_lo_m),
-                       format_number(s.rms_hi_m), last ? "" : (s.order_significant ? "true" : "false")});
+                       format_number(s.rms_hi_m), last ? "" : (s.order_significant ? "true" : "false"),
+                       o.paired ? "paired" : "intervals"});
       Json j = Json::object();
       j["rank"] = static_cast<int>(r + 1);
       j["scheme"] = std::string(to_string(s.scheme));
@@ -213,7 +215,8 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
       const auto& rms = even.at_study[j][k];
       const auto leader = leader_of(rms);
       for (Assumption a : kAllAssumptions)
-        limits.add_row({std::to_string(system_number(config.systems[j])), t_min_text(config.report_times_s[k]),
+        if (applies_to(a, config.systems[j]))
+          limits.add_row({std::to_string(system_number(config.systems[j])), t_min_text(config.report_times_s[k]),
                         std::string(to_string(config.schemes[leader])), std::string(to_string(a)),
                         value_text(a, study_value(config, a), config),
                         limits_sentence(config, config.systems[j], config.report_times_s[k], a, even.crossings,
@@ -234,7 +237,8 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
     const auto& rms = even.at_study[j][last_k];
     const auto leader = leader_of(rms);
     for (Assumption a : kAllAssumptions)
-      text += fmt::format("system {}, {} min: {}\n", system_number(config.systems[j]), t_min_text(config.report_times_s[last_k]),
+      if (applies_to(a, config.systems[j]))
+        text += fmt::format("system {}, {} min: {}\n", system_number(config.systems[j]), t_min_text(config.report_times_s[last_k]),
                           limits_sentence(config, config.systems[j], config.report_times_s[last_k], a, even.crossings,
                                           config.schemes[leader]));
   }
@@ -252,6 +256,7 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
   for (const AssumptionCurve& c : even.curves) {
     const DisplayUnit d = display_unit(c.assumption);
     for (std::size_t j = 0; j < config.systems.size(); ++j) {
+      if (!applies_to(c.assumption, config.systems[j])) continue;
       PlotPanel panel;
       panel.title = fmt::format("system {}: {}{}", system_number(config.systems[j]), to_string(c.assumption),
                                 d.unit.empty() ? "" : " [" + d.unit + "]");

@@ -32,6 +32,8 @@ std::vector<SchemeOrder> order_schemes(const StudyConfig& config, const StudyLay
   std::vector<SchemeOrder> out;
   for (int j = 0; j < layout.n_systems; ++j) {
     for (int k = 0; k < layout.n_times; ++k) {
+      // At t = 0 nothing has propagated yet: every scheme shows its initial error.
+      if (layout.times_s[static_cast<std::size_t>(k)] <= 0) continue;
       const bool paired = layout.is_report_time[static_cast<std::size_t>(k)];
       SchemeOrder order{config.systems[static_cast<std::size_t>(j)], layout.times_s[static_cast<std::size_t>(k)], paired, 0, {}};
       std::vector<std::vector<float>> kept;

@@ -35,8 +35,8 @@ struct SchemeOrder {
   std::vector<RankedScheme> schemes;  ///< best (smallest RMS) first
 };
 
-/// One order per system and time of the layout, report times and the grid
-/// (config order, then time).
+/// One order per system and time of the layout after t = 0, report times
+/// and the grid (config order, then time).
 std::vector<SchemeOrder> order_schemes(const StudyConfig& config, const StudyLayout& layout,
                                        const StudyAccumulator& state);
 

@@ -55,14 +55,16 @@ TEST(Rank, ZeroSchemeErrorsPut54FirstAt84MinSignificantlyAndItsE4LimitHolds) {
   const auto ranking = csv_rows(read_file(out.path() / "ranking.csv"));
   ASSERT_FALSE(ranking.empty());
   EXPECT_EQ(ranking[0], (std::vector<std::string>{"system", "t_min", "fidelity", "rank", "scheme", "rms_m", "rms_lo_m",
-                                                  "rms_hi_m", "order_significant"}));
+                                                  "rms_hi_m", "order_significant", "test"}));
   std::map<std::string, std::string> first;  // "system t" → first scheme
   for (std::size_t i = 1; i < ranking.size(); ++i) {
     const auto& row = ranking[i];
-    ASSERT_EQ(row.size(), 9u);
+    ASSERT_EQ(row.size(), 10u);
     // Off the report times (the grid) no sample is kept: an order is
     // significant exactly when the two RMS intervals are disjoint.
     const bool report_time = row[1] == "42" || row[1] == "63" || row[1] == "84";
+    EXPECT_EQ(row[9], report_time ? "paired" : "intervals") << row[1];
+    EXPECT_NE(row[1], "0") << "t = 0 ranked";
     if (!report_time && !row[8].empty()) {
       ASSERT_LT(i + 1, ranking.size());
       const auto& next = ranking[i + 1];
@@ -79,8 +81,8 @@ TEST(Rank, ZeroSchemeErrorsPut54FirstAt84MinSignificantlyAndItsE4LimitHolds) {
       EXPECT_GE(std::stod(row[7]), std::stod(row[5]));
     }
   }
-  // Two systems × the 2-min grid from 0 to 90 min (46 times) and 63 min.
-  EXPECT_EQ(first.size(), 2u * 47u);
+  // Two systems × the 2-min grid from 2 to 90 min (45 times) and 63 min.
+  EXPECT_EQ(first.size(), 2u * 46u);
 
   // E4's break-even value at 84 min, system 1: on either side of it
   // `covariance` puts another scheme first.

@@ -43,8 +43,7 @@ const SchemeDefinition& scheme_5_4() {
               const double per_cy = c.model.radius_m * c.paper_functions.u4 * -2 * std::cos(L) *
                                     (std::cos(L) - std::sin(L));
               e(2, ux::kAccelBias + 0) += -per_cy / c.model.gravity_mps2;
-              e(2, ux::kMisalignConst + 1) += per_cy;
-              e(2, ux::kMisalignAlign + 1) += per_cy;
+              e(2, ux::kMisalignConst + 1) += per_cy;  // ζ_r enters after the commands measured C
             }
           },
       .truth_action =

@@ -124,16 +124,14 @@ std::optional<SchemeEstimates> record_estimates(const RecordRun& run, const Reco
   }
   for (bool s : seen)
     if (!s) return std::nullopt;
-  // (4.8), (4.4) and (5.10) as estimate_test_run applies them.
-  const Eigen::Matrix<double, 4, 3> u_pos = estimators.position * position;
-  const Eigen::Matrix<double, 3, 3> u_acc = estimators.accel * accel;
-  const double g = site.model.gravity_mps2, w = site.model.earth_rate_radps, T = site.test_duration_s;
+  const Eigen::Matrix<double, kEstimateRows, 3> e =
+      apply_estimators<3>(estimators, site.model, site.test_duration_s, position, accel);
   SchemeEstimates u;
   for (int a = 0; a < 3; ++a) {
-    u[a] = u_pos(1, a);
-    u[3 + a] = u_pos(2, a);
-    u[6 + a] = u_acc(1, a);
-    u[9 + a] = g * (u_acc(0, a) + w * T * u_acc(1, a) + w * w * T * T / 2 * u_acc(2, a));
+    u[a] = e(kU2Row, a);
+    u[3 + a] = e(kU3Row, a);
+    u[6 + a] = e(kU3AccelRow, a);
+    u[9 + a] = e(kDfAtTestEndRow, a);
   }
   return u;
 }

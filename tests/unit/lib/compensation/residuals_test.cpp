@@ -319,9 +319,9 @@ Coefficients errata(Scheme scheme, const Report& r, SchemeForms forms) {
     if (corrected) d[kU2].row(2) += e(ux::kAltitudeError, 6 / r.r0);
     // errata.md#5-17b: the z row of U'4 is −2 cos L0 (C_y sin L0 + ε4x) (from
     // (5.16a) in (3.29d)); the final line prints C_y cos L0, which the
-    // printed forms keep. Zero at 45°. ζ_cy is the whole ζ_y (constant and
-    // per-alignment parts: no realignment in 5.4).
-    const ZRow cy = r.bias(0, -1) + e(ux::kMisalignConst + 1) + e(ux::kMisalignAlign + 1);
+    // printed forms keep. Zero at 45°. (ζ_ry is not in C_y: it enters at
+    // switch-over, C' = C + ζ_r (2.18a), after the commands measured C.)
+    const ZRow cy = r.bias(0, -1) + e(ux::kMisalignConst + 1);
     if (corrected) d[kU4].row(2) = 2 * r.c * (r.c - r.s) * cy;
   }
   return d;
@@ -526,6 +526,14 @@ TEST(CompensationResiduals, Equation517bZRowIsSinL0DerivedAndCosL0AsPrinted) {
     const double printed = testing::scheme_coefficients(Scheme::k5_4, sys, m, test, SchemeForms::kPrinted).c[kU4](2, q);
     EXPECT_NEAR(derived, sin_reading, 1e-9 * sin_reading) << "system " << system_number(sys);
     EXPECT_NEAR(printed, cos_reading, 1e-9 * cos_reading) << "system " << system_number(sys);
+    // C_y as printed, −δf_x/g + ζ_cy: the ζ_cy column is −g times δf_x's in
+    // both forms, and ζ_ry (which enters after the commands measured C) has
+    // none at the paper level either.
+    for (SchemeForms forms : {SchemeForms::kCorrected, SchemeForms::kPrinted}) {
+      const testing::FitResult fit = testing::scheme_coefficients(Scheme::k5_4, sys, m, test, forms);
+      EXPECT_NEAR(fit.c[kU4](2, ux::kMisalignConst + 1), -g * fit.c[kU4](2, q), 1e-9 * g * std::abs(fit.c[kU4](2, q)));
+      EXPECT_NEAR(fit.c[kU4](2, ux::kMisalignAlign + 1), 0.0, 1e-12) << "system " << system_number(sys);
+    }
     const double printed_off_ft = std::abs(derived - cos_reading) * default_bounds()[q] * u4_ft_per_unit;
     EXPECT_GT(printed_off_ft, k3_29Terms.level) << "system " << system_number(sys);
     std::cout << fmt::format(
