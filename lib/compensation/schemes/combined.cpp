@@ -14,11 +14,9 @@ const SchemeDefinition& combined() {
       .measurement_error_groups = {"realignment_azimuth_error"},
       .position_map =
           [](const SchemeMapContext& c, ExtendedMap& e) {
-            const double g = c.model.gravity_mps2, w = c.model.earth_rate_radps;
             scheme_terms::add_u2_step(c, e);
-            e.middleCols<3>(ez::kU3) =
-                scheme_terms::u3_to_torquers(c) - g * w * scheme_terms::ramp_response(c.tau_s, c.model.schuler_radps()) *
-                    scheme_terms::combined_integrator_selection(c.system);
+            e.middleCols<3>(ez::kU3) = scheme_terms::u3_to_torquers(c) + scheme_terms::u3_ramp_per_unit(c) *
+                                                                             scheme_terms::combined_integrator_selection(c.system);
           },
       .truth_action =
           [](const TruthSchemeContext& c, TruthOptions& o, UncertaintyVector& x) {

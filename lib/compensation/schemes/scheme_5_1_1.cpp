@@ -13,10 +13,8 @@ const SchemeDefinition& scheme_5_1_1() {
       .measurement_error_groups = {"realignment_azimuth_error"},
       .position_map =
           [](const SchemeMapContext& c, ExtendedMap& e) {
-            const double g = c.model.gravity_mps2, w = c.model.earth_rate_radps;
-            scheme_terms::add_u2_step(c, e);                                       // (5.2)
-            e.middleCols<3>(ez::kU3) =
-                -g * w * scheme_terms::ramp_response(c.tau_s, c.model.schuler_radps()) * Mat3::Identity();  // (5.3)
+            scheme_terms::add_u2_step(c, e);                                                 // (5.2)
+            e.middleCols<3>(ez::kU3) = scheme_terms::u3_ramp_per_unit(c) * Mat3::Identity();  // (5.3)
           },
       .truth_action =
           [](const TruthSchemeContext& c, TruthOptions& o, UncertaintyVector&) {

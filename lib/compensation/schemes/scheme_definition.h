@@ -126,6 +126,12 @@ inline void add_u2_step(const SchemeMapContext& c, ExtendedMap& e) {
   e.middleCols<3>(ez::kU2) = -g * step_response(c.tau_s, ws) * Mat3::Identity();
 }
 
+/// Û3 through integrators into point 2 (5.3), (5.11): the ramp −g ω_ie Û3 τ,
+/// per unit of Û3 on each axis it is applied to.
+inline double u3_ramp_per_unit(const SchemeMapContext& c) {
+  return -c.model.gravity_mps2 * c.model.earth_rate_radps * ramp_response(c.tau_s, c.model.schuler_radps());
+}
+
 /// 5.1.2's Û3 to the gyro torquers (5.5) as a map: the rates ω_cp act
 /// through the realignment and after it, as a change of the level-platform
 /// drift ω_do, so they enter through the drift's own columns.
