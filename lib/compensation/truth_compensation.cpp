@@ -2,6 +2,7 @@
 
 #include "lib/common/assert.h"
 #include "lib/compensation/schemes/scheme_definition.h"
+#include "lib/preflight/instruments.h"
 #include "lib/preflight/observables.h"
 
 namespace insmc {
@@ -14,10 +15,10 @@ TestRunEstimates estimate_test_run(const TruthRun& run, const TestRunOptions& te
   Eigen::MatrixXd pos_data(K, 3), accel_data(K, 3);
   const Vec3 true0 = true_position_ap(0.0, m);
   for (int a = 0; a < 3; ++a) {
-    const double base = at_resolution(true0[a] + run.position_error_ap_m[0][a], q) - true0[a];
+    const PositionReadout readout(q, true0[a], true0[a] + run.position_error_ap_m[0][a]);
     for (int k = 1; k <= K; ++k) {
       const double truth = true_position_ap(run.t_s[k], m)[a];
-      pos_data(k - 1, a) = at_resolution(truth + run.position_error_ap_m[k][a], q) - truth - base;
+      pos_data(k - 1, a) = readout.change_m(truth, truth + run.position_error_ap_m[k][a]);
       accel_data(k - 1, a) = run.accel_error_ap_mps2[k][a];
     }
   }

@@ -5,6 +5,7 @@
 
 #include "lib/alignment/alignment.h"
 #include "lib/propagation/linear_model.h"
+#include "lib/preflight/instruments.h"
 #include "lib/preflight/observables.h"
 #include "lib/propagation/paper_model.h"
 #include "montecarlo/random/philox.h"
@@ -18,7 +19,6 @@ namespace {
 constexpr int kPhaseDraws = 9;
 constexpr int kRealignDraws = static_cast<int>(std::size(kRealignedSlots));
 
-double quantize_down(double v, double step) { return step > 0 ? step * std::floor(v / step) : v; }
 
 /// The steady-state misalignment during alignment at the chosen fidelity.
 Sensitivity3 steady_state(System s, Fidelity f, const ModelOptions& m) {
@@ -108,19 +108,16 @@ void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const 
         }
       }
       for (int a = 0; a < 3; ++a) {
-        // ΔV pulses: the counter sees nominal + error + sway velocity, with
-        // the remainder at switch-over as its starting phase.
-        const double phase = phases[a] * dv;
-        double prev = 0.0;
-        const double base_pos = at_resolution(true_position_(a, 0) + r0(a, si), q) - true_position_(a, 0);
+        // The counter sees nominal + error + sway velocity, with the
+        // remainder at switch-over as its starting phase.
+        DeltaVCounter counter(dv, phases[a] * dv);
+        const PositionReadout readout(q, true_position_(a, 0), true_position_(a, 0) + r0(a, si));
         for (int k = 1; k <= k_; ++k) {
           const double v = nominal_velocity_(a, k) + vel(3 * (k - 1) + a, si) + sway(k, a) - sway(0, a);
-          const double counted = dv > 0 ? quantize_down(v + phase, dv) : v;
-          accel_data(k - 1, a) = (counted - prev - (nominal_velocity_(a, k) - nominal_velocity_(a, k - 1))) / tau;
-          prev = counted;
-          // The position computer's output at its resolution, less the known true position.
+          accel_data(k - 1, a) =
+              counter.interval_error_mps2(v, nominal_velocity_(a, k) - nominal_velocity_(a, k - 1), tau);
           const double truth = true_position_(a, k);
-          pos_data(k - 1, a) = at_resolution(truth + r0(a, si) + pos(3 * (k - 1) + a, si), q) - truth - base_pos;
+          pos_data(k - 1, a) = readout.change_m(truth, truth + r0(a, si) + pos(3 * (k - 1) + a, si));
         }
       }
       const Eigen::Matrix<double, kEstimateRows, 3> u = apply_estimators<3>(est_, m, T, pos_data, accel_data);

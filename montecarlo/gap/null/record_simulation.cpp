@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "lib/common/assert.h"
-#include "lib/preflight/observables.h"
+#include "lib/preflight/instruments.h"
 #include "lib/preflight/test_run.h"
 #include "montecarlo/random/philox.h"
 #include "montecarlo/sampler/truth_sample.h"
@@ -41,7 +41,7 @@ RecordRow record_row(std::int64_t run, double t_s, const TruthRun& r, std::size_
   Vec3 pos = r.position_error_ap_m[k];
   if (spec.position_resolution_m > 0) {
     const Vec3 truth = true_position_ap(truth_t_s, model);
-    for (int a = 0; a < 3; ++a) pos[a] = at_resolution(truth[a] + pos[a], spec.position_resolution_m) - truth[a];
+    for (int a = 0; a < 3; ++a) pos[a] = position_reading_error(truth[a], truth[a] + pos[a], spec.position_resolution_m);
   }
   row.r_ap_m = pos;
   return row;
