@@ -31,6 +31,7 @@ constexpr Subcommand kSubcommands[] = {
     {"noise", insmc::app::run_noise, "raw-sensor noise: Allan deviation, fitted noise terms, warm-up, disturbances"},
     {"gap", insmc::app::run_gap, "sim-to-real gap diagnosis of record files: where, which effect, how far it shrinks"},
     {"gap-validate", insmc::app::run_gap_validate, "the gap diagnosis scored blind on records with withheld effects"},
+    {"compensate", insmc::app::run_compensate, "one unit from its test run: estimates, each scheme's envelope, go / no-go"},
     {"effects", insmc::app::run_effects, "the truth simulator's named effects, parameters and defaults"},
     {"params", insmc::app::run_params, "the uncertainty catalogue: names, symbols, units, bounds"},
     {"bench", insmc::app::run_bench, "throughput of the Monte Carlo paths against the machine's floor"},

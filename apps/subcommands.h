@@ -22,5 +22,6 @@ int run_gap(const Args& args);
 int run_gap_validate(const Args& args);
 int run_import_imu(const Args& args);
 int run_noise(const Args& args);
+int run_compensate(const Args& args);
 
 }  // namespace insmc::app

@@ -10,6 +10,25 @@
 
 namespace insmc::mc {
 
+TestRunEstimators record_estimators(const gap::RecordSite& site, const UncertaintyModel& prior) {
+  const TestRunOptions test = gap::record_test_options(site);
+  try {
+    validate(test);
+  } catch (const InputError& e) {
+    // The values come from the records' header, not from an option:
+    // name the header key the test-run setting was read from.
+    std::string key = e.field();
+    for (const auto& [option, header_key] :
+         {std::pair{"--test-duration", "test_duration_s"}, std::pair{"--filter-interval", "filter_interval_s"},
+          std::pair{"--dv-pulse", "dv_pulse_mps"}, std::pair{"--position-resolution", "position_resolution_m"}})
+      if (key == option) key = header_key;
+    throw InputError(fmt::format("records' header {} (the test run the estimates come from)", key),
+                     e.value(), e.allowed());
+  }
+  const Resolvability resolvable = resolvable_terms(site.system, site.model, test, prior);
+  return make_estimators(test, site.model, resolvable.u3, resolvable.u4);
+}
+
 Records records_for_diagnosis(const RecordFile& file, const DiagnosisOptions& options,
                               std::vector<std::string>& statements, std::vector<SiteValue>& site_values) {
   Records r{file, {}, {}};
@@ -45,22 +64,7 @@ Records records_for_diagnosis(const RecordFile& file, const DiagnosisOptions& op
   }
   const Scheme scheme = r.site.scheme;
   if (!uses_test_run(scheme)) return r;
-  const TestRunOptions test = gap::record_test_options(r.site);
-  try {
-    validate(test);
-  } catch (const InputError& e) {
-    // The values come from the records' header, not from an option of gap:
-    // name the header key the test-run setting was read from.
-    std::string key = e.field();
-    for (const auto& [option, header_key] :
-         {std::pair{"--test-duration", "test_duration_s"}, std::pair{"--filter-interval", "filter_interval_s"},
-          std::pair{"--dv-pulse", "dv_pulse_mps"}, std::pair{"--position-resolution", "position_resolution_m"}})
-      if (key == option) key = header_key;
-    throw InputError(fmt::format("records' header {} (the test run of scheme {})", key, to_string(scheme)),
-                     e.value(), e.allowed());
-  }
-  const Resolvability resolvable = resolvable_terms(r.site.system, r.site.model, test, options.prior);
-  r.site.estimators = make_estimators(test, r.site.model, resolvable.u3, resolvable.u4);
+  r.site.estimators = record_estimators(r.site, options.prior);
   for (const RecordRun& run : file.runs) {
     const std::optional<gap::SchemeEstimates> u = gap::record_estimates(run, r.site, *r.site.estimators);
     if (!u) {

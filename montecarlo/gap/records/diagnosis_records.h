@@ -24,6 +24,12 @@ struct Records {
   bool navigation_dropped = false;              // the scheme's estimates could not be recomputed
 };
 
+/// The report's estimators of the records' test run (T, τ, pulse weight and
+/// resolution from the completed site), with the terms `insmc run` fits
+/// (resolvable_terms under `prior`); throws InputError naming the header key
+/// of a test-run setting out of range.
+TestRunEstimators record_estimators(const gap::RecordSite& site, const UncertaintyModel& prior);
+
 Records records_for_diagnosis(const RecordFile& file, const DiagnosisOptions& options,
                               std::vector<std::string>& statements, std::vector<SiteValue>& site_values);
 

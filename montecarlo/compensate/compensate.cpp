@@ -1,0 +1,94 @@
+#include "montecarlo/compensate/compensate.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lib/common/assert.h"
+#include "montecarlo/compensate/exceedance.h"
+
+namespace insmc::mc {
+namespace {
+
+constexpr double kGridStepS = 180.0;
+
+const UnitPositionError& at_time(const SchemePrediction& p, double t_s) {
+  for (const UnitPositionError& e : p.envelope)
+    if (std::abs(e.t_s - t_s) < 1e-6) return e;
+  INSMC_ASSERT(false, "no envelope point at {} s", t_s);
+  return p.envelope.front();
+}
+
+LimitCheck check_limit(const SchemePrediction& p, const PositionLimit& limit, double risk) {
+  const UnitPositionError& e = at_time(p, limit.t_s);
+  LimitCheck c;
+  c.limit = limit;
+  c.risk = risk;
+  if (limit.component == PositionLimit::Component::kHorizontal) {
+    c.rms_m = e.unit_horizontal_rms_m();
+    c.probability = probability_outside_circle(e.horizontal_mean_m(), e.horizontal_covariance_m2(), limit.limit_m);
+  } else {
+    const int a = static_cast<int>(limit.component) - 1;
+    c.rms_m = e.unit_rms_m(a);
+    c.probability = probability_beyond(e.mean_m[a], e.covariance_m2(a, a), limit.limit_m);
+  }
+  return c;
+}
+
+}  // namespace
+
+std::string_view to_string(PositionLimit::Component c) {
+  switch (c) {
+    case PositionLimit::Component::kHorizontal: return "horizontal";
+    case PositionLimit::Component::kX: return "x";
+    case PositionLimit::Component::kY: return "y";
+    case PositionLimit::Component::kZ: return "z";
+  }
+  return "";
+}
+
+bool LimitCheck::within() const { return probability <= risk; }
+
+std::vector<double> envelope_times(const CompensateOptions& options) {
+  std::vector<double> t = {42 * 60.0, 63 * 60.0, 84 * 60.0, options.flight_time_s};
+  for (const PositionLimit& l : options.limits) t.push_back(l.t_s);
+  const double last = *std::max_element(t.begin(), t.end());
+  for (int k = 1; k * kGridStepS <= last + 1e-9; ++k) t.push_back(k * kGridStepS);
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end(), [](double a, double b) { return std::abs(a - b) < 1e-6; }), t.end());
+  return t;
+}
+
+CompensateResult compensate(const RecordFile& file, const CompensateOptions& options) {
+  INSMC_ASSERT(!options.schemes.empty(), "no scheme");
+  CompensateResult out;
+  out.records = read_unit_records(file, options.prior, options.run, options.site_gravity_mps2);
+  out.clock_s = envelope_times(options);
+  for (const UnitTestRun& run : out.records.runs) {
+    UnitResult u;
+    u.run = run.id;
+    const UnitPosterior posterior = condition_unit(out.records, run, options.prior);
+    u.estimates = estimate_unit(out.records, posterior, options.prior);
+    for (Scheme s : options.schemes)
+      u.schemes.push_back(
+          predict_scheme(out.records, run, posterior, s, options.prior, out.clock_s, options.realignment_duration_s));
+    std::vector<std::pair<double, std::size_t>> at_flight;
+    for (std::size_t i = 0; i < u.schemes.size(); ++i)
+      at_flight.emplace_back(at_time(u.schemes[i], options.flight_time_s).unit_horizontal_rms_m(), i);
+    std::stable_sort(at_flight.begin(), at_flight.end());
+    const SchemePrediction& best = u.schemes[at_flight.front().second];
+    u.recommended = best.scheme;
+    u.recommended_rms_m = at_flight.front().first;
+    if (at_flight.size() > 1) {
+      u.runner_up = u.schemes[at_flight[1].second].scheme;
+      u.margin_m = at_flight[1].first - at_flight.front().first;
+    }
+    for (const PositionLimit& l : options.limits) {
+      u.checks.push_back(check_limit(best, l, options.risk));
+      u.go = u.go && u.checks.back().within();
+    }
+    out.units.push_back(std::move(u));
+  }
+  return out;
+}
+
+}  // namespace insmc::mc

@@ -1,0 +1,68 @@
+#pragma once
+/// `insmc compensate` (docs/compensate.md): for each unit (a run of a record
+/// file), its estimates, each scheme's compensation and the position error
+/// after it (this unit's and the population's), the scheme to use at the
+/// flight time, and go / no-go against the user's limits.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "montecarlo/compensate/unit_prediction.h"
+
+namespace insmc::mc {
+
+/// A limit on the position error after the scheme, at a time on its clock.
+struct PositionLimit {
+  enum class Component { kHorizontal, kX, kY, kZ };
+  Component component = Component::kHorizontal;
+  double t_s = 0.0;
+  double limit_m = 0.0;
+  std::string text;  ///< as the user wrote it
+};
+std::string_view to_string(PositionLimit::Component c);
+
+struct CompensateOptions {
+  UncertaintyModel prior;
+  std::vector<Scheme> schemes;          ///< candidates, in registry order
+  double flight_time_s = 84 * 60.0;     ///< on each scheme's clock
+  std::vector<PositionLimit> limits;
+  double risk = 0.01;                   ///< largest acceptable probability of exceeding a limit
+  double realignment_duration_s = 600.0;
+  std::optional<std::int64_t> run;      ///< one run, or every run
+  std::optional<double> site_gravity_mps2;  ///< the site's specific force (read_unit_records)
+};
+
+struct LimitCheck {
+  PositionLimit limit;
+  double rms_m = 0.0;               ///< this unit's RMS of the component at the limit's time
+  double probability = 0.0;         ///< of exceeding the limit
+  bool within() const;              ///< probability ≤ risk (set by compensate)
+  double risk = 0.0;
+};
+
+struct UnitResult {
+  std::int64_t run = 0;
+  std::vector<UnitEstimate> estimates;
+  std::vector<SchemePrediction> schemes;
+  Scheme recommended;              ///< least horizontal RMS at the flight time
+  double recommended_rms_m = 0.0;
+  std::optional<Scheme> runner_up;
+  double margin_m = 0.0;           ///< the runner-up's RMS less the recommended's
+  std::vector<LimitCheck> checks;  ///< for the recommended scheme
+  bool go = true;
+};
+
+struct CompensateResult {
+  UnitRecords records;          ///< site, statements (the runs' data inside)
+  std::vector<double> clock_s;  ///< the envelope's times
+  std::vector<UnitResult> units;
+};
+
+/// The envelope's times: every 3 min to the last of 84 min, the flight time
+/// and the limits' times, with those times themselves.
+std::vector<double> envelope_times(const CompensateOptions& options);
+
+CompensateResult compensate(const RecordFile& file, const CompensateOptions& options);
+
+}  // namespace insmc::mc

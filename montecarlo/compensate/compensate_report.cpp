@@ -1,0 +1,273 @@
+#include "montecarlo/compensate/compensate_report.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "lib/units/units.h"
+#include "montecarlo/write/csv.h"
+#include "montecarlo/write/markdown.h"
+
+namespace insmc::mc {
+namespace {
+
+/// Units drawn in the figure at most (the tables hold every unit).
+constexpr std::size_t kMaxPlottedUnits = 8;
+
+std::string t_min_text(double t_s) { return format_number(std::round(t_s / 60.0 * 1e6) / 1e6); }
+std::string nmi_text(double m) { return fmt::format("{:.3f}", m / kNmiToM); }
+const char* axis_name(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
+
+Json vec_json(const Vec3& v) {
+  Json j = Json::array();
+  for (int a = 0; a < 3; ++a) j.push_back(v[a]);
+  return j;
+}
+
+bool is_report_time(double t_s, const CompensateOptions& o) {
+  for (double t : {42 * 60.0, 63 * 60.0, 84 * 60.0, o.flight_time_s})
+    if (std::abs(t - t_s) < 1e-6) return true;
+  for (const PositionLimit& l : o.limits)
+    if (std::abs(l.t_s - t_s) < 1e-6) return true;
+  return false;
+}
+
+Json site_json(const UnitRecords& r) {
+  Json j = Json::object();
+  j["system"] = system_number(r.site.system);
+  Json values = Json::array();
+  for (const SiteValue& v : r.site_values) {
+    Json e = Json::object();
+    e["key"] = v.key;
+    e["value"] = v.value;
+    e["source"] = v.source;
+    e["reason"] = v.reason;
+    values.push_back(std::move(e));
+  }
+  j["values"] = std::move(values);
+  j["filter_interval_used_s"] = r.site.filter_interval_s;
+  j["fitted_terms"] = r.site.estimators->fitted_terms;
+  return j;
+}
+
+}  // namespace
+
+CompensateFiles render_compensate(const CompensateResult& result, const CompensateOptions& options,
+                                  const std::string& source) {
+  CompensateFiles f;
+  const UnitRecords& rec = result.records;
+  Table estimates({"run", "name", "value", "sigma", "prior_sigma", "report_estimator", "unit", "resolved"});
+  Table compensation({"run", "scheme", "quantity", "axis", "value", "unit"});
+  Table envelope({"run", "scheme", "t_min", "axis", "unit_mean_m", "unit_rms_m", "population_rms_m"});
+  std::string md = fmt::format("# insmc compensate: {}\n\n", source);
+  md += fmt::format(
+      "System {}, test run T = {:g} min, filter interval {:g} s, estimators fit {} (4.7), (4.8), (4.4). Flight time "
+      "{} min on each scheme's clock; the scheme to use is the one with the least horizontal RMS there.\n\n",
+      system_number(rec.site.system), rec.site.test_duration_s / 60.0, rec.site.filter_interval_s,
+      rec.site.estimators->fitted_terms, t_min_text(options.flight_time_s));
+  {
+    Table site({"key", "value", "source", "reason"});
+    for (const SiteValue& v : rec.site_values) site.add_row({v.key, format_number(v.value), v.source, v.reason});
+    md += "## The site and its test run\n\n" + render_markdown(site) + "\n";
+    for (const std::string& s : rec.statements) md += "- " + s + "\n";
+    if (!rec.statements.empty()) md += "\n";
+  }
+  Json units = Json::array();
+  for (const UnitResult& u : result.units) {
+    const std::string run = std::to_string(u.run);
+    md += fmt::format("## Run {}\n\n### Estimates\n\n", run);
+    Table est_md({"coefficient", "this unit", "sigma", "prior sigma", "report's estimator", "unit", "resolved"});
+    Json est_json = Json::array();
+    for (const UnitEstimate& e : u.estimates) {
+      const std::string report = e.report_estimator ? format_number(*e.report_estimator) : "";
+      estimates.add_row({run, e.name, format_number(e.value), format_number(e.sigma), format_number(e.prior_sigma),
+                         report, e.unit, e.resolved() ? "yes" : "no"});
+      est_md.add_row({e.name, fmt::format("{:.4g}", e.value), fmt::format("{:.3g}", e.sigma),
+                      fmt::format("{:.3g}", e.prior_sigma), e.report_estimator ? fmt::format("{:.4g}", *e.report_estimator) : "-",
+                      e.unit, e.resolved() ? "yes" : "no"});
+      Json j = Json::object();
+      j["name"] = e.name;
+      j["value"] = e.value;
+      j["sigma"] = e.sigma;
+      j["unit"] = e.unit;
+      j["prior_sigma"] = e.prior_sigma;
+      if (e.report_estimator) j["report_estimator"] = *e.report_estimator;
+      j["resolved"] = e.resolved();
+      est_json.push_back(std::move(j));
+    }
+    md += render_markdown(est_md) +
+          "\nU2..U4 are the report's coefficients (3.29b-d) of this unit, df_T its accelerometer output error at T: "
+          "their best linear estimate from the test rows and its error's sigma; `resolved` when the test run "
+          "halves the population's spread. The report's estimators (4.8b, c), (5.10) are what the schemes apply.\n\n";
+
+    md += "### The compensation each scheme applies\n\n";
+    Table comp_md({"scheme", "ready (min)", "step at point 2 (ug)", "ramp (ug/min)", "torquer rates (meru)", "also"});
+    Json schemes = Json::array();
+    for (const SchemePrediction& p : u.schemes) {
+      const std::string name(to_string(p.scheme));
+      const SchemeCompensation& c = p.compensation;
+      const auto list = [](const Vec3& v, double scale) {
+        return fmt::format("{:.4g}, {:.4g}, {:.4g}", v[0] / scale, v[1] / scale, v[2] / scale);
+      };
+      std::string also;
+      if (c.realigns) also += "realign; ";
+      if (c.resets_at_test_end) also += "reset velocity and position at T; ";
+      if (c.from_alignment_data) also += "from the alignment phase's torquer commands and accelerometer outputs (not in the records: modelled); ";
+      comp_md.add_row({name, t_min_text(p.ready_time_s), list(c.step_mps2, kUgToMps2), list(c.ramp_mps3, kUgToMps2 / 60.0),
+                       list(c.torquer_radps, kMeruToRadps), also});
+      for (int a = 0; a < 3; ++a) {
+        compensation.add_row({run, name, "step", axis_name(a), format_number(c.step_mps2[a]), "m/s^2"});
+        compensation.add_row({run, name, "ramp", axis_name(a), format_number(c.ramp_mps3[a]), "m/s^3"});
+        compensation.add_row({run, name, "torquer_rate", axis_name(a), format_number(c.torquer_radps[a]), "rad/s"});
+      }
+      Json cj = Json::object();
+      cj["step_mps2"] = vec_json(c.step_mps2);
+      cj["ramp_mps3"] = vec_json(c.ramp_mps3);
+      cj["torquer_radps"] = vec_json(c.torquer_radps);
+      cj["realigns"] = c.realigns;
+      cj["resets_at_test_end"] = c.resets_at_test_end;
+      cj["from_alignment_data"] = c.from_alignment_data;
+      Json env = Json::array();
+      for (const UnitPositionError& e : p.envelope) {
+        for (int a = 0; a <= 3; ++a) {
+          const bool h = a == 3;
+          const double unit_rms = h ? e.unit_horizontal_rms_m() : e.unit_rms_m(a);
+          const double pop_rms = h ? e.population_horizontal_rms_m() : e.population_rms_m(a);
+          const std::string axis = h ? "horizontal" : axis_name(a);
+          envelope.add_row({run, name, t_min_text(e.t_s), axis, h ? "" : format_number(e.mean_m[a]),
+                            format_number(unit_rms), format_number(pop_rms)});
+          Json ej = Json::object();
+          ej["system"] = system_number(rec.site.system);
+          ej["axis"] = axis;
+          ej["t_min"] = e.t_s / 60.0;
+          ej["rms_m"] = unit_rms;
+          ej["population_rms_m"] = pop_rms;
+          if (!h) ej["mean_m"] = e.mean_m[a];
+          env.push_back(std::move(ej));
+        }
+      }
+      Json sj = Json::object();
+      sj["scheme"] = name;
+      sj["ready_time_s"] = p.ready_time_s;
+      sj["compensation"] = std::move(cj);
+      sj["envelope"] = std::move(env);
+      schemes.push_back(std::move(sj));
+    }
+    md += render_markdown(comp_md) +
+          "\nPer axis x, y, z of the platform frame a'. The step and ramp act from the scheme's start; torquer rates "
+          "from the switch-over (5.1.2, combined).\n\n";
+
+    md += "### Position error after each scheme: this unit and the population\n\n";
+    Table env_md({"scheme", "t (min)", "this unit: horizontal RMS (m)", "(n.mi.)", "population (m)", "this unit x, y, z RMS (m)"});
+    for (const SchemePrediction& p : u.schemes)
+      for (const UnitPositionError& e : p.envelope)
+        if (is_report_time(e.t_s, options))
+          env_md.add_row({std::string(to_string(p.scheme)), t_min_text(e.t_s), fmt::format("{:.1f}", e.unit_horizontal_rms_m()),
+                          nmi_text(e.unit_horizontal_rms_m()), fmt::format("{:.1f}", e.population_horizontal_rms_m()),
+                          fmt::format("{:.1f}, {:.1f}, {:.1f}", e.unit_rms_m(0), e.unit_rms_m(1), e.unit_rms_m(2))});
+    md += render_markdown(env_md) +
+          "\nThis unit's RMS is over what its test run leaves unknown (the run model conditioned on its data); the "
+          "population's over Table 3.1's units with the same test run. Both are exact for the linear level: no "
+          "sampling, so no interval. Every 3 min in envelope.csv.\n\n";
+
+    std::string verdict_line = "no limits given";
+    Json checks = Json::array();
+    if (!u.checks.empty()) {
+      Table lim({"limit", "RMS (m)", "P(exceed)", "within risk"});
+      for (const LimitCheck& c : u.checks) {
+        lim.add_row({c.limit.text, fmt::format("{:.1f}", c.rms_m), fmt::format("{:.3g}", c.probability),
+                     c.within() ? "yes" : "no"});
+        Json j = Json::object();
+        j["limit"] = c.limit.text;
+        j["component"] = std::string(to_string(c.limit.component));
+        j["t_min"] = c.limit.t_s / 60.0;
+        j["limit_m"] = c.limit.limit_m;
+        j["rms_m"] = c.rms_m;
+        j["probability"] = c.probability;
+        j["risk"] = c.risk;
+        j["within"] = c.within();
+        checks.push_back(std::move(j));
+      }
+      verdict_line = u.go ? "GO" : "NO-GO";
+      md += fmt::format("### Verdict with scheme {}: {}\n\n", to_string(u.recommended), verdict_line) +
+            render_markdown(lim) +
+            fmt::format("\nGo when every limit is exceeded with probability at most {:g} (--risk), the position "
+                        "error taken Gaussian with this unit's mean and covariance.\n\n", options.risk);
+    }
+    const std::string runner =
+        u.runner_up ? fmt::format(", {:.1f} m ({:.1f} %) ahead of {}", u.margin_m,
+                                  100.0 * u.margin_m / std::max(u.recommended_rms_m + u.margin_m, 1e-300),
+                                  to_string(*u.runner_up))
+                    : "";
+    md += fmt::format("**Scheme to use at {} min: {}**, horizontal RMS {:.1f} m ({} n.mi.){}.\n\n",
+                      t_min_text(options.flight_time_s), to_string(u.recommended), u.recommended_rms_m,
+                      nmi_text(u.recommended_rms_m), runner);
+    f.summary_text += fmt::format("run {}: use {} (horizontal RMS at {} min {:.1f} m{}); {}\n", run,
+                                  to_string(u.recommended), t_min_text(options.flight_time_s), u.recommended_rms_m,
+                                  u.runner_up ? fmt::format(", margin {:.1f} m over {}", u.margin_m, to_string(*u.runner_up)) : "",
+                                  verdict_line);
+    Json uj = Json::object();
+    uj["run"] = static_cast<long long>(u.run);
+    uj["estimates"] = std::move(est_json);
+    uj["schemes"] = std::move(schemes);
+    uj["recommended"] = std::string(to_string(u.recommended));
+    if (u.runner_up) {
+      uj["runner_up"] = std::string(to_string(*u.runner_up));
+      uj["margin_m"] = u.margin_m;
+    }
+    Json verdict = Json::object();
+    verdict["go"] = u.go;
+    verdict["checks"] = std::move(checks);
+    uj["verdict"] = std::move(verdict);
+    units.push_back(std::move(uj));
+  }
+  bool go = true;
+  for (const UnitResult& u : result.units) go = go && u.go;
+  f.json = Json::object();
+  f.json["source"] = source;
+  f.json["site"] = site_json(rec);
+  Json statements = Json::array();
+  for (const std::string& s : rec.statements) statements.push_back(s);
+  f.json["statements"] = std::move(statements);
+  f.json["flight_time_s"] = options.flight_time_s;
+  f.json["risk"] = options.risk;
+  f.json["units"] = std::move(units);
+  f.json["go"] = go;
+  f.markdown = md;
+  f.estimates_csv = render_csv(estimates);
+  f.compensation_csv = render_csv(compensation);
+  f.envelope_csv = render_csv(envelope);
+
+  f.plot.stem = "compensate";
+  f.plot.title = fmt::format("{}: horizontal RMS after each scheme, unit(s) against the population", source);
+  f.plot.x_label = "time on the scheme's clock (min)";
+  f.plot.y_label = "horizontal RMS (m)";
+  f.plot.marked_x = {42, 63, 84};
+  f.plot.columns = 3;
+  if (!result.units.empty())
+    for (std::size_t s = 0; s < result.units.front().schemes.size(); ++s) {
+      PlotPanel panel;
+      panel.title = std::string(to_string(result.units.front().schemes[s].scheme));
+      PlotLine pop;
+      pop.name = "population";
+      pop.thin = true;
+      for (const UnitPositionError& e : result.units.front().schemes[s].envelope) {
+        pop.x.push_back(e.t_s / 60.0);
+        pop.y.push_back(e.population_horizontal_rms_m());
+      }
+      panel.lines.push_back(pop);
+      for (std::size_t k = 0; k < result.units.size() && k < kMaxPlottedUnits; ++k) {
+        PlotLine line;
+        line.name = fmt::format("run {}", result.units[k].run);
+        line.colour = static_cast<int>(k);
+        for (const UnitPositionError& e : result.units[k].schemes[s].envelope) {
+          line.x.push_back(e.t_s / 60.0);
+          line.y.push_back(e.unit_horizontal_rms_m());
+        }
+        panel.lines.push_back(std::move(line));
+      }
+      f.plot.panels.push_back(std::move(panel));
+    }
+  return f;
+}
+
+}  // namespace insmc::mc

@@ -1,0 +1,258 @@
+#include "montecarlo/compensate/unit_prediction.h"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "lib/common/assert.h"
+#include "lib/compensation/schemes/scheme_definition.h"
+#include "lib/propagation/linear_model.h"
+#include "lib/propagation/paper_model.h"
+#include "lib/propagation/position_maps.h"
+#include "montecarlo/gap/model/gaussian_model.h"
+#include "montecarlo/gap/model/scheme_rows.h"
+
+namespace insmc::mc {
+namespace {
+
+/// The causes' prior mean: x's from the uncertainty model, a realignment's
+/// fresh draw that of its x slot, everything else 0.
+Eigen::VectorXd cause_prior_mean(const gap::BaseModel& base, const gap::GaussianModel& model,
+                                 const UncertaintyVector& x_mean) {
+  Eigen::VectorXd mu = Eigen::VectorXd::Zero(model.H.cols());
+  mu.head(ux::kDim) = x_mean;
+  const Eigen::Index first_scheme = ux::kDim + base.counting.columns.cols();
+  for (std::size_t j = 0; j < base.scheme_x_index.size(); ++j)
+    if (base.scheme_x_index[j] >= 0) mu[first_scheme + static_cast<Eigen::Index>(j)] = x_mean[base.scheme_x_index[j]];
+  return mu;
+}
+
+/// The f rows' pulse counting as it is: a window's count error is
+/// (e_k − e_{k−1})/τ, e_k the counter's remainder at t_k (uniform, w²/12
+/// each), so neighbouring windows are anti-correlated and a sum over windows
+/// telescopes, which the fits of (4.4), (5.10) rely on. The gap's model
+/// takes the windows independent (w²/(6τ²) each; gap/model/pulse_counting.h),
+/// which would overstate the spread of Δf̂(T) several-fold. Appends the
+/// remainders as causes and takes their share off the rows' noise.
+void count_f_remainders(gap::GaussianModel& model, const gap::Layout& layout, double pulse_mps, double tau_s) {
+  if (!(pulse_mps > 0)) return;
+  int K = 0;
+  for (const gap::ObservationRow& row : layout.rows) K = std::max(K, static_cast<int>(std::lround(row.t_s / tau_s)));
+  const Eigen::Index first = model.H.cols(), added = 3 * (K + 1);
+  model.H.conservativeResize(Eigen::NoChange, first + added);
+  model.H.rightCols(added).setZero();
+  model.prior_var.conservativeResize(first + added);
+  model.prior_var.tail(added).setConstant(pulse_mps * pulse_mps / 12.0);
+  const double window_var = pulse_mps * pulse_mps / (6.0 * tau_s * tau_s);
+  for (std::size_t i = 0; i < layout.rows.size(); ++i) {
+    const gap::ObservationRow& row = layout.rows[i];
+    if (row.quantity != gap::Quantity::kF) continue;
+    const auto r = static_cast<Eigen::Index>(i);
+    const Eigen::Index k = std::lround(row.t_s / tau_s);
+    model.H(r, first + 3 * k + row.axis) = 1.0 / tau_s;
+    model.H(r, first + 3 * (k - 1) + row.axis) = -1.0 / tau_s;
+    model.noise_var[r] = std::max(model.noise_var[r] - window_var, 0.0);
+    model.actual_noise_var[r] = std::max(model.actual_noise_var[r] - window_var, 0.0);
+  }
+}
+
+gap::RecordSite site_for(const UnitRecords& records, Scheme scheme, double realignment_duration_s) {
+  gap::RecordSite site = records.site;
+  site.scheme = scheme;
+  const double T = site.test_duration_s;
+  site.nav_start_s = realigns(scheme) ? T + realignment_duration_s : resets_at_test_end(scheme) ? T : 0.0;
+  return site;
+}
+
+/// SchemeEstimates order (scheme_rows.h).
+gap::SchemeEstimates estimate_vector(const TestRunEstimates& e) {
+  gap::SchemeEstimates u;
+  u << e.u2, e.u3, e.u3_accel, e.df_at_test_end_mps2;
+  return u;
+}
+
+SchemeCompensation compensation_of(Scheme scheme, const UnitRecords& records, const TestRunEstimates& estimates) {
+  SchemeCompensation c;
+  c.resets_at_test_end = resets_at_test_end(scheme);
+  c.realigns = realigns(scheme);
+  c.from_alignment_data = uses_alignment_data(scheme);
+  const SchemeDefinition& d = scheme.definition();
+  if (d.truth_action == nullptr || c.from_alignment_data) return c;
+  const TruthSchemeContext context{records.site.system, records.site.model, records.site.test_duration_s, estimates};
+  TruthOptions o;
+  UncertaintyVector change = UncertaintyVector::Zero();
+  d.truth_action(context, o, change);
+  c.step_mps2 = o.accel_compensation.step_mps2;
+  c.ramp_mps3 = o.accel_compensation.ramp_mps3;
+  c.torquer_radps = change.segment<3>(ux::kGyroDrift);  // rates that act as a drift change (5.5)
+  return c;
+}
+
+}  // namespace
+
+double UnitPositionError::unit_rms_m(int a) const { return std::sqrt(mean_m[a] * mean_m[a] + covariance_m2(a, a)); }
+double UnitPositionError::population_rms_m(int a) const { return std::sqrt(population_m2(a, a)); }
+double UnitPositionError::unit_horizontal_rms_m() const {
+  return std::sqrt(horizontal_mean_m().squaredNorm() + horizontal_covariance_m2().trace());
+}
+double UnitPositionError::population_horizontal_rms_m() const {
+  return std::sqrt((horizontal * population_m2 * horizontal.transpose()).trace());
+}
+
+Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const gap::Layout& layout) {
+  const gap::RecordSite& site = records.site;
+  const double tau = site.filter_interval_s, T = site.test_duration_s;
+  const auto K = static_cast<Eigen::Index>(std::lround(T / tau));
+  const auto n = static_cast<Eigen::Index>(layout.rows.size());
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(gap::kEstimateCount, n);
+  for (int a = 0; a < 3; ++a) {
+    Eigen::MatrixXd position = Eigen::MatrixXd::Zero(K, n), accel = Eigen::MatrixXd::Zero(K, n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const gap::ObservationRow& row = layout.rows[static_cast<std::size_t>(i)];
+      if (row.axis != a) continue;
+      const Eigen::Index k = std::lround(row.t_s / tau);
+      INSMC_ASSERT(k >= 1 && k <= K, "test row at {} s off the filter grid", row.t_s);
+      (row.quantity == gap::Quantity::kF ? accel : position)(k - 1, i) = 1.0;
+    }
+    const Eigen::MatrixXd e = apply_estimators(*site.estimators, site.model, T, position, accel);
+    B.row(a) = e.row(kU2Row);
+    B.row(3 + a) = e.row(kU3Row);
+    B.row(6 + a) = e.row(kU3AccelRow);
+    B.row(9 + a) = e.row(kDfAtTestEndRow);
+  }
+  return B;
+}
+
+UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run, const UncertaintyModel& prior) {
+  const gap::RecordSite site = site_for(records, Scheme::kNone, 0.0);
+  const gap::BaseModel base = gap::make_base_model(run.layout, site, prior.variance());
+  UnitPosterior c;
+  c.model = gap::combine(base, {});
+  count_f_remainders(c.model, run.layout, site.dv_pulse_mps, site.filter_interval_s);
+  const gap::GaussianModel& model = c.model;
+  const Eigen::MatrixXd& H = model.H;
+  const Eigen::VectorXd& p = model.prior_var;
+  const Eigen::MatrixXd PHt = p.asDiagonal() * H.transpose();
+  Eigen::MatrixXd S = H * PHt;
+  S.diagonal() += model.noise_var;
+  const Eigen::LLT<Eigen::MatrixXd> llt(S);
+  INSMC_ASSERT(llt.info() == Eigen::Success, "test-row covariance not positive definite ({} rows)", H.rows());
+  const Eigen::MatrixXd G = llt.solve(PHt.transpose()).transpose();  // P Hᵀ S⁻¹
+  c.cause_mean = cause_prior_mean(base, model, prior.mean());
+  c.cause_estimate = c.cause_mean + G * (run.values - model.mean - H * c.cause_mean);
+  // The error of the linear estimate with the weights W under the noise R
+  // the data carry (Joseph form: exact whatever the weights).
+  Eigen::MatrixXd M = -G * H;
+  M.diagonal().array() += 1.0;
+  c.error_covariance = M * p.asDiagonal() * M.transpose() + G * model.noise_var.asDiagonal() * G.transpose();
+  c.estimates_map = estimates_of_test_rows(records, run.layout);
+  const TestRunEstimators& est = *site.estimators;
+  const Eigen::Vector4d per_r0 = est.position * Eigen::VectorXd::Ones(est.position.cols());
+  const Vec3 r0 = LinearErrorModel(site.system, site.model).initial_position() * c.cause_estimate.head(ux::kDim);
+  c.crew_estimates = run.estimates;
+  c.crew_estimates.u2 -= per_r0[1] * r0;
+  c.crew_estimates.u3 -= per_r0[2] * r0;
+  return c;
+}
+
+std::vector<UnitEstimate> estimate_unit(const UnitRecords& records, const UnitPosterior& c,
+                                        const UncertaintyModel& prior) {
+  const gap::RecordSite& site = records.site;
+  // What each estimate is of, per unit of x: the report's U2..U4 (3.29b–d)
+  // and the accelerometer output error at T (4.2), the forcing of (3.24).
+  const ShortRunMatrices paper = paper_short_run_matrices(site.system, site.model);
+  const Sensitivity3 df_at_end = LinearErrorModel(site.system, site.model).forcing(site.test_duration_s);
+  const TestRunEstimators& est = *site.estimators;
+  struct Coefficient {
+    const char* name;
+    const Sensitivity3* map;
+    const char* unit;
+    const Vec3* report;
+  };
+  const TestRunEstimates& crew = c.crew_estimates;
+  const Coefficient coefficients[] = {{"U2", &paper.u2, "1", &crew.u2},
+                                      {"U3", &paper.u3, "1", &crew.u3},
+                                      {"U4", &paper.u4, "1", nullptr},
+                                      {"df_T", &df_at_end, "m/s^2", &crew.df_at_test_end_mps2}};
+  const UncertaintyVector x_var = prior.variance();
+  std::vector<UnitEstimate> out;
+  for (const Coefficient& q : coefficients)
+    for (int a = 0; a < 3; ++a) {
+      const Eigen::RowVectorXd l = q.map->row(a);
+      UnitEstimate e;
+      e.name = fmt::format("{}_{}", q.name, "xyz"[a]);
+      e.unit = q.unit;
+      e.value = l * c.cause_estimate.head(ux::kDim);
+      e.sigma = std::sqrt(std::max(0.0, (l * c.error_covariance.topLeftCorner(ux::kDim, ux::kDim) * l.transpose())(0, 0)));
+      e.prior_sigma = std::sqrt((l.array().square() * x_var.transpose().array()).sum());
+      const bool fitted = q.report != nullptr && (q.map != &paper.u3 || est.fit_u3);
+      if (fitted) e.report_estimator = (*q.report)[a];
+      out.push_back(e);
+    }
+  return out;
+}
+
+SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& run, const UnitPosterior& posterior,
+                                Scheme scheme, const UncertaintyModel& prior, const std::vector<double>& clock_s,
+                                double realignment_duration_s) {
+  const gap::RecordSite site = site_for(records, scheme, realignment_duration_s);
+  const double T = site.test_duration_s;
+  // The navigation after the scheme alone, on the record's clock.
+  gap::Layout layout;
+  layout.nav = gap::nav_segment_of(scheme);
+  layout.nav_start_s = site.nav_start_s;
+  const double zero = clock_start_s(scheme, T, site.nav_start_s);
+  for (double t : clock_s) {
+    INSMC_ASSERT(t > 0, "clock time {} s", t);
+    // The report window of the time since T (the gap's groups; not used here).
+    const int window = gap::nav_window(layout.nav == gap::NavSegment::kRestart ? t + T : std::max(t + zero, T), T);
+    for (int a = 0; a < 3; ++a)
+      layout.rows.push_back({t + zero, gap::Quantity::kR, a, gap::group_of(gap::Stage::kNav, gap::Quantity::kR, a, window)});
+  }
+  const gap::BaseModel base = gap::make_base_model(layout, site, prior.variance());
+  const gap::GaussianModel model = gap::combine(base, {});
+  const Eigen::VectorXd mu = cause_prior_mean(base, model, prior.mean());
+  const Eigen::Index others = model.H.cols() - ux::kDim;
+  const Eigen::MatrixXd A_x = model.H.leftCols(ux::kDim), A_o = model.H.rightCols(others);
+  const Eigen::VectorXd var_o = model.prior_var.tail(others);
+  const Eigen::MatrixXd& E = base.estimate_map;
+  // The navigation rows' own counting noise (the position resolution is the
+  // readout's, not the position error's).
+  const Eigen::VectorXd nav_noise = model.actual_noise_var - base.actual_noise_var;
+
+  const Eigen::VectorXd unit_mean =
+      A_x * posterior.cause_estimate.head(ux::kDim) + A_o * mu.tail(others) + E * estimate_vector(run.estimates);
+  Eigen::MatrixXd unit_cov = A_x * posterior.error_covariance.topLeftCorner(ux::kDim, ux::kDim) * A_x.transpose() +
+                             A_o * var_o.asDiagonal() * A_o.transpose();
+  unit_cov.diagonal() += nav_noise;
+  // The population: the estimates are the estimators applied to random
+  // test rows y = H_t c_t + e.
+  const gap::GaussianModel& test = posterior.model;
+  const Eigen::MatrixXd EB = E * posterior.estimates_map;
+  Eigen::MatrixXd via_test = EB * test.H;  // per unit of the test model's causes
+  via_test.leftCols(ux::kDim) += A_x;
+  const Eigen::VectorXd pop_mean = via_test * posterior.cause_mean + A_o * mu.tail(others);
+  Eigen::MatrixXd pop = via_test * test.prior_var.asDiagonal() * via_test.transpose() +
+                        EB * test.actual_noise_var.asDiagonal() * EB.transpose() +
+                        A_o * var_o.asDiagonal() * A_o.transpose() + pop_mean * pop_mean.transpose();
+  pop.diagonal() += nav_noise;
+
+  SchemePrediction out;
+  out.scheme = scheme;
+  out.ready_time_s = ready_time_s(scheme, T, realignment_duration_s);
+  out.compensation = compensation_of(scheme, records, posterior.crew_estimates);
+  const double frame_offset = frame_time_offset_s(scheme, T);
+  for (std::size_t j = 0; j < clock_s.size(); ++j) {
+    const auto r = static_cast<Eigen::Index>(3 * j);
+    UnitPositionError p;
+    p.t_s = clock_s[j];
+    p.mean_m = unit_mean.segment<3>(r);
+    p.covariance_m2 = unit_cov.block<3, 3>(r, r);
+    p.population_m2 = pop.block<3, 3>(r, r);
+    p.horizontal = local_level_horizontal(frame_offset + clock_s[j], site.model);
+    out.envelope.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace insmc::mc

@@ -1,0 +1,114 @@
+#include "montecarlo/compensate/unit_records.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "lib/common/input_error.h"
+#include "montecarlo/gap/model/scheme_rows.h"
+#include "montecarlo/gap/records/diagnosis_records.h"
+
+namespace insmc::mc {
+namespace {
+
+/// The row of `run` at t (within a millionth of a filter interval), or nullptr.
+const RecordRow* test_row_at(const RecordRun& run, double t_s, double tau_s) {
+  for (const RecordRow& row : run.rows)
+    if (row.phase == Phase::kTest && std::abs(row.t_s - t_s) <= 1e-6 * tau_s) return &row;
+  return nullptr;
+}
+
+/// The median spacing of consecutive r rows of the test runs (0 when none).
+double median_r_spacing(const RecordFile& file) {
+  std::vector<double> spacings;
+  for (const RecordRun& run : file.runs) {
+    double last = -1.0;
+    for (const RecordRow& row : run.rows) {
+      if (row.phase != Phase::kTest || !row.r_ap_m) continue;
+      if (last >= 0 && row.t_s > last) spacings.push_back(row.t_s - last);
+      last = row.t_s;
+    }
+  }
+  if (spacings.empty()) return 0.0;
+  std::nth_element(spacings.begin(), spacings.begin() + static_cast<std::ptrdiff_t>(spacings.size() / 2), spacings.end());
+  return spacings[spacings.size() / 2];
+}
+
+UnitTestRun unit_test_run(const RecordRun& run, const gap::RecordSite& site) {
+  const double tau = site.filter_interval_s;
+  const int K = static_cast<int>(std::lround(site.test_duration_s / tau));
+  UnitTestRun out;
+  out.id = run.id;
+  out.layout.nav = gap::NavSegment::kContinue;
+  out.values.resize(6 * K);
+  Eigen::MatrixXd position(K, 3), accel(K, 3);
+  for (int k = 1; k <= K; ++k) {
+    const double t = k * tau;
+    const RecordRow* row = test_row_at(run, t, tau);
+    const auto missing = [&](const char* what) {
+      return InputError(fmt::format("records run {} test rows", run.id), fmt::format("(no {} at t_s = {:g})", what, t),
+                        fmt::format("compensate needs f and r (all three axes) at every filter interval t_k = k*{:g} s "
+                                    "up to T = {:g} s: the data of the estimators (4.4), (4.8)",
+                                    tau, site.test_duration_s));
+    };
+    if (row == nullptr) throw missing("row");
+    if (!row->r_ap_m) throw missing("r");
+    for (int a = 0; a < 3; ++a) {
+      if (!row->f_mps2[a]) throw missing("f");
+      accel(k - 1, a) = *row->f_mps2[a];
+      position(k - 1, a) = (*row->r_ap_m)[a];
+    }
+    for (const gap::Quantity q : {gap::Quantity::kF, gap::Quantity::kR})
+      for (int a = 0; a < 3; ++a) {
+        const gap::Stage stage = gap::Stage::kTest;
+        out.values[static_cast<Eigen::Index>(out.layout.rows.size())] = q == gap::Quantity::kF ? accel(k - 1, a) : position(k - 1, a);
+        out.layout.rows.push_back({t, q, a, gap::group_of(stage, q, a, 0)});
+      }
+  }
+  out.layout.test_rows = static_cast<int>(out.layout.rows.size());
+  // The estimators as the Monte Carlo applies them (test_run.h); r rather
+  // than Δr = r − r(0): records have no row at t = 0, so each estimate
+  // carries the estimator's response to r(0) (scheme_rows.h models it).
+  const Eigen::Matrix<double, kEstimateRows, 3> e =
+      apply_estimators<3>(*site.estimators, site.model, site.test_duration_s, position, accel);
+  out.estimates.u2 = e.row(kU2Row).transpose();
+  out.estimates.u3 = e.row(kU3Row).transpose();
+  out.estimates.u3_accel = e.row(kU3AccelRow).transpose();
+  out.estimates.df_at_test_end_mps2 = e.row(kDfAtTestEndRow).transpose();
+  return out;
+}
+
+}  // namespace
+
+UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& prior, std::optional<std::int64_t> run,
+                              std::optional<double> site_gravity_mps2) {
+  // Only the test run is read: what followed it in the records (a scheme,
+  // a realignment) is not this unit's future.
+  RecordFile tests = without_truth(file);
+  if (run) {
+    std::erase_if(tests.runs, [&](const RecordRun& r) { return r.id != *run; });
+    if (tests.runs.empty())
+      throw InputError("--run", std::to_string(*run), "must be the id of a run in the records");
+  }
+  for (RecordRun& r : tests.runs) std::erase_if(r.rows, [](const RecordRow& row) { return row.phase != Phase::kTest; });
+  tests.header.set(std::string(kKeyScheme), std::string(to_string(Scheme::kNone)));
+  DiagnosisOptions options;
+  options.prior = prior;
+  const double T = tests.header.test_duration_s();
+  // The estimators fit r at the ends of the filter windows: windows at least
+  // as long as the r spacing put an r row at each end.
+  options.min_filter_interval_s = std::max({kUnitFilterIntervalS, T / kMaxUnitIntervals, median_r_spacing(tests)});
+  UnitRecords out;
+  const Records records = records_for_diagnosis(tests, options, out.statements, out.site_values);
+  out.site = records.site;
+  if (site_gravity_mps2) out.site.model.gravity_mps2 = *site_gravity_mps2;
+  if (out.site.test_duration_s / out.site.filter_interval_s > kMaxUnitIntervals + 1e-9)
+    throw InputError("records' header filter_interval_s", fmt::format("{:g}", out.site.filter_interval_s),
+                     fmt::format("compensate sums f windows up to at least T/{} = {:g} s; the recorded windows could "
+                                 "not be summed so (gaps in the f rows)", kMaxUnitIntervals, T / kMaxUnitIntervals));
+  out.site.estimators = record_estimators(out.site, prior);
+  for (const RecordRun& r : records.file.runs) out.runs.push_back(unit_test_run(r, out.site));
+  return out;
+}
+
+}  // namespace insmc::mc

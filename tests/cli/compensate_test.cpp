@@ -1,0 +1,219 @@
+// insmc compensate end to end: one unit's report from its recorded test run
+// (the files, the JSON the issue of scheme definitions promised, the exit
+// codes of the verdict), the population envelope against `insmc run`'s
+// Monte Carlo for the same settings, records written as other software
+// writes them, and bad input (exit 2, one line naming the field).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/cli/run_program.h"
+
+namespace insmc::testing {
+namespace {
+
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream l(line);
+    for (std::string cell; std::getline(l, cell, ',');) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+/// Records of `runs` truth-simulated units, the report's test run, system 1.
+std::string simulate(const TempDir& dir, int runs, const std::string& scheme = "none") {
+  const std::string path = dir.str() + "/units.csv";
+  const ProgramResult r = run_insmc("simulate --runs " + std::to_string(runs) + " --scheme " + scheme +
+                                    " --nav-duration 20min --out " + path);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return path;
+}
+
+TEST(Compensate, ReportsEachUnitWithItsFilesAndJson) {
+  const TempDir dir;
+  const std::string records = simulate(dir, 2);
+  const std::string out = dir.str() + "/out";
+  const ProgramResult r = run_insmc("compensate --records " + records + " --out " + out + " --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;  // no limit: go
+  for (const char* f : {"compensate.md", "estimates.csv", "compensation.csv", "envelope.csv", "compensate.json",
+                        "compensate.gp", "compensate.svg", "compensate.png"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "out" / f)) << f;
+  EXPECT_EQ(read_file(dir.path() / "out" / "compensate.json"), r.out);
+  for (const char* key : {"\"units\"", "\"run\"", "\"estimates\"", "\"sigma\"", "\"schemes\"", "\"compensation\"",
+                          "\"envelope\"", "\"t_min\"", "\"rms_m\"", "\"population_rms_m\"", "\"recommended\"",
+                          "\"verdict\"", "\"go\": true", "\"U2_x\"", "\"torquer_radps\""})
+    EXPECT_TRUE(has(r.out, key)) << key;
+  // Every scheme at every report time, both runs, per axis and horizontal.
+  const auto rows = csv_rows(read_file(dir.path() / "out" / "envelope.csv"));
+  int at_84 = 0;
+  for (const auto& row : rows)
+    if (row.size() == 7 && row[2] == "84") ++at_84;
+  EXPECT_EQ(at_84, 2 * 7 * 4);
+  // The figure has a panel per scheme with data.
+  const std::string svg = read_file(dir.path() / "out" / "compensate.svg");
+  EXPECT_TRUE(has(svg, "5.1.2") && has(svg, "population") && has(svg, "<path")) << svg.substr(0, 400);
+}
+
+TEST(Compensate, TheVerdictIsItsExitCode) {
+  const TempDir dir;
+  const std::string records = simulate(dir, 1);
+  const ProgramResult go = run_insmc("compensate --records " + records + " --limit horizontal@84min=100nmi --format csv");
+  EXPECT_EQ(go.exit_code, 0) << go.err;
+  const ProgramResult no_go =
+      run_insmc("compensate --records " + records + " --limit horizontal@84min=100nmi --limit z@42min=1ft");
+  EXPECT_EQ(no_go.exit_code, 1) << no_go.err;
+  EXPECT_TRUE(has(no_go.out, "NO-GO")) << no_go.out;
+  EXPECT_TRUE(has(no_go.out, "z@42min=1ft")) << no_go.out;
+}
+
+/// The population envelope is the Monte Carlo's of `insmc run` for the same
+/// settings (the report's test run, system 1, linear level): compensate's
+/// value lies in run's interval, widened from 95 % to a family-wise 1e-3
+/// over the 21 outputs (z = 4.07 instead of 1.96: half-width × 4.07/1.96).
+TEST(Compensate, PopulationEnvelopeIsRunsMonteCarlo) {
+  const TempDir dir;
+  const std::string records = simulate(dir, 1);
+  const ProgramResult c = run_insmc("compensate --records " + records + " --format csv");
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  std::map<std::pair<std::string, std::string>, double> population;
+  for (const auto& row : csv_rows(c.out))
+    if (row.size() == 7 && row[3] == "horizontal") population[{row[1], row[2]}] = std::stod(row[6]);
+  const ProgramResult mc = run_insmc("run --samples 20000 --system 1 --fidelity linear --format csv");
+  ASSERT_EQ(mc.exit_code, 0) << mc.err;
+  const double widen = 4.07 / 1.96;
+  int checked = 0;
+  for (const auto& row : csv_rows(mc.out)) {
+    if (row.size() < 9 || row[3] != "horizontal" || (row[4] != "42" && row[4] != "63" && row[4] != "84")) continue;
+    const double rms = std::stod(row[6]), lo = std::stod(row[7]), hi = std::stod(row[8]);
+    const auto it = population.find({row[0], row[4]});
+    ASSERT_NE(it, population.end()) << row[0] << " " << row[4];
+    EXPECT_GE(it->second, rms - (rms - lo) * widen) << row[0] << " at " << row[4] << " min";
+    EXPECT_LE(it->second, rms + (hi - rms) * widen) << row[0] << " at " << row[4] << " min";
+    ++checked;
+  }
+  EXPECT_EQ(checked, 21);
+}
+
+/// Records as other software writes them, from the simulator's: an unknown
+/// header key, numbers to 9 digits, no nav rows, and either
+///  * every optional key absent (pulse weight, resolution and filter
+///    interval inferred from the rows), or
+///  * only dv_pulse_mps kept, f over 20 s windows (two 10 s windows summed)
+///    and r on those rows and every 30 s.
+std::string foreign_records(const TempDir& dir, const std::string& records, bool coarse) {
+  const std::string path = dir.str() + (coarse ? "/coarse.csv" : "/foreign.csv");
+  std::ifstream in(records);
+  std::ofstream out(path);
+  std::vector<double> last_f(3, 0.0);
+  for (std::string line; std::getline(in, line);) {
+    if ((!coarse && line.starts_with("# dv_pulse_mps")) || line.starts_with("# position_resolution_m") ||
+        line.starts_with("# filter_interval_s") || line.starts_with("# truth."))
+      continue;
+    if (line.starts_with("run,")) {
+      out << "# writer=another-tool 2.1\n" << line << "\n";
+      continue;
+    }
+    if (line.starts_with("#")) {
+      out << line << "\n";
+      continue;
+    }
+    const auto cells = csv_rows(line).front();
+    if (cells[2] != "test") continue;
+    const double t = std::stod(cells[1]);
+    const bool f_row = !coarse || std::fmod(t + 1e-9, 20.0) < 1e-6;
+    const bool r_row = !coarse || std::fmod(t + 1e-9, 30.0) < 1e-6;
+    std::vector<double> f(3);
+    for (int a = 0; a < 3; ++a) f[static_cast<std::size_t>(a)] = std::stod(cells[static_cast<std::size_t>(3 + a)]);
+    if (f_row || r_row) {
+      out << cells[0] << "," << cells[1] << "," << cells[2] << std::setprecision(9);
+      for (int a = 0; a < 3; ++a) {
+        const auto i = static_cast<std::size_t>(a);
+        out << ",";
+        if (f_row) out << (coarse ? (f[i] + last_f[i]) / 2 : f[i]);
+      }
+      for (int a = 0; a < 3; ++a) out << "," << std::stod(cells[static_cast<std::size_t>(6 + a)]);
+      out << "\n";
+    }
+    last_f = f;
+  }
+  return path;
+}
+
+/// compensate infers what is missing and says so, and the estimates from
+/// the foreign records agree with those from the full records: both are
+/// estimates of the same unit's values from nested data, so they differ by
+/// less than 4 of the coarser one's sigmas.
+TEST(Compensate, RecordsOfOtherSoftware) {
+  const TempDir dir;
+  const std::string records = simulate(dir, 1);
+  const TempDir full_dir;
+  ASSERT_EQ(run_insmc("compensate --records " + records + " --scheme 5.3 --out " + full_dir.str()).exit_code, 0);
+  const auto full_est = csv_rows(read_file(full_dir.path() / "estimates.csv"));
+  for (const bool coarse : {false, true}) {
+    const std::string file = foreign_records(dir, records, coarse);
+    const TempDir out;
+    const ProgramResult r = run_insmc("compensate --records " + file + " --scheme 5.3 --out " + out.str());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(has(r.out, "filter_interval_s absent")) << r.out;
+    EXPECT_TRUE(has(r.out, coarse ? "filter interval 20 s" : "dv_pulse_mps absent")) << r.out;
+    const auto est = csv_rows(read_file(out.path() / "estimates.csv"));
+    ASSERT_EQ(full_est.size(), est.size());
+    for (std::size_t i = 1; i < est.size(); ++i) {
+      const double v = std::stod(est[i][2]), s = std::stod(est[i][3]), v_full = std::stod(full_est[i][2]);
+      EXPECT_LE(std::abs(v - v_full), 4 * s) << est[i][1] << (coarse ? " (20 s windows)" : "");
+    }
+  }
+}
+
+TEST(Compensate, BadInputIsRefusedWithTheFieldNamed) {
+  const TempDir dir;
+  const std::string records = simulate(dir, 1);
+  const std::string base = "compensate --records " + records + " ";
+  const std::pair<std::string, std::string> cases[] = {
+      {"compensate", "--records"},
+      {base + "--limit horizontal84min=3nmi", "--limit"},
+      {base + "--limit north@84min=3nmi", "--limit"},
+      {base + "--limit horizontal@84min=-3nmi", "--limit"},
+      {base + "--limit horizontal@0min=3nmi", "--limit"},
+      {base + "--limit horizontal@84min=3deg", "--limit"},
+      {base + "--run 7", "--run"},
+      {base + "--risk 0", "--risk"},
+      {base + "--risk 0.9", "--risk"},
+      {base + "--flight-time 0min", "--flight-time"},
+      {base + "--flight-time 1000h", "--flight-time"},
+      {base + "--site-gravity 5mps2", "--site-gravity"},
+      {base + "--scheme 5.9", "--scheme"},
+      {base + "--realignment-duration 100h", "--realignment-duration"},
+      {"compensate --records " + dir.str() + "/absent.csv", "absent.csv"},
+  };
+  for (const auto& [args, field] : cases) {
+    const ProgramResult r = run_insmc(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+    EXPECT_TRUE(has(r.err, field)) << args << "\n" << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  // A test run with a hole in its grid: the run and the time are named.
+  std::ifstream in(records);
+  std::ofstream out(dir.str() + "/hole.csv");
+  for (std::string line; std::getline(in, line);)
+    if (!line.starts_with("0,300,")) out << line << "\n";
+  out.close();
+  const ProgramResult hole = run_insmc("compensate --records " + dir.str() + "/hole.csv");
+  EXPECT_EQ(hole.exit_code, 2) << hole.err;
+  EXPECT_TRUE(has(hole.err, "run 0") && has(hole.err, "300")) << hole.err;
+}
+
+}  // namespace
+}  // namespace insmc::testing
