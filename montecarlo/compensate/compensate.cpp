@@ -63,6 +63,7 @@ CompensateResult compensate(const RecordFile& file, const CompensateOptions& opt
   CompensateResult out;
   out.records = read_unit_records(file, options.prior, options.run, options.site_gravity_mps2);
   out.clock_s = envelope_times(options);
+  out.identifiability = identifiability(out.records, options.prior);
   for (const UnitTestRun& run : out.records.runs) {
     UnitResult u;
     u.run = run.id;

@@ -56,6 +56,7 @@ struct UnitResult {
 struct CompensateResult {
   UnitRecords records;          ///< site, statements (the runs' data inside)
   std::vector<double> clock_s;  ///< the envelope's times
+  std::vector<Identifiability> identifiability;
   std::vector<UnitResult> units;
 };
 

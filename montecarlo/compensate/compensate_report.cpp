@@ -71,6 +71,45 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
     for (const std::string& s : rec.statements) md += "- " + s + "\n";
     if (!rec.statements.empty()) md += "\n";
   }
+  Json identifiability_json = Json::array();
+  {
+    Table t({"coefficient", "mixes (share of its spread)", "prior sigma", "sigma at T", "at 2T", "at 4T"});
+    Json ident = Json::array();
+    for (const Identifiability& e : result.identifiability) {
+      std::string mixes;
+      Json m = Json::array();
+      for (const auto& [name, share] : e.mixes) {
+        mixes += fmt::format("{}{} {:.0f} %", mixes.empty() ? "" : ", ", name, 100 * share);
+        Json j = Json::object();
+        j["uncertainty"] = name;
+        j["share"] = share;
+        m.push_back(std::move(j));
+      }
+      std::vector<std::string> row = {e.name, mixes, fmt::format("{:.3g}", e.prior_sigma)};
+      Json sig = Json::array();
+      for (const auto& [T, sigma] : e.sigma_by_duration) {
+        row.push_back(fmt::format("{:.3g}", sigma));
+        Json j = Json::object();
+        j["test_duration_s"] = T;
+        j["sigma"] = sigma;
+        sig.push_back(std::move(j));
+      }
+      t.add_row(row);
+      Json j = Json::object();
+      j["name"] = e.name;
+      j["mixes"] = std::move(m);
+      j["prior_sigma"] = e.prior_sigma;
+      j["sigma_by_test_duration"] = std::move(sig);
+      ident.push_back(std::move(j));
+    }
+    md += "## What the test run separates\n\n" + render_markdown(t) +
+          fmt::format("\nEach coefficient of (3.29b-d) is a sum over Table 3.1's uncertainties (4.10); its sigma after a "
+                      "test run of T = {:g} min, and of 2T and 4T with as many filter windows, is that of the best "
+                      "linear estimate from the test rows (no data needed). A coefficient whose sigma stays near its "
+                      "prior spread is not separated by this test; (4.6) gives the pulse-count limit.\n\n",
+                      rec.site.test_duration_s / 60.0);
+    identifiability_json = std::move(ident);
+  }
   Json units = Json::array();
   for (const UnitResult& u : result.units) {
     const std::string run = std::to_string(u.run);
@@ -224,6 +263,7 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
   for (const UnitResult& u : result.units) go = go && u.go;
   f.json = Json::object();
   f.json["source"] = source;
+  f.json["identifiability"] = std::move(identifiability_json);
   f.json["site"] = site_json(rec);
   Json statements = Json::array();
   for (const std::string& s : rec.statements) statements.push_back(s);

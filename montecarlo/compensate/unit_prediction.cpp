@@ -1,6 +1,7 @@
 #include "montecarlo/compensate/unit_prediction.h"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -9,6 +10,7 @@
 #include "lib/propagation/linear_model.h"
 #include "lib/propagation/paper_model.h"
 #include "lib/propagation/position_maps.h"
+#include "lib/uncertainty/catalogue.h"
 #include "montecarlo/gap/model/gaussian_model.h"
 #include "montecarlo/gap/model/scheme_rows.h"
 
@@ -54,6 +56,28 @@ void count_f_remainders(gap::GaussianModel& model, const gap::Layout& layout, do
     model.noise_var[r] = std::max(model.noise_var[r] - window_var, 0.0);
     model.actual_noise_var[r] = std::max(model.actual_noise_var[r] - window_var, 0.0);
   }
+}
+
+/// The linear estimate's gain on the test rows and its error covariance,
+/// the rows' noise W taken with the model-error floor (the linear level's
+/// allowance against the truth, docs/gap.md): (I − GH) P (I − GH)ᵀ + G W Gᵀ.
+struct LinearGain {
+  Eigen::MatrixXd G, error_covariance;
+};
+LinearGain linear_gain(const gap::GaussianModel& model) {
+  const Eigen::MatrixXd& H = model.H;
+  const Eigen::VectorXd& p = model.prior_var;
+  const Eigen::MatrixXd PHt = p.asDiagonal() * H.transpose();
+  Eigen::MatrixXd S = H * PHt;
+  S.diagonal() += model.noise_var;
+  const Eigen::LLT<Eigen::MatrixXd> llt(S);
+  INSMC_ASSERT(llt.info() == Eigen::Success, "test-row covariance not positive definite ({} rows)", H.rows());
+  LinearGain g;
+  g.G = llt.solve(PHt.transpose()).transpose();  // P Hᵀ S⁻¹
+  Eigen::MatrixXd M = -g.G * H;
+  M.diagonal().array() += 1.0;
+  g.error_covariance = M * p.asDiagonal() * M.transpose() + g.G * model.noise_var.asDiagonal() * g.G.transpose();
+  return g;
 }
 
 gap::RecordSite site_for(const UnitRecords& records, Scheme scheme, double realignment_duration_s) {
@@ -123,28 +147,59 @@ Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const gap::La
   return B;
 }
 
+std::vector<Identifiability> identifiability(const UnitRecords& records, const UncertaintyModel& prior) {
+  const ShortRunMatrices paper = paper_short_run_matrices(records.site.system, records.site.model);
+  const Sensitivity3* maps[] = {&paper.u2, &paper.u3, &paper.u4};
+  const char* names[] = {"U2", "U3", "U4"};
+  const UncertaintyVector x_var = prior.variance();
+  std::vector<Identifiability> out;
+  for (int q = 0; q < 3; ++q)
+    for (int a = 0; a < 3; ++a) {
+      Identifiability e;
+      e.name = fmt::format("{}_{}", names[q], "xyz"[a]);
+      const Eigen::RowVectorXd l = maps[q]->row(a);
+      const Eigen::ArrayXd share = l.array().square().transpose() * x_var.array();
+      e.prior_sigma = std::sqrt(share.sum());
+      std::vector<int> order(ux::kDim);
+      for (int j = 0; j < ux::kDim; ++j) order[static_cast<std::size_t>(j)] = j;
+      std::sort(order.begin(), order.end(), [&](int i, int j) { return share[i] > share[j]; });
+      for (int k = 0; k < 3 && share[order[static_cast<std::size_t>(k)]] > 0.01 * share.sum(); ++k)
+        e.mixes.emplace_back(std::string(catalogue()[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])].name),
+                             share[order[static_cast<std::size_t>(k)]] / share.sum());
+      out.push_back(e);
+    }
+  // The estimates' sigma for test runs of T, 2T and 4T, as many filter
+  // windows each (τ scaled: the fits hardly depend on it, the model's size
+  // stays that of the records').
+  for (const double factor : {1.0, 2.0, 4.0}) {
+    gap::RecordSite site = site_for(records, Scheme::kNone, 0.0);
+    site.test_duration_s *= factor;
+    site.filter_interval_s *= factor;
+    const int K = static_cast<int>(std::lround(site.test_duration_s / site.filter_interval_s));
+    const gap::Layout layout = test_run_layout(K, site.filter_interval_s);
+    const gap::BaseModel base = gap::make_base_model(layout, site, x_var);
+    gap::GaussianModel model = gap::combine(base, {});
+    count_f_remainders(model, layout, site.dv_pulse_mps, site.filter_interval_s);
+    const Eigen::MatrixXd error = linear_gain(model).error_covariance.topLeftCorner(ux::kDim, ux::kDim);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const Eigen::RowVectorXd l = maps[i / 3]->row(static_cast<Eigen::Index>(i % 3));
+      out[i].sigma_by_duration.emplace_back(site.test_duration_s,
+                                            std::sqrt(std::max(0.0, (l * error * l.transpose())(0, 0))));
+    }
+  }
+  return out;
+}
+
 UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run, const UncertaintyModel& prior) {
   const gap::RecordSite site = site_for(records, Scheme::kNone, 0.0);
   const gap::BaseModel base = gap::make_base_model(run.layout, site, prior.variance());
   UnitPosterior c;
   c.model = gap::combine(base, {});
   count_f_remainders(c.model, run.layout, site.dv_pulse_mps, site.filter_interval_s);
-  const gap::GaussianModel& model = c.model;
-  const Eigen::MatrixXd& H = model.H;
-  const Eigen::VectorXd& p = model.prior_var;
-  const Eigen::MatrixXd PHt = p.asDiagonal() * H.transpose();
-  Eigen::MatrixXd S = H * PHt;
-  S.diagonal() += model.noise_var;
-  const Eigen::LLT<Eigen::MatrixXd> llt(S);
-  INSMC_ASSERT(llt.info() == Eigen::Success, "test-row covariance not positive definite ({} rows)", H.rows());
-  const Eigen::MatrixXd G = llt.solve(PHt.transpose()).transpose();  // P Hᵀ S⁻¹
-  c.cause_mean = cause_prior_mean(base, model, prior.mean());
-  c.cause_estimate = c.cause_mean + G * (run.values - model.mean - H * c.cause_mean);
-  // The error of the linear estimate with the weights W under the noise R
-  // the data carry (Joseph form: exact whatever the weights).
-  Eigen::MatrixXd M = -G * H;
-  M.diagonal().array() += 1.0;
-  c.error_covariance = M * p.asDiagonal() * M.transpose() + G * model.noise_var.asDiagonal() * G.transpose();
+  const LinearGain gain = linear_gain(c.model);
+  c.cause_mean = cause_prior_mean(base, c.model, prior.mean());
+  c.cause_estimate = c.cause_mean + gain.G * (run.values - c.model.mean - c.model.H * c.cause_mean);
+  c.error_covariance = gain.error_covariance;
   c.estimates_map = estimates_of_test_rows(records, run.layout);
   const TestRunEstimators& est = *site.estimators;
   const Eigen::Vector4d per_r0 = est.position * Eigen::VectorXd::Ones(est.position.cols());

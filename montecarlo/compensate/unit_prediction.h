@@ -99,6 +99,19 @@ struct UnitPosterior {
 };
 UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run, const UncertaintyModel& prior);
 
+/// What a coefficient of the report mixes and how far a test run separates
+/// it: the uncertainties of Table 3.1 that make up its spread (their share
+/// of its prior variance, the largest three of at least 1 %), and its sigma
+/// after test runs of T, 2T and 4T of as many filter windows (no data
+/// needed: the error covariance of the linear estimate).
+struct Identifiability {
+  std::string name;
+  std::vector<std::pair<std::string, double>> mixes;
+  double prior_sigma = 0.0;
+  std::vector<std::pair<double, double>> sigma_by_duration;  ///< (T' [s], sigma)
+};
+std::vector<Identifiability> identifiability(const UnitRecords& records, const UncertaintyModel& prior);
+
 /// U2, U3, U4 (3.29b–d) and the accelerometer output error at T of (5.10),
 /// per axis, for one unit.
 std::vector<UnitEstimate> estimate_unit(const UnitRecords& records, const UnitPosterior& posterior,

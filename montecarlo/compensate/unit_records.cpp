@@ -39,8 +39,8 @@ UnitTestRun unit_test_run(const RecordRun& run, const gap::RecordSite& site) {
   const int K = static_cast<int>(std::lround(site.test_duration_s / tau));
   UnitTestRun out;
   out.id = run.id;
-  out.layout.nav = gap::NavSegment::kContinue;
-  out.values.resize(6 * K);
+  out.layout = test_run_layout(K, tau);
+  out.values.resize(static_cast<Eigen::Index>(out.layout.rows.size()));
   Eigen::MatrixXd position(K, 3), accel(K, 3);
   for (int k = 1; k <= K; ++k) {
     const double t = k * tau;
@@ -57,15 +57,10 @@ UnitTestRun unit_test_run(const RecordRun& run, const gap::RecordSite& site) {
       if (!row->f_mps2[a]) throw missing("f");
       accel(k - 1, a) = *row->f_mps2[a];
       position(k - 1, a) = (*row->r_ap_m)[a];
+      out.values[6 * (k - 1) + a] = accel(k - 1, a);
+      out.values[6 * (k - 1) + 3 + a] = position(k - 1, a);
     }
-    for (const gap::Quantity q : {gap::Quantity::kF, gap::Quantity::kR})
-      for (int a = 0; a < 3; ++a) {
-        const gap::Stage stage = gap::Stage::kTest;
-        out.values[static_cast<Eigen::Index>(out.layout.rows.size())] = q == gap::Quantity::kF ? accel(k - 1, a) : position(k - 1, a);
-        out.layout.rows.push_back({t, q, a, gap::group_of(stage, q, a, 0)});
-      }
   }
-  out.layout.test_rows = static_cast<int>(out.layout.rows.size());
   // The estimators as the Monte Carlo applies them (test_run.h); r rather
   // than Δr = r − r(0): records have no row at t = 0, so each estimate
   // carries the estimator's response to r(0) (scheme_rows.h models it).
@@ -79,6 +74,16 @@ UnitTestRun unit_test_run(const RecordRun& run, const gap::RecordSite& site) {
 }
 
 }  // namespace
+
+gap::Layout test_run_layout(int K, double tau_s) {
+  gap::Layout layout;
+  layout.nav = gap::NavSegment::kContinue;
+  for (int k = 1; k <= K; ++k)
+    for (const gap::Quantity q : {gap::Quantity::kF, gap::Quantity::kR})
+      for (int a = 0; a < 3; ++a) layout.rows.push_back({k * tau_s, q, a, gap::group_of(gap::Stage::kTest, q, a, 0)});
+  layout.test_rows = static_cast<int>(layout.rows.size());
+  return layout;
+}
 
 UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& prior, std::optional<std::int64_t> run,
                               std::optional<double> site_gravity_mps2) {

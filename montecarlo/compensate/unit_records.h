@@ -26,6 +26,10 @@ struct UnitTestRun {
   TestRunEstimates estimates;
 };
 
+/// The rows of a test run of K filter intervals τ: at each t_k = kτ the f
+/// rows of x, y, z, then the r rows.
+gap::Layout test_run_layout(int K, double tau_s);
+
 struct UnitRecords {
   gap::RecordSite site;  ///< completed; its estimators set
   std::vector<SiteValue> site_values;
