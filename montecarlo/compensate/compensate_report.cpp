@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "lib/units/units.h"
+#include "montecarlo/gap/report/report.h"
 #include "montecarlo/write/csv.h"
 #include "montecarlo/write/markdown.h"
 
@@ -34,16 +35,7 @@ bool is_report_time(double t_s, const CompensateOptions& o) {
 Json site_json(const UnitRecords& r) {
   Json j = Json::object();
   j["system"] = system_number(r.site.system);
-  Json values = Json::array();
-  for (const SiteValue& v : r.site_values) {
-    Json e = Json::object();
-    e["key"] = v.key;
-    e["value"] = v.value;
-    e["source"] = v.source;
-    e["reason"] = v.reason;
-    values.push_back(std::move(e));
-  }
-  j["values"] = std::move(values);
+  j["values"] = site_values_json(r.site_values);
   j["filter_interval_used_s"] = r.site.filter_interval_s;
   j["fitted_terms"] = r.site.estimators->fitted_terms;
   return j;

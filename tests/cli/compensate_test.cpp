@@ -14,23 +14,11 @@
 #include <string>
 #include <vector>
 
+#include "tests/cli/csv_rows.h"
 #include "tests/cli/run_program.h"
 
 namespace insmc::testing {
 namespace {
-
-std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::istringstream l(line);
-    for (std::string cell; std::getline(l, cell, ',');) cells.push_back(cell);
-    if (!line.empty() && line.back() == ',') cells.emplace_back();
-    rows.push_back(cells);
-  }
-  return rows;
-}
 
 /// Records of `runs` truth-simulated units, the report's test run, system 1.
 std::string simulate(const TempDir& dir, int runs, const std::string& scheme = "none") {

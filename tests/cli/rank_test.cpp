@@ -11,23 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "tests/cli/csv_rows.h"
 #include "tests/cli/run_program.h"
 
 namespace insmc::testing {
 namespace {
-
-std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::istringstream l(line);
-    for (std::string cell; std::getline(l, cell, ',');) cells.push_back(cell);
-    if (!line.empty() && line.back() == ',') cells.emplace_back();
-    rows.push_back(cells);
-  }
-  return rows;
-}
 
 /// Horizontal RMS [m] per scheme of system `system` at `t_min` from `insmc covariance`.
 std::map<std::string, double> covariance_rms(const std::string& options, int system, int t_min) {

@@ -47,6 +47,18 @@ std::string pct(double v) { return fmt::format("{:.1f} %", 100.0 * v); }
 
 }  // namespace
 
+Json site_values_json(const std::vector<SiteValue>& values) {
+  Json site = Json::object();
+  for (const SiteValue& v : values) {
+    Json e = Json::object();
+    e["value"] = v.value;
+    e["source"] = v.source;
+    e["reason"] = v.reason;
+    site[v.key] = e;
+  }
+  return site;
+}
+
 Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_files) {
   Json j = Json::object();
   Json files = Json::array();
@@ -54,15 +66,7 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   j["records"] = files;
   j["runs"] = d.runs;
   j["scheme"] = d.scheme;
-  Json site = Json::object();
-  for (const SiteValue& v : d.site) {
-    Json e = Json::object();
-    e["value"] = v.value;
-    e["source"] = v.source;
-    e["reason"] = v.reason;
-    site[v.key] = e;
-  }
-  j["site"] = site;
+  j["site"] = site_values_json(d.site);
   Json g = Json::object();
   g["value"] = d.gap;
   g["significant"] = d.significant;

@@ -12,6 +12,10 @@ namespace insmc::mc {
 
 Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_files);
 
+/// The site's values with their sources and reasons, keyed by header key
+/// (gap.json's and compensate.json's "site").
+Json site_values_json(const std::vector<SiteValue>& values);
+
 /// (file name, contents): gap.md and its plots.
 std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosis& d,
                                                                   const std::vector<std::string>& record_files);
