@@ -6,6 +6,8 @@
 // no-go, 2 bad input).
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "apps/cli_common.h"
 #include "apps/output_paths.h"
 #include "apps/study_options.h"
@@ -114,7 +116,7 @@ int run_compensate(const Args& args) {
     options.site_gravity_mps2 =
         parse_quantity((*vm)["site-gravity"].as<std::string>(), Dimension::kAcceleration, "--site-gravity");
     require_in_range("--site-gravity", *options.site_gravity_mps2, Dimension::kAcceleration, kSiteGravity,
-                     "the specific force at the earth's surface lies between 9.78 and 9.84 m/s^2");
+                     "the specific force on the earth's surface: 9.78 to 9.84 m/s^2 at sea level, less at altitude");
   }
   std::optional<OutputFolderOption> out = prepare_figure_folder(
       *vm, "compensate", {"compensate.md", "estimates.csv", "compensation.csv", "envelope.csv", "compensate.json"},

@@ -69,6 +69,9 @@ CompensateResult compensate(const RecordFile& file, const CompensateOptions& opt
     u.run = run.id;
     const UnitPosterior posterior = condition_unit(out.records, run, options.prior);
     u.estimates = estimate_unit(out.records, posterior, options.prior);
+    u.consistency_chi2 = posterior.consistency_chi2;
+    u.consistency_dof = posterior.consistency_dof;
+    u.consistency_p = posterior.consistency_p;
     for (Scheme s : options.schemes)
       u.schemes.push_back(
           predict_scheme(out.records, run, posterior, s, options.prior, out.clock_s, options.realignment_duration_s));
@@ -87,6 +90,7 @@ CompensateResult compensate(const RecordFile& file, const CompensateOptions& opt
       u.checks.push_back(check_limit(best, l, options.risk));
       u.go = u.go && u.checks.back().within();
     }
+    if (!options.limits.empty() && !u.fits_model()) u.go = false;
     out.units.push_back(std::move(u));
   }
   return out;

@@ -41,8 +41,16 @@ struct LimitCheck {
   double risk = 0.0;
 };
 
+/// Below this probability the unit's test rows are taken not to fit the
+/// model (UnitPosterior::consistency_p): its predictions are then not to be
+/// trusted and no verdict can be go.
+inline constexpr double kInconsistentP = 1e-6;
+
 struct UnitResult {
   std::int64_t run = 0;
+  double consistency_chi2 = 0.0, consistency_p = 1.0;
+  int consistency_dof = 0;
+  bool fits_model() const { return consistency_p >= kInconsistentP; }
   std::vector<UnitEstimate> estimates;
   std::vector<SchemePrediction> schemes;
   Scheme recommended;              ///< least horizontal RMS at the flight time

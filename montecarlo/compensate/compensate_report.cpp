@@ -105,7 +105,13 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
   Json units = Json::array();
   for (const UnitResult& u : result.units) {
     const std::string run = std::to_string(u.run);
-    md += fmt::format("## Run {}\n\n### Estimates\n\n", run);
+    md += fmt::format("## Run {}\n\n", run);
+    md += fmt::format("The test rows against the model: chi-square {:.1f} over {} rows, p = {:.3g}{}\n\n",
+                      u.consistency_chi2, u.consistency_dof, u.consistency_p,
+                      u.fits_model() ? "" : fmt::format(". **They do not fit the model (p < {:g})**: what follows assumes "
+                                                        "it, and no verdict is go; `insmc gap` on these records says "
+                                                        "where and why", kInconsistentP));
+    md += "### Estimates\n\n";
     Table est_md({"coefficient", "this unit", "sigma", "prior sigma", "report's estimator", "unit", "resolved"});
     Json est_json = Json::array();
     for (const UnitEstimate& e : u.estimates) {
@@ -218,7 +224,7 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
         j["within"] = c.within();
         checks.push_back(std::move(j));
       }
-      verdict_line = u.go ? "GO" : "NO-GO";
+      verdict_line = u.go ? "GO" : u.fits_model() ? "NO-GO" : "NO-GO (the test rows do not fit the model)";
       md += fmt::format("### Verdict with scheme {}: {}\n\n", to_string(u.recommended), verdict_line) +
             render_markdown(lim) +
             fmt::format("\nGo when every limit is exceeded with probability at most {:g} (--risk), the position "
@@ -245,6 +251,12 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
       uj["runner_up"] = std::string(to_string(*u.runner_up));
       uj["margin_m"] = u.margin_m;
     }
+    Json consistency = Json::object();
+    consistency["chi2"] = u.consistency_chi2;
+    consistency["dof"] = u.consistency_dof;
+    consistency["p"] = u.consistency_p;
+    consistency["fits_model"] = u.fits_model();
+    uj["consistency"] = std::move(consistency);
     Json verdict = Json::object();
     verdict["go"] = u.go;
     verdict["checks"] = std::move(checks);

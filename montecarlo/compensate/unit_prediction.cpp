@@ -1,6 +1,7 @@
 #include "montecarlo/compensate/unit_prediction.h"
 
 #include <Eigen/Cholesky>
+#include <boost/math/distributions/chi_squared.hpp>
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -31,7 +32,9 @@ Eigen::VectorXd cause_prior_mean(const gap::BaseModel& base, const gap::Gaussian
 
 /// The f rows' pulse counting as it is: a window's count error is
 /// (e_k − e_{k−1})/τ, e_k the counter's remainder at t_k (uniform, w²/12
-/// each), so neighbouring windows are anti-correlated and a sum over windows
+/// each; e_0 stands for the pulse phase ρ0 w at switch-over, which the
+/// counted velocity carries from the first pulse on: e_k = ρ0 w + a rounding
+/// for k ≥ 1 has the same differences), so neighbouring windows are anti-correlated and a sum over windows
 /// telescopes, which the fits of (4.4), (5.10) rely on. The gap's model
 /// takes the windows independent (w²/(6τ²) each; gap/model/pulse_counting.h),
 /// which would overstate the spread of Δf̂(T) several-fold. Appends the
@@ -40,7 +43,7 @@ void count_f_remainders(gap::GaussianModel& model, const gap::Layout& layout, do
   if (!(pulse_mps > 0)) return;
   int K = 0;
   for (const gap::ObservationRow& row : layout.rows) K = std::max(K, static_cast<int>(std::lround(row.t_s / tau_s)));
-  const Eigen::Index first = model.H.cols(), added = 3 * (K + 1);
+  const Eigen::Index first = model.H.cols(), added = 3 * (K + 1);  // e_0..e_K
   model.H.conservativeResize(Eigen::NoChange, first + added);
   model.H.rightCols(added).setZero();
   model.prior_var.conservativeResize(first + added);
@@ -63,6 +66,7 @@ void count_f_remainders(gap::GaussianModel& model, const gap::Layout& layout, do
 /// allowance against the truth, docs/gap.md): (I − GH) P (I − GH)ᵀ + G W Gᵀ.
 struct LinearGain {
   Eigen::MatrixXd G, error_covariance;
+  Eigen::LLT<Eigen::MatrixXd> S;  ///< of the rows' covariance H P Hᵀ + W
 };
 LinearGain linear_gain(const gap::GaussianModel& model) {
   const Eigen::MatrixXd& H = model.H;
@@ -70,10 +74,10 @@ LinearGain linear_gain(const gap::GaussianModel& model) {
   const Eigen::MatrixXd PHt = p.asDiagonal() * H.transpose();
   Eigen::MatrixXd S = H * PHt;
   S.diagonal() += model.noise_var;
-  const Eigen::LLT<Eigen::MatrixXd> llt(S);
-  INSMC_ASSERT(llt.info() == Eigen::Success, "test-row covariance not positive definite ({} rows)", H.rows());
   LinearGain g;
-  g.G = llt.solve(PHt.transpose()).transpose();  // P Hᵀ S⁻¹
+  g.S.compute(S);
+  INSMC_ASSERT(g.S.info() == Eigen::Success, "test-row covariance not positive definite ({} rows)", H.rows());
+  g.G = g.S.solve(PHt.transpose()).transpose();  // P Hᵀ S⁻¹
   Eigen::MatrixXd M = -g.G * H;
   M.diagonal().array() += 1.0;
   g.error_covariance = M * p.asDiagonal() * M.transpose() + g.G * model.noise_var.asDiagonal() * g.G.transpose();
@@ -198,8 +202,13 @@ UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run,
   count_f_remainders(c.model, run.layout, site.dv_pulse_mps, site.filter_interval_s);
   const LinearGain gain = linear_gain(c.model);
   c.cause_mean = cause_prior_mean(base, c.model, prior.mean());
-  c.cause_estimate = c.cause_mean + gain.G * (run.values - c.model.mean - c.model.H * c.cause_mean);
+  const Eigen::VectorXd innovation = run.values - c.model.mean - c.model.H * c.cause_mean;
+  c.cause_estimate = c.cause_mean + gain.G * innovation;
   c.error_covariance = gain.error_covariance;
+  c.consistency_chi2 = innovation.dot(gain.S.solve(innovation));
+  c.consistency_dof = static_cast<int>(innovation.size());
+  c.consistency_p = boost::math::cdf(
+      boost::math::complement(boost::math::chi_squared(c.consistency_dof), std::max(c.consistency_chi2, 0.0)));
   c.estimates_map = estimates_of_test_rows(records, run.layout);
   const TestRunEstimators& est = *site.estimators;
   const Eigen::Vector4d per_r0 = est.position * Eigen::VectorXd::Ones(est.position.cols());

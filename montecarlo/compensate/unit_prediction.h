@@ -14,9 +14,10 @@
 /// c from y, with the priors' second moments; no Gaussian prior is assumed
 /// for the mean and covariance below):
 ///   ĉ = μ + G (y − H_t μ),  G = P H_tᵀ (H_t P H_tᵀ + W)⁻¹,
-///   error covariance (I − G H_t) P (I − G H_t)ᵀ + G R Gᵀ,
-/// W the fit weights (with the model-error floor), R the noise the data
-/// really carry. This unit: p has mean A ĉ + E û and covariance A (error) Aᵀ
+///   error covariance (I − G H_t) P (I − G H_t)ᵀ + G W Gᵀ,
+/// W the rows' noise with the model-error floor (the linear level's
+/// allowance against the truth). This unit: p has mean A ĉ + E û and
+/// covariance A (error) Aᵀ
 /// plus the counting noise of the navigation rows. The population: û
 /// random too, p = (A + E B H_t) c + E B e, unconditioned.
 #include <optional>
@@ -38,7 +39,7 @@ struct UnitEstimate {
   double sigma = 0.0;      ///< its error's standard deviation
   double prior_sigma = 0.0;  ///< the population's spread before the test run
   /// The report's estimator of the same quantity ((4.8b), (4.8c), (5.10)):
-  /// what the schemes apply; absent for U4 when it is not fitted.
+  /// what the schemes apply; absent for U4, which no scheme applies.
   std::optional<double> report_estimator;
   /// The test run determines it: its sigma is below half its prior spread.
   bool resolved() const { return sigma < 0.5 * prior_sigma; }
@@ -89,6 +90,12 @@ struct UnitPosterior {
   Eigen::VectorXd cause_mean;        ///< μ, the prior mean of the causes
   Eigen::VectorXd cause_estimate;    ///< ĉ
   Eigen::MatrixXd error_covariance;  ///< of ĉ − c
+  /// Whether the test rows fit the model at all: y − Hμ against its
+  /// covariance S, (y − Hμ)ᵀ S⁻¹ (y − Hμ) ~ χ²(rows) for data of the model
+  /// (less with the model-error floor in S); p its upper-tail probability.
+  double consistency_chi2 = 0.0;
+  int consistency_dof = 0;
+  double consistency_p = 1.0;
   Eigen::MatrixXd estimates_map;     ///< B: the report's estimates per unit of the test rows
   /// What the crew's estimators give: from Δr = r − r(0) (4.7), r(0) the
   /// position read at switch-over. Records hold no row at t = 0, so r(0) is

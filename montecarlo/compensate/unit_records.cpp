@@ -95,6 +95,14 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
     if (tests.runs.empty())
       throw InputError("--run", std::to_string(*run), "must be the id of a run in the records");
   }
+  // Under a scheme that acts from the switch-over (5.4) the test rows are
+  // compensated already: not the data the estimators and this model take.
+  const Scheme recorded = tests.header.scheme();
+  if (uses_alignment_data(recorded))
+    throw InputError("records' header scheme", std::string(to_string(recorded)),
+                     "the test rows of these records were flown under that scheme's compensation (it acts from the "
+                     "switch-over); give records of the uncompensated test run (scheme none or a scheme that uses "
+                     "the test run)");
   for (RecordRun& r : tests.runs) std::erase_if(r.rows, [](const RecordRow& row) { return row.phase != Phase::kTest; });
   tests.header.set(std::string(kKeyScheme), std::string(to_string(Scheme::kNone)));
   DiagnosisOptions options;

@@ -192,6 +192,12 @@ TEST(Compensate, BadInputIsRefusedWithTheFieldNamed) {
     EXPECT_TRUE(has(r.err, field)) << args << "\n" << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
+  // Records flown under 5.4, whose compensation acts from the switch-over:
+  // their test rows are not an uncompensated test run.
+  const TempDir d54;
+  const ProgramResult s54 = run_insmc("compensate --records " + simulate(d54, 1, "5.4"));
+  EXPECT_EQ(s54.exit_code, 2) << s54.err;
+  EXPECT_TRUE(has(s54.err, "scheme") && has(s54.err, "5.4")) << s54.err;
   // A test run with a hole in its grid: the run and the time are named.
   std::ifstream in(records);
   std::ofstream out(dir.str() + "/hole.csv");
