@@ -1,5 +1,5 @@
 // insmc compensate end to end: one unit's report from its recorded test run
-// (the files, the JSON the issue of scheme definitions promised, the exit
+// (its files and JSON, the exit
 // codes of the verdict), the population envelope against `insmc run`'s
 // Monte Carlo for the same settings, records written as other software
 // writes them, and bad input (exit 2, one line naming the field).
