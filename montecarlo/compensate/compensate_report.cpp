@@ -235,9 +235,10 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
                                   100.0 * u.margin_m / std::max(u.recommended_rms_m + u.margin_m, 1e-300),
                                   to_string(*u.runner_up))
                     : "";
-    md += fmt::format("**Scheme to use at {} min: {}**, horizontal RMS {:.1f} m ({} n.mi.){}.\n\n",
+    md += fmt::format("**Scheme to use at {} min: {}**, horizontal RMS {:.1f} m ({} n.mi.){}{}.\n\n",
                       t_min_text(options.flight_time_s), to_string(u.recommended), u.recommended_rms_m,
-                      nmi_text(u.recommended_rms_m), runner);
+                      nmi_text(u.recommended_rms_m), runner,
+                      u.fits_model() ? "" : " (by the model, which these test rows do not fit)");
     f.summary_text += fmt::format("run {}: use {} (horizontal RMS at {} min {:.1f} m{}); {}\n", run,
                                   to_string(u.recommended), t_min_text(options.flight_time_s), u.recommended_rms_m,
                                   u.runner_up ? fmt::format(", margin {:.1f} m over {}", u.margin_m, to_string(*u.runner_up)) : "",
