@@ -36,9 +36,11 @@ struct LatticeFit {
 LatticeFit fit_lattice(std::vector<double> values, double tolerance = 0.01);
 
 /// The pulse weight of the test-run f rows: each run's consecutive f rows
-/// (at most 2τ apart, so the nominal's leftover is below 1 % of a pulse)
-/// give u_k − u_{k−1}, u_k = f_k τ + ∫ f̂ over the window
-/// (nominal_velocity_increment, test_run.h).
+/// (at most 2τ apart) give u_k − u_{k−1}, u_k = f_k τ + ∫ f̂ over the window
+/// (nominal_velocity_increment, test_run.h); where those fit no lattice, the
+/// second differences u_k − 2u_{k−1} + u_{k−2}, which cancel the leftover of
+/// the site's specific force against the nominal's g (past 1 % of a pulse
+/// for windows from about 20-30 s).
 LatticeFit f_pulse_lattice(const RecordFile& file, const ModelOptions& model, double filter_interval_s);
 
 /// The position resolution: each run's test-run r rows less its
