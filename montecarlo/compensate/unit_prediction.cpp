@@ -34,8 +34,9 @@ Eigen::VectorXd cause_prior_mean(const gap::BaseModel& base, const gap::Gaussian
 /// (e_k − e_{k−1})/τ, e_k the counter's remainder at t_k (uniform, w²/12
 /// each; e_0 stands for the pulse phase ρ0 w at switch-over, which the
 /// counted velocity carries from the first pulse on: e_k = ρ0 w + a rounding
-/// for k ≥ 1 has the same differences), so neighbouring windows are anti-correlated and a sum over windows
-/// telescopes, which the fits of (4.4), (5.10) rely on. The gap's model
+/// for k ≥ 1 has the same differences), so neighbouring windows are
+/// anti-correlated and a sum over windows telescopes, which the fits of
+/// (4.4), (5.10) rely on. The gap's model
 /// takes the windows independent (w²/(6τ²) each; gap/model/pulse_counting.h),
 /// which would overstate the spread of Δf̂(T) (5.3 at 84 min: 5,632 m for
 /// the population instead of 5,136 m, `insmc run` 5,111 m). Appends the
