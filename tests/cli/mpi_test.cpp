@@ -16,8 +16,9 @@ namespace insmc::testing {
 namespace {
 
 // --oversubscribe: more ranks than cores on a CI machine; root in containers.
-std::string mpirun(int ranks) {
-  return fmt::format("{} -n {} --oversubscribe --allow-run-as-root {}", INSMC_MPIEXEC, ranks, insmc_path());
+std::string mpirun(int ranks, const std::string& mpirun_options = "") {
+  return fmt::format("{} -n {} --oversubscribe --allow-run-as-root{} {}", INSMC_MPIEXEC, ranks, mpirun_options,
+                     insmc_path());
 }
 
 const std::string kStudy = " --scheme none,5.2 --grid-step 30min --seed 23";
@@ -60,13 +61,20 @@ TEST(Mpi, BadInputIsReportedOnceWithExitTwo) {
 TEST(Mpi, ResumeAfterSigtermGivesTheBytesOfAnUninterruptedRun) {
   TempDir dir;
   const std::string cheap = " --scheme none --grid-step 30min --seed 23";
-  const std::uint64_t samples = samples_for_seconds(cheap, 3.0);
+  // mpirun passes SIGTERM on to the ranks odls_base_sigkill_timeout seconds
+  // after it gets it, and kills them as long again after that (docs/mpi.md).
+  // At the default 1 s, the block in flight, the merge and the write lost the
+  // race on a loaded 2-core machine; 5 s each way, and a run long enough to
+  // be still under way when the ranks get the signal.
+  constexpr int kSigkillTimeout_s = 5;
+  const std::uint64_t samples = samples_for_seconds(cheap, 2.5 * kSigkillTimeout_s);
   const std::string study = fmt_samples(samples) + cheap;
   const std::string ck = dir.str() + "/run.ck";
-  BackgroundProgram run(mpirun(2) + " run" + study + " --checkpoint " + ck + " --checkpoint-every 0.2s --out " +
-                        dir.str() + "/killed");
+  const std::string mpirun_options = fmt::format(" --mca odls_base_sigkill_timeout {}", kSigkillTimeout_s);
+  BackgroundProgram run(mpirun(2, mpirun_options) + " run" + study + " --checkpoint " + ck +
+                        " --checkpoint-every 0.2s --out " + dir.str() + "/killed");
   wait_for_a_periodic_checkpoint(ck);
-  run.send(SIGTERM);  // mpirun passes SIGTERM on to the ranks after odls_base_sigkill_timeout (1 s)
+  run.send(SIGTERM);
   const ProgramResult killed = run.wait();
   EXPECT_NE(killed.exit_code, 0) << killed.err;
   EXPECT_NE(killed.err.find("interrupted by SIGTERM: checkpoint " + ck + " written"), std::string::npos)
