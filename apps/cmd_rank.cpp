@@ -46,6 +46,7 @@ int run_rank(const Args& args) {
   if (!vm) return 0;
   refuse_unused_options(*vm);
   mc::StudyConfig config = read_study_config(*vm, true);
+  const mc::LengthUnit unit = read_length_unit(*vm);
   const StdoutChoice shown = read_stdout_choice(*vm);
   std::optional<OutputFolderOption> out =
       prepare_figure_folder(*vm, "rank", {"ranking.csv", "breakeven.csv", "rank.md", "rank.json"}, "rank");
@@ -54,7 +55,7 @@ int run_rank(const Args& args) {
   const mc::StudyAccumulator state = mc::run_blocks(config, map, 0, mc::block_count(config.samples));
   const std::vector<mc::SchemeOrder> orders = mc::order_schemes(config, layout, state);
   const mc::BreakEven even = mc::break_even(config);
-  mc::RankFiles files = mc::render_rank(config, orders, even);
+  mc::RankFiles files = mc::render_rank(config, orders, even, unit);
   mc::Json json = mc::Json::object();
   json["settings"] = mc::settings_json(config);
   json["rank"] = std::move(files.rank_json);

@@ -70,11 +70,17 @@ std::string limits_sentence(const StudyConfig& config, System system, double t_s
   return s;
 }
 
-std::string order_line(const SchemeOrder& o) {
+/// "RMS ± half its interval" in the printed unit.
+std::string rms_text(const RankedScheme& s, LengthUnit unit) {
+  const double k = length_factor(unit);
+  return format_with_interval(k * s.rms_m, k * (s.rms_hi_m - s.rms_lo_m) / 2);
+}
+
+std::string order_line(const SchemeOrder& o, LengthUnit unit) {
   std::string s;
   for (std::size_t r = 0; r < o.schemes.size(); ++r) {
     const RankedScheme& x = o.schemes[r];
-    s += fmt::format("{} {}", to_string(x.scheme), format_with_interval(x.rms_m, (x.rms_hi_m - x.rms_lo_m) / 2));
+    s += fmt::format("{} {}", to_string(x.scheme), rms_text(x, unit));
     if (r + 1 < o.schemes.size()) s += x.order_significant ? " < " : " ≈ ";
   }
   return s;
@@ -82,16 +88,16 @@ std::string order_line(const SchemeOrder& o) {
 
 /// Per system, the first and second scheme at every time of the study
 /// (report times and the grid): who leads when.
-std::string first_place_over_time(const StudyConfig& config, const std::vector<SchemeOrder>& orders) {
+std::string first_place_over_time(const StudyConfig& config, const std::vector<SchemeOrder>& orders, LengthUnit unit) {
+  const std::string rms_heading = fmt::format("RMS [{}]", length_suffix(unit));
   std::string md;
   for (System system : config.systems) {
-    Table t({"t [min]", "first", "RMS [m]", "second", "RMS [m]", "order", "test"});
+    Table t({"t [min]", "first", rms_heading, "second", rms_heading, "order", "test"});
     for (const SchemeOrder& o : orders) {
       if (o.system != system || o.schemes.size() < 2) continue;
       const RankedScheme &a = o.schemes[0], &b = o.schemes[1];
-      t.add_row({t_min_text(o.t_s), std::string(to_string(a.scheme)),
-                 format_with_interval(a.rms_m, (a.rms_hi_m - a.rms_lo_m) / 2), std::string(to_string(b.scheme)),
-                 format_with_interval(b.rms_m, (b.rms_hi_m - b.rms_lo_m) / 2),
+      t.add_row({t_min_text(o.t_s), std::string(to_string(a.scheme)), rms_text(a, unit),
+                 std::string(to_string(b.scheme)), rms_text(b, unit),
                  a.order_significant ? "significant" : "not significant", o.paired ? "paired" : "intervals"});
     }
     if (t.rows().empty()) continue;
@@ -114,11 +120,14 @@ double curve_value(const AssumptionCurve& c, std::size_t j, std::size_t k, std::
 
 }  // namespace
 
-RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even) {
+RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even,
+                      LengthUnit unit) {
   RankFiles f;
   const std::string fidelity(to_string(config.fidelity));
-  Table ranking(
-      {"system", "t_min", "fidelity", "rank", "scheme", "rms_m", "rms_lo_m", "rms_hi_m", "order_significant", "test"});
+  const std::string u = length_suffix(unit);
+  const double per_m = length_factor(unit);
+  Table ranking({"system", "t_min", "fidelity", "rank", "scheme", "rms_" + u, "rms_lo_" + u, "rms_hi_" + u,
+                 "order_significant", "test"});
   Json orders_json = Json::array();
   for (const SchemeOrder& o : orders) {
     Json schemes = Json::array();
@@ -126,8 +135,8 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
       const RankedScheme& s = o.schemes[r];
       const bool last = r + 1 == o.schemes.size();
       ranking.add_row({std::to_string(system_number(o.system)), t_min_text(o.t_s), fidelity, std::to_string(r + 1),
-                       std::string(to_string(s.scheme)), format_number(s.rms_m), format_number(s.rms_lo_m),
-                       format_number(s.rms_hi_m), last ? "" : (s.order_significant ? "true" : "false"),
+                       std::string(to_string(s.scheme)), format_number(per_m * s.rms_m),
+                       format_number(per_m * s.rms_lo_m), format_number(per_m * s.rms_hi_m), last ? "" : (s.order_significant ? "true" : "false"),
                        o.paired ? "paired" : "intervals"});
       Json j = Json::object();
       j["rank"] = static_cast<int>(r + 1);
@@ -184,19 +193,18 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
     if (!o.paired) continue;
     md += fmt::format("## System {}, {} min ({} paired samples)\n\n", system_number(o.system), t_min_text(o.t_s),
                       o.paired_samples);
-    Table t({"rank", "scheme", "RMS [m] ± half-width", "order against the next"});
+    Table t({"rank", "scheme", fmt::format("RMS [{}] ± half-width", u), "order against the next"});
     for (std::size_t r = 0; r < o.schemes.size(); ++r) {
       const RankedScheme& s = o.schemes[r];
       const std::string against =
           r + 1 == o.schemes.size() ? ""
                                     : fmt::format("{} (z = {:.3g})", s.order_significant ? "significant" : "not significant",
                                                   s.paired_z);
-      t.add_row({std::to_string(r + 1), std::string(to_string(s.scheme)),
-                 format_with_interval(s.rms_m, (s.rms_hi_m - s.rms_lo_m) / 2), against});
+      t.add_row({std::to_string(r + 1), std::string(to_string(s.scheme)), rms_text(s, unit), against});
     }
     md += render_markdown(t) + "\n";
   }
-  md += first_place_over_time(config, orders);
+  md += first_place_over_time(config, orders, unit);
   std::string ranges;
   for (Assumption a : kAllAssumptions)
     if (const int slot = bound_slot(a); slot >= 0)
@@ -230,9 +238,9 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
   const std::size_t last_k = config.report_times_s.size() - 1;
   for (const SchemeOrder& o : orders) {
     if (o.t_s != config.report_times_s[last_k]) continue;
-    text += fmt::format("system {}, {} min: {}\n", system_number(o.system), t_min_text(o.t_s), order_line(o));
+    text += fmt::format("system {}, {} min: {}\n", system_number(o.system), t_min_text(o.t_s), order_line(o, unit));
   }
-  text += "(< : significant, ≈ : not significant; RMS in m)\n\n";
+  text += fmt::format("(< : significant, ≈ : not significant; RMS in {})\n\n", u);
   for (std::size_t j = 0; j < even.at_study.size(); ++j) {
     const auto& rms = even.at_study[j][last_k];
     const auto leader = leader_of(rms);
@@ -251,7 +259,7 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
                              "of them moves, left out; points: where the first place changes hands)",
                              t_min_text(config.report_times_s[last_k]), fidelity);
   f.plot.x_label = "the assumption's value (unit in the panel title)";
-  f.plot.y_label = "horizontal RMS [m]";
+  f.plot.y_label = fmt::format("horizontal RMS [{}]", u);
   f.plot.columns = static_cast<int>(config.systems.size());
   for (const AssumptionCurve& c : even.curves) {
     const DisplayUnit d = display_unit(c.assumption);
@@ -270,13 +278,13 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
         line.colour = static_cast<int>(i);
         for (std::size_t q = 0; q < c.values_si.size(); ++q) {
           line.x.push_back(c.values_si[q] * d.per_si);
-          line.y.push_back(c.rms[q][j][last_k][i]);
+          line.y.push_back(per_m * c.rms[q][j][last_k][i]);
         }
         if (i == leader)
           for (const Crossing& x : even.crossings)
             if (x.system == config.systems[j] && x.t_s == config.report_times_s[last_k] && x.assumption == c.assumption) {
               const double y = curve_value(c, j, last_k, i, x.value_si);
-              if (std::isfinite(y)) line.marks.push_back({x.value_si * d.per_si, y, y, y});
+              if (std::isfinite(y)) line.marks.push_back({x.value_si * d.per_si, per_m * y, per_m * y, per_m * y});
             }
         panel.lines.push_back(std::move(line));
       }

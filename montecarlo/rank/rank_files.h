@@ -9,6 +9,7 @@
 #include "montecarlo/rank/break_even.h"
 #include "montecarlo/rank/scheme_order.h"
 #include "montecarlo/write/json.h"
+#include "montecarlo/write/length_unit.h"
 #include "montecarlo/write/plot/panel_figure.h"
 
 namespace insmc::mc {
@@ -20,6 +21,9 @@ struct RankFiles {
   Json rank_json;
 };
 
-RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even);
+/// Lengths in `unit` (--units) in the CSV, Markdown, summary and figure;
+/// rank.json stays in SI (`rms_m`), as run.json does.
+RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even,
+                      LengthUnit unit);
 
 }  // namespace insmc::mc

@@ -106,9 +106,39 @@ TEST(Rank, ZeroSchemeErrorsPut54FirstAt84MinSignificantlyAndItsE4LimitHolds) {
 namespace insmc::testing {
 namespace {
 
+TEST(Rank, PaperUnitsPrintFeetAndTheJsonStaysSI) {
+  // The same study in metres and in feet: the same order, every length
+  // scaled by the foot (0.3048 m exactly), the unit named where it is printed.
+  const std::string study = "rank --samples 2000 --system 1 --scheme none,5.3,5.4 --grid-step 42min --quiet --out ";
+  TempDir si, ft;
+  ASSERT_EQ(run_insmc(study + si.str()).exit_code, 0);
+  const ProgramResult r = run_insmc(study + ft.str() + " --units paper");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto metres = csv_rows(read_file(si.path() / "ranking.csv"));
+  const auto feet = csv_rows(read_file(ft.path() / "ranking.csv"));
+  ASSERT_EQ(feet.size(), metres.size());
+  ASSERT_GT(feet.size(), 1u);
+  EXPECT_EQ(feet[0][5], "rms_ft");
+  EXPECT_EQ(feet[0][7], "rms_hi_ft");
+  for (std::size_t i = 1; i < feet.size(); ++i) {
+    EXPECT_EQ(feet[i][4], metres[i][4]) << "the order does not depend on the unit";
+    for (std::size_t c : {5u, 6u, 7u})
+      EXPECT_NEAR(std::stod(feet[i][c]) * 0.3048, std::stod(metres[i][c]), 1e-6 * std::stod(metres[i][c]));
+  }
+  const std::string md = read_file(ft.path() / "rank.md");
+  EXPECT_NE(md.find("RMS [ft] ± half-width"), std::string::npos);
+  EXPECT_EQ(md.find("[m]"), std::string::npos) << "a length left in metres";
+  const std::string json = read_file(ft.path() / "rank.json");
+  EXPECT_NE(json.find("\"rms_m\""), std::string::npos);
+  EXPECT_EQ(json.find("_ft\""), std::string::npos);
+  const ProgramResult shown = run_insmc("rank --samples 2000 --system 1 --scheme none,5.4 --grid-step 42min --units paper");
+  ASSERT_EQ(shown.exit_code, 0) << shown.err;
+  EXPECT_NE(shown.out.find("RMS in ft"), std::string::npos) << shown.out;
+}
+
 TEST(Rank, EachOptionThatCannotApplyIsRefusedWithExit2) {
   for (const char* args : {"rank --fidelity truth", "rank --test-duration 5min,10min", "rank --samples 1",
-                           "rank --alignment-time 30min"}) {
+                           "rank --alignment-time 30min", "rank --units furlong"}) {
     const ProgramResult r = run_insmc(args);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_NE(r.err.find("insmc rank:"), std::string::npos) << r.err;
