@@ -48,9 +48,19 @@ std::string_view to_string(PositionLimit::Component c) {
 
 bool LimitCheck::within() const { return probability <= risk; }
 
-std::vector<double> envelope_times(const CompensateOptions& options) {
+std::vector<double> report_times(const CompensateOptions& options) {
   std::vector<double> t = {42 * 60.0, 63 * 60.0, 84 * 60.0, options.flight_time_s};
   for (const PositionLimit& l : options.limits) t.push_back(l.t_s);
+  return t;
+}
+
+bool is_report_time(double t_s, const CompensateOptions& options) {
+  const std::vector<double> times = report_times(options);
+  return std::any_of(times.begin(), times.end(), [&](double t) { return std::abs(t - t_s) < 1e-6; });
+}
+
+std::vector<double> envelope_times(const CompensateOptions& options) {
+  std::vector<double> t = report_times(options);
   const double last = *std::max_element(t.begin(), t.end());
   for (int k = 1; k * kGridStepS <= last + 1e-9; ++k) t.push_back(k * kGridStepS);
   std::sort(t.begin(), t.end());

@@ -24,14 +24,6 @@ Json vec_json(const Vec3& v) {
   return j;
 }
 
-bool is_report_time(double t_s, const CompensateOptions& o) {
-  for (double t : {42 * 60.0, 63 * 60.0, 84 * 60.0, o.flight_time_s})
-    if (std::abs(t - t_s) < 1e-6) return true;
-  for (const PositionLimit& l : o.limits)
-    if (std::abs(l.t_s - t_s) < 1e-6) return true;
-  return false;
-}
-
 Json site_json(const UnitRecords& r) {
   Json j = Json::object();
   j["system"] = system_number(r.site.system);
