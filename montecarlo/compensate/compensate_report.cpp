@@ -198,7 +198,7 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
           "population's over Table 3.1's units with the same test run. Both are exact for the linear level: no "
           "sampling, so no interval. Every 3 min in envelope.csv.\n\n";
 
-    std::string verdict_line = "no limits given";
+    std::string verdict_line = u.fits_model() ? "no limits given" : "NO-GO (the test rows do not fit the model)";
     Json checks = Json::array();
     if (!u.checks.empty()) {
       Table lim({"limit", "RMS (m)", "P(exceed)", "within risk"});
@@ -221,6 +221,8 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
             render_markdown(lim) +
             fmt::format("\nGo when every limit is exceeded with probability at most {:g} (--risk), the position "
                         "error taken Gaussian with this unit's mean and covariance.\n\n", options.risk);
+    } else if (!u.fits_model()) {
+      md += "### Verdict: NO-GO (the test rows do not fit the model)\n\n";
     }
     const std::string runner =
         u.runner_up ? fmt::format(", {:.1f} m ({:.1f} %) ahead of {}", u.margin_m,

@@ -17,6 +17,7 @@
 #include "montecarlo/gap/ranking/statements.h"
 #include "montecarlo/gap/records/diagnosis_records.h"
 #include "montecarlo/gap/where/locate.h"
+#include "montecarlo/gap/where/prior_scale.h"
 
 namespace insmc::mc {
 namespace {
@@ -96,6 +97,8 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   d.pessimistic.critical = quantile(null.pessimistic, 1.0 - options.alpha);
   d.pessimistic.p_value = p_value_of(signed_gap.pessimistic, null.pessimistic);
   d.pessimistic.significant = signed_gap.pessimistic > 0 && d.pessimistic.p_value < options.alpha;
+  if (d.pessimistic.significant)
+    d.pessimistic.prior_scale = fit_prior_scale(p, null.calibration, d.pessimistic.critical, options.seed);
   // Records from import-imu with its raw stage: the main verdict is against
   // the null through the import; the model's own stays beside it and is
   // what the candidates explain.

@@ -209,12 +209,24 @@ struct SiteValue {
 /// The other direction of the gap (gap_metric.h SignedGap): the data show
 /// less scatter or less in common than the model, with its own critical
 /// value at alpha from the same null files.
+/// How far Table 3.1's priors would have to be scaled for these runs: every
+/// variance × s², s of least G over all runs (where/prior_scale.h).
+struct PriorScale {
+  bool measured = false;
+  double scale = 1;              ///< s
+  double low = 1, high = 1;      ///< 16–84 % of 200 resampled fits
+  bool at_limit = false;         ///< s at an end of its range [0.01, 100]
+  double pessimistic_after = 0;  ///< G₋ with the priors so scaled
+  bool explains = false;         ///< G₋ after at most the null's critical value
+};
+
 struct PessimisticFinding {
   double value = 0;        ///< G₋
   double p_value = 1;      ///< share of null files with G₋ at least this
   double critical = 0;     ///< G₋ quantile 1 − α of the null files
   bool significant = false;
   std::vector<std::string> where;  ///< the groups below the model, most negative ℓ first
+  PriorScale prior_scale;          ///< measured when significant
 };
 
 /// The verdict against the model alone when the main one is against the

@@ -64,6 +64,31 @@ TEST(Compensate, TheVerdictIsItsExitCode) {
   EXPECT_EQ(no_go.exit_code, 1) << no_go.err;
   EXPECT_TRUE(has(no_go.out, "NO-GO")) << no_go.out;
   EXPECT_TRUE(has(no_go.out, "z@42min=1ft")) << no_go.out;
+
+  // Test rows the model does not describe (one position reading tens of km off)
+  // leave nothing to rest a go on, with or without limits.
+  std::ifstream in(records);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string body = text.str();
+  const std::size_t row = body.find("\n0,300,test,");
+  ASSERT_NE(row, std::string::npos);
+  const std::size_t r_x = [&] {
+    std::size_t at = row + 1;
+    for (int comma = 0; comma < 6; ++comma) at = body.find(',', at) + 1;
+    return at;
+  }();
+  body.insert(r_x, "500");  // r_x read as 500 followed by its digits
+  const std::string bad = dir.str() + "/misfit.csv";
+  std::ofstream(bad) << body;
+  for (const std::string limits : {"", " --limit horizontal@84min=100nmi"}) {
+    const ProgramResult misfit = run_insmc("compensate --records " + bad + limits);
+    EXPECT_EQ(misfit.exit_code, 1) << limits << "\n" << misfit.out << misfit.err;
+    EXPECT_TRUE(has(misfit.out, "NO-GO (the test rows do not fit the model)")) << misfit.out;
+  }
+  const ProgramResult json = run_insmc("compensate --records " + bad + " --format json");
+  EXPECT_EQ(json.exit_code, 1);
+  EXPECT_TRUE(has(json.out, "\"fits_model\": false") && !has(json.out, "\"go\": true")) << json.out.substr(0, 600);
 }
 
 /// The population envelope is the Monte Carlo's of `insmc run` for the same

@@ -45,6 +45,21 @@ std::string params_text(const std::vector<ParameterEstimate>& ps) {
 
 std::string pct(double v) { return fmt::format("{:.1f} %", 100.0 * v); }
 
+/// The priors' scale that fits the runs, read for what it says.
+std::string prior_scale_sentence(const PessimisticFinding& f) {
+  const PriorScale& s = f.prior_scale;
+  if (!s.measured) return "";
+  const std::string value =
+      s.at_limit ? fmt::format("{:.3g} or beyond (the end of its range, 0.01 to 100)", s.scale)
+                 : fmt::format("{:.3g} (16–84 % of resampled fits {:.3g}–{:.3g}, on a grid of step ×1.33)", s.scale, s.low, s.high);
+  return fmt::format(". Table 3.1's priors scaled by s = {} fit these runs best; with them G- = {:.3g}, {}", value,
+                     s.pessimistic_after,
+                     s.explains ? "within the null: priors that wide account for it"
+                                : fmt::format("still beyond the null's {:.3g}: the priors alone do not account for "
+                                              "it, another assumption is coarser than the data",
+                                              f.critical));
+}
+
 }  // namespace
 
 Json site_values_json(const std::vector<SiteValue>& values) {
@@ -88,6 +103,16 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   Json where_less = Json::array();
   for (const std::string& w : d.pessimistic.where) where_less.push_back(w);
   pessimistic["where"] = where_less;
+  if (const PriorScale& ps = d.pessimistic.prior_scale; ps.measured) {
+    Json scale = Json::object();
+    scale["value"] = ps.scale;
+    scale["low"] = ps.low;
+    scale["high"] = ps.high;
+    scale["at_limit"] = ps.at_limit;
+    scale["pessimistic_after"] = ps.pessimistic_after;
+    scale["explains"] = ps.explains;
+    pessimistic["prior_scale"] = scale;
+  }
   g["pessimistic"] = pessimistic;
   g["null"] = d.null_kind;
   if (d.against_model.reported) {
@@ -210,7 +235,8 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                                       "than it predicts, so an assumption is wider than the data (a declared pulse "
                                       "weight or resolution coarser than the data show, priors wider than this "
                                       "system); no effect is sought for it",
-                                      fmt::join(d.pessimistic.where, ", "))
+                                      fmt::join(d.pessimistic.where, ", ")) +
+                              prior_scale_sentence(d.pessimistic)
                         : ": not beyond the null");
   md += "Site values (the null is simulated with them):\n\n";
   Table site({"value", "used", "source", "why"});
