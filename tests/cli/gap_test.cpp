@@ -135,6 +135,51 @@ TEST(Gap, TooFewRunsGiveAStatementNotARanking) {
   EXPECT_TRUE(has(r.out, "too few to fit candidate effects")) << r.out;
 }
 
+/// The number after `"key": ` in `json` from `from` on (NaN when absent).
+double json_number(const std::string& json, const std::string& key, std::size_t from = 0) {
+  const auto at = json.find("\"" + key + "\": ", from);
+  return at == std::string::npos ? std::nan("") : std::stod(json.substr(at + key.size() + 4));
+}
+
+TEST(Gap, PriorsWiderThanTheSystemAreMeasuredAndAnotherPessimisticAssumptionIsNotBlamedOnThem) {
+  // Units drawn normal with Table 3.1's bound as 3 sigma: every prior's sigma
+  // sqrt(3)/3 = 0.577 of the uniform's. The model is pessimistic, and scaling
+  // the priors accounts for it: the scale's resampled range, widened by the
+  // grid's step (x1.33) each side, holds 0.577.
+  TempDir dir;
+  const std::string narrow = simulate(dir, "narrow.csv", "--seed 12 --dist all=normal:3", 20);
+  const auto r = run_insmc("gap --records " + narrow + " --rank never --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::size_t pessimistic = r.out.find("\"pessimistic\": {");
+  ASSERT_NE(pessimistic, std::string::npos);
+  EXPECT_TRUE(has(r.out.substr(pessimistic, 120), "\"significant\": true")) << r.out.substr(pessimistic, 400);
+  const std::size_t scale = r.out.find("\"prior_scale\": {", pessimistic);
+  ASSERT_NE(scale, std::string::npos) << r.out.substr(pessimistic, 800);
+  const double step = std::pow(10.0, 1.0 / 8.0);
+  EXPECT_LE(json_number(r.out, "low", scale) / step, std::sqrt(3.0) / 3.0);
+  EXPECT_GE(json_number(r.out, "high", scale) * step, std::sqrt(3.0) / 3.0);
+  EXPECT_TRUE(has(r.out.substr(scale, 300), "\"explains\": true")) << r.out.substr(scale, 300);
+
+  // Exact positions declared at a 30 m resolution: pessimistic about the r
+  // rows, which no scale of the priors accounts for.
+  const std::string exact = simulate(dir, "exact.csv", "--seed 12 --position-resolution 0m", 20);
+  std::string text = read_file(exact);
+  const std::string declared = "# position_resolution_m=0\n";
+  ASSERT_NE(text.find(declared), std::string::npos);
+  text.replace(text.find(declared), declared.size(), "# position_resolution_m=30\n");
+  std::ofstream(exact) << text;
+  const auto coarse = run_insmc("gap --records " + exact + " --rank never --format json");
+  ASSERT_EQ(coarse.exit_code, 0) << coarse.err;
+  const std::size_t coarse_scale = coarse.out.find("\"prior_scale\": {");
+  ASSERT_NE(coarse_scale, std::string::npos) << coarse.out.substr(0, 800);
+  EXPECT_TRUE(has(coarse.out.substr(coarse_scale, 300), "\"explains\": false")) << coarse.out.substr(coarse_scale, 300);
+
+  // Units of the model itself: nothing pessimistic, no scale measured.
+  const auto null = run_insmc("gap --records " + simulate(dir, "null.csv", "--seed 11", 20) + " --rank never --format json");
+  ASSERT_EQ(null.exit_code, 0) << null.err;
+  EXPECT_FALSE(has(null.out, "\"prior_scale\"")) << null.out.substr(0, 600);
+}
+
 TEST(Gap, ScreeningWithoutCandidatesGivesTheSameGap) {
   // --rank never: the gap, its significance and where it lies, without the
   // candidate search; the same numbers as the whole diagnosis.
