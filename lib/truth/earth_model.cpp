@@ -34,7 +34,10 @@ double plumb_latitude(const GravityField& field, double w, double R, double phi)
 
 double geocentric_latitude_for_plumb(const GravityField& field, double w, double R,
                                      double L) {
-  INSMC_ASSERT(std::abs(L) < 0.5 * std::numbers::pi, "plumb latitude {} rad", L);
+  // |L| up to π: near a pole, the computer's latitude L0 + δL (a latitude
+  // error) can lie across it; cos L < 0 is then the point across the pole,
+  // which these formulas describe as well.
+  INSMC_ASSERT(std::abs(L) < std::numbers::pi, "plumb latitude {} rad", L);
   // dL/dφ = 1 + O(ω²R/g, J2): the plain fixed-point iteration contracts by
   // ~0.004 per step.
   double phi = L;

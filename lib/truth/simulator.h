@@ -70,6 +70,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "lib/alignment/alignment_loops.h"
@@ -144,6 +145,11 @@ struct TruthOptions {
 };
 
 /// Checks every constraint on the options (and each effect); nullopt if valid.
+/// The truth simulator's site latitude limit, |L0| <= 89 deg.
+inline constexpr double kMaxTruthLatitudeDeg = 89.0;
+/// What a latitude beyond it is told.
+std::string truth_latitude_limit_text();
+
 std::optional<InputError> validate(const TruthOptions& options);
 
 using PulseCount3 = Eigen::Matrix<std::int64_t, 3, 1>;

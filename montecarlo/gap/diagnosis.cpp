@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "lib/common/input_error.h"
+#include "lib/truth/simulator.h"
 #include "montecarlo/gap/fit/candidate_fit.h"
 #include "montecarlo/gap/null/bootstrap.h"
 #include "montecarlo/gap/null/import_null.h"
@@ -52,6 +53,11 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   if (const auto raw = raw_stage_from_header(file.header); raw && !options.candidates)
     options.candidates = std::make_shared<const std::vector<gap::Candidate>>(
         limit_candidates(gap::candidate_registry(), *raw, d.statements));
+  if (!(std::abs(file.header.latitude_deg()) <= kMaxTruthLatitudeDeg))
+    throw InputError("header latitude_deg", fmt::format("{}", file.header.latitude_deg()),
+                     fmt::format("the diagnosis's null is simulated at the site by the truth simulator, which needs "
+                                 "|latitude| <= {} deg",
+                                 kMaxTruthLatitudeDeg));
   const Records records = records_for_diagnosis(file, options, d.statements, d.site);
   Prepared p = prepare(records, options);
   d.alpha = options.alpha;

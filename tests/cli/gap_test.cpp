@@ -253,9 +253,16 @@ TEST(Gap, BadInputIsRefusedWithOneLine) {
   scheme_text.replace(scheme_text.find("scheme=none"), 11, "scheme=5.1.1");
   const std::string scheme = (dir.path() / "scheme.csv").string();
   std::ofstream(scheme) << scheme_text;
+  // A site at the pole: the record format allows it, the truth simulator
+  // that gives the null does not.
+  std::string pole_text = text;
+  pole_text.replace(pole_text.find("latitude_deg=45"), 15, "latitude_deg=90");
+  const std::string pole = (dir.path() / "pole.csv").string();
+  std::ofstream(pole) << pole_text;
   const std::string out = (dir.path() / "out").string();
   for (const std::string& args :
        {"gap --records " + bad + " --out " + out, "gap --records /no/such/file.csv --out " + out,
+        "gap --records " + pole + " --out " + out,
         "gap --records " + good + " --alpha 2 --out " + out, "gap --out " + out,
         "gap --records " + good + " --format csv --out " + out, "gap --records " + scheme + " --out " + out,
         "gap --records " + good + " --bound nonsense=1 --out " + out,
