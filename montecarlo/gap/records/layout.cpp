@@ -94,7 +94,9 @@ double median_f_spacing(const RecordFile& file) {
   for (const RecordRun& run : file.runs) {
     double last = -1.0;
     for (const RecordRow& row : run.rows) {
-      if (row.phase == Phase::kAlign || !row.has_f()) continue;
+      // The test run alone: navigation rows may be sampled or averaged
+      // otherwise, and outnumber the test's.
+      if (row.phase != Phase::kTest || !row.has_f()) continue;
       if (last >= 0.0) spacings.push_back(row.t_s - last);
       last = row.t_s;
     }

@@ -396,6 +396,15 @@ TEST(GapLayout, RecordsOfOtherSoftwareAreTakenAsTheyCome) {
     file.runs.push_back(run);
   }
   EXPECT_DOUBLE_EQ(median_f_spacing(file), 5.0);
+  {
+    // Navigation f of another writer's sampling (every 10 s, outnumbering
+    // the test's 5 s rows) does not set the test run's filter interval.
+    RecordFile sparse = file;
+    for (RecordRun& run : sparse.runs)
+      for (RecordRow& row : run.rows)
+        if (row.phase == Phase::kNav && std::fmod(row.t_s, 10.0) != 0.0) row.f_mps2 = {};
+    EXPECT_DOUBLE_EQ(median_f_spacing(sparse), 5.0);
+  }
   RecordSite s = site();
   const std::vector<RunData> runs = extract_runs(file, s);
   ASSERT_EQ(runs.size(), 2u);
