@@ -22,22 +22,33 @@ struct Trial {
   double step = 0.0;
 };
 
-Trial try_step(const std::vector<double>& values, double w, double tolerance) {
+/// `by_magnitude`: the values by increasing |v|. The base w is a spacing
+/// between two printed values, off by their round-off, and n times that
+/// grows with the multiple n: the step is refined as the multiples grow
+/// (the least-squares step of the values seen so far), and every value is
+/// then checked against the final one.
+Trial try_step(const std::vector<double>& by_magnitude, double w, double tolerance) {
   Trial t;
-  std::set<long long> multiples;
-  double nn = 0.0, nv = 0.0;
-  int nonzero = 0;
-  for (double v : values) {
-    const double n = std::round(v / w);
-    if (std::abs(v - n * w) > tolerance * w || std::abs(n) > 1e12) return t;
-    multiples.insert(static_cast<long long>(n));
-    nonzero += n != 0.0;
+  double nn = 0.0, nv = 0.0, step = w;
+  for (double v : by_magnitude) {
+    const double n = std::round(v / step);
+    if (std::abs(v - n * step) > tolerance * step || std::abs(n) > 1e12) return t;
     nn += n * n;
     nv += n * v;
+    if (nn > 0) step = nv / nn;
+  }
+  if (!(nn > 0)) return t;
+  std::set<long long> multiples;
+  int nonzero = 0;
+  for (double v : by_magnitude) {
+    const double n = std::round(v / step);
+    if (std::abs(v - n * step) > tolerance * step) return t;
+    multiples.insert(static_cast<long long>(n));
+    nonzero += n != 0.0;
   }
   t.distinct = static_cast<int>(multiples.size());
-  t.fits = nonzero >= kMinNonzero && t.distinct >= kMinDistinct && nn > 0;
-  t.step = t.fits ? nv / nn : 0.0;
+  t.fits = nonzero >= kMinNonzero && t.distinct >= kMinDistinct;
+  t.step = t.fits ? step : 0.0;
   return t;
 }
 
@@ -53,14 +64,16 @@ LatticeFit fit_lattice(std::vector<double> values, double tolerance) {
   const double widest = *std::max_element(gaps.begin(), gaps.end());
   if (!(widest > 0)) return fit;  // all equal: no spacing to see
   // The step is the smallest spacing between distinct lattice points, or a
-  // whole fraction of it when some multiples are unseen. Two sets of bases:
-  // the smallest spacings above round-off (values exact to the digit, a
-  // lattice visited densely) and above 2 % of the widest (one lattice point
-  // seen twice with a small leftover, e.g. the nominal's in f).
+  // whole fraction of it when some multiples are unseen. Sets of bases: the
+  // smallest spacings above the values' printing round-off (values exact to
+  // the 17th digit, or printed to 9 digits or to the millimetre by another
+  // writer: one lattice point then shows as a cluster of values that far
+  // apart; a lattice visited densely) and above 2 % of the widest (one
+  // lattice point seen twice with a small leftover, e.g. the nominal's in f).
   double largest = 0.0;
   for (double v : values) largest = std::max(largest, std::abs(v));
   std::vector<double> bases;
-  for (const double floor : {1e-9 * largest, 0.02 * widest}) {
+  for (const double floor : {1e-9 * largest, 1e-7 * largest, 1e-5 * largest, 1e-3 * largest, 0.02 * widest}) {
     std::vector<double> above;
     for (double g : gaps)
       if (g > floor) above.push_back(g);
@@ -69,6 +82,8 @@ LatticeFit fit_lattice(std::vector<double> values, double tolerance) {
     bases.insert(bases.end(), above.begin(), above.end());
   }
   std::sort(bases.begin(), bases.end(), std::greater<>());
+  std::vector<double> by_magnitude = values;
+  std::sort(by_magnitude.begin(), by_magnitude.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
   fit.kind = LatticeFit::Kind::kContinuous;
   fit.finest_tried = bases.back() / 6;
   fit.coarsest_tried = bases.front();
@@ -77,7 +92,7 @@ LatticeFit fit_lattice(std::vector<double> values, double tolerance) {
     for (int k = 1; k <= 6; ++k) {
       const double w = base / k;
       if (w <= best * (1 + tolerance)) break;
-      const Trial t = try_step(values, w, tolerance);
+      const Trial t = try_step(by_magnitude, w, tolerance);
       if (!t.fits) continue;
       best = w;
       fit.kind = LatticeFit::Kind::kLattice;
