@@ -11,11 +11,19 @@
 namespace insmc::mc {
 namespace {
 
-/// The row of `run` at t (within a millionth of a filter interval), or nullptr.
+/// A recorder's time stamps may jitter: a row within 1 % of τ of t_k is
+/// t_k's (its window shifted by that much changes Δf by a hundredth of a
+/// window's drift, and r by the velocity error over τ/100).
+constexpr double kGridJitter = 0.01;
+
+/// The row of `run` nearest t within kGridJitter τ, or nullptr.
 const RecordRow* test_row_at(const RecordRun& run, double t_s, double tau_s) {
+  const RecordRow* nearest = nullptr;
   for (const RecordRow& row : run.rows)
-    if (row.phase == Phase::kTest && std::abs(row.t_s - t_s) <= 1e-6 * tau_s) return &row;
-  return nullptr;
+    if (row.phase == Phase::kTest && std::abs(row.t_s - t_s) <= kGridJitter * tau_s &&
+        (nearest == nullptr || std::abs(row.t_s - t_s) < std::abs(nearest->t_s - t_s)))
+      nearest = &row;
+  return nearest;
 }
 
 /// The median spacing of consecutive r rows of the test runs (0 when none).
@@ -48,8 +56,8 @@ UnitTestRun unit_test_run(const RecordRun& run, const gap::RecordSite& site) {
     const auto missing = [&](const char* what) {
       return InputError(fmt::format("records run {} test rows", run.id), fmt::format("(no {} at t_s = {:g})", what, t),
                         fmt::format("compensate needs f and r (all three axes) at every filter interval t_k = k*{:g} s "
-                                    "up to T = {:g} s: the data of the estimators (4.4), (4.8)",
-                                    tau, site.test_duration_s));
+                                    "(within {:g} s) up to T = {:g} s: the data of the estimators (4.4), (4.8)",
+                                    tau, kGridJitter * tau, site.test_duration_s));
     };
     if (row == nullptr) throw missing("row");
     if (!row->r_ap_m) throw missing("r");
@@ -109,8 +117,9 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
   options.prior = prior;
   const double T = tests.header.test_duration_s();
   // The estimators fit r at the ends of the filter windows: windows at least
-  // as long as the r spacing put an r row at each end.
-  options.min_filter_interval_s = std::max({kUnitFilterIntervalS, T / kMaxUnitIntervals, median_r_spacing(tests)});
+  // as long as the r spacing (less two rows' jitter) put an r row at each end.
+  options.min_filter_interval_s =
+      std::max({kUnitFilterIntervalS, T / kMaxUnitIntervals, median_r_spacing(tests) * (1 - 2 * kGridJitter)});
   UnitRecords out;
   const Records records = records_for_diagnosis(tests, options, out.statements, out.site_values);
   out.site = records.site;

@@ -5,6 +5,8 @@
 // writes them, and bad input (exit 2, one line naming the field).
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <algorithm>
 #include <fstream>
@@ -192,6 +194,32 @@ TEST(Compensate, RecordsOfOtherSoftware) {
       EXPECT_LE(std::abs(v - v_full), 4 * s) << est[i][1] << (coarse ? " (20 s windows)" : "");
     }
   }
+
+  // A recorder's time stamps jitter by 0.4 % of τ (10 s): the rows are the
+  // grid's, and the estimates agree with the unjittered file's.
+  std::ifstream in(records);
+  const std::string jittered = dir.str() + "/jittered.csv";
+  std::ofstream jitter(jittered);
+  int test_row = 0;
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t c1 = line.find(','), c2 = line.find(',', c1 + 1);
+    if (!line.starts_with("#") && !line.starts_with("run") && line.find(",test,") == c2) {
+      const double t = std::stod(line.substr(c1 + 1, c2 - c1 - 1));
+      if (t < 900.0) {
+        line = line.substr(0, c1 + 1) + fmt::format("{:.3f}", t + (test_row++ % 2 ? 0.04 : -0.04)) + line.substr(c2);
+      }
+    }
+    jitter << line << "\n";
+  }
+  jitter.close();
+  const TempDir jittered_out;
+  const ProgramResult j = run_insmc("compensate --records " + jittered + " --scheme 5.3 --out " + jittered_out.str());
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  const auto jittered_est = csv_rows(read_file(jittered_out.path() / "estimates.csv"));
+  ASSERT_EQ(full_est.size(), jittered_est.size());
+  for (std::size_t i = 1; i < jittered_est.size(); ++i)
+    EXPECT_LE(std::abs(std::stod(jittered_est[i][2]) - std::stod(full_est[i][2])), std::stod(full_est[i][3]))
+        << jittered_est[i][1] << " (jittered time stamps)";
 }
 
 TEST(Compensate, BadInputIsRefusedWithTheFieldNamed) {

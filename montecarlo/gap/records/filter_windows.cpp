@@ -7,6 +7,9 @@
 namespace insmc::gap {
 namespace {
 
+/// The time stamps' jitter allowed, as a share of τ.
+constexpr double kJitter = 0.01;
+
 /// Blocks of n windows of τ: the smallest n with n·τ ≥ min_tau_s that
 /// divides T/τ when that is whole (the test run's last block then ends at T),
 /// up to twice the least; else the least (a block across T is left out).
@@ -51,8 +54,9 @@ FilterWindows coarsen_filter_windows(RecordFile& file, double tau_s, double test
       for (RecordRow& row : run.rows) {
         std::optional<double>& value = row.f_mps2[static_cast<std::size_t>(k)];
         if (!value || row.phase == Phase::kAlign) continue;
-        // Window (t − τ, t] lies in block ceil(t/τ'): blocks of one grid.
-        const long b = std::lround(std::ceil(row.t_s / block_s - 1e-6));
+        // Window (t − τ, t] lies in block ceil(t/τ'): blocks of one grid. A
+        // recorder's time stamps may jitter by up to 1 % of τ.
+        const long b = std::lround(std::ceil((row.t_s - kJitter * tau_s) / block_s));
         if (b != block || row.phase != phase) {
           close();
           block = b;
@@ -61,7 +65,7 @@ FilterWindows coarsen_filter_windows(RecordFile& file, double tau_s, double test
           sum = 0.0;
           broken = false;
         } else {
-          broken |= std::abs(row.t_s - last_t - tau_s) > 1e-6 * tau_s + 1e-9;
+          broken |= std::abs(row.t_s - last_t - tau_s) > 2 * kJitter * tau_s;
           *last_value = std::nullopt;  // only the block's last row keeps a value
         }
         sum += *value;
