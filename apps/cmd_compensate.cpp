@@ -129,7 +129,16 @@ int run_compensate(const Args& args) {
     throw InputError("--records", echo_input(name, 256),
                      fmt::format("{} runs: compensate takes at most {} units at a time (choose one with --run)", units,
                                  kMaxUnits));
-  const mc::CompensateResult result = mc::compensate(file, options);
+  // What the rows of a run lack (a hole in the test grid, a scheme) is
+  // said of this file: the reader's own errors name file:line:column.
+  const mc::CompensateResult result = [&] {
+    try {
+      return mc::compensate(file, options);
+    } catch (const InputError& e) {
+      if (e.field().empty() || e.field().starts_with("--")) throw;
+      throw InputError(name + ": " + e.field(), e.value(), e.allowed());
+    }
+  }();
   mc::CompensateFiles files = mc::render_compensate(result, options, name);
   const std::string json = files.json.dump(2) + "\n";
   if (out) {
