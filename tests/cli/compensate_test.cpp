@@ -263,7 +263,7 @@ TEST(Compensate, BadInputIsRefusedWithTheFieldNamed) {
   out.close();
   const ProgramResult hole = run_insmc("compensate --records " + dir.str() + "/hole.csv");
   EXPECT_EQ(hole.exit_code, 2) << hole.err;
-  EXPECT_TRUE(has(hole.err, "run 0") && has(hole.err, "300")) << hole.err;
+  EXPECT_TRUE(has(hole.err, "hole.csv: ") && has(hole.err, "run 0") && has(hole.err, "300")) << hole.err;
 }
 
 }  // namespace
