@@ -10,6 +10,7 @@
 #include "lib/alignment/alignment.h"
 #include "lib/common/assert.h"
 #include "lib/truth/earth_model.h"
+#include "lib/units/units.h"
 
 namespace insmc {
 namespace {
@@ -276,8 +277,8 @@ std::optional<InputError> validate(const TruthOptions& o) {
   // Within a degree of a pole the truth level leaves the linear level:
   // measured (uncompensated, system 1, 84 min) 0.2 % apart at 89°, 0.5 % at
   // 89.5°, 15 % at 89.9°, diverging at 89.99° (docs/truth-vs-models.md).
-  if (!(std::abs(o.model.latitude_rad) <= kMaxTruthLatitudeDeg * (std::numbers::pi / 180.0)))
-    return InputError("latitude", fmt::format("{}deg", o.model.latitude_rad * 180.0 / std::numbers::pi),
+  if (!(std::abs(o.model.latitude_rad) <= kMaxTruthLatitudeDeg * kDegToRad))
+    return InputError("latitude", fmt::format("{}deg", o.model.latitude_rad / kDegToRad),
                       truth_latitude_limit_text());
   // Pulse weights up to 10 m/s, filter intervals from 1 ms and steps from
   // 10 ms: the output and step counts of a 48 h run stay bounded.

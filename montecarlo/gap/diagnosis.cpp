@@ -55,9 +55,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
         limit_candidates(gap::candidate_registry(), *raw, d.statements));
   if (!(std::abs(file.header.latitude_deg()) <= kMaxTruthLatitudeDeg))
     throw InputError("header latitude_deg", fmt::format("{}", file.header.latitude_deg()),
-                     fmt::format("the diagnosis's null is simulated at the site by the truth simulator, which needs "
-                                 "|latitude| <= {} deg",
-                                 kMaxTruthLatitudeDeg));
+                     "the diagnosis's null is simulated at the site, and " + truth_latitude_limit_text());
   const Records records = records_for_diagnosis(file, options, d.statements, d.site);
   Prepared p = prepare(records, options);
   d.alpha = options.alpha;

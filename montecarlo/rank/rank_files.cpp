@@ -136,7 +136,8 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
       const bool last = r + 1 == o.schemes.size();
       ranking.add_row({std::to_string(system_number(o.system)), t_min_text(o.t_s), fidelity, std::to_string(r + 1),
                        std::string(to_string(s.scheme)), format_number(per_m * s.rms_m),
-                       format_number(per_m * s.rms_lo_m), format_number(per_m * s.rms_hi_m), last ? "" : (s.order_significant ? "true" : "false"),
+                       format_number(per_m * s.rms_lo_m), format_number(per_m * s.rms_hi_m),
+                       last ? "" : (s.order_significant ? "true" : "false"),
                        o.paired ? "paired" : "intervals"});
       Json j = Json::object();
       j["rank"] = static_cast<int>(r + 1);
