@@ -58,6 +58,7 @@ int run_simulate(const Args& args) {
   truth.step_s = parse_quantity((*vm)["step"].as<std::string>(), Dimension::kTime, "--step");
   if (vm->count("effect"))
     for (const auto& e : (*vm)["effect"].as<std::vector<std::string>>()) truth.effects.push_back(parse_effect(e, "--effect"));
+  if (const auto err = truth_latitude_error(model.latitude_rad, "--latitude")) throw *err;
   if (const auto err = validate(truth)) throw *err;
   const OutputFileOption out("--out", (*vm)["out"].as<std::string>());  // checked and locked before the work
   // The scheme's estimators: the same resolvable terms as `insmc run` fits.

@@ -270,6 +270,11 @@ std::string truth_latitude_limit_text() {
                      kMaxTruthLatitudeDeg);
 }
 
+std::optional<InputError> truth_latitude_error(double latitude_rad, std::string field) {
+  if (std::abs(latitude_rad) <= kMaxTruthLatitudeDeg * kDegToRad) return std::nullopt;
+  return InputError(std::move(field), fmt::format("{}deg", latitude_rad / kDegToRad), truth_latitude_limit_text());
+}
+
 std::optional<InputError> validate(const TruthOptions& o) {
   const auto bad = [](std::string field, double v, std::string allowed) {
     return InputError(std::move(field), fmt::format("{}", v), std::move(allowed));
@@ -277,9 +282,7 @@ std::optional<InputError> validate(const TruthOptions& o) {
   // Within a degree of a pole the truth level leaves the linear level:
   // measured (uncompensated, system 1, 84 min) 0.2 % apart at 89°, 0.5 % at
   // 89.5°, 15 % at 89.9°, diverging at 89.99° (docs/truth-vs-models.md).
-  if (!(std::abs(o.model.latitude_rad) <= kMaxTruthLatitudeDeg * kDegToRad))
-    return InputError("latitude", fmt::format("{}deg", o.model.latitude_rad / kDegToRad),
-                      truth_latitude_limit_text());
+  if (auto err = truth_latitude_error(o.model.latitude_rad, "latitude")) return err;
   // Pulse weights up to 10 m/s, filter intervals from 1 ms and steps from
   // 10 ms: the output and step counts of a 48 h run stay bounded.
   if (!(o.dv_pulse_mps >= 0 && o.dv_pulse_mps <= magnitude_limit(Dimension::kVelocity)))

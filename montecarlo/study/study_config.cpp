@@ -27,8 +27,8 @@ void validate(const StudyConfig& c) {
   if (uses_system2 && !(std::abs(c.model.latitude_rad) < M_PI / 2 - 1e-9))
     throw InputError("--latitude", fmt::format("{}rad", c.model.latitude_rad),
                      "must lie strictly between -90deg and 90deg for system 2 (2.16 divides by cos L0)");
-  if (c.fidelity == Fidelity::kTruth && !(std::abs(c.model.latitude_rad) <= kMaxTruthLatitudeDeg * kDegToRad))
-    throw InputError("--latitude", fmt::format("{}deg", c.model.latitude_rad / kDegToRad), truth_latitude_limit_text());
+  if (c.fidelity == Fidelity::kTruth)
+    if (const auto err = truth_latitude_error(c.model.latitude_rad, "--latitude")) throw *err;
   if (c.test.alignment_loops && c.fidelity != Fidelity::kTruth)
     throw InputError("--alignment-time", fmt::format("{}s", c.test.alignment_loops->duration_s),
                      "the time-domain alignment is simulated at the truth level only: add --fidelity truth or use steady");

@@ -304,6 +304,7 @@ TEST(Cli, BadInputGivesOneLineExitTwoAndNoOutput) {
       {"run --samples -3", "--samples"},
       {"run --latitude 90deg --system 2", "--latitude"},
       {"run --latitude 89.999deg --system 1 --fidelity truth --samples 4", "--latitude"},
+      {"simulate --latitude 89.5deg --runs 1", "--latitude ="},
       {"run --confidence 1.5", "--confidence"},
       {"run --system 3", "--system"},
       {"run --fidelity exact", "--fidelity"},

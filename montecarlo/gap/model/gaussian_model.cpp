@@ -64,10 +64,11 @@ GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>
     const int slot = base.scheme_x_index[static_cast<std::size_t>(j)];
     m.prior_var[ux::kDim + kc + j] = slot >= 0 ? x_var[slot] : base.scheme_variance[j];
   }
-  // The floor follows the priors (unchanged unless a candidate widens them).
-  m.noise_var = base.actual_noise_var + counting->noise_var +
-                ((x_var.array() == base.x_var.array()).all() ? (base.noise_var - base.actual_noise_var).eval()
-                                                             : model_error_floor(base, x_var));
+  // The floor stays the base model's when a candidate widens the priors: the
+  // null calibrates its share (κ, λ) for that floor, and a floor grown with
+  // the candidate's priors would weight down the very r rows where the
+  // candidate's signature lies (docs/gap.md section 4).
+  m.noise_var = base.noise_var + counting->noise_var;
   m.actual_noise_var = base.actual_noise_var + counting->noise_var;
   m.mean = Eigen::VectorXd::Zero(n);
   Eigen::Index at = ux::kDim + kc + ks;

@@ -90,7 +90,8 @@ struct Extension {
 
 /// The model-error floor² of each row for priors x_var: an absolute part and
 /// a share of the row's predicted spread (second-order terms grow with the
-/// uncertainties: a candidate that widens the priors widens the floor too).
+/// uncertainties). Set by the base model's priors (--bound widens it, and the
+/// null is calibrated on it); a candidate's extension keeps it (combine()).
 Eigen::VectorXd model_error_floor(const BaseModel& base, const UncertaintyVector& x_var);
 
 /// The base model with every extension applied.

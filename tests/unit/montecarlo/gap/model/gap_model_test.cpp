@@ -157,6 +157,35 @@ TEST(GapAnalysis, ActualSquaresAverageWhatDrawsWithTheActualNoiseGive) {
   EXPECT_GE(floored, 3);
 }
 
+TEST(GapModel, ACandidateWideningThePriorsKeepsTheFloorTheNullWasCalibratedOn) {
+  // The floor's relative part follows the base model's priors (what
+  // --bound sets and the null is simulated with), not a candidate's: the
+  // null's κ and λ are shares of that floor.
+  const Layout l = layout(3600.0);
+  const RecordSite s = site();
+  const UncertaintyVector table = UncertaintyModel{}.variance();
+  const BaseModel base = make_base_model(l, s, table);
+  Extension wider;
+  wider.x_var_scale.setConstant(100.0);
+  const GaussianModel m = combine(base, {&wider});
+  EXPECT_EQ(m.prior_var.head(ux::kDim), 100.0 * table);
+  const GaussianModel plain = combine(base, {});
+  EXPECT_EQ(m.noise_var, plain.noise_var);
+  // A base of wider priors has a wider floor on the r rows, none on f.
+  const BaseModel widened = make_base_model(l, s, 100.0 * table);
+  int wider_rows = 0;
+  for (std::size_t i = 0; i < l.rows.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    if (l.rows[i].quantity == Quantity::kR) {
+      EXPECT_GT(widened.noise_var[k], base.noise_var[k]) << l.rows[i].t_s;
+      ++wider_rows;
+    } else {
+      EXPECT_EQ(widened.noise_var[k], base.noise_var[k]) << l.rows[i].t_s;
+    }
+  }
+  EXPECT_GT(wider_rows, 0);
+}
+
 TEST(GapMetric, IsTheRmsOfTheGroupsLogRatiosAgainstTheCalibratedExpectation) {
   // One run: what it shares with itself is its own scatter (coherent ℓ = 0).
   Pooled one;
