@@ -53,9 +53,8 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   if (const auto raw = raw_stage_from_header(file.header); raw && !options.candidates)
     options.candidates = std::make_shared<const std::vector<gap::Candidate>>(
         limit_candidates(gap::candidate_registry(), *raw, d.statements));
-  if (!(std::abs(file.header.latitude_deg()) <= kMaxTruthLatitudeDeg))
-    throw InputError("header latitude_deg", fmt::format("{}", file.header.latitude_deg()),
-                     "the diagnosis's null is simulated at the site, and " + truth_latitude_limit_text());
+  if (const auto err = truth_latitude_error(file.header.latitude_deg() * kDegToRad, "header latitude_deg"))
+    throw InputError(err->field(), err->value(), "the diagnosis's null is simulated at the site, and " + err->allowed());
   const Records records = records_for_diagnosis(file, options, d.statements, d.site);
   Prepared p = prepare(records, options);
   d.alpha = options.alpha;

@@ -23,23 +23,19 @@ BaseModel make_base_model(const Layout& layout, const RecordSite& site, const Un
   const auto n = static_cast<Eigen::Index>(layout.rows.size());
   base.prior_std = (base.H_x.array().square().rowwise() * base.x_var.transpose().array()).rowwise().sum().sqrt();
   base.actual_noise_var.resize(n);
-  base.relative_floor.resize(n);
+  base.noise_var.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const bool f = layout.rows[static_cast<std::size_t>(i)].quantity == Quantity::kF;
     base.actual_noise_var[i] = f ? 0.0 : q * q / 12.0;
-    base.relative_floor[i] = f ? 0.0 : kRelativeModelError;
+    // The model-error floor: on r rows an absolute part and a share of the
+    // row's spread under these priors (second-order terms grow with the
+    // uncertainties; --bound widens it, and the null is calibrated on it).
+    // A candidate's extension keeps it (combine()).
+    const double floor = f ? kFNoiseFloorMps2 : kAbsoluteModelErrorM + kRelativeModelError * base.prior_std[i];
+    base.noise_var[i] = base.actual_noise_var[i] + floor * floor;
   }
-  base.noise_var = base.actual_noise_var + model_error_floor(base, x_var);
   base.counting = pulse_counting(layout, site, site.dv_pulse_mps, x_var, base.noise_var.cwiseSqrt());
   return base;
-}
-
-Eigen::VectorXd model_error_floor(const BaseModel& base, const UncertaintyVector& x_var) {
-  const Eigen::ArrayXd spread = (base.H_x.array().square().rowwise() * x_var.transpose().array()).rowwise().sum().sqrt();
-  const Eigen::ArrayXd absolute =
-      (base.relative_floor.array() > 0).select(Eigen::ArrayXd::Constant(spread.size(), kAbsoluteModelErrorM),
-                                               Eigen::ArrayXd::Constant(spread.size(), kFNoiseFloorMps2));
-  return (absolute + base.relative_floor.array() * spread).square().matrix();
 }
 
 GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>& extensions) {

@@ -53,7 +53,6 @@ struct BaseModel {
   Eigen::VectorXd noise_var;       ///< rows: fit weights (resolution and the model-error floor)
   Eigen::VectorXd actual_noise_var;  ///< rows: the position resolution alone
   Eigen::VectorXd prior_std;       ///< rows: predicted std of each row from x alone
-  Eigen::VectorXd relative_floor;  ///< rows: kRelativeModelError on r rows, 0 on f rows
   PulseCounting counting;          ///< of the record's pulse weight
   /// After a scheme (scheme_rows.h): further causes (prior: the combined
   /// x variance of slot scheme_x_index, or scheme_variance where −1) and
@@ -87,12 +86,6 @@ struct Extension {
            (x_var_add.array() == 0.0).all() && !counting;
   }
 };
-
-/// The model-error floor² of each row for priors x_var: an absolute part and
-/// a share of the row's predicted spread (second-order terms grow with the
-/// uncertainties). Set by the base model's priors (--bound widens it, and the
-/// null is calibrated on it); a candidate's extension keeps it (combine()).
-Eigen::VectorXd model_error_floor(const BaseModel& base, const UncertaintyVector& x_var);
 
 /// The base model with every extension applied.
 GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>& extensions);
