@@ -21,7 +21,7 @@
 
 namespace insmc::app {
 
-inline constexpr std::uint32_t kCheckpointFormat = 1;
+inline constexpr std::uint32_t kCheckpointFormat = 2;  // 2: the arguments define the study only (no --out)
 
 /// Caps of the reader. The state is one histogram and a few sums per output
 /// (~33 KB each): a run with the time grid (49 times × 7 schemes × 2

@@ -20,24 +20,52 @@ OutputFormat parse_output_format(const std::string& text) {
   throw InputError("--format", text, "must be markdown, csv or json");
 }
 
-std::optional<po::variables_map> parse_args(const Args& args, const std::string& subcommand,
-                                            const std::string& synopsis,
-                                            const po::options_description& options) {
+namespace {
+
+/// The options of a subcommand with the --help and --config every one takes.
+po::options_description with_generic(const po::options_description& options) {
   po::options_description generic("General");
   generic.add_options()("help,h", "print this help and exit")(
       "config", po::value<std::string>(),
-      "INI file with any of these options as key = value (command line wins)");
+      "INI file with the options that define the study (and --format, --units, --quiet, --full, --threads) as "
+      "key = value; the command line wins");
   po::options_description all;
   all.add(options).add(generic);
+  return all;
+}
+
+po::variables_map store_all(const Args& args, const po::options_description& all) {
   po::variables_map vm;
   po::store(po::command_line_parser(args).options(all).run(), vm);
-  if (vm.count("help")) {
-    fmt::print("usage: insmc {} {}\n\n", subcommand, synopsis);
-    std::cout << all << std::flush;
-    return std::nullopt;
-  }
   if (vm.count("config")) store_config_file(vm["config"].as<std::string>(), all, vm);
   po::notify(vm);
+  return vm;
+}
+
+}  // namespace
+
+std::optional<po::variables_map> parse_args(const Args& args, const std::string& subcommand,
+                                            const std::string& synopsis,
+                                            const po::options_description& options) {
+  const po::options_description all = with_generic(options);
+  {
+    po::variables_map first;
+    po::store(po::command_line_parser(args).options(all).run(), first);
+    if (first.count("help")) {
+      fmt::print("usage: insmc {} {}\n\n", subcommand, synopsis);
+      std::cout << all << std::flush;
+      return std::nullopt;
+    }
+  }
+  return store_all(args, all);
+}
+
+po::variables_map parse_args_again(const Args& args, const po::options_description& options) {
+  const po::options_description all = with_generic(options);
+  const po::variables_map vm = store_all(args, all);
+  // The caller refused --help from its file; one typed beside --from or
+  // --resume was answered by the first parse.
+  if (vm.count("help")) throw InputError("--help", "(in the options read again)", "cannot be combined with them");
   return vm;
 }
 

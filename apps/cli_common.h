@@ -25,6 +25,9 @@ OutputFormat parse_output_format(const std::string& text);
 std::optional<po::variables_map> parse_args(const Args& args, const std::string& subcommand,
                                             const std::string& synopsis,
                                             const po::options_description& options);
+/// Parses once more the options a file gave with those typed beside it
+/// (`run --from`, `run --resume`): as parse_args, but --help is an error.
+po::variables_map parse_args_again(const Args& args, const po::options_description& options);
 
 /// --latitude and the loop gains: the ModelOptions every model command takes.
 po::options_description model_options_description();

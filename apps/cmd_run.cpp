@@ -14,6 +14,7 @@
 #include "apps/checkpoint.h"
 #include "apps/cli_common.h"
 #include "apps/interrupt.h"
+#include "apps/option_sources.h"
 #include "apps/output_paths.h"
 #include "apps/ranks.h"
 #include "apps/run_file.h"
@@ -71,22 +72,17 @@ int replay(const mc::StudyConfig& c, const mc::StudyLayout& l, const mc::StudyMa
   return 0;
 }
 
-/// The options a --resume command line may give; every other setting comes
-/// from the checkpoint.
-/// Where and how the results are shown, not what they are: left out of
-/// run.json's settings.arguments.
-const std::vector<std::string> kNotInRunJson = {"out",        "format",           "quiet",  "full", "threads",
-                                                "checkpoint", "checkpoint-every", "resume", "from", "replay"};
-
 /// settings_json with the arguments that made the numbers (apps/run_file.h).
 mc::Json run_settings(const mc::StudyConfig& config, const po::variables_map& vm, const po::options_description& opts) {
   mc::Json settings = mc::settings_json(config);
   mc::Json arguments = mc::Json::array();
-  for (const std::string& a : explicit_arguments(vm, opts, kNotInRunJson)) arguments.push_back(a);
+  for (const std::string& a : explicit_arguments(vm, opts, not_in_run_files())) arguments.push_back(a);
   settings["arguments"] = arguments;
   return settings;
 }
 
+/// The options a --resume command line may give; every other setting comes
+/// from the checkpoint.
 const std::vector<std::string> kResumeOptions = {"out",     "format",     "quiet",           "full",
                                                  "threads", "checkpoint", "checkpoint-every"};
 
@@ -217,11 +213,11 @@ int run_command(const Args& args, Ranks& ranks) {
       throw InputError("--from", echo_input(from), std::string("settings.arguments: ") + e.what());
     }
     for (const GivenOption& o : kept)
-      if (o.name == "from" || o.name == "resume" || o.name == "config")
-        throw InputError("--from", echo_input(from), fmt::format("settings.arguments may not hold --{}", o.name));
+      if (const std::string why = refused_from(o.name, OptionSource::kRunFile); !why.empty())
+        throw InputError("--from", echo_input(from), fmt::format("settings.arguments holds --{}, which {}", o.name, why));
     run_args = without_options(kept, overrides);
     run_args.insert(run_args.end(), override_tokens.begin(), override_tokens.end());
-    vm = parse_args(run_args, "run", synopsis, opts);
+    vm = parse_args_again(run_args, opts);
   }
 
   // --resume: the checkpoint's own arguments, with this command line's
@@ -243,10 +239,14 @@ int run_command(const Args& args, Ranks& ranks) {
       override_tokens.insert(override_tokens.end(), o.tokens.begin(), o.tokens.end());
     }
     resumed = load_checkpoint(resume_path, ranks);
-    run_args = without_options(given_options(resumed->args, opts), overrides);
+    const std::vector<GivenOption> kept = given_options(resumed->args, opts);
+    for (const GivenOption& o : kept)
+      if (const std::string why = refused_from(o.name, OptionSource::kRunFile); !why.empty())
+        throw InputError("--resume", resume_path, fmt::format("the checkpoint holds --{}, which {}", o.name, why));
+    run_args = without_options(kept, overrides);
     run_args.insert(run_args.end(), override_tokens.begin(), override_tokens.end());
     if (!vm->count("checkpoint")) run_args.insert(run_args.end(), {"--checkpoint", resume_path});
-    vm = parse_args(run_args, "run", synopsis, opts);
+    vm = parse_args_again(run_args, opts);
   }
 
   const mc::StudyConfig config = read_study_config(*vm, true);
@@ -330,7 +330,7 @@ int run_command(const Args& args, Ranks& ranks) {
     settings.threads = 0;
     Checkpoint ck;
     ck.version = kVersion;
-    ck.args = without_options(given_options(run_args, opts), {"checkpoint", "resume"});
+    ck.args = explicit_arguments(*vm, opts, not_in_run_files());  // what defines the study, as run.json keeps it
     ck.settings = mc::settings_json(settings).dump();
     ck.fingerprint = study_fingerprint(config, map);
     ck.samples = config.samples;
@@ -351,9 +351,10 @@ int run_command(const Args& args, Ranks& ranks) {
   if (outcome.signal != 0) {
     if (ranks.root())
       fmt::print(stderr, "insmc run: interrupted by {}: checkpoint {} written ({} of {} samples finished); continue "
-                         "with: insmc run --resume {}\n",
+                         "with: insmc run --resume {}{}\n",
                  signal_name(outcome.signal), checkpoint_path, mc::sample_total(outcome.progress.done, config.samples),
-                 config.samples, checkpoint_path);
+                 config.samples, checkpoint_path,
+                 vm->count("out") ? " --out " + (*vm)["out"].as<std::string>() : std::string());
     ranks.barrier();  // every rank exits after rank 0 has written and said so
     return 128 + outcome.signal;
   }

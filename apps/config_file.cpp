@@ -1,5 +1,7 @@
 #include "apps/config_file.h"
 
+#include "apps/option_sources.h"
+
 #include <fmt/format.h>
 
 #include <map>
@@ -60,6 +62,8 @@ po::parsed_options parse_config_text(std::string_view text, std::string_view sou
     if (key == prefix) fail(fmt::format("empty key before '=' in {}", quote(line)));
     const po::option_description* d = options.find_nothrow(key, /*approx=*/false);
     if (d == nullptr) fail(fmt::format("unknown option {} (the keys are the long option names, without --)", quote(key)));
+    if (const std::string why = refused_from(d->long_name(), OptionSource::kConfigFile); !why.empty())
+      fail(fmt::format("{}: {}", key, why));
     if (parsed.options.size() >= kMaxConfigEntries)
       fail(fmt::format("more than {} options: a --config file may hold at most {}", kMaxConfigEntries,
                        kMaxConfigEntries));

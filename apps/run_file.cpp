@@ -8,6 +8,103 @@
 #include "lib/common/input_text.h"
 
 namespace insmc::app {
+namespace {
+
+/// Reads settings.arguments with nlohmann's SAX interface: memory follows
+/// the arguments, not the file (a run.json holds the whole envelope), and a
+/// nesting deeper than insmc ever writes is refused as it is met.
+class ArgumentsReader final : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  using json = nlohmann::json;
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(json::number_integer_t) override { return value(); }
+  bool number_unsigned(json::number_unsigned_t) override { return value(); }
+  bool number_float(json::number_float_t, const json::string_t&) override { return value(); }
+  bool binary(json::binary_t&) override { return value(); }
+  bool string(json::string_t& s) override {
+    if (!in_arguments()) return value();
+    if (s.rfind("--", 0) != 0 || s.size() > kMaxRunArgumentBytes) {
+      problem = fmt::format("settings.arguments[{}] must be an option \"--name=value\" of at most {} bytes",
+                            arguments.size(), kMaxRunArgumentBytes);
+      return false;
+    }
+    if (arguments.size() >= kMaxRunArguments) {
+      problem = fmt::format("settings.arguments holds more than {} values", kMaxRunArguments);
+      return false;
+    }
+    arguments.push_back(std::move(s));
+    return true;
+  }
+  bool start_object(std::size_t) override { return open(false); }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override {
+    if (depth_ == 2 && key_ == "arguments" && under_settings_) {
+      if (found) {
+        problem = "holds settings.arguments twice";
+        return false;
+      }
+      found = true;
+      arguments_depth_ = depth_ + 1;
+    }
+    return open(true);
+  }
+  bool end_array() override { return close(); }
+  bool key(json::string_t& k) override {
+    key_ = std::move(k);
+    if (depth_ == 1) under_settings_next_ = key_ == "settings";
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    if (problem.empty()) problem = "is not JSON (a run.json written by insmc run)";
+    return false;
+  }
+
+  Args arguments;
+  bool found = false;
+  std::string problem;
+
+ private:
+  /// insmc writes run.json four levels deep; the envelope rows are objects
+  /// in an array in an object.
+  static constexpr int kMaxDepth = 32;
+
+  bool in_arguments() const { return arguments_depth_ > 0 && depth_ == arguments_depth_; }
+  bool value() {
+    if (in_arguments()) {
+      problem = fmt::format("settings.arguments[{}] must be an option \"--name=value\" of at most {} bytes",
+                            arguments.size(), kMaxRunArgumentBytes);
+      return false;
+    }
+    return true;
+  }
+  bool open(bool array) {
+    if (in_arguments()) return value();
+    if (depth_ == 0 && array) {
+      problem = "has no settings.arguments array (a run.json of insmc run 0.1.0 or later)";
+      return false;
+    }
+    if (++depth_ > kMaxDepth) {
+      problem = fmt::format("nests deeper than {} levels (insmc writes 4)", kMaxDepth);
+      return false;
+    }
+    if (depth_ == 2) under_settings_ = under_settings_next_;
+    return true;
+  }
+  bool close() {
+    if (depth_ == arguments_depth_) arguments_depth_ = 0;
+    if (depth_ == 2) under_settings_ = false;
+    --depth_;
+    return true;
+  }
+
+  int depth_ = 0, arguments_depth_ = 0;
+  std::string key_;
+  bool under_settings_ = false, under_settings_next_ = false;
+};
+
+}  // namespace
 
 Args explicit_arguments(const po::variables_map& vm, const po::options_description& options,
                         const std::vector<std::string>& drop) {
@@ -35,28 +132,13 @@ Args explicit_arguments(const po::variables_map& vm, const po::options_descripti
 
 Args run_arguments_from_json(std::string_view text, std::string_view source) {
   const std::string where(source);
-  const nlohmann::json j = nlohmann::json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
-  if (j.is_discarded()) throw InputError("--from", echo_input(where), "is not JSON (a run.json written by insmc run)");
-  const auto settings = j.is_object() ? j.find("settings") : j.end();
-  const bool has = j.is_object() && settings != j.end() && settings->is_object() &&
-                   settings->contains("arguments") && (*settings)["arguments"].is_array();
-  if (!has)
+  ArgumentsReader reader;
+  const bool parsed = nlohmann::json::sax_parse(text.begin(), text.end(), &reader);
+  if (!parsed || !reader.found)
     throw InputError("--from", echo_input(where),
-                     "has no settings.arguments array (a run.json of insmc run 0.1.0 or later)");
-  const nlohmann::json& list = (*settings)["arguments"];
-  if (list.size() > kMaxRunArguments)
-    throw InputError("--from", echo_input(where), fmt::format("settings.arguments holds {} values (at most {})",
-                                                               list.size(), kMaxRunArguments));
-  Args out;
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    if (!list[i].is_string() || list[i].get_ref<const std::string&>().rfind("--", 0) != 0 ||
-        list[i].get_ref<const std::string&>().size() > kMaxRunArgumentBytes)
-      throw InputError("--from", echo_input(where),
-                       fmt::format("settings.arguments[{}] must be an option \"--name=value\" of at most {} bytes", i,
-                                   kMaxRunArgumentBytes));
-    out.push_back(list[i].get<std::string>());
-  }
-  return out;
+                     !reader.problem.empty() ? reader.problem
+                                             : "has no settings.arguments array (a run.json of insmc run 0.1.0 or later)");
+  return std::move(reader.arguments);
 }
 
 Args read_run_arguments(const std::string& path) {

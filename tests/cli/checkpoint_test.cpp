@@ -35,11 +35,13 @@ TEST(Checkpoint, IsWrittenAtTheEndKeptAndResumesToTheSameFiles) {
   expect_same_envelopes(dir.path() / "plain", dir.path() / "ck");
   EXPECT_NE(read_file(dir.path() / "ck" / "run.json").find("\"resumed_from_sample\": 0,"), std::string::npos);
 
-  // --resume needs no other option: the settings (and --out) come back.
+  // --resume needs no other option: the settings come back; where to write
+  // does not (a checkpoint, like any file of options, names no output).
   const auto resumed = run_insmc("run --resume " + ck + " --format csv");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_EQ(resumed.out, plain.out);
   expect_same_envelopes(dir.path() / "plain", dir.path() / "ck");
+  EXPECT_EQ(read_file(ck).find("--out"), std::string::npos) << "the checkpoint keeps no output path";
   const auto elsewhere = run_insmc("run --resume " + ck + " --out " + dir.str() + "/again --threads 1");
   ASSERT_EQ(elsewhere.exit_code, 0) << elsewhere.err;
   expect_same_envelopes(dir.path() / "plain", dir.path() / "again");
@@ -61,10 +63,12 @@ TEST(Checkpoint, SigtermWritesTheCheckpointAndTheResumeGivesTheSameBytes) {
   EXPECT_EQ(killed.exit_code, 128 + SIGTERM) << killed.err;
   EXPECT_EQ(std::count(killed.err.begin(), killed.err.end(), '\n'), 1) << killed.err;
   EXPECT_NE(killed.err.find("interrupted by SIGTERM: checkpoint " + ck + " written"), std::string::npos) << killed.err;
+  EXPECT_NE(killed.err.find("continue with: insmc run --resume " + ck + " --out " + dir.str() + "/killed"),
+            std::string::npos) << killed.err;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "killed")) << "no output before the study is finished";
   ASSERT_TRUE(std::filesystem::exists(ck));
 
-  const auto resumed = run_insmc("run --resume " + ck);
+  const auto resumed = run_insmc("run --resume " + ck + " --out " + dir.str() + "/killed");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   const std::uint64_t from = resumed_from_sample(dir.path() / "killed" / "run.json");
   EXPECT_GT(from, 0u);

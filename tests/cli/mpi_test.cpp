@@ -84,7 +84,7 @@ TEST(Mpi, ResumeAfterSigtermGivesTheBytesOfAnUninterruptedRun) {
 
   // Another split of what is left; fewer checkpoints (each is a collective
   // pause, slow with 3 ranks on 2 cores).
-  const auto resumed = run_shell(mpirun(3) + " run --resume " + ck + " --checkpoint-every 10s");
+  const auto resumed = run_shell(mpirun(3) + " run --resume " + ck + " --checkpoint-every 10s --out " + dir.str() + "/killed");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   const std::uint64_t from = resumed_from_sample(dir.path() / "killed" / "run.json");
   EXPECT_GT(from, 0u);
