@@ -176,7 +176,11 @@ class BoundsParser {
       if (u == kKeyUnits.end()) fail(t.column, fmt::format("limit {}: expected {}", quote(t.text), kLimitForms));
       x = number(value, key) * u->second;
     }
-    if (!(x >= 0)) fail(value.column, fmt::format("{}: the limit must be >= 0", quote(t.text)));
+    // A position error beyond the earth's circumference means nothing; a
+    // larger number is a typo (1e306 nmi once became inf m and held).
+    constexpr double kMaxLimitM = 4.0e7;
+    if (!(x >= 0) || !(x <= kMaxLimitM))
+      fail(value.column, fmt::format("{}: the limit must lie in [0, 40000 km] (the earth's circumference)", quote(t.text)));
     b.metric = metric;
     b.limit_m = x;
   }

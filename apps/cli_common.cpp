@@ -1,12 +1,15 @@
 #include "apps/cli_common.h"
 
+#include <charconv>
 #include <cmath>
 #include <fmt/core.h>
 #include <fstream>
 #include <iostream>
 
 #include "apps/config_file.h"
+#include "apps/sweep.h"
 #include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
 #include "lib/units/physical_range.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
@@ -45,8 +48,8 @@ po::variables_map store_all(const Args& args, const po::options_description& all
 }  // namespace
 
 std::optional<po::variables_map> parse_args(const Args& args, const std::string& subcommand,
-                                            const std::string& synopsis,
-                                            const po::options_description& options) {
+                                            const std::string& synopsis, const po::options_description& options,
+                                            Lists lists) {
   const po::options_description all = with_generic(options);
   {
     po::variables_map first;
@@ -57,7 +60,9 @@ std::optional<po::variables_map> parse_args(const Args& args, const std::string&
       return std::nullopt;
     }
   }
-  return store_all(args, all);
+  po::variables_map vm = store_all(args, all);
+  if (lists == Lists::kOneValue) refuse_sweeps(vm, subcommand);
+  return vm;
 }
 
 po::variables_map parse_args_again(const Args& args, const po::options_description& options) {
@@ -67,6 +72,24 @@ po::variables_map parse_args_again(const Args& args, const po::options_descripti
   // --resume was answered by the first parse.
   if (vm.count("help")) throw InputError("--help", "(in the options read again)", "cannot be combined with them");
   return vm;
+}
+
+/// A count as an integer ("100000") or in exponent form when that is a
+/// whole number ("1e5", "2.5e6"), up to 2^53 in that form (every integer
+/// there is exact in a double).
+std::uint64_t parse_count(const std::string& text, const std::string& field) {
+  const char* end = text.data() + text.size();
+  std::uint64_t v = 0;
+  if (const auto [ptr, ec] = std::from_chars(text.data(), end, v); ec == std::errc() && ptr == end) return v;
+  double x = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), end, x);
+  if (ec == std::errc() && ptr == end && x >= 0 && x <= 0x1p53 && x == std::floor(x))
+    return static_cast<std::uint64_t>(x);
+  throw InputError(field, echo_input(text), "must be a non-negative whole number (e.g. 100000 or 1e5)");
+}
+
+std::uint64_t read_count(const po::variables_map& vm, const std::string& name) {
+  return parse_count(vm[name].as<std::string>(), "--" + name);
 }
 
 po::options_description model_options_description() {

@@ -4,6 +4,7 @@
 /// format and the files of --out DIR (checked before the work and written
 /// as one set after it: apps/output_paths.h).
 #include <boost/program_options.hpp>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -20,14 +21,27 @@ namespace po = boost::program_options;
 enum class OutputFormat { kMarkdown, kCsv, kJson };
 OutputFormat parse_output_format(const std::string& text);
 
+/// Whether a comma list in a sweepable option (--latitude, --test-duration,
+/// --bound NAME=..., apps/sweep.h) is a sweep (`run`) or refused: every
+/// other subcommand takes one value, and never silently the first of a list.
+enum class Lists { kOneValue, kSweeps };
+
 /// Parses `args` with `options` (plus --help and --config FILE). Prints the
 /// help text and returns nullopt when --help is given.
 std::optional<po::variables_map> parse_args(const Args& args, const std::string& subcommand,
-                                            const std::string& synopsis,
-                                            const po::options_description& options);
+                                            const std::string& synopsis, const po::options_description& options,
+                                            Lists lists = Lists::kOneValue);
 /// Parses once more the options a file gave with those typed beside it
 /// (`run --from`, `run --resume`): as parse_args, but --help is an error.
 po::variables_map parse_args_again(const Args& args, const po::options_description& options);
+
+/// A count (samples, seed, runs) as an integer ("100000") or in exponent
+/// form when that is a whole number ("1e5"), up to 2^53 there; a sign, a
+/// fraction or anything else is an InputError naming `field`. Options that
+/// take one are strings, so that "-1" never wraps to 2^64 − 1.
+std::uint64_t parse_count(const std::string& text, const std::string& field);
+/// The count of option `name` (its value or default).
+std::uint64_t read_count(const po::variables_map& vm, const std::string& name);
 
 /// --latitude and the loop gains: the ModelOptions every model command takes.
 po::options_description model_options_description();

@@ -62,11 +62,11 @@ mc::Json round_json(const Round& r) {
 
 int run_bench(const Args& args) {
   po::options_description opts("Options");
-  opts.add_options()("samples", po::value<std::uint64_t>()->default_value(2000000),
+  opts.add_options()("samples", po::value<std::string>()->default_value("2000000"),
                      "samples per measurement of the uncompensated paper path, in [1024, 2^40] (whole blocks of 1024)")(
-      "pipeline-samples", po::value<std::uint64_t>()->default_value(102400),
+      "pipeline-samples", po::value<std::string>()->default_value("102400"),
       "samples per measurement of the full pipelines (paper, linear), in [1024, 2^40]")(
-      "truth-samples", po::value<std::uint64_t>()->default_value(4096), "samples per measurement of the truth path, in [1024, 2^40]")(
+      "truth-samples", po::value<std::string>()->default_value("4096"), "samples per measurement of the truth path, in [1024, 2^40]")(
       "threads", po::value<int>()->default_value(0), "threads (0 = all cores)")(
       "rounds", po::value<int>()->default_value(3), "paired rounds, in [1, 50]; the median ratio is reported")(
       "json", po::bool_switch(), "print the JSON alone on stdout");
@@ -74,9 +74,9 @@ int run_bench(const Args& args) {
       args, "bench", "[--samples N] [--pipeline-samples N] [--truth-samples N] [--threads N] [--rounds N] [--json]",
       opts);
   if (!vm) return 0;
-  const std::uint64_t samples = (*vm)["samples"].as<std::uint64_t>();
-  const std::uint64_t pipeline_samples = (*vm)["pipeline-samples"].as<std::uint64_t>();
-  const std::uint64_t truth_samples = (*vm)["truth-samples"].as<std::uint64_t>();
+  const std::uint64_t samples = read_count(*vm, "samples");
+  const std::uint64_t pipeline_samples = read_count(*vm, "pipeline-samples");
+  const std::uint64_t truth_samples = read_count(*vm, "truth-samples");
   const int rounds = (*vm)["rounds"].as<int>();
   int threads = (*vm)["threads"].as<int>();
   for (const auto& [name, n] : {std::pair{"--samples", samples}, std::pair{"--pipeline-samples", pipeline_samples},

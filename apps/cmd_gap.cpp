@@ -32,7 +32,7 @@ int run_gap(const Args& args) {
       "out", po::value<std::string>(), "folder for gap.md, its plots and gap.json")(
       "format", po::value<std::string>()->default_value("markdown"), "what to print: markdown or json")(
       "alpha", po::value<double>()->default_value(0.01), "false-alarm rate of a significant gap, (0, 0.5)")(
-      "seed", po::value<std::uint64_t>()->default_value(1), "seed of the null runs and the resampling")(
+      "seed", po::value<std::string>()->default_value("1"), "seed of the null runs and the resampling")(
       "calibration-runs", po::value<int>()->default_value(0), "null runs (0: max(200, 10 x runs))")(
       "max-effects", po::value<int>()->default_value(3), "effects added greedily at most, >= 1")(
       "likelihood", po::value<int>()->default_value(0),
@@ -53,7 +53,7 @@ int run_gap(const Args& args) {
   options.alpha = (*vm)["alpha"].as<double>();
   if (!(options.alpha > 0 && options.alpha < 0.5))
     throw InputError("--alpha", fmt::format("{}", options.alpha), "must lie in (0, 0.5)");
-  options.seed = (*vm)["seed"].as<std::uint64_t>();
+  options.seed = read_count(*vm, "seed");
   options.calibration_runs = (*vm)["calibration-runs"].as<int>();
   if (options.calibration_runs < 0 || options.calibration_runs > 100000)
     throw InputError("--calibration-runs", std::to_string(options.calibration_runs), "must lie in [0, 100000]");

@@ -19,7 +19,7 @@ int run_gap_validate(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("quick", "the CI subset (10-run files, magnitude 30x the defaults, 4 null files)")(
       "out", po::value<std::string>(), "folder for validation.md, confusion.md/csv, confusion.svg/png/gp (drawn by gnuplot), validation.json")(
-      "seed", po::value<std::uint64_t>()->default_value(1000), "seed of the first simulated file")(
+      "seed", po::value<std::string>()->default_value("1000"), "seed of the first simulated file")(
       "null-files", po::value<int>(), "null files (default 100, quick 4)")(
       "seeds", po::value<int>(), "files per effect and magnitude (default 3, quick 1)")(
       "effect", po::value<std::vector<std::string>>(), "validate only this effect (repeatable; names: insmc effects)")(
@@ -27,7 +27,7 @@ int run_gap_validate(const Args& args) {
   const auto vm = parse_args(args, "gap-validate", "[--quick] [--out DIR]", opts);
   if (!vm) return 0;
   mc::ValidationOptions options = vm->count("quick") ? mc::ValidationOptions::quick_subset() : mc::ValidationOptions{};
-  options.seed = (*vm)["seed"].as<std::uint64_t>();
+  options.seed = read_count(*vm, "seed");
   if (vm->count("null-files")) {
     options.null_files = (*vm)["null-files"].as<int>();
     if (options.null_files < 0 || options.null_files > 10000)

@@ -20,14 +20,11 @@ namespace insmc::app {
 namespace {
 
 /// The break-even points need the covariance level, and one study: an option
-/// that would change nothing, or a sweep, is refused rather than ignored.
+/// that would change nothing is refused rather than ignored (a sweep is, by
+/// parse_args).
 void refuse_unused_options(const po::variables_map& vm) {
   refuse_truth_level_options(vm, "rank",
                              "rank needs the exact covariance of its level for the break-even points: paper or linear");
-  const std::vector<SweepAxis> sweeps = find_sweeps(vm);
-  if (!sweeps.empty())
-    throw InputError(sweeps.front().column, fmt::format("{}", fmt::join(sweeps.front().texts, ",")),
-                     "rank takes one value, not a sweep (it finds the break-even values itself); use insmc run");
 }
 
 }  // namespace

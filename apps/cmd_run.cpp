@@ -189,7 +189,7 @@ int run_command(const Args& args, Ranks& ranks) {
   add_stdout_switches(opts, "the RMS of every axis at every report time");
   opts.add(study_options_description(true));
   const std::string synopsis = "[options]\n       insmc run --resume FILE [--out DIR] [--format F]";
-  auto vm = parse_args(args, "run", synopsis, opts);
+  auto vm = parse_args(args, "run", synopsis, opts, Lists::kSweeps);
   if (!vm) return 0;
 
   // --from: a run.json's arguments, with this command line's options in
@@ -261,6 +261,7 @@ int run_command(const Args& args, Ranks& ranks) {
   // From 10 ms (each checkpoint is written atomically; tests use 0.1 s) to a day.
   require_in_range("--checkpoint-every", checkpoint_every_s, Dimension::kTime, {0.01, 24 * 3600.0});
   const std::vector<SweepAxis> sweeps = find_sweeps(*vm);
+  check_sweep_points(config, sweeps);  // every value of every list, before any work
   // Every output path is checked and locked now, before any work: a path
   // the user can fix costs no computing (docs/outputs.md).
   std::optional<OutputFolderOption> out;

@@ -23,7 +23,7 @@ int run_simulate(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("out", po::value<std::string>(), "record file to write (required)")(
       "runs", po::value<int>()->default_value(20), "number of runs (alignment, test run, navigation), >= 1")(
-      "seed", po::value<std::uint64_t>()->default_value(1), "seed; run i is a pure function of (seed, i)")(
+      "seed", po::value<std::string>()->default_value("1"), "seed; run i is a pure function of (seed, i)")(
       "system", po::value<std::string>()->default_value("1"), "alignment system: 1 or 2")(
       "scheme", po::value<std::string>()->default_value("none"), "compensation scheme (none: uncompensated)")(
       "nav-duration", po::value<std::string>()->default_value("90min"), "navigation after the test run")(
@@ -40,7 +40,7 @@ int run_simulate(const Args& args) {
   // The record reader's own cap: every file simulate writes can be read back.
   if (runs < 1 || static_cast<std::size_t>(runs) > kMaxRecordRuns)
     throw InputError("--runs", std::to_string(runs), fmt::format("must lie in [1, {}]", kMaxRecordRuns));
-  const std::uint64_t seed = (*vm)["seed"].as<std::uint64_t>();
+  const std::uint64_t seed = read_count(*vm, "seed");
   const System system = parse_system((*vm)["system"].as<std::string>(), "--system");
   const Scheme scheme = parse_scheme((*vm)["scheme"].as<std::string>());
   const ModelOptions model = read_model_options(*vm, system == System::kGyrocompass);

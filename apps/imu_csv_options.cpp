@@ -48,14 +48,17 @@ ImuCsvOptions read_imu_csv_options(const po::variables_map& vm) {
   if (!vm.count("rate") && !vm.count("time-column"))
     throw InputError("--rate", "(missing)", "give the sample rate (e.g. 100Hz) or a time column with --time-column");
   if (vm.count("rate")) csv.rate_hz = parse_rate_hz(vm["rate"].as<std::string>(), "--rate");
+  // The time unit is checked even without a time column: a typo is refused, not ignored.
+  const std::string unit = vm["time-unit"].as<std::string>();
+  double time_unit_s = 1.0;
+  try {  // the time units of parse_quantity, named without a number
+    time_unit_s = parse_quantity("1" + unit, Dimension::kTime, "--time-unit");
+  } catch (const InputError&) {
+    throw InputError("--time-unit", echo_input(unit), "must be one of: s, min, h, ms");
+  }
   if (vm.count("time-column")) {
     csv.time_column = vm["time-column"].as<std::string>();
-    const std::string unit = vm["time-unit"].as<std::string>();
-    try {  // the time units of parse_quantity, named without a number
-      csv.time_unit_s = parse_quantity("1" + unit, Dimension::kTime, "--time-unit");
-    } catch (const InputError&) {
-      throw InputError("--time-unit", echo_input(unit), "must be one of: s, min, h, ms");
-    }
+    csv.time_unit_s = time_unit_s;
   }
   if (auto e = validate(csv)) throw *e;
   return csv;

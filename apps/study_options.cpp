@@ -50,24 +50,6 @@ UncertaintyModel read_uncertainty_model(const po::variables_map& vm) {
 #include "lib/units/quantity.h"
 
 namespace insmc::app {
-namespace {
-
-/// A count as an integer ("100000") or in exponent form when that is a
-/// whole number ("1e5", "2.5e6"), up to 2^53 in that form (every integer
-/// there is exact in a double).
-std::uint64_t parse_count(const std::string& text, const std::string& field) {
-  const char* end = text.data() + text.size();
-  std::uint64_t v = 0;
-  if (const auto [ptr, ec] = std::from_chars(text.data(), end, v); ec == std::errc() && ptr == end) return v;
-  double x = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), end, x);
-  if (ec == std::errc() && ptr == end && x >= 0 && x <= 0x1p53 && x == std::floor(x))
-    return static_cast<std::uint64_t>(x);
-  throw InputError(field, echo_input(text), "must be a non-negative whole number (e.g. 100000 or 1e5)");
-}
-
-}  // namespace
-
 void refuse_truth_level_options(const po::variables_map& vm, const std::string& command,
                                 const std::string& why_not_truth) {
   if (vm["fidelity"].as<std::string>() == "truth") throw InputError("--fidelity", "truth", why_not_truth);
@@ -169,18 +151,24 @@ TestRunOptions read_test_run_options(const po::variables_map& vm) {
     t.sway.velocity_rms_mps = parse_quantity(parts[0], Dimension::kVelocity, "--sway velocity");
     t.sway.correlation_time_s = parse_quantity(parts[1], Dimension::kTime, "--sway time");
   }
+  // The coarse misalignment is read (and checked) even when the steady
+  // alignment leaves it unused: a typo is refused, not ignored.
+  AlignmentLoopSettings a;
+  const std::string coarse = vm["coarse-misalignment"].as<std::string>();
+  const auto parts = split_commas(coarse);
+  if (parts.size() != 3)
+    throw InputError("--coarse-misalignment", echo_input(coarse), "expected C_x,C_y,C_z (e.g. 1mrad,1mrad,5mrad)");
+  for (int k = 0; k < 3; ++k)
+    a.initial_misalignment_rad[k] =
+        parse_quantity(parts[static_cast<std::size_t>(k)], Dimension::kAngle, "--coarse-misalignment");
   const std::string alignment = vm["alignment-time"].as<std::string>();
   if (alignment != "steady") {
-    AlignmentLoopSettings a;
     a.duration_s = parse_quantity(alignment, Dimension::kTime, "--alignment-time");
-    const std::string coarse = vm["coarse-misalignment"].as<std::string>();
-    const auto parts = split_commas(coarse);
-    if (parts.size() != 3) throw InputError("--coarse-misalignment", coarse, "expected C_x,C_y,C_z (e.g. 1mrad,1mrad,5mrad)");
-    for (int k = 0; k < 3; ++k)
-      a.initial_misalignment_rad[k] = parse_quantity(parts[static_cast<std::size_t>(k)], Dimension::kAngle, "--coarse-misalignment");
     a.average_s = t.alignment_average_s;
     validate(a);
     t.alignment_loops = a;
+  } else {
+    validate(a);  // the defaults of the rest, and the coarse misalignment given
   }
   validate(t);
   return t;
@@ -212,8 +200,8 @@ mc::StudyConfig read_study_config(const po::variables_map& vm, bool monte_carlo)
   c.uncertainties = read_uncertainty_model(vm);
   c.test = read_test_run_options(vm);
   if (monte_carlo) {
-    c.samples = parse_count(vm["samples"].as<std::string>(), "--samples");
-    c.seed = parse_count(vm["seed"].as<std::string>(), "--seed");
+    c.samples = read_count(vm, "samples");
+    c.seed = read_count(vm, "seed");
     c.threads = vm["threads"].as<int>();
   }
   mc::validate(c);

@@ -5,6 +5,7 @@
 
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
 #include "lib/uncertainty/random_fraction.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
@@ -126,6 +127,30 @@ AxisInUserUnits in_user_units(const SweepAxis& a) {
   return out;
 }
 }  // namespace
+
+void refuse_sweeps(const po::variables_map& vm, const std::string& subcommand) {
+  std::vector<std::string> names = {"bound", "random-fraction"};
+  for (const QuantityOption& q : kSweepable) names.emplace_back(q.option);
+  for (const std::string& name : names) {
+    if (!vm.count(name) || vm[name].defaulted()) continue;
+    const boost::any& v = vm[name].value();
+    std::vector<std::string> values;
+    if (const auto* one = boost::any_cast<std::string>(&v)) values.push_back(*one);
+    if (const auto* many = boost::any_cast<std::vector<std::string>>(&v)) values = *many;
+    for (const std::string& value : values)
+      if (value.find(',') != std::string::npos)
+        throw InputError("--" + name, echo_input(value),
+                         fmt::format("a comma list is a sweep, which insmc run takes; insmc {} takes one value",
+                                     subcommand));
+  }
+}
+
+void check_sweep_points(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes) {
+  std::size_t points = 1;
+  for (const auto& a : axes) points *= a.texts.size();
+  std::vector<std::size_t> idx;
+  for (std::size_t p = 0; p < points; ++p) point_config(base, axes, p, idx);
+}
 
 std::vector<SweepAxis> find_sweeps(const po::variables_map& vm) {
   std::vector<SweepAxis> axes;

@@ -26,6 +26,15 @@ struct SweepAxis {
 /// The swept quantities of the command line (empty: no sweep).
 std::vector<SweepAxis> find_sweeps(const po::variables_map& vm);
 
+/// For the subcommands that take one value of each quantity: a comma list
+/// in a sweepable option is refused (InputError) instead of its first value
+/// being used.
+void refuse_sweeps(const po::variables_map& vm, const std::string& subcommand);
+
+/// Builds and validates the study of every point (InputError naming the
+/// first bad value), before any point is run.
+void check_sweep_points(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes);
+
 /// Runs every point of the sweep and returns sweep.csv, a Markdown summary,
 /// the plot of the horizontal RMS at the last report time against the first
 /// swept quantity in the units it was given in (a panel per scheme, a line

@@ -52,7 +52,9 @@ TEST(BoundsFile, OtherLimitFormsAreRefusedNotIgnored) {
       << error_of(base + "rms_m<=5 rms_ft<=3");
   EXPECT_NE(error_of(base + "rms_m<=abc").find("bounds.txt:1:54: rms_m = 'abc': not a number"), std::string::npos)
       << error_of(base + "rms_m<=abc");
-  EXPECT_NE(error_of(base + "rms_m<=-1").find("the limit must be >= 0"), std::string::npos);
+  EXPECT_NE(error_of(base + "rms_m<=-1").find("the limit must lie in [0, 40000 km]"), std::string::npos);
+  EXPECT_NE(error_of(base + "rms_nmi<=1e306").find("the limit must lie in [0, 40000 km]"), std::string::npos)
+      << "a limit that overflows to inf m would always hold";
 }
 
 TEST(BoundsFile, ReadsPercentileLimitsAndNauticalMiles) {
@@ -95,7 +97,7 @@ TEST(BoundsFile, ALimitsUnitIsCheckedWhereverItIsWritten) {
   EXPECT_NE(error_of(base + "cep50_furlong<=3").find("bounds.txt:1:47: limit 'cep50_furlong<=3': expected"),
             std::string::npos)
       << error_of(base + "cep50_furlong<=3");
-  EXPECT_NE(error_of(base + "p95<=-1m").find("bounds.txt:1:52: 'p95<=-1m': the limit must be >= 0"), std::string::npos)
+  EXPECT_NE(error_of(base + "p95<=-1m").find("bounds.txt:1:52: 'p95<=-1m': the limit must lie in [0, 40000 km]"), std::string::npos)
       << error_of(base + "p95<=-1m");
 }
 
