@@ -76,7 +76,7 @@ int run_gap(const Args& args) {
   else if (rank == "never") options.rank = mc::RankWhen::kNever;
   else throw InputError("--rank", echo_input(rank), "always, significant or never");
   options.prior = read_uncertainty_model(*vm);
-  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "gap");
+  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "gap", mc::diagnosis_file_names());
 
   const std::vector<std::string> names = (*vm)["records"].as<std::vector<std::string>>();
   std::vector<RecordFile> files;

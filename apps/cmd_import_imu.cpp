@@ -157,7 +157,7 @@ int run_import_imu(const Args& args) {
     throw InputError("--interval", format_quantity(nav.output_interval_s, Dimension::kTime),
                      fmt::format("must lie in [{}s, {}s] (a record's filter interval)", kMinFilterIntervalS,
                                  kMaxFilterIntervalS));
-  const OutputFileOption out_file("--out", (*vm)["out"].as<std::string>());  // checked and locked before the work
+  const OutputFileOption out_file("--out", (*vm)["out"].as<std::string>(), input_files(*vm));  // checked and locked before the work
 
   RecordFile file;
   file.header = RecordHeader::make(nav.latitude_rad / kDegToRad, System::kTheodolite, nav.test_duration_s, Scheme::kNone);

@@ -71,7 +71,7 @@ int run_noise(const Args& args) {
     throw InputError("--gravity", echo_input(gravity_text),
                      "must lie in [9.7, 9.9] m/s2 (surface gravity, equator to poles, with room for altitude), "
                      "e.g. 9.80665mps2");
-  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "noise");
+  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "noise", noise_file_names());
 
   std::vector<ImuSamples> recordings;
   for (const std::string& input : (*vm)["input"].as<std::vector<std::string>>()) {

@@ -272,7 +272,7 @@ int run_command(const Args& args, Ranks& ranks) {
           sweeps.empty() ? std::vector<std::string>{"envelope.csv", "envelope_grid.csv", "envelope.md", "run.json"}
                          : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.json"};
       out = prepare_figure_folder(*vm, "run", names, sweeps.empty() ? "envelope" : "sweep");
-      if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path);
+      if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path, input_files(*vm));
     });
   }
   if (!sweeps.empty()) {

@@ -60,7 +60,7 @@ int run_simulate(const Args& args) {
     for (const auto& e : (*vm)["effect"].as<std::vector<std::string>>()) truth.effects.push_back(parse_effect(e, "--effect"));
   if (const auto err = truth_latitude_error(model.latitude_rad, "--latitude")) throw *err;
   if (const auto err = validate(truth)) throw *err;
-  const OutputFileOption out("--out", (*vm)["out"].as<std::string>());  // checked and locked before the work
+  const OutputFileOption out("--out", (*vm)["out"].as<std::string>(), input_files(*vm));  // checked and locked before the work
   // The scheme's estimators: the same resolvable terms as `insmc run` fits.
   const Resolvability resolvable = resolvable_terms(system, model, test, uncertainties);
   const TruthSchemeSetup setup(truth, test, make_estimators(test, model, resolvable.u3, resolvable.u4));

@@ -541,4 +541,8 @@ std::vector<std::pair<std::string, std::string>> noise_report(const noise::Senso
           {"calibration.csv", calibration_csv(calibrations)}};
 }
 
+std::vector<std::string> noise_file_names() {
+  return {"noise.md", "allan.csv", "noise_terms.csv", "allan.svg", "stationarity.svg", "calibration.csv", "noise.json"};
+}
+
 }  // namespace insmc::app

@@ -40,6 +40,9 @@ std::pair<double, std::string> spec_value(noise::NoiseTerm term, noise::SensorKi
 /// The files of the report: noise.md first, then allan.csv, noise_terms.csv,
 /// allan.svg, stationarity.svg, calibration.csv (the multi-position
 /// calibrations, apps/calibration_report.h).
+/// The names of the files noise_report returns, and noise.json beside them.
+std::vector<std::string> noise_file_names();
+
 std::vector<std::pair<std::string, std::string>> noise_report(
     const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence, const Datasheet& sheet = {},
     const std::vector<RecordingCalibration>& calibrations = {});

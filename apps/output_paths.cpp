@@ -1,10 +1,15 @@
 #include "apps/output_paths.h"
 
+#include <sys/stat.h>
+
 #include <filesystem>
+#include <fmt/format.h>
 #include <system_error>
 #include <utility>
 
+#include "lib/common/assert.h"
 #include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
 #include "montecarlo/write/output_error.h"
 #include "montecarlo/write/plot/gnuplot.h"
 
@@ -34,27 +39,65 @@ void as_input_errors(const std::string& option, const std::string& text, F&& f) 
   }
 }
 
+/// InputError when `candidate` (an output about to be written) is the same
+/// file as one of `inputs` (compared by device and inode, so links and
+/// other spellings of a path are caught); `except`: an input option that
+/// may be the output.
+void refuse_inputs(const std::string& option, const std::string& text, const std::filesystem::path& candidate,
+                   const std::vector<InputFile>& inputs, std::string_view except = {}) {
+  struct stat out {};
+  if (::stat(candidate.c_str(), &out) != 0) return;  // nothing there yet: it cannot be an input
+  for (const InputFile& in : inputs) {
+    struct stat st {};
+    if (in.option == except || ::stat(in.path.c_str(), &st) != 0) continue;
+    if (st.st_dev == out.st_dev && st.st_ino == out.st_ino)
+      throw InputError(option, text,
+                       fmt::format("{} is the file of {} {}: an output may not replace an input; choose another path",
+                                   candidate == as_checked(text) ? "it" : candidate.string(), in.option,
+                                   echo_input(in.path, 256)));
+  }
+}
+
 }  // namespace
 
+std::vector<InputFile> input_files(const po::variables_map& vm) {
+  std::vector<InputFile> out;
+  for (const char* name : {"records", "input", "bounds", "config", "from", "resume"}) {
+    if (!vm.count(name)) continue;
+    const boost::any& v = vm[name].value();
+    if (const auto* one = boost::any_cast<std::string>(&v)) out.push_back({std::string("--") + name, *one});
+    if (const auto* many = boost::any_cast<std::vector<std::string>>(&v))
+      for (const std::string& path : *many) out.push_back({std::string("--") + name, path});
+  }
+  return out;
+}
+
 OutputFolderOption::OutputFolderOption(std::string option, std::string path, const std::string& command,
-                                       const std::vector<std::string>& expected_files)
-    : option_(std::move(option)), text_(std::move(path)) {
+                                       const std::vector<std::string>& expected_files,
+                                       const std::vector<InputFile>& inputs)
+    : option_(std::move(option)), text_(std::move(path)), expected_(expected_files) {
+  refuse_inputs(option_, text_, as_checked(text_), inputs);
+  for (const std::string& name : expected_files) refuse_inputs(option_, text_, as_checked(text_) / name, inputs);
   as_input_errors(option_, text_, [&] { folder_.emplace(text_, command, expected_files); });
 }
 
 void OutputFolderOption::write(const OutputFiles& files) {
+  for (const auto& f : files)  // what was checked before the work is what is written
+    INSMC_ASSERT(expected_.empty() || std::find(expected_.begin(), expected_.end(), f.first) != expected_.end(),
+                 "{} writes {}, which it did not name before the work", option_, f.first);
   as_input_errors(option_, text_, [&] { folder_->write(mc::OutputSetFiles(files.begin(), files.end())); });
 }
 
 std::optional<OutputFolderOption> prepare_output_folder(const po::variables_map& vm, const std::string& command,
                                                         const std::vector<std::string>& expected_files) {
   std::optional<OutputFolderOption> out;
-  if (vm.count("out")) out.emplace("--out", vm["out"].as<std::string>(), command, expected_files);
+  if (vm.count("out")) out.emplace("--out", vm["out"].as<std::string>(), command, expected_files, input_files(vm));
   return out;
 }
 
-OutputFileOption::OutputFileOption(std::string option, std::string path)
+OutputFileOption::OutputFileOption(std::string option, std::string path, const std::vector<InputFile>& inputs)
     : option_(std::move(option)), text_(std::move(path)) {
+  refuse_inputs(option_, text_, as_checked(text_), inputs, option_ == "--checkpoint" ? "--resume" : "");
   as_input_errors(option_, text_, [&] { file_.emplace(text_); });
 }
 

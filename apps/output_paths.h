@@ -15,24 +15,35 @@
 
 namespace insmc::app {
 
+/// A file the command reads (`--records`, `--input`, `--bounds`,
+/// `--config`, `--from`, `--resume`): no output may be one of them.
+struct InputFile {
+  std::string option, path;
+};
+/// The input files named in `vm`.
+std::vector<InputFile> input_files(const po::variables_map& vm);
+
 /// An output folder (`--out DIR`), checked and locked.
 class OutputFolderOption {
  public:
   /// `command`: the subcommand (recorded in the set's manifest);
-  /// `expected_files`: the names the set will hold, when known before the work.
+  /// `expected_files`: the names the set will hold (each checked now: not
+  /// a folder, link or device, and not one of `inputs`).
   OutputFolderOption(std::string option, std::string path, const std::string& command,
-                     const std::vector<std::string>& expected_files = {});
+                     const std::vector<std::string>& expected_files, const std::vector<InputFile>& inputs);
   /// Writes the whole set (a failure the user can fix: InputError).
   void write(const OutputFiles& files);
 
  private:
   std::string option_, text_;
+  std::vector<std::string> expected_;
   std::optional<mc::OutputFolder> folder_;
 };
 
-/// The folder of option "out" when it was given.
+/// The folder of option "out" when it was given, with the names the set
+/// will hold.
 std::optional<OutputFolderOption> prepare_output_folder(const po::variables_map& vm, const std::string& command,
-                                                        const std::vector<std::string>& expected_files = {});
+                                                        const std::vector<std::string>& expected_files);
 
 /// The same for a set that also holds the figure `figure_stem` (.gp, .svg,
 /// .png): gnuplot must be there, or the command stops now (exit 2, naming
@@ -41,10 +52,12 @@ std::optional<OutputFolderOption> prepare_figure_folder(const po::variables_map&
                                                         std::vector<std::string> other_files,
                                                         const std::string& figure_stem);
 
-/// One output file (`--out FILE`, `--checkpoint FILE`), checked and locked.
+/// One output file (`--out FILE`, `--checkpoint FILE`), checked and locked;
+/// it may not be one of the command's input files (`--checkpoint` may be
+/// the file of `--resume`, which it continues).
 class OutputFileOption {
  public:
-  OutputFileOption(std::string option, std::string path);
+  OutputFileOption(std::string option, std::string path, const std::vector<InputFile>& inputs);
   /// Replaces the file atomically (a failure the user can fix: InputError).
   void write(std::string_view contents) const;
 

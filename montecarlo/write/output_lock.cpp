@@ -22,7 +22,14 @@ namespace {
 
 }  // namespace
 
-OutputLock::OutputLock(const std::filesystem::path& dir, const std::string& name) {
+OutputLock::OutputLock(const std::filesystem::path& given_dir, const std::string& given_name) {
+  // Every alias of one output (a symbolic link to its folder, a path through
+  // a linked parent) takes the one lock beside what it resolves to.
+  std::error_code ec;
+  const std::filesystem::path resolved = std::filesystem::weakly_canonical(given_dir / given_name, ec);
+  const bool use_resolved = !ec && resolved.has_filename() && resolved.has_parent_path();
+  const std::filesystem::path dir = use_resolved ? resolved.parent_path() : given_dir;
+  const std::string name = use_resolved ? resolved.filename().string() : given_name;
   const std::filesystem::path target = dir / name;
   const std::filesystem::path lock = dir / ("." + name + ".insmc-lock");
   // A holder unlinks the lock file before it unlocks, so a lock taken on a

@@ -15,7 +15,9 @@ namespace insmc::mc {
 
 class OutputLock {
  public:
-  /// Locks `.<name>.insmc-lock` in the folder `dir`. When that folder
+  /// Locks `.<name>.insmc-lock` in the folder `dir`, both taken from what
+  /// `dir/name` resolves to, so that aliases of one output (a symbolic link
+  /// to it, a path through a linked parent) take the same lock. When that folder
   /// cannot take a new file (read-only or not ours) but `dir/name` is an
   /// existing folder, that folder itself is flocked instead (it is then
   /// written file by file in place, never swapped, so its inode stays).

@@ -328,7 +328,7 @@ TEST(Cli, CheckExitsByTheBoundsVerdict) {
     std::ofstream(dir.path() / name) << text;
     return (dir.path() / name).string();
   };
-  const std::string loose = write("loose.txt", "# generous\nscheme=none system=2 axis=horizontal t_min=84 rms_m<=1e9\n");
+  const std::string loose = write("loose.txt", "# generous\nscheme=none system=2 axis=horizontal t_min=84 rms_m<=1e7\n");
   const std::string tight = write("tight.txt", "scheme=none system=1 axis=x t_min=42 rms_ft<=1 confidence=0.99\n");
   const std::string bad = write("bad.txt", "scheme=none system=1 axis=sideways t_min=42 rms_m<=1\n");
   EXPECT_EQ(run_insmc("check --samples 3000 --bounds " + loose).exit_code, 0);

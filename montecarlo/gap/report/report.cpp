@@ -305,4 +305,6 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
           {"gap_allan.svg", allan_svg(d)}};
 }
 
+std::vector<std::string> diagnosis_file_names() { return {"gap.md", "gap_groups.svg", "gap_allan.svg", "gap.json"}; }
+
 }  // namespace insmc::mc

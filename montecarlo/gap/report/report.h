@@ -17,6 +17,10 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
 Json site_values_json(const std::vector<SiteValue>& values);
 
 /// (file name, contents): gap.md and its plots.
+/// The names of the files diagnosis_report returns, and gap.json beside them
+/// (the output folder is checked for them before the work).
+std::vector<std::string> diagnosis_file_names();
+
 std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosis& d,
                                                                   const std::vector<std::string>& record_files);
 

@@ -357,4 +357,8 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
           {"validation.json", j.dump(2) + "\n"}};
 }
 
+std::vector<std::string> validation_file_names() {
+  return {"validation.md", "confusion.md", "confusion.csv", "validation.json"};
+}
+
 }  // namespace insmc::mc

@@ -83,6 +83,9 @@ struct Confusion {
 Confusion confusion_of(const ValidationResult& r);
 
 /// validation.md, confusion.md, confusion.csv, validation.json.
+/// The names of the files validation_report returns.
+std::vector<std::string> validation_file_names();
+
 std::vector<std::pair<std::string, std::string>> validation_report(const ValidationResult& r,
                                                                    const ValidationOptions& options);
 

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/mman.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -9,11 +10,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include <fmt/format.h>
+
+#include "lib/common/input_error.h"
 
 extern char** environ;
 
@@ -22,33 +26,45 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The temporary folder, removed when it goes out of scope.
-class ScratchFolder {
+/// An anonymous in-memory file (memfd): gnuplot's script, its outputs and
+/// its messages live in these, never in a folder, so nothing is left
+/// behind when insmc or gnuplot is killed.
+class MemoryFile {
  public:
-  ScratchFolder() {
-    std::string pattern = (fs::temp_directory_path() / "insmc-plot-XXXXXX").string();
-    if (!::mkdtemp(pattern.data()))
-      throw std::runtime_error(fmt::format("cannot make a temporary folder for gnuplot: {}", std::strerror(errno)));
-    path_ = pattern;
+  explicit MemoryFile(const char* name) : fd_(::memfd_create(name, MFD_CLOEXEC)) {
+    if (fd_ < 0) throw std::runtime_error(fmt::format("cannot make an in-memory file for gnuplot: {}", std::strerror(errno)));
   }
-  ~ScratchFolder() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
+  ~MemoryFile() { ::close(fd_); }
+  MemoryFile(const MemoryFile&) = delete;
+  MemoryFile& operator=(const MemoryFile&) = delete;
+  int fd() const { return fd_; }
+
+  void write_all(std::string_view bytes) const {
+    while (!bytes.empty()) {
+      const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) throw std::runtime_error(fmt::format("cannot write gnuplot's script: {}", std::strerror(errno)));
+      bytes.remove_prefix(static_cast<std::size_t>(n));
+    }
+    ::lseek(fd_, 0, SEEK_SET);
   }
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-  const fs::path& path() const { return path_; }
+  /// What the file holds (gnuplot reopened it by /dev/fd/N, so read from 0).
+  std::string read_all() const {
+    std::string out;
+    char buffer[1 << 16];
+    for (off_t at = 0;;) {
+      const ssize_t n = ::pread(fd_, buffer, sizeof buffer, at);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      out.append(buffer, static_cast<std::size_t>(n));
+      at += n;
+    }
+    return out;
+  }
 
  private:
-  fs::path path_;
+  int fd_;
 };
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// The first line of gnuplot's messages that says what went wrong.
 std::string first_error_line(const std::string& messages) {
@@ -82,23 +98,30 @@ std::string gnuplot_missing_message() {
 }
 
 std::vector<std::string> render_gnuplot(const std::string& script, const std::vector<std::string>& outputs) {
-  ScratchFolder folder;
-  const fs::path script_path = folder.path() / "plot.gp", messages_path = folder.path() / "messages.txt";
-  {
-    std::ofstream out(script_path, std::ios::binary);
-    out << script;
-    if (!out) throw std::runtime_error("cannot write the gnuplot script to a temporary folder");
+  // gnuplot reads the script on stdin and writes output i to /dev/fd/(3 + i),
+  // an in-memory file of ours: the script's `set output "NAME"` lines are
+  // pointed there for this run only (the .gp kept for the user keeps NAME).
+  constexpr int kFirstOutputFd = 3;
+  std::string run = script;
+  std::vector<std::unique_ptr<MemoryFile>> files;
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    files.push_back(std::make_unique<MemoryFile>("insmc-plot-output"));
+    const std::string named = "set output " + gnuplot_quote(outputs[i]);
+    const std::string fd_path = "set output " + gnuplot_quote(fmt::format("/dev/fd/{}", kFirstOutputFd + static_cast<int>(i)));
+    for (std::size_t at = run.find(named); at != std::string::npos; at = run.find(named, at + fd_path.size()))
+      run.replace(at, named.size(), fd_path);
   }
-  // gnuplot runs in the folder (its `cd`), reads the script, and sends its
-  // messages to a file; stdin is /dev/null so it never waits for input.
+  const MemoryFile input("insmc-plot-script"), messages("insmc-plot-messages");
+  input.write_all(run);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, messages_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  const std::string cd = "cd " + gnuplot_quote(folder.path().string());
-  std::string program = kGnuplotProgram, dash_e = "-e", file = script_path.string();
-  char* argv[] = {program.data(), dash_e.data(), const_cast<char*>(cd.c_str()), file.data(), nullptr};
+  posix_spawn_file_actions_adddup2(&actions, input.fd(), STDIN_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, messages.fd(), STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, messages.fd(), STDERR_FILENO);
+  for (std::size_t i = 0; i < files.size(); ++i)
+    posix_spawn_file_actions_adddup2(&actions, files[i]->fd(), kFirstOutputFd + static_cast<int>(i));
+  std::string program = kGnuplotProgram;
+  char* argv[] = {program.data(), nullptr};
   pid_t pid = 0;
   const int spawned = posix_spawnp(&pid, kGnuplotProgram, &actions, nullptr, argv, environ);
   posix_spawn_file_actions_destroy(&actions);
@@ -107,19 +130,19 @@ std::vector<std::string> render_gnuplot(const std::string& script, const std::ve
   while (::waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) throw std::runtime_error(fmt::format("waiting for gnuplot: {}", std::strerror(errno)));
   }
-  const std::string messages = read_all(messages_path);
+  const std::string said = messages.read_all();
+  // gnuplot is another program: when it fails or is killed, nothing of the
+  // output set is written and the user is told why (exit 2, not a defect).
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error(fmt::format("gnuplot failed ({}): {}",
-                                         WIFEXITED(status) ? fmt::format("exit {}", WEXITSTATUS(status))
-                                                           : fmt::format("signal {}", WTERMSIG(status)),
-                                         first_error_line(messages)));
+    throw InputError("gnuplot",
+                     WIFEXITED(status) ? fmt::format("exit {}", WEXITSTATUS(status))
+                                       : fmt::format("killed by signal {}", WTERMSIG(status)),
+                     fmt::format("the plots could not be drawn, so no output was written ({})", first_error_line(said)));
   std::vector<std::string> bytes;
-  for (const std::string& name : outputs) {
-    const fs::path p = folder.path() / name;
-    std::error_code ec;
-    if (!fs::is_regular_file(p, ec) || fs::file_size(p, ec) == 0)
-      throw std::runtime_error(fmt::format("gnuplot wrote no {} ({})", name, first_error_line(messages)));
-    bytes.push_back(read_all(p));
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    bytes.push_back(files[i]->read_all());
+    if (bytes.back().empty())
+      throw std::runtime_error(fmt::format("gnuplot wrote no {} ({})", outputs[i], first_error_line(said)));
   }
   return bytes;
 }

@@ -19,11 +19,11 @@ bool gnuplot_available();
 /// The one-line reason plots cannot be made, naming the Debian package.
 std::string gnuplot_missing_message();
 
-/// Runs gnuplot on `script` in a fresh temporary folder and returns the
-/// bytes of `outputs` (the file names the script's `set output` lines use,
-/// relative), in that order. Throws std::runtime_error with gnuplot's first
-/// error line when it fails or does not write an output. The folder is
-/// removed in every case.
+/// Runs gnuplot on `script` and returns the bytes of `outputs` (the file
+/// names the script's `set output` lines use), in that order. Script,
+/// outputs and messages pass through in-memory files only: no temporary
+/// file or folder exists that a killed run could leave. When gnuplot fails
+/// or is killed: InputError (exit 2) with its first error line.
 std::vector<std::string> render_gnuplot(const std::string& script, const std::vector<std::string>& outputs);
 
 /// A figure's script: a head comment, the data blocks and settings, then
