@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -92,40 +93,136 @@ std::string format_bytes(std::uint64_t bytes) {
   return fmt::format("{} bytes", bytes);
 }
 
+namespace {
+
+/// An open file read with a cap; its failures named as read_file_capped's.
+class CappedFile {
+ public:
+  CappedFile(const std::filesystem::path& path, std::uint64_t max_bytes, std::string_view what)
+      : shown_(echo_input(path.string(), 200)), what_(what), max_bytes_(max_bytes), file_(nullptr, &std::fclose) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) fail("it is a directory");
+    // stdio rather than an ifstream: fopen/fread report errno, and an ifstream
+    // opens a directory without complaint and then reads nothing.
+    file_.reset(std::fopen(path.c_str(), "rb"));
+    if (!file_) fail_to("open", std::strerror(errno));
+  }
+
+  std::size_t read(char* buffer, std::size_t size) {
+    // One byte past the cap tells "too large".
+    const std::uint64_t room = max_bytes_ + 1 - read_;
+    const std::size_t want = static_cast<std::size_t>(std::min<std::uint64_t>(size, room));
+    const std::size_t got = want == 0 ? 0 : std::fread(buffer, 1, want, file_.get());
+    read_ += got;
+    if (read_ > max_bytes_) fail(fmt::format("larger than {}, the most a {} may hold", format_bytes(max_bytes_), what_));
+    if (got < want && std::ferror(file_.get())) fail(std::strerror(errno));
+    return got;
+  }
+
+  [[noreturn]] void fail(const std::string& reason) const { fail_to("read", reason); }
+
+ private:
+  [[noreturn]] void fail_to(std::string_view verb, const std::string& reason) const {
+    const std::string why = fmt::format("cannot {} the {}: {}", verb, what_, reason);
+    throw FileReadError(fmt::format("{}: {}", shown_, why), why);
+  }
+
+  std::string shown_, what_;
+  std::uint64_t max_bytes_, read_ = 0;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_;
+};
+
+}  // namespace
+
 std::string read_file_capped(const std::filesystem::path& path, std::uint64_t max_bytes, std::string_view what) {
-  const std::string shown = echo_input(path.string(), 200);
-  const auto fail_to = [&](std::string_view verb, const std::string& reason) {
-    const std::string why = fmt::format("cannot {} the {}: {}", verb, what, reason);
-    throw FileReadError(fmt::format("{}: {}", shown, why), why);
-  };
-  const auto fail = [&](const std::string& reason) { fail_to("read", reason); };
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) fail("it is a directory");
-  // stdio rather than an ifstream: fopen/fread report errno, and an ifstream
-  // opens a directory without complaint and then reads nothing.
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!file) fail_to("open", std::strerror(errno));
+  CappedFile file(path, max_bytes, what);
   std::string text;
   try {
     constexpr std::size_t kChunk = 1 << 16;
     while (true) {
-      const std::uint64_t room = max_bytes + 1 - text.size();  // one byte past the cap tells "too large"
-      const std::size_t want = static_cast<std::size_t>(std::min<std::uint64_t>(kChunk, room));
       const std::size_t old = text.size();
-      text.resize(old + want);
-      const std::size_t got = std::fread(text.data() + old, 1, want, file.get());
+      text.resize(old + kChunk);
+      const std::size_t got = file.read(text.data() + old, kChunk);
       text.resize(old + got);
-      if (text.size() > max_bytes)
-        fail(fmt::format("larger than {}, the most a {} may hold", format_bytes(max_bytes), what));
-      if (got < want) break;
+      if (got == 0) break;
     }
   } catch (const std::bad_alloc&) {
-    fail(fmt::format("not enough memory for its {} bytes", text.size()));
+    file.fail(fmt::format("not enough memory for its {} bytes", text.size()));
   } catch (const std::length_error&) {
-    fail("not enough memory");
+    file.fail("not enough memory");
   }
-  if (std::ferror(file.get())) fail(std::strerror(errno));
   return text;
+}
+
+ByteSource capped_file_source(const std::filesystem::path& path, std::uint64_t max_bytes, std::string_view what) {
+  auto file = std::make_shared<CappedFile>(path, max_bytes, what);
+  return [file](char* buffer, std::size_t size) { return file->read(buffer, size); };
+}
+
+ByteSource text_source(std::string_view text) {
+  return [text, at = std::size_t{0}](char* buffer, std::size_t size) mutable {
+    const std::size_t n = std::min(size, text.size() - at);
+    std::copy_n(text.data() + at, n, buffer);
+    at += n;
+    return n;
+  };
+}
+
+LineReader::LineReader(ByteSource source, std::size_t max_line_bytes)
+    : source_(std::move(source)), max_line_bytes_(max_line_bytes) {}
+
+bool LineReader::fill() {
+  if (end_) return false;
+  constexpr std::size_t kChunk = 1 << 16;
+  if (pos_ > 0) {  // keep only the unread part
+    buffer_.erase(0, pos_);
+    pos_ = 0;
+  }
+  const std::size_t old = buffer_.size();
+  buffer_.resize(old + kChunk);
+  const std::size_t got = source_(buffer_.data() + old, kChunk);
+  buffer_.resize(old + got);
+  end_ = got == 0;
+  return got > 0;
+}
+
+bool LineReader::next(std::string_view& line, const std::function<void(std::size_t, bool)>& too_long) {
+  std::size_t searched = pos_;
+  for (;;) {
+    const std::size_t nl = buffer_.find('\n', searched);
+    if (nl != std::string::npos) {
+      if (nl - pos_ > max_line_bytes_) too_long(nl - pos_, true);
+      line = std::string_view(buffer_).substr(pos_, nl - pos_);
+      pos_ = nl + 1;
+      return true;
+    }
+    if (buffer_.size() - pos_ > max_line_bytes_) break;  // too long: measured below
+    const std::size_t unread = buffer_.size() - pos_;
+    if (!fill()) {
+      if (unread == 0) return false;
+      line = std::string_view(buffer_).substr(pos_);  // the last line, without a line ending
+      pos_ = buffer_.size();
+      return true;
+    }
+    searched = pos_ + unread;
+  }
+  // Count the rest of the long line without keeping it, up to 1 MiB more.
+  constexpr std::size_t kMeasuredBeyond = std::size_t{1} << 20;
+  std::size_t length = buffer_.size() - pos_;
+  buffer_.clear();
+  pos_ = 0;
+  while (length <= max_line_bytes_ + kMeasuredBeyond) {
+    if (!fill()) {
+      too_long(length, true);
+      break;
+    }
+    const std::size_t nl = buffer_.find('\n');
+    if (nl != std::string::npos) too_long(length + nl, true);
+    length += buffer_.size();
+    buffer_.clear();
+  }
+  too_long(length, false);
+  return false;  // too_long throws
 }
 
 }  // namespace insmc

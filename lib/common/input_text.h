@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -48,6 +49,41 @@ class FileReadError : public InputError {
 /// opened, is a directory, cannot be read (including running out of
 /// memory), or is larger than `max_bytes`, with the cap in the message.
 std::string read_file_capped(const std::filesystem::path& path, std::uint64_t max_bytes, std::string_view what);
+
+/// Bytes in order from somewhere (a file, a string): fills `buffer` with up
+/// to `size` bytes and returns how many, 0 at the end.
+using ByteSource = std::function<std::size_t(char* buffer, std::size_t size)>;
+
+/// The bytes of the file at `path` as a ByteSource that reads as it is
+/// called, so that a reader holds a line at a time, never the file; the same
+/// checks and messages as read_file_capped (a directory, an open or read
+/// error, more than `max_bytes`: FileReadError), raised as they are met.
+ByteSource capped_file_source(const std::filesystem::path& path, std::uint64_t max_bytes, std::string_view what);
+
+/// The bytes of `text` as a ByteSource (text must outlive it).
+ByteSource text_source(std::string_view text);
+
+/// Lines of a ByteSource, each without its line ending, held one at a
+/// time: memory is the longest line, never the input. A line longer than
+/// `max_line_bytes` is measured (up to 1 MiB more, so that an endless one
+/// such as /dev/zero stops there) and reported by `too_long`.
+class LineReader {
+ public:
+  LineReader(ByteSource source, std::size_t max_line_bytes);
+  /// The next line (valid until the next call) and false at the end. When
+  /// the line is longer than the cap, `too_long(length, measured_all)` is
+  /// called instead (it must throw): `length` its bytes, or the bytes seen
+  /// when `measured_all` is false.
+  bool next(std::string_view& line, const std::function<void(std::size_t, bool)>& too_long);
+
+ private:
+  bool fill();
+  ByteSource source_;
+  std::size_t max_line_bytes_;
+  std::string buffer_;
+  std::size_t pos_ = 0;
+  bool end_ = false;
+};
 
 /// "1 MiB", "2 GiB", "512 bytes": a cap in messages.
 std::string format_bytes(std::uint64_t bytes);

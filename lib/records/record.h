@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "lib/common/optional_value.h"
 #include "lib/common/system.h"
 #include "lib/compensation/scheme.h"
 
@@ -138,21 +139,22 @@ struct RecordHeader {
   bool operator==(const RecordHeader&) const = default;
 };
 
-/// One CSV row. Empty fields are std::nullopt.
+/// One CSV row. Empty fields hold nothing (lib/common/optional_value.h:
+/// a row takes 104 bytes, so that millions of them fit).
 struct RecordRow {
   std::int64_t run = 0;       ///< run number (any integer; equals the owning RecordRun::id)
   double t_s = 0.0;           ///< time since the switch to navigation mode (s)
   Phase phase = Phase::kTest;
   /// Filtered accelerometer output error Δf^a_k (m/s²) over the interval
   /// ending at t_s, k = x, y, z; each component may be missing on its own.
-  std::array<std::optional<double>, 3> f_mps2{};
+  std::array<OptionalValue, 3> f_mps2{};
   /// Position error r_k (computed − true, m) in the ideal instrument frame a'
   /// (x north, y east, z down at t = 0). Present on every test and nav row;
   /// may be missing on align rows.
-  std::optional<Eigen::Vector3d> r_ap_m;
+  OptionalVector3 r_ap_m;
   /// Gyro torquer command rates w_k (rad/s), recorded during alignment
   /// (phase align; accepted on any row); each component may be missing.
-  std::array<std::optional<double>, 3> w_radps{};
+  std::array<OptionalValue, 3> w_radps{};
 
   bool has_f() const { return f_mps2[0] || f_mps2[1] || f_mps2[2]; }
   bool has_w() const { return w_radps[0] || w_radps[1] || w_radps[2]; }

@@ -155,10 +155,8 @@ void split_fields(std::string_view line, std::vector<Field>& out) {
 
 class Parser {
  public:
-  Parser(std::string_view text, std::string_view source_name)
-      : text_(text), name_(echo_input(source_name, kMaxShownPathBytes)) {
-    if (text_.starts_with(kBom)) text_.remove_prefix(kBom.size());
-  }
+  Parser(ByteSource source, std::string_view source_name)
+      : lines_(std::move(source), kMaxRecordLineBytes), name_(echo_input(source_name, kMaxShownPathBytes)) {}
 
   RecordFile parse() {
     RecordFile file;
@@ -201,17 +199,16 @@ class Parser {
 
   /// Next physical line without its line ending and trailing blanks.
   bool next_line(std::string_view& line) {
-    if (pos_ >= text_.size()) return false;
-    const std::size_t nl = text_.find('\n', pos_);
-    const std::size_t end = nl == std::string_view::npos ? text_.size() : nl;
+    std::string_view raw;
+    const bool got = lines_.next(raw, [&](std::size_t length, bool measured_all) {
+      fail(line_number_ + 1, kMaxRecordLineBytes + 1,
+           fmt::format("line of {}{} bytes: a record line may hold at most {} bytes", measured_all ? "" : "more than ",
+                       length, kMaxRecordLineBytes));
+    });
+    if (!got) return false;
     ++line_number_;
-    if (end - pos_ > kMaxRecordLineBytes) {
-      fail(line_number_, kMaxRecordLineBytes + 1,
-           fmt::format("line of {} bytes: a record line may hold at most {} bytes", end - pos_,
-                       kMaxRecordLineBytes));
-    }
-    line_ = trim_right(text_.substr(pos_, end - pos_));
-    pos_ = nl == std::string_view::npos ? text_.size() : nl + 1;
+    if (line_number_ == 1 && raw.starts_with(kBom)) raw.remove_prefix(kBom.size());
+    line_ = trim_right(raw);
     line = line_;
     return true;
   }
@@ -446,9 +443,8 @@ class Parser {
     }
   }
 
-  std::string_view text_;
+  LineReader lines_;
   std::string name_;
-  std::size_t pos_ = 0;
   std::size_t line_number_ = 0;
   std::string_view line_;
   std::unordered_map<std::string, std::size_t> header_lines_;
@@ -503,12 +499,12 @@ void append_optional(fmt::memory_buffer& out, const std::optional<double>& v) {
 }  // namespace
 
 RecordFile parse_record_text(std::string_view text, std::string_view source_name) {
-  return Parser(text, source_name).parse();
+  return Parser(text_source(text), source_name).parse();
 }
 
 RecordFile read_record_file(const std::filesystem::path& path) {
-  const std::string text = read_file_capped(path, kMaxRecordFileBytes, "record file");
-  return parse_record_text(text, path.string());
+  // Line by line: memory follows the rows kept, not the text.
+  return Parser(capped_file_source(path, kMaxRecordFileBytes, "record file"), path.string()).parse();
 }
 
 std::string write_record_file(const RecordFile& file, TruthKeys truth) {

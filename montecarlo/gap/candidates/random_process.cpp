@@ -24,8 +24,9 @@ std::vector<double> knots(const Layout& layout, double spacing_s) {
 /// Gauss–Markov process is resolved by knots a correlation time apart (the
 /// bridge modes below carry what lies between), within bounds that keep the
 /// model small.
-double knot_spacing(double tau) {
-  return tau > 0 ? std::clamp(tau, kMinKnotSpacingS, kKnotSpacingS) : kMinKnotSpacingS;
+double knot_spacing(double tau, const Layout& layout) {
+  const double spacing = tau > 0 ? std::clamp(tau, kMinKnotSpacingS, kKnotSpacingS) : kMinKnotSpacingS;
+  return std::max(spacing, layout_end(layout) / kMaxKnots);
 }
 
 /// Hat function of knot t_j (spacing d) and its integral from 0 to t.
@@ -84,7 +85,7 @@ Eigen::MatrixXd process_columns(const LayoutContext& ctx, Drive drive, double ta
     ctx.cache[key] = out;
     return out;
   }
-  const double d = knot_spacing(tau);
+  const double d = knot_spacing(tau, *ctx.layout);
   const std::vector<double> tk = knots(*ctx.layout, d);
   const int K = static_cast<int>(tk.size()), M = kBridgeModes;
   Eigen::MatrixXd cov(K, K);
@@ -148,7 +149,7 @@ Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma,
   e.column_var = Eigen::VectorXd::Constant(e.columns.cols(), sigma * sigma);
   // The bridges' higher modes, seen by the f rows only: of the process
   // itself (accelerometer) or of g × θ (a tilt on the horizontal axes).
-  const double rest = bridge_rest_share(kBridgeModes) * sigma * sigma * unit_diffusion(tau) * knot_spacing(tau);
+  const double rest = bridge_rest_share(kBridgeModes) * sigma * sigma * unit_diffusion(tau) * knot_spacing(tau, *ctx.layout);
   const double g = ctx.site->model.gravity_mps2;
   if (drive == Drive::kAccel) e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(rest));
   if (drive == Drive::kAngle) e.noise_var_add = f_noise(ctx, Eigen::Vector3d(g * g * rest, g * g * rest, 0.0));

@@ -12,6 +12,13 @@ namespace insmc::gap::candidates {
 /// part enters the f rows as noise.
 inline constexpr double kKnotSpacingS = 420.0;
 inline constexpr double kMinKnotSpacingS = 150.0;
+/// At most this many knots per run: a run of the report's length (15 min
+/// test run, 90 min navigation: 42 knots at 150 s) keeps the spacings above;
+/// a longer one gets knots further apart, so that the model's columns, and
+/// its cost, stop growing with the run's duration (the bridge modes and the
+/// f noise carry the finer structure, and the null is simulated through
+/// the same model, so the test keeps its level).
+inline constexpr int kMaxKnots = 48;
 
 /// What the process is: an accelerometer error, a platform angle, a gyro
 /// rate (the angle is its integral) or a velocity (the accelerometer error

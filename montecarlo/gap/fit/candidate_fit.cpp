@@ -15,6 +15,19 @@ int PreparedRuns::layout_index(const gap::Layout& layout) {
   return static_cast<int>(layouts.size() - 1);
 }
 
+int PreparedRuns::place(gap::RunData& run) {
+  for (std::size_t i = 0; i < layouts.size(); ++i)
+    if (layouts[i] == run.layout) return static_cast<int>(i);
+  for (std::size_t i = 0; i < layouts.size(); ++i) {
+    const std::size_t n = gap::rows_begun(run.layout, layouts[i]);
+    if (n == 0) continue;
+    run.layout.rows.resize(n);
+    run.values.resize(n);
+    return static_cast<int>(i);
+  }
+  return layout_index(run.layout);
+}
+
 Eigen::VectorXd run_values(const gap::RunData& run) {
   return Eigen::Map<const Eigen::VectorXd>(run.values.data(), static_cast<Eigen::Index>(run.values.size()));
 }
@@ -125,8 +138,19 @@ CandidateSums evaluate_amplitudes(const PreparedRuns& p, const gap::Candidate& c
   return out;
 }
 
-const Eigen::MatrixXd& signature_of(const CandidateSums& s, int k, int r) {
-  return s.signature[static_cast<std::size_t>(k)][static_cast<std::size_t>(s.layout_of[static_cast<std::size_t>(r)])];
+/// The signature columns of run r at grid point k: its layout's, or for a
+/// run that stopped early that layout's first rows and the estimates (the
+/// normalized values are affine in the data, row by row).
+Eigen::MatrixXd signature_of(const CandidateSums& s, int k, int r) {
+  const Eigen::MatrixXd& Z =
+      s.signature[static_cast<std::size_t>(k)][static_cast<std::size_t>(s.layout_of[static_cast<std::size_t>(r)])];
+  const Eigen::Index size = s.normalized[static_cast<std::size_t>(r)].size();
+  if (size == Z.rows()) return Z;
+  const auto L = static_cast<std::size_t>(s.layout_of[static_cast<std::size_t>(r)]);
+  const auto estimates = static_cast<Eigen::Index>(s.fit[L]->estimate_x_columns().size());
+  Eigen::MatrixXd out(size, Z.cols());
+  out << Z.topRows(size - estimates), Z.bottomRows(estimates);
+  return out;
 }
 
 /// Least squares over the multiset `runs` of the normalized values on the
@@ -136,7 +160,7 @@ Eigen::VectorXd least_squares_amplitudes(const CandidateSums& s, int k, const st
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(m, m);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(m);
   for (int r : runs) {
-    const Eigen::MatrixXd& Z = signature_of(s, k, r);
+    const Eigen::MatrixXd Z = signature_of(s, k, r);
     A += Z.transpose() * Z;
     b += Z.transpose() * s.normalized[static_cast<std::size_t>(r)];
   }

@@ -32,6 +32,10 @@ struct PreparedRuns {
 
   /// Index of `layout`, added (with its base model and keys) when new.
   int layout_index(const gap::Layout& layout);
+  /// Index of the layout `run` is analysed under: its own, or a known
+  /// layout it is the beginning of (gap::rows_begun; the run then loses
+  /// the last r row that layout lacks), else its own, added.
+  int place(gap::RunData& run);
 };
 
 Eigen::VectorXd run_values(const gap::RunData& run);

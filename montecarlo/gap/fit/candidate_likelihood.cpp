@@ -1,5 +1,7 @@
 #include "montecarlo/gap/fit/candidate_likelihood.h"
 
+#include <map>
+
 #include <memory>
 #include <optional>
 #include <utility>
@@ -17,18 +19,22 @@ namespace {
 template <class ExtensionOf>
 std::vector<double> per_run(const PreparedRuns& p, const std::vector<std::vector<gap::Extension>>& selected,
                             const ExtensionOf& extension) {
-  std::vector<std::optional<gap::RunLikelihood>> models(p.layouts.size());
+  // Keyed by layout and the run's rows: a run that stops early has the
+  // marginal likelihood of the layout's first rows.
+  std::map<std::pair<std::size_t, std::size_t>, gap::RunLikelihood> models;
   std::vector<double> out(p.runs.size());
   for (std::size_t r = 0; r < p.runs.size(); ++r) {
     const auto L = static_cast<std::size_t>(p.layout_of[r]);
-    if (!models[L]) {
+    const std::pair<std::size_t, std::size_t> key{L, p.runs[r].values.size()};
+    auto it = models.find(key);
+    if (it == models.end()) {
       std::vector<const gap::Extension*> extensions;
       for (const gap::Extension& e : selected[L]) extensions.push_back(&e);
       const std::vector<gap::Extension> added = extension(L);
       for (const gap::Extension& e : added) extensions.push_back(&e);
-      models[L].emplace(gap::combine(p.bases[L], extensions));
+      it = models.emplace(key, gap::first_rows(gap::combine(p.bases[L], extensions), key.second)).first;
     }
-    out[r] = models[L]->log_likelihood(run_values(p.runs[r]));
+    out[r] = it->second.log_likelihood(run_values(p.runs[r]));
   }
   return out;
 }

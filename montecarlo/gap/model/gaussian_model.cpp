@@ -85,4 +85,13 @@ GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>
   return m;
 }
 
+GaussianModel first_rows(GaussianModel model, Eigen::Index rows) {
+  if (rows == model.H.rows()) return model;
+  if (model.mean.size() > 0) model.mean.conservativeResize(rows);
+  model.H.conservativeResize(rows, Eigen::NoChange);
+  model.noise_var.conservativeResize(rows);
+  model.actual_noise_var.conservativeResize(rows);
+  return model;
+}
+
 }  // namespace insmc::gap

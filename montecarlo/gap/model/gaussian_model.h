@@ -90,4 +90,8 @@ struct Extension {
 /// The base model with every extension applied.
 GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>& extensions);
 
+/// The model of the first `rows` rows alone (the marginal of a run that
+/// stopped early: the same causes, the rows it has).
+GaussianModel first_rows(GaussianModel model, Eigen::Index rows);
+
 }  // namespace insmc::gap

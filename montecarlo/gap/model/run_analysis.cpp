@@ -79,13 +79,8 @@ RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model)
     estimate_var_[k] = prior[a] * (1.0 - pi(a, a));
     actual_[n + k] = std::max(0.0, (1.0 - 2.0 * pi(a, a) + around(a, a)) / (1.0 - pi(a, a)));
   }
-  for (Eigen::Index i = 0; i < n + m; ++i) {
-    const int g = i < n ? layout.rows[static_cast<std::size_t>(i)].group : kEstimatesGroup;
-    const double share = std::min(1.0, i < n ? actual_[i] / expected_[i] : actual_[i]);
-    constant_.count[g] += 1.0;
-    constant_.expected[g] += share;
-    constant_.floor[g] += 1.0 - share;
-  }
+  share_.resize(n + m);
+  for (Eigen::Index i = 0; i < n + m; ++i) share_[i] = std::min(1.0, i < n ? actual_[i] / expected_[i] : actual_[i]);
 }
 
 GroupSums RunAnalyser::analyse(const Eigen::VectorXd& y) const {
@@ -95,26 +90,40 @@ GroupSums RunAnalyser::analyse(const Eigen::VectorXd& y) const {
 
 GroupSums RunAnalyser::analyse(const Eigen::VectorXd& data, Eigen::VectorXd& z) const {
   const Eigen::VectorXd v = normalized(data);
-  z = v.head(static_cast<Eigen::Index>(layout_->rows.size()));
+  z = v.head(data.size());
   return sums_of(v);
 }
 
+Eigen::VectorXd RunAnalyser::normalized(const Eigen::VectorXd& data) const {
+  return normalized_linear(data - mean_.head(data.size()));
+}
+
 Eigen::VectorXd RunAnalyser::normalized_linear(const Eigen::VectorXd& y) const {
-  const auto n = static_cast<Eigen::Index>(layout_->rows.size());
+  // A run that stops early is the layout's first y.size() rows: the same
+  // test rows, hence the same fit, and the navigation rows it has.
+  const Eigen::Index n = y.size();
+  INSMC_ASSERT(n >= test_rows_ && n <= H_.rows(), "run of {} values for a layout of {} rows ({} test rows)", n,
+               H_.rows(), test_rows_);
   const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
   const Eigen::VectorXd c = posterior_ * (weighted_test_.transpose() * y.head(test_rows_));
   Eigen::VectorXd v(n + m);
-  v.head(n) = ((y - H_ * c).array() / expected_.array().sqrt()).matrix();
+  v.head(n) = ((y - H_.topRows(n) * c).array() / expected_.head(n).array().sqrt()).matrix();
   for (Eigen::Index k = 0; k < m; ++k) v[n + k] = c[estimate_columns_[static_cast<std::size_t>(k)]] / std::sqrt(estimate_var_[k]);
   return v;
 }
 
 GroupSums RunAnalyser::sums_of(const Eigen::VectorXd& v) const {
-  GroupSums sums = constant_;
-  const auto n = static_cast<Eigen::Index>(layout_->rows.size());
+  GroupSums sums;
+  const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
+  const Eigen::Index n = v.size() - m;  // the run's rows (a prefix of the layout's)
+  const Eigen::Index all = static_cast<Eigen::Index>(layout_->rows.size());
   for (Eigen::Index i = 0; i < v.size(); ++i) {
+    const Eigen::Index term = i < n ? i : all + (i - n);  // index into the layout's terms
     const int g = i < n ? layout_->rows[static_cast<std::size_t>(i)].group : kEstimatesGroup;
     sums.z2[g] += v[i] * v[i];
+    sums.count[g] += 1.0;
+    sums.expected[g] += share_[term];
+    sums.floor[g] += 1.0 - share_[term];
   }
   return sums;
 }

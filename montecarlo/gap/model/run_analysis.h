@@ -56,7 +56,9 @@ class RunAnalyser {
  public:
   RunAnalyser(const Layout& layout, const GaussianModel& model);
 
-  /// Group sums of one run's values (layout order).
+  /// Group sums of one run's values (layout order). A run may hold the
+  /// first rows of the layout only (it stopped early; at least the test
+  /// rows): every result is then that of those rows.
   GroupSums analyse(const Eigen::VectorXd& y) const;
   /// As analyse, also giving z (the signed normalized residual/innovation per row).
   GroupSums analyse(const Eigen::VectorXd& y, Eigen::VectorXd& z) const;
@@ -64,7 +66,7 @@ class RunAnalyser {
   /// The run's normalized values: z per row, then each resolved estimate
   /// over its expected std (the terms of the group sums). Affine in the data:
   /// normalized(y) = normalized_linear(y − model mean).
-  Eigen::VectorXd normalized(const Eigen::VectorXd& data) const { return normalized_linear(data - mean_); }
+  Eigen::VectorXd normalized(const Eigen::VectorXd& data) const;
   Eigen::VectorXd normalized_linear(const Eigen::VectorXd& y) const;
   /// Group sums of normalized values.
   GroupSums sums_of(const Eigen::VectorXd& normalized_values) const;
@@ -90,7 +92,7 @@ class RunAnalyser {
   std::vector<int> estimate_columns_;  // active indices of resolved x
   std::vector<int> estimate_x_;        // their catalogue indices
   Eigen::VectorXd estimate_var_;
-  GroupSums constant_;            // the data-independent parts of the sums
+  Eigen::VectorXd share_;         // rows + estimates: min(1, E_i/e_i), the data-independent part of the sums
   int test_rows_ = 0;
 };
 

@@ -46,7 +46,7 @@ Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& 
   });
   layout_of.resize(sim.size());
   for (std::size_t j = 0; j < sim.size(); ++j) {
-    layout_of[j] = p.layout_index(sim[j].layout);
+    layout_of[j] = p.place(sim[j]);
     // The null run's own estimates, taken off its rows as the records' are.
     if (p.site.estimators) take_off_estimates(sim[j], p.bases[static_cast<std::size_t>(layout_of[j])], estimates[j]);
   }

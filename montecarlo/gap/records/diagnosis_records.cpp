@@ -1,5 +1,7 @@
 #include "montecarlo/gap/records/diagnosis_records.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <fmt/format.h>
 #include <optional>
@@ -95,8 +97,8 @@ Records records_for_diagnosis(const RecordFile& file, const DiagnosisOptions& op
 }
 
 void take_off_estimates(gap::RunData& run, const gap::BaseModel& base, const gap::SchemeEstimates& estimates) {
-  Eigen::Map<Eigen::VectorXd>(run.values.data(), static_cast<Eigen::Index>(run.values.size())) -=
-      base.estimate_map * estimates;
+  const auto n = static_cast<Eigen::Index>(run.values.size());  // the layout's first n rows
+  Eigen::Map<Eigen::VectorXd>(run.values.data(), n) -= base.estimate_map.topRows(n) * estimates;
 }
 
 PreparedRuns prepare(const Records& records, const DiagnosisOptions& options) {
@@ -104,8 +106,17 @@ PreparedRuns prepare(const Records& records, const DiagnosisOptions& options) {
   p.site = records.site;
   p.x_var = options.prior.variance();
   p.runs = gap::extract_runs(records.file, p.site, options.extraction);
+  // The layouts no other run extends come first (in file order); a run that
+  // stops early is then analysed under the layout of a longer run it is the
+  // beginning of: its cost is that run's, not a layout of its own.
+  for (const gap::RunData& run : p.runs) {
+    const bool extended = std::any_of(p.runs.begin(), p.runs.end(), [&](const gap::RunData& other) {
+      return other.layout.rows.size() > run.layout.rows.size() && gap::rows_begun(run.layout, other.layout) > 0;
+    });
+    if (!extended) p.layout_index(run.layout);
+  }
   for (std::size_t r = 0; r < p.runs.size(); ++r) {
-    const int L = p.layout_index(p.runs[r].layout);
+    const int L = p.place(p.runs[r]);
     p.layout_of.push_back(L);
     if (!records.estimates.empty())
       take_off_estimates(p.runs[r], p.bases[static_cast<std::size_t>(L)], records.estimates[r]);

@@ -40,7 +40,7 @@ FilterWindows coarsen_filter_windows(RecordFile& file, double tau_s, double test
       int count = 0;
       double sum = 0.0, last_t = 0.0;
       bool broken = false;
-      std::optional<double>* last_value = nullptr;
+      OptionalValue* last_value = nullptr;
       const auto close = [&] {
         if (!last_value) return;
         if (!broken && count == n) {
@@ -52,7 +52,7 @@ FilterWindows coarsen_filter_windows(RecordFile& file, double tau_s, double test
         last_value = nullptr;
       };
       for (RecordRow& row : run.rows) {
-        std::optional<double>& value = row.f_mps2[static_cast<std::size_t>(k)];
+        OptionalValue& value = row.f_mps2[static_cast<std::size_t>(k)];
         if (!value || row.phase == Phase::kAlign) continue;
         // Window (t − τ, t] lies in block ceil(t/τ'): blocks of one grid. A
         // recorder's time stamps may jitter by up to 1 % of τ.

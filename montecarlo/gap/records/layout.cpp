@@ -59,6 +59,23 @@ NavSegment nav_segment_of(Scheme scheme) {
   return realigns(scheme) ? NavSegment::kRestart : resets_at_test_end(scheme) ? NavSegment::kReset : NavSegment::kContinue;
 }
 
+std::size_t rows_begun(const Layout& run, const Layout& longer) {
+  if (run.test_rows != longer.test_rows || run.nav != longer.nav || run.nav_start_s != longer.nav_start_s ||
+      run.rows.size() > longer.rows.size())
+    return 0;
+  const auto same_until = [&](std::size_t n) {
+    return std::equal(run.rows.begin(), run.rows.begin() + static_cast<std::ptrdiff_t>(n), longer.rows.begin());
+  };
+  const std::size_t n = run.rows.size();
+  if (same_until(n)) return n;
+  // The run's last r row (three axes at one time, after its test rows).
+  const bool last_is_r = n >= static_cast<std::size_t>(run.test_rows) + 3 &&
+                         std::all_of(run.rows.end() - 3, run.rows.end(), [&](const ObservationRow& r) {
+                           return r.quantity == Quantity::kR && r.t_s == run.rows.back().t_s;
+                         });
+  return last_is_r && same_until(n - 3) ? n - 3 : 0;
+}
+
 Layout Layout::test_part() const {
   Layout l;
   l.rows.assign(rows.begin(), rows.begin() + test_rows);

@@ -78,6 +78,12 @@ struct Layout {
   Layout restarted_part() const;
 };
 
+/// How many of `run`'s rows begin `longer` (the same test rows, then its
+/// navigation rows in order): all of them, or all but the last r row (its
+/// three axes), which extract_runs always keeps and a longer run need not
+/// have at that time; 0 when `run` is not the beginning of `longer`.
+std::size_t rows_begun(const Layout& run, const Layout& longer);
+
 /// What the header says about the runs (non-`truth.` keys only).
 struct RecordSite {
   System system = System::kTheodolite;

@@ -104,7 +104,8 @@ std::vector<TimeFunctionShares> time_function_shares(const std::vector<const gap
     double explained[5] = {}, total = 0;
     for (std::size_t r = 0; r < layouts.size(); ++r) {
       std::vector<double> t, v;
-      for (std::size_t i = 0; i < layouts[r]->rows.size(); ++i) {
+      // z[r] holds the run's rows: all of the layout's, or its first ones.
+      for (std::size_t i = 0; i < static_cast<std::size_t>(z[r].size()); ++i) {
         const gap::ObservationRow& row = layouts[r]->rows[i];
         if (static_cast<int>(i) < layouts[r]->test_rows || row.quantity != gap::Quantity::kR || row.axis != axis) continue;
         t.push_back(row.t_s);
@@ -146,7 +147,7 @@ namespace {
 void add_allan(const gap::Layout& layout, const Eigen::VectorXd& z, const Eigen::VectorXd& expected, int axis,
                std::map<int, std::pair<double, double>>& acc) {
   std::vector<double> e;
-  for (std::size_t i = 0; i < layout.rows.size(); ++i)
+  for (std::size_t i = 0; i < static_cast<std::size_t>(z.size()); ++i)  // the run's rows: a prefix of the layout
     if (layout.rows[i].quantity == gap::Quantity::kF && layout.rows[i].axis == axis)
       e.push_back(z[static_cast<Eigen::Index>(i)] * std::sqrt(expected[static_cast<Eigen::Index>(i)]));
   for (int m = 1; 4 * m <= static_cast<int>(e.size()); m *= 2) {

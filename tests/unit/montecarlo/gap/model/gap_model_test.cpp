@@ -418,8 +418,7 @@ TEST(GapLayout, RecordsOfOtherSoftwareAreTakenAsTheyCome) {
       row.t_s = t;
       row.phase = t <= 900.0 ? Phase::kTest : Phase::kNav;
       if (!(t > 300.0 && t < 400.0)) row.f_mps2 = {1e-4, 2e-4, 3e-4};
-      row.r_ap_m = std::fmod(t, 20.0) == 0.0 ? std::optional<Eigen::Vector3d>(Eigen::Vector3d(1.0, 2.0, 3.0))
-                                             : std::nullopt;
+      row.r_ap_m = std::fmod(t, 20.0) == 0.0 ? OptionalVector3(Eigen::Vector3d(1.0, 2.0, 3.0)) : OptionalVector3();
       if (row.r_ap_m || row.has_f()) run.rows.push_back(row);
     }
     file.runs.push_back(run);
