@@ -43,17 +43,17 @@ RunOutcome run_study_blocks(const mc::StudyConfig& c, const mc::StudyMap& map, R
         if (Clock::now() >= deadline) pause.store(true);
       };
       std::uint64_t end = first;
-      local.merge(mc::run_blocks(c, map, first, mine[i].end, on_block, &pause, &end));
+      local.merge(mc::run_blocks(c, map, first, mine[i].end, on_block, &pause, &end));  // moved in
       finished += end - first;
     }
     const std::vector<std::int64_t> status = ranks.max_all({signal(), finished < my_blocks ? 1 : 0});
     const bool complete = status[1] == 0, interrupted = status[0] != 0 && !complete;
     if (complete || plan.write_checkpoint) {
-      const mc::StudyAccumulator merged = ranks.merge(local, complete && plan.result_everywhere);
+      mc::StudyAccumulator merged = ranks.merge(local, complete && plan.result_everywhere);
       const std::vector<std::uint64_t> counts = ranks.gather(finished);
       if (ranks.root() || (complete && plan.result_everywhere)) {
         out.progress.state = start.state;
-        out.progress.state.merge(merged);
+        out.progress.state.merge(std::move(merged));
       }
       if (ranks.root()) {
         mc::BlockSet done = start.done;

@@ -40,8 +40,7 @@ OutputStats::OutputStats(double shift, double scale)
       scale_(scale > 0 && std::isfinite(scale) ? scale : 1.0),
       inv_bin_width_(AbsHistogramLayout::kBins / (AbsHistogramLayout::kRange * scale_)),
       min_(std::numeric_limits<double>::infinity()),
-      max_(-std::numeric_limits<double>::infinity()),
-      hist_(AbsHistogramLayout::kBins + 1, 0) {}
+      max_(-std::numeric_limits<double>::infinity()) {}
 
 void OutputStats::add_block(const double* v, std::size_t n) {
   // Four interleaved partial sums (fixed lanes, combined in a fixed order):
@@ -63,6 +62,7 @@ void OutputStats::add_block(const double* v, std::size_t n) {
     for (std::size_t l = 0; l < kLanes; ++l) accumulate(l, v[i + l]);
   for (std::size_t i = body; i < n; ++i) accumulate(i % kLanes, v[i]);  // the tail: lane i % kLanes
   constexpr auto kOverflow = static_cast<std::size_t>(AbsHistogramLayout::kBins);
+  if (hist_.empty()) hist_.assign(kOverflow + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const double pos = std::abs(v[i]) * inv_bin_width_;
     ++hist_[pos < static_cast<double>(kOverflow) ? static_cast<std::size_t>(pos) : kOverflow];
@@ -85,7 +85,32 @@ void OutputStats::merge(const OutputStats& o) {
   sum_r4_.merge(o.sum_r4_);
   min_ = std::min(min_, o.min_);
   max_ = std::max(max_, o.max_);
+  if (o.hist_.empty()) return;
+  if (hist_.empty()) {
+    hist_ = o.hist_;
+    return;
+  }
   for (std::size_t i = 0; i < hist_.size(); ++i) hist_[i] += o.hist_[i];
+}
+
+void OutputStats::merge(OutputStats&& o) {
+  if (n_ == 0 && hist_.empty()) {  // nothing here yet: take the other's state whole
+    INSMC_ASSERT(o.shift_ == shift_ && o.scale_ == scale_, "merging stats of different outputs");
+    *this = std::move(o);
+    return;
+  }
+  merge(static_cast<const OutputStats&>(o));
+}
+
+bool operator==(const OutputStats& a, const OutputStats& b) {
+  const auto same_hist = [&] {
+    if (a.hist_.size() == b.hist_.size()) return a.hist_ == b.hist_;
+    const auto& full = a.hist_.empty() ? b.hist_ : a.hist_;  // an empty one is all zeros
+    return std::all_of(full.begin(), full.end(), [](std::uint64_t c) { return c == 0; });
+  };
+  return a.shift_ == b.shift_ && a.scale_ == b.scale_ && a.inv_bin_width_ == b.inv_bin_width_ && a.n_ == b.n_ &&
+         a.sum_d_ == b.sum_d_ && a.sum_d2_ == b.sum_d2_ && a.sum_r2_ == b.sum_r2_ && a.sum_r4_ == b.sum_r4_ &&
+         a.min_ == b.min_ && a.max_ == b.max_ && same_hist();
 }
 
 OutputSummary OutputStats::summarize(double confidence, bool gaussian) const {
@@ -110,7 +135,7 @@ OutputSummary OutputStats::summarize(double confidence, bool gaussian) const {
   std::uint64_t cum = 0;
   s.p95_is_upper_bound = true;
   s.p95_abs = std::max(std::abs(min_), std::abs(max_));
-  for (int i = 0; i < AbsHistogramLayout::kBins; ++i) {
+  for (int i = 0; i < AbsHistogramLayout::kBins && !hist_.empty(); ++i) {
     cum += hist_[i];
     if (cum >= rank) {
       s.p95_abs = std::min((i + 1) / inv_bin_width_, s.p95_abs);
@@ -132,7 +157,11 @@ void OutputStats::append_to(std::string& out) const {
   sum_r4_.append_to(out);
   put_f64(out, min_);
   put_f64(out, max_);
-  for (std::uint64_t c : hist_) put_u64(out, c);
+  if (hist_.empty()) {
+    for (int i = 0; i <= AbsHistogramLayout::kBins; ++i) put_u64(out, 0);
+  } else {
+    for (std::uint64_t c : hist_) put_u64(out, c);
+  }
 }
 
 OutputStats OutputStats::read_from(std::string_view bytes, std::size_t& pos) {
@@ -148,6 +177,7 @@ OutputStats OutputStats::read_from(std::string_view bytes, std::size_t& pos) {
   byte_io::Reader tail(bytes, "OutputStats", pos);
   s.min_ = tail.f64();
   s.max_ = tail.f64();
+  s.hist_.assign(AbsHistogramLayout::kBins + 1, 0);
   for (auto& c : s.hist_) c = tail.u64();
   pos = tail.position();
   return s;

@@ -43,6 +43,8 @@ class OutputStats {
   /// Adds n values (one block), summed in index order.
   void add_block(const double* values, std::size_t n);
   void merge(const OutputStats& other);
+  /// The same, taking `other`'s state whole when this one has none yet.
+  void merge(OutputStats&& other);
 
   /// confidence in (0, 1); `gaussian` selects the exact chi-square interval
   /// (valid for zero-mean normal outputs) instead of the delta method.
@@ -55,14 +57,16 @@ class OutputStats {
   void append_to(std::string& out) const;
   static OutputStats read_from(std::string_view bytes, std::size_t& pos);
 
-  friend bool operator==(const OutputStats&, const OutputStats&) = default;
+  friend bool operator==(const OutputStats&, const OutputStats&);
 
  private:
   double shift_, scale_, inv_bin_width_;
   std::uint64_t n_ = 0;
   ExactSum sum_d_, sum_d2_, sum_r2_, sum_r4_;  // d = r − shift
   double min_, max_;
-  std::vector<std::uint64_t> hist_;  // kBins + 1 (overflow last)
+  // kBins + 1 (overflow last), allocated with the first value: a study holds
+  // thousands of outputs in several partial states, most never filled.
+  std::vector<std::uint64_t> hist_;
 };
 
 /// Two-sided confidence interval for an RMS from n, Σr², Σr⁴: the delta

@@ -153,6 +153,18 @@ void StudyAccumulator::merge(const StudyAccumulator& other) {
   kept_.merge(other.kept_);
 }
 
+void StudyAccumulator::merge(StudyAccumulator&& other) {
+  if (other.outputs_.empty()) return;
+  if (outputs_.empty()) {
+    *this = std::move(other);
+    return;
+  }
+  INSMC_ASSERT(other.outputs_.size() == outputs_.size(), "merging accumulators of {} and {} outputs",
+               outputs_.size(), other.outputs_.size());
+  for (size_t o = 0; o < outputs_.size(); ++o) outputs_[o].merge(std::move(other.outputs_[o]));
+  kept_.merge(other.kept_);
+}
+
 std::optional<HorizontalAccuracy> StudyAccumulator::accuracy(const StudyLayout& l, std::size_t o,
                                                              const OutputSummary& s, double confidence) const {
   const int slot = l.kept_slot[o];
@@ -229,7 +241,7 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
       tbb::simple_partitioner());
   if (finished_end) *finished_end = std::min(next.load(), end_block);
   // Exact, associative and commutative merge: the order does not matter.
-  for (const StudyAccumulator& p : partial) total.merge(p);
+  for (StudyAccumulator& p : partial) total.merge(std::move(p));
   return total;
 }
 

@@ -29,6 +29,8 @@ class StudyAccumulator {
   /// whose blocks' values go straight into the run's one store).
   explicit StudyAccumulator(const StudyMap& map, bool keep_samples = true);
   void merge(const StudyAccumulator& other);
+  /// The same, taking `other`'s states whole where this one has none yet.
+  void merge(StudyAccumulator&& other);
   std::vector<OutputStats>& outputs() { return outputs_; }
   const std::vector<OutputStats>& outputs() const { return outputs_; }
   KeptSamples& kept() { return kept_; }
