@@ -14,16 +14,6 @@
 #include "montecarlo/gap/report/report.h"
 
 namespace insmc::app {
-namespace {
-
-/// Runs of one diagnosis, over all --records files: it simulates
-/// max(200, 10 × runs) null runs and keeps them, so its memory grows with
-/// the runs (measured with one-row runs: 200 runs peak at 0.7 GB and take
-/// 7 min; 1,000 runs passed 9 GB and still grew); a test campaign records
-/// tens.
-constexpr std::size_t kMaxDiagnosedRuns = 200;
-
-}  // namespace
 
 int run_gap(const Args& args) {
   po::options_description opts("Options");
@@ -85,11 +75,11 @@ int run_gap(const Args& args) {
     files.push_back(without_truth(read_record_file(name)));
     runs += files.back().runs.size();
     for (const RecordRun& run : files.back().runs) rows += run.rows.size();
-    if (runs > kMaxDiagnosedRuns || rows > kMaxRecordRows)
+    if (runs > mc::kMaxDiagnosedRuns || rows > kMaxRecordRows)
       throw InputError("--records", echo_input(name, 256),
                        fmt::format("{} runs and {} rows up to this file: the files of one diagnosis may hold at most "
                                    "{} runs and {} rows in all",
-                                   runs, rows, kMaxDiagnosedRuns, kMaxRecordRows));
+                                   runs, rows, mc::kMaxDiagnosedRuns, kMaxRecordRows));
   }
   const RecordFile merged = mc::merge_record_files(files, names);
   mc::Diagnosis d;

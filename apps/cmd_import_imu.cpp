@@ -23,6 +23,7 @@
 #include "lib/records/record_io.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
+#include "montecarlo/gap/diagnosis.h"
 
 namespace insmc::app {
 namespace {
@@ -185,7 +186,19 @@ int run_import_imu(const Args& args) {
   if (noise_mode != "on" && noise_mode != "off") throw InputError("--noise", echo_input(noise_mode), "must be on or off");
   const std::vector<std::string> inputs = (*vm)["input"].as<std::vector<std::string>>();
   std::vector<ImuSamples> all_samples;
-  for (const std::string& input : inputs) all_samples.push_back(read_imu_csv(input, csv));
+  for (const std::string& input : inputs) {
+    all_samples.push_back(read_imu_csv(input, csv));
+    if (auto e = hole_problem(all_samples.back())) throw *e;
+  }
+  // Only files insmc itself reads: at most the runs one diagnosis takes.
+  std::size_t total_runs = 0;
+  for (const ImuSamples& samples : all_samples)
+    total_runs += runs_from == RunsFrom::kFile ? 1 : static_cast<std::size_t>(std::max(1, runs_available(samples, nav)));
+  if (total_runs > mc::kMaxDiagnosedRuns)
+    throw InputError("--runs-from", runs_from == RunsFrom::kFile ? "file" : "split",
+                     fmt::format("the inputs make {} runs: a record file for insmc gap holds at most {} (lengthen "
+                                 "--nav-duration or --test-duration, or import fewer inputs)",
+                                 total_runs, mc::kMaxDiagnosedRuns));
   if (noise_mode == "on") write_noise_header(all_samples, file.header);
 
   const double T = nav.test_duration_s;

@@ -122,7 +122,7 @@ std::string datasheet_section(const noise::NoiseAnalysis& a, const Datasheet& sh
                                       std::pair{NoiseTerm::kBiasInstability, sheet.instability(ch.kind)}}) {
       if (!given) continue;
       const auto [sheet_value, unit] = spec_value(term, ch.kind, *given);
-      const double f = *given > 0 ? sheet_value / *given : 1.0;
+      const double f = spec_value(term, ch.kind, 1.0).first;  // SI to the sheet's unit
       const auto fit = std::find_if(ch.fit.terms.begin(), ch.fit.terms.end(),
                                     [term = term](const noise::TermFit& t) { return t.term == term; });
       if (fit == ch.fit.terms.end()) {
@@ -520,7 +520,9 @@ void parse_datasheet_entry(const std::string& text, Datasheet& sheet) {
   for (const Key& k : kKeys) {
     if (key != k.name) continue;
     const double v = parse_quantity(text.substr(eq + 1), k.dimension, "--datasheet " + key);
-    require_in_range("--datasheet " + key, v, k.dimension, non_negative_range(k.dimension));
+    // A data sheet states a noise level; zero is no statement (and would
+    // leave nothing to compare the fit with).
+    require_in_range("--datasheet " + key, v, k.dimension, {0.0, magnitude_limit(k.dimension), true});
     sheet.*k.slot = v;
     return;
   }

@@ -332,6 +332,22 @@ ImuSamples parse_imu_csv(std::string_view text, std::string_view source_name, co
   return Parser(text, source_name, options).parse();
 }
 
+std::optional<InputError> hole_problem(const ImuSamples& s) {
+  if (s.size() < 3) return std::nullopt;
+  std::vector<double> steps(s.size() - 1);
+  for (std::size_t k = 0; k + 1 < s.size(); ++k) steps[k] = s.t_s[k + 1] - s.t_s[k];
+  std::vector<double> sorted = steps;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  for (std::size_t k = 0; k < steps.size(); ++k)
+    if (steps[k] > kMaxImuHoleSpacings * median)
+      return InputError(echo_input(s.source, 256), fmt::format("a step of {:g} s after t = {:g} s", steps[k], s.t_s[k]),
+                        fmt::format("a hole in the recording: steps of more than {:g} times the median spacing "
+                                    "({:g} s) are refused (import each stretch on its own)",
+                                    kMaxImuHoleSpacings, median));
+  return std::nullopt;
+}
+
 ImuSamples read_imu_csv(const std::filesystem::path& path, const ImuCsvOptions& options) {
   if (auto e = validate(options)) throw *e;
   const std::string text = read_file_capped(path, kMaxImuFileBytes, "IMU file");

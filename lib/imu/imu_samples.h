@@ -125,4 +125,13 @@ ImuSamples parse_imu_csv(std::string_view text, std::string_view source_name, co
 /// bytes 1f 8b) is refused with the command that unpacks it.
 ImuSamples read_imu_csv(const std::filesystem::path& path, const ImuCsvOptions& options);
 
+/// A step between samples longer than this many times the file's median
+/// spacing is a hole in the recording, not a logger's jitter or a dropped
+/// sample or few: the strapdown would bridge it by holding one sample.
+inline constexpr double kMaxImuHoleSpacings = 10.0;
+
+/// The first hole of `samples` (InputError naming the file, the time and
+/// the step against the median spacing), or nullopt.
+std::optional<InputError> hole_problem(const ImuSamples& samples);
+
 }  // namespace insmc

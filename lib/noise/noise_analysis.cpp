@@ -1,7 +1,10 @@
 #include "lib/noise/noise_analysis.h"
 
 #include <algorithm>
+#include <fmt/format.h>
 #include <stdexcept>
+
+#include "lib/common/input_error.h"
 
 namespace insmc::noise {
 namespace {
@@ -58,8 +61,18 @@ NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& opti
     ch.first_part_excluded = ch.stationarity.tested && !ch.stationarity.stationary;
     const std::vector<Segment>& used = ch.first_part_excluded ? rest : out.mask.kept;
     const std::vector<AllanLevel> levels = overlapping_allan(y, rec.dt_s, used);
-    if (levels.size() < 2)
-      throw std::invalid_argument("analyse_noise: too few samples for two Allan levels");
+    if (levels.size() < 2) {
+      // A property of the data, not a defect: say what was left and why.
+      std::size_t kept = 0, longest_kept = 0;
+      for (const Segment& s : used) kept += s.size(), longest_kept = std::max(longest_kept, s.size());
+      throw InputError(
+          "--input", fmt::format("{} ({} samples)", ch.name, rec.size()),
+          fmt::format("after {}{} the longest undisturbed stretch holds {} samples ({} in all): too few for two "
+                      "Allan cluster times; record longer{}",
+                      options.mask ? "masking disturbances" : "taking every sample",
+                      ch.first_part_excluded ? " and leaving out the warm-up" : "", longest_kept, kept,
+                      options.mask ? ", or give --mask off" : ""));
+    }
     ch.fit = fit_noise(levels, fit_options);
     ch.allan = allan_rows(levels, ch.fit, options.confidence);
   }

@@ -73,6 +73,10 @@ inline constexpr double kMaxFilterIntervalS = 3600.0;
 /// what the study's test run allows (preflight/test_run.h validate): at most
 /// 2 h, a whole number of filter intervals, at least 4 of them.
 inline constexpr double kMaxEstimatingTestDurationS = 2 * 3600.0;
+/// A test row stamped after T by at most this share of its spacing from the
+/// test row before is the row at T (a recorder's time-stamp jitter,
+/// docs/records.md); compensate and gap take rows within 1 % of τ of the grid.
+inline constexpr double kTestEndJitter = 0.01;
 inline constexpr int kMinTestIntervals = 4;
 
 /// Checks the value of a known header key (required or optional); returns

@@ -20,7 +20,10 @@ constexpr double kGridJitter = 0.01;
 const RecordRow* test_row_at(const RecordRun& run, double t_s, double tau_s) {
   const RecordRow* nearest = nullptr;
   for (const RecordRow& row : run.rows)
-    if (row.phase == Phase::kTest && std::abs(row.t_s - t_s) <= kGridJitter * tau_s &&
+    // The row at T may come stamped a little after it, labelled nav by a
+    // recorder that reads the phase from the time.
+    if ((row.phase == Phase::kTest || row.t_s <= t_s + kGridJitter * tau_s) &&
+        std::abs(row.t_s - t_s) <= kGridJitter * tau_s &&
         (nearest == nullptr || std::abs(row.t_s - t_s) < std::abs(nearest->t_s - t_s)))
       nearest = &row;
   return nearest;

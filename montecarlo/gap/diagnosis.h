@@ -49,6 +49,13 @@ enum class RankWhen {
   kNever,          ///< never: the gap, its significance and where it lies only (screening)
 };
 
+/// Runs of one diagnosis, over all its record files: it simulates
+/// max(200, 10 × runs) null runs and keeps them, so its memory grows with
+/// the runs (measured with one-row runs: 200 runs peak at 0.7 GB and take
+/// 7 min; 1,000 runs passed 9 GB and still grew); a test campaign records
+/// tens. import-imu writes no more.
+inline constexpr std::size_t kMaxDiagnosedRuns = 200;
+
 struct DiagnosisOptions {
   UncertaintyModel prior;           ///< Table 3.1 unless overridden
   double alpha = 0.01;              ///< false-alarm rate of "significant"

@@ -54,4 +54,26 @@ TEST(Stationarity, WarmUpDriftIsFoundAndCleanRunsPass) {
 }
 
 }  // namespace
+TEST(NoiseAnalysis, RecordingsTooShortForTwoClusterTimesAreBadInputNamingWhatWasLeft) {
+  // Eleven recordings of 5 samples each: no stretch is long enough for an
+  // Allan deviation at two cluster times. A property of the data (exit 2),
+  // never a defect (exit 3).
+  SensorRecording r;
+  r.dt_s = 0.01;
+  for (std::size_t i = 0; i < 11; ++i) {
+    r.runs.push_back({5 * i, 5 * i + 5});
+    r.run_names.push_back("copy");
+  }
+  for (std::size_t c = 0; c < kChannels; ++c)
+    r.channel[c] = test::synthetic_series({.white = 1e-4, .random_walk = 1e-8}, 55, 0.01, 7 + c);
+  NoiseOptions o;
+  o.mask = false;
+  try {
+    (void)analyse_noise(r, o);
+    FAIL() << "too short recordings were analysed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("longest undisturbed stretch holds 5 samples"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace insmc::noise

@@ -317,6 +317,19 @@ TEST(RecordIo, AcceptsMissingFinalNewline) {
   EXPECT_EQ(parse_record_text(text, "m").runs.size(), 2u);
 }
 
+TEST(RecordIo, TheLastTestRowMayBeStampedPastTByARecordersJitter) {
+  // Rows every 10 s; the one at T = 900 s stamped 0.05 s late (0.5 % of
+  // its spacing) is the row at T. 2 s late (20 %) it is refused.
+  std::vector<std::string> lines = good_lines();
+  lines.resize(6);  // the header and the column names
+  lines.push_back("1,890,test,,,,1,2,3");
+  lines.push_back("1,900.05,test,,,,1,2,3");
+  lines.push_back("1,910,nav,,,,1,2,3");
+  EXPECT_EQ(parse_record_text(join(lines), "jitter.csv").runs.front().rows.size(), 3u);
+  lines[7] = "1,902,test,,,,1,2,3";
+  EXPECT_THROW(parse_record_text(join(lines), "late.csv"), InputError);
+}
+
 struct BadCase {
   const char* name;
   std::vector<std::string> lines;
@@ -393,7 +406,7 @@ TEST(RecordIo, BadFilesGiveFileLineColumn) {
       {"phase_order", with_appended({"1,970,test,,,,1,2,3"}), 12, 7, "phase 'test' after 'nav' in run 1"},
       {"align_after_test", with_line(9, "1,1,align,,,,1,2,3"), 9, 5, "phase 'align' after 'test'"},
       {"align_time", with_line(7, "1,0,align,,,,,,"), 7, 3, "alignment rows need t_s < 0"},
-      {"test_time", with_line(9, "1,901,test,,,,1,2,3"), 9, 3, "test rows need 0 <= t_s <= test_duration_s = 900"},
+      {"test_time", with_line(9, "1,950,test,,,,1,2,3"), 9, 3, "test rows need 0 <= t_s <= test_duration_s = 900"},
       {"nav_time", with_appended({"2,900,nav,,,,1,1,1"}), 12, 3, "nav rows need t_s > test_duration_s = 900"},
       {"missing_r", with_line(10, "1,960,nav,1,2,3,,,"), 10, 17, "r is required on test and nav rows"},
       {"partial_r", with_line(10, "1,960,nav,,,,4,,6"), 10, 16, "r_y is empty but r_x is not"},
