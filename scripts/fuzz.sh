@@ -12,7 +12,7 @@
 set -euo pipefail
 seconds=${1:?usage: scripts/fuzz.sh SECONDS}
 root=$(cd "$(dirname "$0")/.." && pwd)
-targets=(records imu bounds config checkpoint quantity run_json)
+targets=(records imu bounds config checkpoint quantity run_json options)
 
 packages=(clang libclang-rt-14-dev ccache cmake make libeigen3-dev libtbb-dev libboost-program-options-dev
           libboost-dev libfmt-dev nlohmann-json3-dev)

@@ -1,5 +1,7 @@
 #include "montecarlo/engine/engine.h"
 
+#include "montecarlo/aggregate/accumulator_state.h"
+
 #include <Eigen/Core>
 #include <algorithm>
 #include <functional>
@@ -173,25 +175,13 @@ std::optional<HorizontalAccuracy> StudyAccumulator::accuracy(const StudyLayout& 
                              confidence);
 }
 
-std::string StudyAccumulator::serialize() const {
-  std::string out = "insmc-acc2";
-  const std::uint64_t n = outputs_.size();
-  for (int b = 0; b < 8; ++b) out.push_back(static_cast<char>((n >> (8 * b)) & 0xff));
-  for (const auto& s : outputs_) s.append_to(out);
-  kept_.append_to(out);
-  return out;
-}
+std::string StudyAccumulator::serialize() const { return serialize_state(outputs_, kept_); }
 
 StudyAccumulator StudyAccumulator::deserialize(std::string_view bytes) {
-  if (bytes.substr(0, 10) != "insmc-acc2") throw std::runtime_error("not an insmc accumulator state (of this version)");
-  std::size_t pos = 10;
-  if (bytes.size() < pos + 8) throw std::runtime_error("accumulator state truncated");
-  std::uint64_t n = 0;
-  for (int b = 0; b < 8; ++b) n |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[pos++])) << (8 * b);
+  AccumulatorState state = deserialize_state(bytes);
   StudyAccumulator acc;
-  for (std::uint64_t o = 0; o < n; ++o) acc.outputs_.push_back(OutputStats::read_from(bytes, pos));
-  acc.kept_ = KeptSamples::read_from(bytes, pos);
-  if (pos != bytes.size()) throw std::runtime_error("accumulator state has trailing bytes");
+  acc.outputs_ = std::move(state.outputs);
+  acc.kept_ = std::move(state.kept);
   return acc;
 }
 

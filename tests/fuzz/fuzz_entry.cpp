@@ -1,5 +1,7 @@
 #include "tests/fuzz/fuzz_entry.h"
 
+#include "montecarlo/aggregate/accumulator_state.h"
+
 #include <boost/program_options.hpp>
 
 #include <array>
@@ -13,6 +15,8 @@
 #include "apps/checkpoint.h"
 #include "apps/config_file.h"
 #include "apps/run_file.h"
+#include "apps/study_options.h"
+#include "apps/sweep.h"
 #include "lib/common/input_error.h"
 #include "lib/imu/imu_samples.h"
 #include "lib/records/record_io.h"
@@ -97,11 +101,48 @@ Outcome checkpoint(std::string_view data) {
   } else {
     bytes = std::string(data.substr(1));
   }
-  return guarded([&] { app::decode_checkpoint(bytes, "fuzz.ck"); });
+  return guarded([&] {
+    const app::Checkpoint ck = app::decode_checkpoint(bytes, "fuzz.ck");
+    // The state as run --resume reads it; one it accepts is written back the same.
+    try {
+      // Read, written and read again: the second writing is the first.
+      const mc::AccumulatorState state = mc::deserialize_state(ck.state);
+      const std::string once = mc::serialize_state(state.outputs, state.kept);
+      const mc::AccumulatorState again = mc::deserialize_state(once);
+      if (mc::serialize_state(again.outputs, again.kept) != once) fail("checkpoint state differs after a round trip");
+    } catch (const std::runtime_error&) {
+      throw InputError("fuzz.ck", "state", "corrupt");  // what run --resume says of it
+    }
+  });
 }
 
 Outcome run_json(std::string_view data) {
   return guarded([&] { app::run_arguments_from_json(data, "fuzz.json"); });
+}
+
+Outcome options(std::string_view data) {
+  app::Args args;
+  constexpr std::size_t kMaxTokens = 64;
+  while (!data.empty() && args.size() < kMaxTokens) {
+    const std::size_t nl = data.find('\n');
+    std::string token(data.substr(0, nl));
+    data = nl == std::string_view::npos ? std::string_view() : data.substr(nl + 1);
+    if (token.find("config") != std::string::npos) continue;  // would read a file
+    args.push_back(std::move(token));
+  }
+  namespace po = boost::program_options;
+  po::options_description opts("Options");
+  opts.add(app::study_options_description(true));
+  return guarded([&] {
+    try {
+      const auto vm = app::parse_args(args, "run", "", opts, app::Lists::kSweeps);
+      if (!vm) return;
+      const mc::StudyConfig config = app::read_study_config(*vm, true);
+      app::check_sweep_points(config, app::find_sweeps(*vm));
+    } catch (const po::error& e) {
+      throw InputError(e.what());  // main's one line, exit 2
+    }
+  });
 }
 
 Outcome quantity(std::string_view data) {

@@ -31,6 +31,10 @@ Outcome checkpoint(std::string_view data);
 Outcome quantity(std::string_view data);
 /// run.json's settings.arguments (apps/run_file.h), as `run --from` reads them.
 Outcome run_json(std::string_view data);
+/// The option parser: lines of the input as the arguments of `insmc run`
+/// (no --config, which would read a file), parsed, checked and turned into
+/// the study with every sweep point, as run does before any work.
+Outcome options(std::string_view data);
 
 struct Target {
   std::string_view name;  ///< tests/fuzz/corpus/<name>, regressions/<name>, fuzz_<name>
@@ -38,6 +42,6 @@ struct Target {
 };
 inline constexpr Target kTargets[] = {{"records", records}, {"imu", imu},               {"bounds", bounds},
                                       {"config", config},   {"checkpoint", checkpoint}, {"quantity", quantity},
-                                      {"run_json", run_json}};
+                                      {"run_json", run_json}, {"options", options}};
 
 }  // namespace insmc::fuzz
