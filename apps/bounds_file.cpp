@@ -170,11 +170,15 @@ class BoundsParser {
       } catch (const InputError& e) {
         fail(value.column, e.what());
       }
+      b.unit = value.text.ends_with("nmi") || value.text.ends_with("NM") ? mc::LengthUnit::kNauticalMile
+               : value.text.ends_with("ft")                              ? mc::LengthUnit::kFoot
+                                                                         : mc::LengthUnit::kMetre;
     } else {
       const std::string_view unit = key.substr(metric_name.size() + 1);
       const auto u = std::find_if(kKeyUnits.begin(), kKeyUnits.end(), [&](const auto& k) { return k.first == unit; });
       if (u == kKeyUnits.end()) fail(t.column, fmt::format("limit {}: expected {}", quote(t.text), kLimitForms));
       x = number(value, key) * u->second;
+      b.unit = unit == "nmi" ? mc::LengthUnit::kNauticalMile : unit == "ft" ? mc::LengthUnit::kFoot : mc::LengthUnit::kMetre;
     }
     // A position error beyond the earth's circumference means nothing; a
     // larger number is a typo (1e306 nmi once became inf m and held).

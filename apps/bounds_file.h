@@ -15,6 +15,7 @@
 
 #include "lib/common/system.h"
 #include "lib/compensation/scheme.h"
+#include "montecarlo/write/length_unit.h"
 #include "montecarlo/study/output_layout.h"
 
 namespace insmc::app {
@@ -47,6 +48,7 @@ struct Bound {
   double t_s = 0.0;
   BoundMetric metric = BoundMetric::kRms;
   double limit_m = 0.0;
+  mc::LengthUnit unit = mc::LengthUnit::kMetre;  ///< the unit the limit was written in (km as m)
   std::optional<double> confidence;
 };
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "apps/subcommands.h"
+#include "lib/common/input_text.h"
 #include "lib/common/model_options.h"
 
 namespace insmc::app {
@@ -47,6 +48,19 @@ std::uint64_t read_count(const po::variables_map& vm, const std::string& name);
 po::options_description model_options_description();
 /// Reads them; `system2_used` enables the |L0| < 90° check of (2.16).
 ModelOptions read_model_options(const po::variables_map& vm, bool system2_used);
+
+/// `read()`, the reader of input file `path` given with `option`: a file
+/// that cannot be opened or read is named with its option ("--records =
+/// PATH: cannot open the record file: ..."); what is wrong inside it keeps
+/// its FILE:LINE:COLUMN message.
+template <class Read>
+auto read_input(const std::string& option, const std::string& path, Read&& read) {
+  try {
+    return read();
+  } catch (const FileReadError& e) {
+    throw InputError(option, echo_input(path, 256), e.why());
+  }
+}
 
 /// Files to write into an output folder: (file name, contents); written
 /// as one set by apps/output_paths.h.

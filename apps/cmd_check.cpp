@@ -11,6 +11,7 @@
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
 #include "lib/units/units.h"
+#include "montecarlo/write/interval_format.h"
 #include "montecarlo/engine/engine.h"
 #include "montecarlo/write/csv.h"
 
@@ -41,8 +42,11 @@ int run_check(const Args& args) {
   const auto vm = parse_args(args, "check", "--bounds FILE [study options]", opts);
   if (!vm) return 0;
   if (!vm->count("bounds")) throw InputError("--bounds", "(missing)", "give the file of bounds to check");
-  const std::vector<Bound> bounds = read_bounds_file((*vm)["bounds"].as<std::string>());
+  const std::string bounds_path = (*vm)["bounds"].as<std::string>();
+  const std::vector<Bound> bounds = read_input("--bounds", bounds_path, [&] { return read_bounds_file(bounds_path); });
   mc::StudyConfig config = read_study_config(*vm, true);
+  const mc::LengthUnit unit = read_length_unit(*vm);
+  const bool units_given = !(*vm)["units"].defaulted();
   // Run exactly what the bounds need: their systems, schemes and times.
   config.systems.clear();
   config.schemes.clear();
@@ -72,11 +76,18 @@ int run_check(const Args& args) {
       // Violated unless the upper confidence limit lies at or below the bound.
       const bool ok = e.hi <= b.limit_m;
       if (!ok) ++violated;
-      fmt::print("{} line {}: scheme={} system={} axis={} t_min={}: {} {} m, upper {}% limit {} m {} bound {} m\n",
+      // In --units when given, else in the unit the bound was written in;
+      // the estimate to the place its interval supports.
+      const mc::LengthUnit u = units_given ? unit : b.unit;
+      const double k = mc::length_factor(u);
+      const std::optional<int> place = mc::interval_place(k * (e.hi - e.lo) / 2);
+      const auto at_place = [&](double x) { return place ? mc::format_at_place(x, *place) : mc::format_significant(x, 6); };
+      fmt::print("{} line {}: scheme={} system={} axis={} t_min={}: {} {} {}, upper {}% limit {} {} {} bound {} {}\n",
                  ok ? "ok      " : "VIOLATED", b.line, to_string(b.scheme), system_number(b.system),
-                 to_string(b.axis), mc::format_number(b.t_s / 60), names_of(b.metric).label, mc::format_number(e.value),
-                 mc::format_number(100 * conf), mc::format_number(e.hi), ok ? "<=" : ">",
-                 mc::format_number(b.limit_m));
+                 to_string(b.axis), mc::format_number(b.t_s / 60), names_of(b.metric).label,
+                 mc::format_with_interval(k * e.value, k * (e.hi - e.lo) / 2), mc::length_suffix(u),
+                 mc::format_number(100 * conf), at_place(k * e.hi), mc::length_suffix(u), ok ? "<=" : ">",
+                 fmt::format("{:.6g}", k * b.limit_m), mc::length_suffix(u));
     }
   }
   if (violated) fmt::print(stderr, "insmc check: {} of {} bounds violated\n", violated, bounds.size());

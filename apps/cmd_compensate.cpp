@@ -123,7 +123,7 @@ int run_compensate(const Args& args) {
       "compensate");
 
   const std::string name = (*vm)["records"].as<std::string>();
-  const RecordFile file = read_record_file(name);
+  const RecordFile file = read_input("--records", name, [&] { return read_record_file(name); });
   const std::size_t units = options.run ? 1 : file.runs.size();
   if (units > kMaxUnits)
     throw InputError("--records", echo_input(name, 256),

@@ -72,7 +72,7 @@ int run_gap(const Args& args) {
   std::vector<RecordFile> files;
   std::size_t runs = 0, rows = 0;
   for (const std::string& name : names) {
-    files.push_back(without_truth(read_record_file(name)));
+    files.push_back(without_truth(read_input("--records", name, [&] { return read_record_file(name); })));
     runs += files.back().runs.size();
     for (const RecordRun& run : files.back().runs) rows += run.rows.size();
     if (runs > mc::kMaxDiagnosedRuns || rows > kMaxRecordRows)

@@ -187,7 +187,7 @@ int run_import_imu(const Args& args) {
   const std::vector<std::string> inputs = (*vm)["input"].as<std::vector<std::string>>();
   std::vector<ImuSamples> all_samples;
   for (const std::string& input : inputs) {
-    all_samples.push_back(read_imu_csv(input, csv));
+    all_samples.push_back(read_input("--input", input, [&] { return read_imu_csv(input, csv); }));
     if (auto e = hole_problem(all_samples.back())) throw *e;
   }
   // Only files insmc itself reads: at most the runs one diagnosis takes.

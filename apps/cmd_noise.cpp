@@ -75,7 +75,7 @@ int run_noise(const Args& args) {
 
   std::vector<ImuSamples> recordings;
   for (const std::string& input : (*vm)["input"].as<std::vector<std::string>>()) {
-    recordings.push_back(read_imu_csv(input, csv));
+    recordings.push_back(read_input("--input", input, [&] { return read_imu_csv(input, csv); }));
     if (recordings.back().size() < kMinNoiseSamples)
       throw InputError("--input", echo_input(input, 256),
                        fmt::format("{} samples: a noise analysis needs at least {} per recording",

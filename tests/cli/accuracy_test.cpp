@@ -124,7 +124,10 @@ TEST(Accuracy, CheckJudgesCep50AndP95BoundsByTheirUpperLimits) {
   const auto fail = run_insmc("check --samples 2000 --bounds " + tight);
   EXPECT_EQ(fail.exit_code, 1) << fail.out << fail.err;
   EXPECT_TRUE(has(fail.out, "VIOLATED line 1: scheme=none system=2 axis=horizontal t_min=84: CEP50 ")) << fail.out;
-  EXPECT_TRUE(has(fail.out, "> bound 1296.4 m")) << fail.out;
+  // In the unit the bound was written in, to the digits its interval supports.
+  EXPECT_TRUE(has(fail.out, "> bound 0.7 nmi")) << fail.out;
+  const auto in_metres = run_insmc("check --samples 2000 --units si --bounds " + tight);
+  EXPECT_TRUE(has(in_metres.out, "> bound 1296.4 m")) << in_metres.out;
 }
 
 TEST(Accuracy, CheckRefusesBadPercentileBoundsWithOneLine) {

@@ -1,5 +1,6 @@
 #include "tests/cli/run_program.h"
 
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
@@ -7,6 +8,7 @@
 #include <spawn.h>
 #include <sstream>
 #include <stdexcept>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -48,6 +50,25 @@ ProgramResult run_insmc(const std::string& args) {
   command += ' ';
   command += args;
   return run_shell(command);
+}
+
+ProgramResult run_limited(const std::string& args, int seconds) {
+  TempDir io;
+  const std::string cmd = "exec timeout -s KILL " + std::to_string(seconds) + " " + insmc_path() + " " + args + " >" +
+                          (io.path() / "out").string() + " 2>" + (io.path() / "err").string() + " </dev/null";
+  const char* argv[] = {"/bin/sh", "-c", cmd.c_str(), nullptr};
+  pid_t pid = -1;
+  if (posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0)
+    throw std::runtime_error("posix_spawn failed: " + cmd);
+  int status = 0;
+  struct rusage usage {};
+  while (wait4(pid, &status, 0, &usage) < 0)
+    if (errno != EINTR) throw std::runtime_error("wait4 failed");
+  // timeout exits 128 + 9 when it killed insmc, and passes a signal on as 128 + signal.
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
+  ProgramResult r{code, read_file(io.path() / "out"), read_file(io.path() / "err")};
+  r.peak_rss_kb = usage.ru_maxrss;
+  return r;
 }
 
 BackgroundProgram::BackgroundProgram(const std::string& command) {

@@ -10,6 +10,7 @@ namespace insmc::testing {
 struct ProgramResult {
   int exit_code;
   std::string out, err;
+  long peak_rss_kb = 0;  ///< run_limited only: the largest resident size of the program
 };
 
 /// `args` is appended to the program path; it is passed through /bin/sh.
@@ -23,6 +24,11 @@ inline bool has(const std::string& text, const std::string& what) { return text.
 
 /// A whole /bin/sh command line (e.g. insmc under mpirun), run to the end.
 ProgramResult run_shell(const std::string& command);
+
+/// insmc with `args` (through /bin/sh), killed after `seconds`; the exit
+/// code is 128 + the signal when a signal ended it, and peak_rss_kb the
+/// largest resident size it reached (getrusage of the waited child).
+ProgramResult run_limited(const std::string& args, int seconds);
 
 /// A fresh empty folder under the system temp dir, removed by the destructor.
 class TempDir {
