@@ -210,7 +210,7 @@ int run_command(const Args& args, Ranks& ranks) {
     try {
       kept = given_options(read_run_arguments(from), opts);
     } catch (const po::error& e) {
-      throw InputError("--from", echo_input(from), std::string("settings.arguments: ") + e.what());
+      throw InputError("--from", echo_input(from), "settings.arguments: " + parse_error_message(e));
     }
     for (const GivenOption& o : kept)
       if (const std::string why = refused_from(o.name, OptionSource::kRunFile); !why.empty())
@@ -421,7 +421,7 @@ int run_run(const Args& args) {
     if (ranks->root()) fmt::print(stderr, "insmc run: {}\n", e.what());
     return 2;
   } catch (const po::error& e) {
-    if (ranks->root()) fmt::print(stderr, "insmc run: {} (see insmc run --help)\n", e.what());
+    if (ranks->root()) fmt::print(stderr, "insmc run: {} (see insmc run --help)\n", parse_error_message(e));
     return 2;
   } catch (const std::exception& e) {  // the other ranks may be waiting for this one: end them all
     fmt::print(stderr, "insmc run: error on rank {}: {}\n", ranks->rank(), e.what());

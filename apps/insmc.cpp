@@ -8,6 +8,7 @@
 #include <new>
 #include <string_view>
 
+#include "apps/option_sources.h"
 #include "apps/subcommands.h"
 #include "lib/common/input_error.h"
 #include "lib/common/version.h"
@@ -78,7 +79,8 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "insmc {}: {}\n", sub.name, e.what());
       return 2;
     } catch (const boost::program_options::error& e) {
-      fmt::print(stderr, "insmc {}: {} (see insmc {} --help)\n", sub.name, e.what(), sub.name);
+      fmt::print(stderr, "insmc {}: {} (see insmc {} --help)\n", sub.name, insmc::app::parse_error_message(e),
+                 sub.name);
       return 2;
     } catch (const std::bad_alloc&) {
       // Every input is capped (docs/robustness.md), but the caps allow more

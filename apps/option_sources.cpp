@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 
+#include "lib/common/input_text.h"
+
 namespace insmc::app {
 namespace {
 
@@ -27,6 +29,23 @@ std::string refused_from(std::string_view name, OptionSource source) {
   if (source == OptionSource::kRunFile && among(kShows, name))
     return "only chooses how results are shown, which insmc never keeps in a run file";
   return {};
+}
+
+namespace {
+/// Boost keeps the substitutions protected; a pointer to the member, taken
+/// through a derived class, reads them from any error (a legal access).
+struct SubstitutionsOf : boost::program_options::error_with_option_name {
+  static constexpr auto kMember = &SubstitutionsOf::m_substitutions;
+};
+}  // namespace
+
+std::string parse_error_message(const boost::program_options::error& e) {
+  const auto* named = dynamic_cast<const boost::program_options::error_with_option_name*>(&e);
+  if (named == nullptr) return e.what();
+  for (const auto& [key, value] : named->*SubstitutionsOf::kMember)
+    if (value.find('%') != std::string::npos)
+      return "the option " + echo_input(named->get_option_name()) + " is not understood (it holds a '%')";
+  return e.what();
 }
 
 const std::vector<std::string>& not_in_run_files() {

@@ -7,6 +7,7 @@
 /// --from, --resume, --replay, another --config) or name a path insmc writes
 /// (--out, --checkpoint): a downloaded run.json must never write where the
 /// user did not ask (docs/robustness.md).
+#include <boost/program_options/errors.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,5 +26,12 @@ std::string refused_from(std::string_view name, OptionSource source);
 
 /// The options a run file never holds: they act, write or only show.
 const std::vector<std::string>& not_in_run_files();
+
+/// The one-line message of Boost's parse error `e`. Boost fills its
+/// message by replacing %name% placeholders (%option%, %value%,
+/// %original_token%, ...) with the tokens until none is left, so a token
+/// holding one (`--x%value%`) made what() loop for ever; such an error is
+/// told by the option's name alone.
+std::string parse_error_message(const boost::program_options::error& e);
 
 }  // namespace insmc::app

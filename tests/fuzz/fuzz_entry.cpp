@@ -14,6 +14,7 @@
 #include "apps/bounds_file.h"
 #include "apps/checkpoint.h"
 #include "apps/config_file.h"
+#include "apps/option_sources.h"
 #include "apps/run_file.h"
 #include "apps/study_options.h"
 #include "apps/sweep.h"
@@ -140,7 +141,7 @@ Outcome options(std::string_view data) {
       const mc::StudyConfig config = app::read_study_config(*vm, true);
       app::check_sweep_points(config, app::find_sweeps(*vm));
     } catch (const po::error& e) {
-      throw InputError(e.what());  // main's one line, exit 2
+      throw InputError(app::parse_error_message(e));  // main's one line, exit 2
     }
   });
 }
