@@ -15,6 +15,10 @@ namespace {
 
 constexpr int kDraws = 256;            // runs drawn for the r-row covariance
 constexpr double kStepS = 5.0;         // counting steps (closed form within each)
+/// At most this many steps a run: beyond 5.5 h the steps grow, so that a
+/// run's counting costs what its rows do, not its hours (the slow axes,
+/// whose sawtooth the columns carry, change little within a longer step).
+constexpr double kMaxSteps = 4000.0;
 constexpr int kMaxColumns = 32;
 constexpr double kKeptComponent = 0.5;  // in units of a row's scale², summed over rows
 constexpr std::uint64_t kSeed = 0x19690521ULL;
@@ -95,14 +99,15 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
   }
   if (r_rows.empty()) return out;
 
-  // Steps of at most kStepS that land on every r-row time. The record
+  // Steps of at most step_s that land on every r-row time. The record
   // reader holds times within 48 h; the check keeps this loop bounded for
   // layouts built any other way.
   if (!(end <= magnitude_limit(Dimension::kTime)))
     throw InputError("record row time", format_quantity(end, Dimension::kTime),
                      "must lie within " + format_quantity(magnitude_limit(Dimension::kTime), Dimension::kTime));
   std::vector<double> grid;
-  for (double t = 0.0; t < end; t += kStepS) grid.push_back(t);
+  const double step_s = std::max(kStepS, end / kMaxSteps);
+  for (double t = 0.0; t < end; t += step_s) grid.push_back(t);
   for (Eigen::Index i : r_rows) grid.push_back(layout.rows[static_cast<std::size_t>(i)].t_s);
   // After a reset at T the position integral starts again there (the
   // counters go on).
