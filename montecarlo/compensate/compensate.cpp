@@ -74,17 +74,28 @@ CompensateResult compensate(const RecordFile& file, const CompensateOptions& opt
   out.records = read_unit_records(file, options.prior, options.run, options.site_gravity_mps2);
   out.clock_s = envelope_times(options);
   out.identifiability = identifiability(out.records, options.prior);
+  // What depends on the test-run layout alone is built once per layout
+  // (every unit of a file, as a rule), not once per unit.
+  std::vector<UnitConditioning> conditionings;
+  std::vector<std::vector<SchemeModel>> scheme_models;
   for (const UnitTestRun& run : out.records.runs) {
     UnitResult u;
     u.run = run.id;
-    const UnitPosterior posterior = condition_unit(out.records, run, options.prior);
+    std::size_t L = 0;
+    while (L < conditionings.size() && !(conditionings[L].layout == run.layout)) ++L;
+    if (L == conditionings.size()) conditionings.push_back(unit_conditioning(out.records, run.layout, options.prior));
+    const UnitPosterior posterior = condition_unit(out.records, run, conditionings[L]);
+    if (L == scheme_models.size()) {
+      scheme_models.emplace_back();
+      for (Scheme s : options.schemes)
+        scheme_models.back().push_back(
+            scheme_model(out.records, posterior, s, options.prior, out.clock_s, options.realignment_duration_s));
+    }
     u.estimates = estimate_unit(out.records, posterior, options.prior);
     u.consistency_chi2 = posterior.consistency_chi2;
     u.consistency_dof = posterior.consistency_dof;
     u.consistency_p = posterior.consistency_p;
-    for (Scheme s : options.schemes)
-      u.schemes.push_back(
-          predict_scheme(out.records, run, posterior, s, options.prior, out.clock_s, options.realignment_duration_s));
+    for (const SchemeModel& m : scheme_models[L]) u.schemes.push_back(predict_scheme(out.records, run, posterior, m));
     std::vector<std::pair<double, std::size_t>> at_flight;
     for (std::size_t i = 0; i < u.schemes.size(); ++i)
       at_flight.emplace_back(at_time(u.schemes[i], options.flight_time_s).unit_horizontal_rms_m(), i);

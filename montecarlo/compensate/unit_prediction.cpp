@@ -196,22 +196,40 @@ std::vector<Identifiability> identifiability(const UnitRecords& records, const U
   return out;
 }
 
-UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run, const UncertaintyModel& prior) {
+UnitConditioning unit_conditioning(const UnitRecords& records, const gap::Layout& layout, const UncertaintyModel& prior) {
   const gap::RecordSite site = site_for(records, Scheme::kNone, 0.0);
-  const gap::BaseModel base = gap::make_base_model(run.layout, site, prior.variance());
+  const gap::BaseModel base = gap::make_base_model(layout, site, prior.variance());
+  UnitConditioning u;
+  u.layout = layout;
+  u.model = gap::combine(base, {});
+  count_f_remainders(u.model, layout, site.dv_pulse_mps, site.filter_interval_s);
+  LinearGain gain = linear_gain(u.model);
+  u.gain = std::move(gain.G);
+  u.error_covariance = std::move(gain.error_covariance);
+  u.row_covariance = std::move(gain.S);
+  u.cause_mean = cause_prior_mean(base, u.model, prior.mean());
+  u.estimates_map = estimates_of_test_rows(records, layout);
+  return u;
+}
+
+UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run, const UncertaintyModel& prior) {
+  return condition_unit(records, run, unit_conditioning(records, run.layout, prior));
+}
+
+UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run, const UnitConditioning& shared) {
+  INSMC_ASSERT(run.layout == shared.layout, "run {} conditioned on another layout", run.id);
+  const gap::RecordSite site = site_for(records, Scheme::kNone, 0.0);
   UnitPosterior c;
-  c.model = gap::combine(base, {});
-  count_f_remainders(c.model, run.layout, site.dv_pulse_mps, site.filter_interval_s);
-  const LinearGain gain = linear_gain(c.model);
-  c.cause_mean = cause_prior_mean(base, c.model, prior.mean());
+  c.model = shared.model;
+  c.cause_mean = shared.cause_mean;
   const Eigen::VectorXd innovation = run.values - c.model.mean - c.model.H * c.cause_mean;
-  c.cause_estimate = c.cause_mean + gain.G * innovation;
-  c.error_covariance = gain.error_covariance;
-  c.consistency_chi2 = innovation.dot(gain.S.solve(innovation));
+  c.cause_estimate = c.cause_mean + shared.gain * innovation;
+  c.error_covariance = shared.error_covariance;
+  c.consistency_chi2 = innovation.dot(shared.row_covariance.solve(innovation));
   c.consistency_dof = static_cast<int>(innovation.size());
   c.consistency_p = boost::math::cdf(
       boost::math::complement(boost::math::chi_squared(c.consistency_dof), std::max(c.consistency_chi2, 0.0)));
-  c.estimates_map = estimates_of_test_rows(records, run.layout);
+  c.estimates_map = shared.estimates_map;
   const TestRunEstimators& est = *site.estimators;
   const Eigen::Vector4d per_r0 = est.position * Eigen::VectorXd::Ones(est.position.cols());
   const Vec3 r0 = LinearErrorModel(site.system, site.model).initial_position() * c.cause_estimate.head(ux::kDim);
@@ -261,6 +279,13 @@ std::vector<UnitEstimate> estimate_unit(const UnitRecords& records, const UnitPo
 SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& run, const UnitPosterior& posterior,
                                 Scheme scheme, const UncertaintyModel& prior, const std::vector<double>& clock_s,
                                 double realignment_duration_s) {
+  return predict_scheme(records, run, posterior,
+                        scheme_model(records, posterior, scheme, prior, clock_s, realignment_duration_s));
+}
+
+SchemeModel scheme_model(const UnitRecords& records, const UnitPosterior& posterior, Scheme scheme,
+                         const UncertaintyModel& prior, const std::vector<double>& clock_s,
+                         double realignment_duration_s) {
   const gap::RecordSite site = site_for(records, scheme, realignment_duration_s);
   const double T = site.test_duration_s;
   // The navigation after the scheme alone, on the record's clock.
@@ -286,8 +311,13 @@ SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& r
   // readout's, not the position error's).
   const Eigen::VectorXd nav_noise = model.actual_noise_var - base.actual_noise_var;
 
-  const Eigen::VectorXd unit_mean =
-      A_x * posterior.cause_estimate.head(ux::kDim) + A_o * mu.tail(others) + E * estimate_vector(run.estimates);
+  SchemeModel m;
+  m.scheme = scheme;
+  m.clock_s = clock_s;
+  m.realignment_duration_s = realignment_duration_s;
+  m.position_per_cause = A_x;
+  m.position_of_others = A_o * mu.tail(others);
+  m.position_per_estimate = E;
   Eigen::MatrixXd unit_cov = A_x * posterior.error_covariance.topLeftCorner(ux::kDim, ux::kDim) * A_x.transpose() +
                              A_o * var_o.asDiagonal() * A_o.transpose();
   unit_cov.diagonal() += nav_noise;
@@ -302,22 +332,31 @@ SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& r
                         EB * test.actual_noise_var.asDiagonal() * EB.transpose() +
                         A_o * var_o.asDiagonal() * A_o.transpose() + pop_mean * pop_mean.transpose();
   pop.diagonal() += nav_noise;
-
-  SchemePrediction out;
-  out.scheme = scheme;
-  out.ready_time_s = ready_time_s(scheme, T, realignment_duration_s);
-  out.compensation = compensation_of(scheme, records, posterior.crew_estimates);
   const double frame_offset = frame_time_offset_s(scheme, T);
   for (std::size_t j = 0; j < clock_s.size(); ++j) {
     const auto r = static_cast<Eigen::Index>(3 * j);
     UnitPositionError p;
     p.t_s = clock_s[j];
-    p.mean_m = unit_mean.segment<3>(r);
     p.covariance_m2 = unit_cov.block<3, 3>(r, r);
     p.population_m2 = pop.block<3, 3>(r, r);
     p.horizontal = local_level_horizontal(frame_offset + clock_s[j], site.model);
-    out.envelope.push_back(p);
+    m.envelope.push_back(p);
   }
+  return m;
+}
+
+SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& run, const UnitPosterior& posterior,
+                                const SchemeModel& m) {
+  // The unit's own part: its estimate of x and its crew's estimates.
+  const Eigen::VectorXd unit_mean = m.position_per_cause * posterior.cause_estimate.head(ux::kDim) +
+                                    m.position_of_others + m.position_per_estimate * estimate_vector(run.estimates);
+  SchemePrediction out;
+  out.scheme = m.scheme;
+  out.ready_time_s = ready_time_s(m.scheme, records.site.test_duration_s, m.realignment_duration_s);
+  out.compensation = compensation_of(m.scheme, records, posterior.crew_estimates);
+  out.envelope = m.envelope;
+  for (std::size_t j = 0; j < out.envelope.size(); ++j)
+    out.envelope[j].mean_m = unit_mean.segment<3>(static_cast<Eigen::Index>(3 * j));
   return out;
 }
 

@@ -106,6 +106,22 @@ struct UnitPosterior {
 };
 UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run, const UncertaintyModel& prior);
 
+/// What conditioning needs that is the same for every unit of one test-run
+/// layout (all the units of a file, as a rule): the model of the test rows,
+/// its gain and the estimators' map, built once and used for each unit.
+struct UnitConditioning {
+  gap::Layout layout;
+  gap::GaussianModel model;
+  Eigen::VectorXd cause_mean;
+  Eigen::MatrixXd estimates_map;
+  Eigen::MatrixXd gain;              ///< G = P Hᵀ S⁻¹
+  Eigen::MatrixXd error_covariance;  ///< of the linear estimate
+  Eigen::LLT<Eigen::MatrixXd> row_covariance;  ///< S = H P Hᵀ + W
+};
+UnitConditioning unit_conditioning(const UnitRecords& records, const gap::Layout& layout, const UncertaintyModel& prior);
+/// condition_unit with the shared part built before (run.layout == shared.layout).
+UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run, const UnitConditioning& shared);
+
 /// What a coefficient of the report mixes and how far a test run separates
 /// it: the uncertainties of Table 3.1 that make up its spread (their share
 /// of its prior variance, the largest three of at least 1 %), and its sigma
@@ -133,6 +149,26 @@ std::vector<UnitEstimate> estimate_unit(const UnitRecords& records, const UnitPo
 SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& run, const UnitPosterior& posterior,
                                 Scheme scheme, const UncertaintyModel& prior, const std::vector<double>& clock_s,
                                 double realignment_duration_s);
+
+/// What predict_scheme needs that is the same for every unit of one test-run
+/// layout: the scheme's navigation model, the covariances (the error of a
+/// linear estimate does not depend on the data) and the population's, built
+/// once from any unit's posterior of that layout.
+struct SchemeModel {
+  Scheme scheme;
+  std::vector<double> clock_s;
+  double realignment_duration_s = 0.0;
+  Eigen::MatrixXd position_per_cause;     ///< the navigation rows per unit of x
+  Eigen::VectorXd position_of_others;     ///< their mean from the other causes
+  Eigen::MatrixXd position_per_estimate;  ///< per unit of the crew's estimates
+  std::vector<UnitPositionError> envelope;  ///< every field but the unit's mean
+};
+SchemeModel scheme_model(const UnitRecords& records, const UnitPosterior& posterior, Scheme scheme,
+                         const UncertaintyModel& prior, const std::vector<double>& clock_s,
+                         double realignment_duration_s);
+/// predict_scheme with the shared part built before.
+SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& run, const UnitPosterior& posterior,
+                                const SchemeModel& model);
 
 /// B: the report's estimates (SchemeEstimates order: Û2, Û3, Û3 from f,
 /// Δf̂(T), per axis) as a linear map of a unit's test rows.
