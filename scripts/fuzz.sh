@@ -1,16 +1,19 @@
 #!/usr/bin/env bash
-# Fuzzes every input reader (tests/fuzz: records, imu, bounds, config,
-# checkpoint, quantity, run_json) for SECONDS each with libFuzzer, AddressSanitizer and
-# UndefinedBehaviorSanitizer. Quiet on success; on a crash prints the crash
-# input (kept under build/fuzz/crashes/<target>/) and exits 1.
-#   scripts/fuzz.sh SECONDS
+# Fuzzes every input reader and the option parser (tests/fuzz: records,
+# imu, bounds, config, checkpoint with its accumulator state, quantity,
+# run_json, options) for SECONDS each with libFuzzer, AddressSanitizer and
+# UndefinedBehaviorSanitizer. Quiet on success (a line of executions per
+# target with -v); on a crash prints the crash input (kept under
+# build/sanitize/crashes/<target>/) and exits 1.
+#   scripts/fuzz.sh SECONDS [-v]
 # Installs clang, libclang-rt-14-dev (libFuzzer) and ccache from Debian's
-# archive if missing (as root), builds only the fuzz targets and the reader
-# libraries into build/fuzz (ccache), and runs each target on a copy of its
-# corpus (tests/fuzz/corpus/<target> + regressions/<target>): the
+# archive if missing (as root), builds the fuzz targets in the sanitizer
+# build (scripts/build-sanitize.sh, ccache), and runs each target on a copy
+# of its corpus (tests/fuzz/corpus/<target> + regressions/<target>): the
 # repository's corpus is never written.
 set -euo pipefail
-seconds=${1:?usage: scripts/fuzz.sh SECONDS}
+seconds=${1:?usage: scripts/fuzz.sh SECONDS [-v]}
+verbose=${2:-}
 root=$(cd "$(dirname "$0")/.." && pwd)
 targets=(records imu bounds config checkpoint quantity run_json options)
 
@@ -35,12 +38,10 @@ if [[ ${#missing[@]} -gt 0 ]]; then
   rm -f "$log"
 fi
 
-build=$root/build/fuzz
+build=$root/build/sanitize
 fuzz_targets=()
 for t in "${targets[@]}"; do fuzz_targets+=("fuzz_$t"); done
-INSMC_BUILD_TARGETS="${fuzz_targets[*]}" bash "$root/scripts/build.sh" "$build" \
-  -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DINSMC_FUZZ=ON -DBUILD_TESTING=OFF \
-  -DINSMC_WERROR=OFF -DINSMC_PCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1"
+bash "$root/scripts/build-sanitize.sh" "${fuzz_targets[@]}"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -68,6 +69,10 @@ for t in "${targets[@]}"; do
     done
     cp "$work/$t/log" "$kept/log"
     failed=1
+  elif [[ $verbose == -v ]]; then
+    runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$work/$t/log")
+    rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$work/$t/log")
+    echo "fuzz_$t: $runs executions in $seconds s ($rate/s), no crash"
   fi
 done
 exit $failed

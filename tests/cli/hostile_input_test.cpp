@@ -18,8 +18,14 @@ int line_count(const std::string& s) { return static_cast<int>(std::count(s.begi
 
 // AddressSanitizer reserves terabytes of address space: the memory limit
 // applies to the plain build only (the sanitizer build checks the rest).
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__)  // g++
 constexpr bool kLimitMemory = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)  // clang
+constexpr bool kLimitMemory = false;
+#else
+constexpr bool kLimitMemory = true;
+#endif
 #else
 constexpr bool kLimitMemory = true;
 #endif

@@ -76,6 +76,12 @@ inline ImuSamples multiposition_recording(const SensorErrors& e, int poses, doub
   const Mat3 gyro_inverse = (Mat3::Identity() + e.gyro_m).inverse();
   std::normal_distribution<double> n(0, 1);
   std::uniform_real_distribution<double> angle(60 * kDegToRad, 170 * kDegToRad);
+  // Three draws in this order (the order of a constructor's arguments is
+  // unspecified: g++ and clang would draw different recordings).
+  const auto draw3 = [&] {
+    const double x = n(rng), y = n(rng), z = n(rng);
+    return Vec3(x, y, z);
+  };
   ImuSamples s;
   s.source = "synthetic";
   Mat3 c = Mat3::Identity();  // body to space
@@ -83,15 +89,15 @@ inline ImuSamples multiposition_recording(const SensorErrors& e, int poses, doub
     const Vec3 f = c.transpose() * f_space;
     s.t_s.push_back(dt * static_cast<double>(s.t_s.size()));
     s.accel_b_mps2.push_back(accel_inverse * f + e.accel_bias_mps2 +
-                             e.accel_noise_mps2 * Vec3(n(rng), n(rng), n(rng)));
+                             e.accel_noise_mps2 * draw3());
     s.gyro_b_radps.push_back(gyro_inverse * w_body + e.gyro_bias_radps + e.g_sensitivity * f +
-                             e.gyro_noise_radps * Vec3(n(rng), n(rng), n(rng)));
+                             e.gyro_noise_radps * draw3());
     const double a = w_body.norm() * dt;
     if (a > 0) c = c * Eigen::AngleAxisd(a, w_body.normalized()).toRotationMatrix();
   };
   for (int k = 0; k < 2000; ++k) add(Vec3::Zero());
   for (int p = 0; p < poses; ++p) {
-    const Vec3 axis = only_axis.norm() > 0 ? only_axis.normalized() : Vec3(n(rng), n(rng), n(rng)).normalized();
+    const Vec3 axis = only_axis.norm() > 0 ? only_axis.normalized() : draw3().normalized();
     const Vec3 w = axis * angle(rng) / turn_s;
     for (int k = 0; k < static_cast<int>(turn_s / dt); ++k) add(w);
     for (int k = 0; k < static_cast<int>(still_s / dt); ++k) add(Vec3::Zero());

@@ -33,7 +33,9 @@ TEST(StaticSegments, FindsEachStillAttitudeOnce) {
 }
 
 TEST(Multiposition, RecoversEveryParameterWithoutNoise) {
-  std::mt19937_64 rng(3);
+  // Seed 4: its 20 random turns leave 21 attitudes at least 5° apart (seed 3,
+  // drawn in order, put two within 2° of each other: 20 orientations).
+  std::mt19937_64 rng(4);
   SensorErrors e = draw_errors(rng);
   e.accel_noise_mps2 = e.gyro_noise_radps = 0;
   const ImuSamples s = multiposition_recording(e, 20, 6.0, rng);

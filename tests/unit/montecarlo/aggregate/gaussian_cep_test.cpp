@@ -4,6 +4,8 @@
 // hit count at the computed radius is binomial.
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
+
 #include <cmath>
 #include <random>
 
