@@ -16,6 +16,8 @@ seconds=${1:?usage: scripts/fuzz.sh SECONDS [-v]}
 verbose=${2:-}
 root=$(cd "$(dirname "$0")/.." && pwd)
 targets=(records imu bounds config checkpoint quantity run_json options)
+# INSMC_FUZZ_TARGETS="records imu" fuzzes those alone (a long campaign split over cores).
+if [[ -n ${INSMC_FUZZ_TARGETS:-} ]]; then read -r -a targets <<<"$INSMC_FUZZ_TARGETS"; fi
 
 packages=(clang libclang-rt-14-dev ccache cmake make libeigen3-dev libtbb-dev libboost-program-options-dev
           libboost-dev libfmt-dev nlohmann-json3-dev)

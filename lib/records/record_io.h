@@ -23,7 +23,7 @@ namespace insmc {
 /// memory of what reads it next. For scale: 200 runs of the
 /// report's 15 min test run and 90 min of navigation at 10 s are 126,000
 /// rows (20 MB); one 10 h run at 100 Hz is 3.6 million rows.
-/// The file: 2 GiB (10 million rows of ~150 bytes, all numbers in full).
+/// The file: 2 GiB (a line may be long; the rows are capped below).
 inline constexpr std::uint64_t kMaxRecordFileBytes = std::uint64_t{2} << 30;
 /// One line: 16 KiB (a data row is ~300 bytes; header values hold file paths).
 inline constexpr std::size_t kMaxRecordLineBytes = 16 * 1024;
@@ -35,8 +35,9 @@ inline constexpr std::size_t kMaxRecordHeaderLines = 20'000;
 inline constexpr std::size_t kMaxRecordRuns = 10'000;
 /// Rows in one run: 4 million (48 h at 23 Hz, or 11 h at 100 Hz).
 inline constexpr std::size_t kMaxRecordRowsPerRun = 4'000'000;
-/// Rows in the file: 10 million (~1.5 GB in memory).
-inline constexpr std::size_t kMaxRecordRows = 10'000'000;
+/// Rows in the file: 4 million (104 bytes each in memory: ~420 MB, so
+/// that reading and what reads next stay within 1 GB; 11 h at 100 Hz).
+inline constexpr std::size_t kMaxRecordRows = 4'000'000;
 /// Row values: far beyond any instrument, so that squares and sums over a
 /// whole file stay finite. |f| ≤ 1e6 m/s² (10^5 g), |r| ≤ 1e16 m, |w| ≤ 1000
 /// rad/s; |t_s| ≤ kMaxRunDurationS (48 h, record.h).
