@@ -191,6 +191,9 @@ int run_command(const Args& args, Ranks& ranks) {
   const std::string synopsis = "[options]\n       insmc run --resume FILE [--out DIR] [--format F]";
   auto vm = parse_args(args, "run", synopsis, opts, Lists::kSweeps);
   if (!vm) return 0;
+  // The files this command line reads (the --from or --resume file is gone
+  // from the options once they are rebuilt from it): no output may be one.
+  std::vector<InputFile> inputs = input_files(*vm);
 
   // --from: a run.json's arguments, with this command line's options in
   // place of theirs, parsed as if typed again.
@@ -271,8 +274,9 @@ int run_command(const Args& args, Ranks& ranks) {
       const std::vector<std::string> names =
           sweeps.empty() ? std::vector<std::string>{"envelope.csv", "envelope_grid.csv", "envelope.md", "run.json"}
                          : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.json"};
-      out = prepare_figure_folder(*vm, "run", names, sweeps.empty() ? "envelope" : "sweep");
-      if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path, input_files(*vm));
+      for (InputFile& in : input_files(*vm)) inputs.push_back(std::move(in));
+      out = prepare_figure_folder(*vm, "run", names, sweeps.empty() ? "envelope" : "sweep", inputs);
+      if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path, inputs);
     });
   }
   if (!sweeps.empty()) {

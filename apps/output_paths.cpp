@@ -89,9 +89,12 @@ void OutputFolderOption::write(const OutputFiles& files) {
 }
 
 std::optional<OutputFolderOption> prepare_output_folder(const po::variables_map& vm, const std::string& command,
-                                                        const std::vector<std::string>& expected_files) {
+                                                        const std::vector<std::string>& expected_files,
+                                                        const std::vector<InputFile>& read_before) {
   std::optional<OutputFolderOption> out;
-  if (vm.count("out")) out.emplace("--out", vm["out"].as<std::string>(), command, expected_files, input_files(vm));
+  std::vector<InputFile> inputs = input_files(vm);
+  inputs.insert(inputs.end(), read_before.begin(), read_before.end());
+  if (vm.count("out")) out.emplace("--out", vm["out"].as<std::string>(), command, expected_files, inputs);
   return out;
 }
 
@@ -107,9 +110,10 @@ void OutputFileOption::write(std::string_view contents) const {
 
 std::optional<OutputFolderOption> prepare_figure_folder(const po::variables_map& vm, const std::string& command,
                                                         std::vector<std::string> other_files,
-                                                        const std::string& figure_stem) {
+                                                        const std::string& figure_stem,
+                                                        const std::vector<InputFile>& read_before) {
   for (std::string& name : mc::figure_file_names(figure_stem)) other_files.push_back(std::move(name));
-  std::optional<OutputFolderOption> out = prepare_output_folder(vm, command, other_files);
+  std::optional<OutputFolderOption> out = prepare_output_folder(vm, command, other_files, read_before);
   if (out && !mc::gnuplot_available()) throw InputError("--out", vm["out"].as<std::string>(), mc::gnuplot_missing_message());
   return out;
 }

@@ -41,16 +41,19 @@ class OutputFolderOption {
 };
 
 /// The folder of option "out" when it was given, with the names the set
-/// will hold.
+/// will hold; `read_before`: inputs of an earlier parse that `vm` no longer
+/// names (the --from or --resume file a command line was rebuilt from).
 std::optional<OutputFolderOption> prepare_output_folder(const po::variables_map& vm, const std::string& command,
-                                                        const std::vector<std::string>& expected_files);
+                                                        const std::vector<std::string>& expected_files,
+                                                        const std::vector<InputFile>& read_before = {});
 
 /// The same for a set that also holds the figure `figure_stem` (.gp, .svg,
 /// .png): gnuplot must be there, or the command stops now (exit 2, naming
 /// the package), before any work.
 std::optional<OutputFolderOption> prepare_figure_folder(const po::variables_map& vm, const std::string& command,
                                                         std::vector<std::string> other_files,
-                                                        const std::string& figure_stem);
+                                                        const std::string& figure_stem,
+                                                        const std::vector<InputFile>& read_before = {});
 
 /// One output file (`--out FILE`, `--checkpoint FILE`), checked and locked;
 /// it may not be one of the command's input files (`--checkpoint` may be

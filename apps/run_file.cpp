@@ -89,7 +89,7 @@ class ArgumentsReader final : public nlohmann::json_sax<nlohmann::json> {
       problem = fmt::format("nests deeper than {} levels (insmc writes 4)", kMaxDepth);
       return false;
     }
-    if (depth_ == 2) under_settings_ = under_settings_next_;
+    if (depth_ == 2) under_settings_ = !array && under_settings_next_;  // settings is an object
     return true;
   }
   bool close() {

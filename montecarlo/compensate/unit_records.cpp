@@ -17,16 +17,22 @@ namespace {
 constexpr double kGridJitter = 0.01;
 
 /// The row of `run` nearest t within kGridJitter τ, or nullptr.
-const RecordRow* test_row_at(const RecordRun& run, double t_s, double tau_s) {
-  const RecordRow* nearest = nullptr;
-  for (const RecordRow& row : run.rows)
-    // The row at T may come stamped a little after it, labelled nav by a
-    // recorder that reads the phase from the time.
-    if ((row.phase == Phase::kTest || row.t_s <= t_s + kGridJitter * tau_s) &&
-        std::abs(row.t_s - t_s) <= kGridJitter * tau_s &&
-        (nearest == nullptr || std::abs(row.t_s - t_s) < std::abs(nearest->t_s - t_s)))
-      nearest = &row;
-  return nearest;
+/// `nav_continues`: the records' navigation goes on from the test run (no
+/// reset or realignment at T), so a nav row stamped just after T is the row at T.
+const RecordRow* test_row_at(const RecordRun& run, double t_s, double tau_s, bool nav_continues) {
+  const auto nearest_of = [&](Phase phase) {
+    const RecordRow* nearest = nullptr;
+    for (const RecordRow& row : run.rows)
+      if (row.phase == phase && std::abs(row.t_s - t_s) <= kGridJitter * tau_s &&
+          (nearest == nullptr || std::abs(row.t_s - t_s) < std::abs(nearest->t_s - t_s)))
+        nearest = &row;
+    return nearest;
+  };
+  // The row at T may come stamped a little after it, labelled nav by a
+  // recorder that reads the phase from the time: taken when no test row is
+  // there and nothing reset the navigation at T.
+  const RecordRow* test = nearest_of(Phase::kTest);
+  return test != nullptr || !nav_continues ? test : nearest_of(Phase::kNav);
 }
 
 /// The median spacing of consecutive r rows of the test runs (0 when none).
@@ -55,7 +61,8 @@ UnitTestRun unit_test_run(const RecordRun& run, const gap::RecordSite& site) {
   Eigen::MatrixXd position(K, 3), accel(K, 3);
   for (int k = 1; k <= K; ++k) {
     const double t = k * tau;
-    const RecordRow* row = test_row_at(run, t, tau);
+    const RecordRow* row =
+        test_row_at(run, t, tau, gap::nav_segment_of(site.scheme) == gap::NavSegment::kContinue);
     const auto missing = [&](const char* what) {
       return InputError(fmt::format("records run {} test rows", run.id), fmt::format("(no {} at t_s = {:g})", what, t),
                         fmt::format("compensate needs f and r (all three axes) at every filter interval t_k = k*{:g} s "

@@ -78,6 +78,13 @@ TEST(HostileFiles, NoOutputReplacesAnInput) {
   const std::string records = read_file(dir.path() / "gap.json");
   expect_refused("gap --records " + dir.str() + "/gap.json --rank never --out " + dir.str(), "is the file of --records");
   EXPECT_EQ(read_file(dir.path() / "gap.json"), records);
+  // A study's run.json read again into the folder that holds it: the
+  // command line is rebuilt from the file, and the file stays an input.
+  const fs::path study = dir.path() / "study";
+  ASSERT_EQ(run_insmc("run --samples 2048 --quiet --out " + study.string()).exit_code, 0);
+  const std::string run_json = read_file(study / "run.json");
+  expect_refused("run --from " + (study / "run.json").string() + " --quiet --out " + study.string(), "is the file of --from");
+  EXPECT_EQ(read_file(study / "run.json"), run_json);
 }
 
 TEST(HostileFiles, PlantedLinksAreRefusedBeforeTheWork) {
@@ -177,6 +184,7 @@ TEST(HostileFiles, AnAliasOfAnOutputSharesItsLock) {
   // Until the first holds its lock (it takes it before any work).
   for (int i = 0; i < 200 && !fs::exists(dir.path() / ".real.insmc-lock"); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  ASSERT_TRUE(fs::exists(dir.path() / ".real.insmc-lock")) << "the first run took no lock within 5 s";
   const ProgramResult second = run_insmc("run --samples 2048 --quiet --out " + dir.str() + "/alias");
   EXPECT_EQ(second.exit_code, 2) << second.err;
   EXPECT_NE(second.err.find("another insmc is writing this output now"), std::string::npos) << second.err;

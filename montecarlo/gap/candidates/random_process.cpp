@@ -149,7 +149,12 @@ Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma,
   e.column_var = Eigen::VectorXd::Constant(e.columns.cols(), sigma * sigma);
   // The bridges' higher modes, seen by the f rows only: of the process
   // itself (accelerometer) or of g × θ (a tilt on the horizontal axes).
-  const double rest = bridge_rest_share(kBridgeModes) * sigma * sigma * unit_diffusion(tau) * knot_spacing(tau, *ctx.layout);
+  // The f rows' knots: after a realignment those of the test part, the only
+  // part with modelled f rows (process_columns spaces each part's own).
+  const Layout& layout = *ctx.layout;
+  const bool restarted = layout.nav == NavSegment::kRestart && layout.test_rows < static_cast<int>(layout.rows.size());
+  const double spacing = knot_spacing(tau, restarted ? layout.test_part() : layout);
+  const double rest = bridge_rest_share(kBridgeModes) * sigma * sigma * unit_diffusion(tau) * spacing;
   const double g = ctx.site->model.gravity_mps2;
   if (drive == Drive::kAccel) e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(rest));
   if (drive == Drive::kAngle) e.noise_var_add = f_noise(ctx, Eigen::Vector3d(g * g * rest, g * g * rest, 0.0));

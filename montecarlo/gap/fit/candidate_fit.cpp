@@ -141,26 +141,29 @@ CandidateSums evaluate_amplitudes(const PreparedRuns& p, const gap::Candidate& c
 /// The signature columns of run r at grid point k: its layout's, or for a
 /// run that stopped early that layout's first rows and the estimates (the
 /// normalized values are affine in the data, row by row).
-Eigen::MatrixXd signature_of(const CandidateSums& s, int k, int r) {
+/// `scratch` holds the assembled columns of a shortened run (the layout's
+/// own are returned without a copy).
+const Eigen::MatrixXd& signature_of(const CandidateSums& s, int k, int r, Eigen::MatrixXd& scratch) {
   const Eigen::MatrixXd& Z =
       s.signature[static_cast<std::size_t>(k)][static_cast<std::size_t>(s.layout_of[static_cast<std::size_t>(r)])];
   const Eigen::Index size = s.normalized[static_cast<std::size_t>(r)].size();
   if (size == Z.rows()) return Z;
   const auto L = static_cast<std::size_t>(s.layout_of[static_cast<std::size_t>(r)]);
   const auto estimates = static_cast<Eigen::Index>(s.fit[L]->estimate_x_columns().size());
-  Eigen::MatrixXd out(size, Z.cols());
-  out << Z.topRows(size - estimates), Z.bottomRows(estimates);
-  return out;
+  scratch.resize(size, Z.cols());
+  scratch << Z.topRows(size - estimates), Z.bottomRows(estimates);
+  return scratch;
 }
 
 /// Least squares over the multiset `runs` of the normalized values on the
 /// signature columns; beyond its limit a signature is held at the limit (and flagged).
 Eigen::VectorXd least_squares_amplitudes(const CandidateSums& s, int k, const std::vector<int>& runs) {
-  const Eigen::Index m = signature_of(s, k, runs.front()).cols();
+  Eigen::MatrixXd scratch;
+  const Eigen::Index m = signature_of(s, k, runs.front(), scratch).cols();
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(m, m);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(m);
   for (int r : runs) {
-    const Eigen::MatrixXd Z = signature_of(s, k, r);
+    const Eigen::MatrixXd& Z = signature_of(s, k, r, scratch);
     A += Z.transpose() * Z;
     b += Z.transpose() * s.normalized[static_cast<std::size_t>(r)];
   }
@@ -193,7 +196,8 @@ gap::RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, 
     }
     const int L = s.layout_of[r];
     const gap::RunAnalyser& a = *s.fit[static_cast<std::size_t>(L)];
-    const Eigen::VectorXd v = s.normalized[r] - signature_of(s, choice.grid, runs[j]) * choice.amplitude;
+    Eigen::MatrixXd scratch;
+    const Eigen::VectorXd v = s.normalized[r] - signature_of(s, choice.grid, runs[j], scratch) * choice.amplitude;
     sums[j] = a.sums_of(v);
     keyed.col(static_cast<Eigen::Index>(j)) = gap::keyed_values(v, a, L, *s.keys);
   }

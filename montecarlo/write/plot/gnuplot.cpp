@@ -17,6 +17,7 @@
 
 #include <fmt/format.h>
 
+#include "lib/common/assert.h"
 #include "lib/common/input_error.h"
 
 extern char** environ;
@@ -31,13 +32,22 @@ namespace fs = std::filesystem;
 /// behind when insmc or gnuplot is killed.
 class MemoryFile {
  public:
-  explicit MemoryFile(const char* name) : fd_(::memfd_create(name, MFD_CLOEXEC)) {
-    if (fd_ < 0) throw std::runtime_error(fmt::format("cannot make an in-memory file for gnuplot: {}", std::strerror(errno)));
+  explicit MemoryFile(const char* name) {
+    const int fd = ::memfd_create(name, MFD_CLOEXEC);
+    // Above the descriptors gnuplot gets (0-2 and 3 + its outputs): a run
+    // started with 0, 1 or 2 closed would otherwise hand one out here, and
+    // the dup2 of another file onto it would take it away.
+    fd_ = fd < 0 ? -1 : ::fcntl(fd, F_DUPFD_CLOEXEC, kLowestFd);
+    if (fd >= 0) ::close(fd);
+    if (fd_ < 0)
+      throw InputError("gnuplot", "(in-memory files)",
+                       fmt::format("cannot make one for the plots: {}", std::strerror(errno)));
   }
   ~MemoryFile() { ::close(fd_); }
   MemoryFile(const MemoryFile&) = delete;
   MemoryFile& operator=(const MemoryFile&) = delete;
   int fd() const { return fd_; }
+  static constexpr int kLowestFd = 16;
 
   void write_all(std::string_view bytes) const {
     while (!bytes.empty()) {
@@ -102,6 +112,7 @@ std::vector<std::string> render_gnuplot(const std::string& script, const std::ve
   // an in-memory file of ours: the script's `set output "NAME"` lines are
   // pointed there for this run only (the .gp kept for the user keeps NAME).
   constexpr int kFirstOutputFd = 3;
+  INSMC_ASSERT(kFirstOutputFd + static_cast<int>(outputs.size()) <= MemoryFile::kLowestFd, "{} outputs", outputs.size());
   std::string run = script;
   std::vector<std::unique_ptr<MemoryFile>> files;
   for (std::size_t i = 0; i < outputs.size(); ++i) {
@@ -142,7 +153,8 @@ std::vector<std::string> render_gnuplot(const std::string& script, const std::ve
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     bytes.push_back(files[i]->read_all());
     if (bytes.back().empty())
-      throw std::runtime_error(fmt::format("gnuplot wrote no {} ({})", outputs[i], first_error_line(said)));
+      throw InputError("gnuplot", "exit 0", fmt::format("it drew no {}, so no output was written ({})", outputs[i],
+                                                        first_error_line(said)));
   }
   return bytes;
 }
@@ -151,7 +163,7 @@ std::string figure_script(const FigureScript& f) {
   std::string out = fmt::format(
       "# {}\n# Written by insmc with its data inline; render again with: gnuplot {}.gp\n"
       "# (writes {}.svg and {}.png in the current folder).\n",
-      f.title, f.stem, f.stem, f.stem);
+      gnuplot_comment(f.title), f.stem, f.stem, f.stem);
   out += f.data_and_settings;
   out += "set border linecolor \"#333333\"\n";
   out += fmt::format("set terminal svg size {},{} noenhanced font \"sans,11\" background \"white\"\nset output {}\n",
@@ -190,16 +202,26 @@ std::string empty_panel_plot(const std::string& note) {
 }
 
 std::string gnuplot_quote(const std::string& text) {
+  // gnuplot runs a `command` in backquotes even inside double quotes: a
+  // file name like x`rm -rf ~`.csv in a title must stay text (\` is a
+  // literal backquote). Other control bytes end the command line: dropped.
   std::string out = "\"";
   for (const char c : text) {
-    if (c == '\\' || c == '"') out += '\\';
     if (c == '\n') {
       out += "\\n";
       continue;
     }
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) continue;
+    if (c == '\\' || c == '"' || c == '`') out += '\\';
     out += c;
   }
   return out + "\"";
+}
+
+std::string gnuplot_comment(const std::string& text) {
+  std::string out;
+  for (const char c : text) out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? ' ' : c;
+  return out;
 }
 
 }  // namespace insmc::mc

@@ -52,8 +52,12 @@ std::vector<std::pair<std::string, std::string>> figure_files(const std::string&
 /// to autoscale a plot without a single point).
 std::string empty_panel_plot(const std::string& note);
 
-/// A string as a gnuplot string literal: double-quoted with \ and " escaped
-/// and line breaks as \n.
+/// A string as a gnuplot string literal: double-quoted with \, " and `
+/// escaped (gnuplot runs a backquoted command even inside double quotes),
+/// line breaks as \n, other control bytes dropped.
 std::string gnuplot_quote(const std::string& text);
+/// A string on one gnuplot comment line: control bytes as blanks (a line
+/// break would end the comment and start a command).
+std::string gnuplot_comment(const std::string& text);
 
 }  // namespace insmc::mc

@@ -14,6 +14,7 @@
 #include "lib/units/units.h"
 #include "montecarlo/gap/candidates/candidates.h"
 #include "montecarlo/gap/metric/gap_metric.h"
+#include "montecarlo/gap/model/gaussian_model.h"
 #include "montecarlo/gap/model/pulse_counting.h"
 #include "montecarlo/gap/model/response.h"
 #include "montecarlo/gap/model/run_analysis.h"
@@ -155,6 +156,52 @@ TEST(GapAnalysis, ActualSquaresAverageWhatDrawsWithTheActualNoiseGive) {
   int floored = 0;
   for (int g = 0; g < kGroupCount; ++g) floored += one.count[g] > 0 && one.expected[g] < 0.5 * one.count[g];
   EXPECT_GE(floored, 3);
+}
+
+TEST(GapLayout, ARunThatStoppedEarlyBeginsTheLongerLayout) {
+  const Layout longer = layout(3600.0), shorter = layout(1800.0);
+  EXPECT_EQ(rows_begun(shorter, longer), shorter.rows.size());  // its last r row (t = 1800 s) is in both
+  // A run that stopped at 1830 s keeps the r row at 1830 s that the longer
+  // layout (r rows each 60 s) has not: all but that row begin it.
+  Layout stopped = layout(1830.0);
+  for (int k = 0; k < 3; ++k) stopped.rows.push_back({1830.0, Quantity::kR, k, stopped.rows.back().group});
+  EXPECT_EQ(rows_begun(stopped, longer), stopped.rows.size() - 3);
+  Layout other_test = shorter;
+  other_test.test_rows -= 3;
+  EXPECT_EQ(rows_begun(other_test, longer), 0U);
+  EXPECT_EQ(rows_begun(longer, shorter), 0U);
+}
+
+TEST(GapAnalysis, ARunThatStoppedEarlyGetsTheSumsOfItsOwnLayout) {
+  // The diagnosis analyses a shortened run under the longer layout it
+  // begins (one analyser for both); its sums must be those of its own
+  // layout's model, built from scratch.
+  const Layout longer = layout(3600.0), shorter = layout(1800.0);
+  // Continuous f: pulse counting's integration steps follow a layout's
+  // length (pulse_counting.h), and would differ by their round-off alone.
+  RecordSite s = site();
+  s.dv_pulse_mps = 0.0;
+  const UncertaintyVector x_var = UncertaintyModel{}.variance();
+  const GaussianModel m_longer = combine(make_base_model(longer, s, x_var), {});
+  const GaussianModel m_shorter = combine(make_base_model(shorter, s, x_var), {});
+  const auto n = static_cast<Eigen::Index>(shorter.rows.size());
+  const GaussianModel m_first = first_rows(m_longer, n);
+  EXPECT_LT((m_first.H - m_shorter.H).cwiseAbs().maxCoeff(), 1e-9 * m_shorter.H.cwiseAbs().maxCoeff());
+  const RunAnalyser shared(longer, m_longer), own(shorter, m_shorter);
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> n01;
+  for (int draw = 0; draw < 3; ++draw) {
+    Eigen::VectorXd c(m_shorter.prior_var.size()), e(n);
+    for (Eigen::Index j = 0; j < c.size(); ++j) c[j] = std::sqrt(m_shorter.prior_var[j]) * n01(rng);
+    for (Eigen::Index i = 0; i < n; ++i) e[i] = std::sqrt(m_shorter.noise_var[i]) * n01(rng);
+    const Eigen::VectorXd y = m_shorter.H * c + e;
+    const GroupSums a = shared.analyse(y), b = own.analyse(y);
+    for (int g = 0; g < kGroupCount; ++g) {
+      EXPECT_EQ(a.count[g], b.count[g]) << group_name(g);
+      EXPECT_NEAR(a.z2[g], b.z2[g], 1e-7 * (1.0 + b.z2[g])) << group_name(g);
+      EXPECT_NEAR(a.expected[g], b.expected[g], 1e-7 * (1.0 + b.expected[g])) << group_name(g);
+    }
+  }
 }
 
 TEST(GapModel, ACandidateWideningThePriorsKeepsTheFloorTheNullWasCalibratedOn) {
