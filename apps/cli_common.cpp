@@ -92,6 +92,13 @@ std::uint64_t read_count(const po::variables_map& vm, const std::string& name) {
   return parse_count(vm[name].as<std::string>(), "--" + name);
 }
 
+RecordLayout read_record_layout(const po::variables_map& vm) {
+  const std::string& text = vm["layout"].as<std::string>();
+  if (text == "own") return RecordLayout::kOwn;
+  if (text == "foreign") return RecordLayout::kForeign;
+  throw InputError("--layout", text, "must be own or foreign");
+}
+
 po::options_description model_options_description() {
   po::options_description d("Model");
   d.add_options()("latitude", po::value<std::string>()->default_value("45deg"),

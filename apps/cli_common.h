@@ -44,6 +44,12 @@ std::uint64_t parse_count(const std::string& text, const std::string& field);
 /// The count of option `name` (its value or default).
 std::uint64_t read_count(const po::variables_map& vm, const std::string& name);
 
+/// How simulated records are written (`--layout`): as insmc writes them,
+/// or in another recorder's conventions (montecarlo/gap/validation/foreign_layout.h).
+enum class RecordLayout { kOwn, kForeign };
+/// The value of option "layout": own or foreign (else an InputError).
+RecordLayout read_record_layout(const po::variables_map& vm);
+
 /// --latitude and the loop gains: the ModelOptions every model command takes.
 po::options_description model_options_description();
 /// Reads them; `system2_used` enables the |L0| < 90° check of (2.16).

@@ -23,7 +23,10 @@ int run_gap_validate(const Args& args) {
       "null-files", po::value<int>(), "null files (default 100, quick 4)")(
       "seeds", po::value<int>(), "files per effect and magnitude (default 3, quick 1)")(
       "effect", po::value<std::vector<std::string>>(), "validate only this effect (repeatable; names: insmc effects)")(
-      "magnitudes", po::value<std::string>(), "factors on the effects' defaults, comma list (default 1,3,10,30; quick 30)");
+      "magnitudes", po::value<std::string>(), "factors on the effects' defaults, comma list (default 1,3,10,30; quick 30)")(
+      "layout", po::value<std::string>()->default_value("own"),
+      "own (the records as insmc simulate writes them) or foreign (each file in another recorder's conventions: "
+      "f and r on grids of their own, runs of unequal length, no pulse-weight key; docs/gap.md section 5)");
   const auto vm = parse_args(args, "gap-validate", "[--quick] [--out DIR]", opts);
   if (!vm) return 0;
   mc::ValidationOptions options = vm->count("quick") ? mc::ValidationOptions::quick_subset() : mc::ValidationOptions{};
@@ -43,6 +46,7 @@ int run_gap_validate(const Args& args) {
       options.effects.push_back(name);
     }
   }
+  options.foreign_layouts = read_record_layout(*vm) == RecordLayout::kForeign;
   if (vm->count("magnitudes")) {
     const std::string text = (*vm)["magnitudes"].as<std::string>();
     options.magnitudes.clear();

@@ -1,6 +1,7 @@
 // insmc simulate: truth-level records (record format v1, docs/records.md) of
 // runs on a stationary base: switch-over, test run, navigation, with chosen
 // named effects. Runs are deterministic per (seed, run).
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -15,6 +16,7 @@
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
 #include "montecarlo/gap/null/record_simulation.h"
+#include "montecarlo/gap/validation/foreign_layout.h"
 #include "montecarlo/sampler/sampler.h"
 
 namespace insmc::app {
@@ -29,7 +31,11 @@ int run_simulate(const Args& args) {
       "nav-duration", po::value<std::string>()->default_value("90min"), "navigation after the test run")(
       "effect", po::value<std::vector<std::string>>()->composing(),
       "NAME or NAME:param=value,... (insmc effects), repeatable")(
-      "step", po::value<std::string>()->default_value("5s"), "largest integration step");
+      "step", po::value<std::string>()->default_value("5s"), "largest integration step")(
+      "layout", po::value<std::string>()->default_value("own"),
+      "own, or foreign: the runs written as another recorder would (f every 5, 10 or 20 s and r every 10, 30 or "
+      "60 s by the seed, a third of the runs stopping 60-80 min into the navigation, other run numbers and header "
+      "keys, no pulse-weight, filter-interval or resolution key, no truth keys; scheme none; docs/gap.md section 5)");
   opts.add(model_options_description());
   opts.add(test_run_options_description());
   opts.add(uncertainty_options_description());
@@ -60,7 +66,22 @@ int run_simulate(const Args& args) {
     for (const auto& e : (*vm)["effect"].as<std::vector<std::string>>()) truth.effects.push_back(parse_effect(e, "--effect"));
   if (const auto err = truth_latitude_error(model.latitude_rad, "--latitude")) throw *err;
   if (const auto err = validate(truth)) throw *err;
+  const bool foreign = read_record_layout(*vm) == RecordLayout::kForeign;
+  if (foreign && scheme != Scheme::kNone)
+    throw InputError("--layout", "foreign", "writes the runs without a scheme; give --scheme none");
   const OutputFileOption out("--out", (*vm)["out"].as<std::string>(), input_files(*vm));  // checked and locked before the work
+  if (foreign) {
+    const bool quantization = std::any_of(truth.effects.begin(), truth.effects.end(),
+                                          [](const EffectSpec& e) { return e.kind == EffectKind::kQuantization; });
+    mc::ForeignRuns spec;
+    spec.test_duration_s = test.duration_s;
+    spec.nav_duration_s = nav_s;
+    spec.position_resolution_m = test.position_resolution_m;
+    spec.runs = runs;
+    out.write(write_record_file(
+        mc::simulate_foreign_file(truth, mc::Sampler(uncertainties), seed, spec, mc::foreign_layout_of(seed, quantization))));
+    return 0;
+  }
   // The scheme's estimators: the same resolvable terms as `insmc run` fits.
   const Resolvability resolvable = resolvable_terms(system, model, test, uncertainties);
   const TruthSchemeSetup setup(truth, test, make_estimators(test, model, resolvable.u3, resolvable.u4));

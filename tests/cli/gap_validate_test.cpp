@@ -74,6 +74,31 @@ TEST(GapValidate, QuickSubsetScoresEveryEffectBlind) {
   EXPECT_FALSE(has(one_json, "\"quantization\"")) << one_json;  // scored: only what was asked
 }
 
+TEST(GapValidate, FilesInAnotherRecordersLayoutAreDiagnosedAsTheyCome) {
+  // Each file in its own layout (f and r on other grids, shortened runs, no
+  // pulse-weight key), the layout named per file; the sway file (f every
+  // 5 s, r every 30 s, continuous f at this seed) is named at 30x.
+  TempDir dir;
+  const std::string out = (dir.path() / "foreign").string();
+  const auto r = run_insmc("gap-validate --quick --layout foreign --null-files 1 --effect sway --out " + out);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const std::string md = read_file(std::filesystem::path(out) / "validation.md");
+  EXPECT_TRUE(has(md, "another recorder's conventions")) << md.substr(0, 600);
+  EXPECT_TRUE(has(md, "f every 5 s, r every 30 s")) << md;
+  EXPECT_TRUE(has(read_file(std::filesystem::path(out) / "validation.json"), "\"layout\": \"foreign\""));
+  EXPECT_EQ(run_insmc("gap-validate --layout alien").exit_code, 2);
+  // simulate writes the same layout for a user's own checks; no scheme.
+  const auto s = run_insmc("simulate --layout foreign --runs 3 --seed 2 --out " + dir.str() + "/f.csv");
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const std::string text = read_file(dir.path() / "f.csv");
+  EXPECT_TRUE(has(text, "# recorder=")) << text.substr(0, 300);
+  EXPECT_FALSE(has(text, "dv_pulse_mps")) << text.substr(0, 300);
+  EXPECT_FALSE(has(text, "truth.")) << text.substr(0, 300);
+  const auto refused = run_insmc("simulate --layout foreign --scheme 5.2 --out " + dir.str() + "/g.csv");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_TRUE(has(refused.err, "--layout")) << refused.err;
+}
+
 TEST(GapValidate, BadSubsetIsAnInputError) {
   const auto e = run_insmc("gap-validate --effect no_such_effect");
   EXPECT_EQ(e.exit_code, 2);

@@ -62,7 +62,8 @@ bool used(const PreparedRuns& p, std::size_t L) {
 
 CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
                                const std::vector<std::vector<gap::Extension>>& selected,
-                               std::vector<gap::LayoutContext>& ctx, const gap::NullCalibration& m0) {
+                               std::vector<gap::LayoutContext>& ctx, const gap::NullCalibration& m0,
+                               std::vector<std::vector<int>> groups) {
   CandidateSums out;
   out.keys = &p.keys;
   const int K = c.grid_size();
@@ -86,18 +87,22 @@ CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
   };
   // Grid index = first-parameter index × rest + rest index (grid_point).
   const int first = static_cast<int>(c.parameters.front().grid.size()), rest = K / first;
-  std::vector<int> all(p.runs.size());
-  for (std::size_t r = 0; r < all.size(); ++r) all[r] = static_cast<int>(r);
+  if (groups.empty()) {
+    groups.emplace_back(p.runs.size());
+    for (std::size_t r = 0; r < p.runs.size(); ++r) groups.front()[r] = static_cast<int>(r);
+  }
   for (int j = 0; j < rest; ++j) {
-    int best = -1;
-    double best_gap = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < first; i += 2) {
-      evaluate(i * rest + j);
-      const double g = gap::gap_value(out.sets[static_cast<std::size_t>(i * rest + j)], all, m0);
-      if (g < best_gap) best_gap = g, best = i;
+    for (int i = 0; i < first; i += 2) evaluate(i * rest + j);
+    for (const std::vector<int>& runs : groups) {
+      int best = -1;
+      double best_gap = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < first; i += 2) {
+        const double g = gap::gap_value(out.sets[static_cast<std::size_t>(i * rest + j)], runs, m0);
+        if (g < best_gap) best_gap = g, best = i;
+      }
+      for (int i : {best - 1, best + 1})
+        if (i >= 0 && i < first) evaluate(i * rest + j);
     }
-    for (int i : {best - 1, best + 1})
-      if (i >= 0 && i < first) evaluate(i * rest + j);
   }
   return out;
 }
@@ -175,10 +180,10 @@ Eigen::VectorXd least_squares_amplitudes(const CandidateSums& s, int k, const st
 
 CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
                                  const std::vector<std::vector<gap::Extension>>& selected,
-                                 const gap::NullCalibration& m0) {
+                                 const gap::NullCalibration& m0, const std::vector<std::vector<int>>& groups) {
   std::vector<gap::LayoutContext> ctx(p.layouts.size());
   for (std::size_t L = 0; L < p.layouts.size(); ++L) ctx[L] = {&p.layouts[L], &p.site, &p.bases[L], {}};
-  return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, ctx, m0)
+  return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, ctx, m0, groups)
                                        : evaluate_amplitudes(p, c, selected, ctx);
 }
 

@@ -81,10 +81,13 @@ struct Choice {
 /// `c` on every run of `p`, on top of the effects already selected (per
 /// layout). The first parameter of a grid candidate is searched coarse to
 /// fine: every other value, then the two values next to the best on all runs
-/// (m0) for each setting of the other parameters.
+/// (m0) for each setting of the other parameters. `groups`: run sets that
+/// are searched each on its own (files of null runs evaluated together: a
+/// point is evaluated once on every run, each group adds the values next to
+/// its own best); empty: all runs, one group.
 CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
                                  const std::vector<std::vector<gap::Extension>>& selected,
-                                 const gap::NullCalibration& m0);
+                                 const gap::NullCalibration& m0, const std::vector<std::vector<int>>& groups = {});
 
 /// Each run of `runs` under its own choice (e.g. the held-out runs of two
 /// folds, each under the other fold's fit), as a run set in that order.

@@ -16,10 +16,17 @@ namespace {
 
 /// Every run under the other half's fit (runs alternate between the halves
 /// in file order): 2-fold cross-validation.
-gap::RunSet heldout_set(const std::array<Choice, 2>& half, const CandidateSums& s, std::size_t n) {
-  std::vector<Choice> heldout_choice(n);
-  for (std::size_t r = 0; r < n; ++r) heldout_choice[r] = half[1 - r % 2];
-  return run_set_under(s, all_runs(n), heldout_choice);
+gap::RunSet heldout_set(const std::array<Choice, 2>& half, const CandidateSums& s, const std::vector<int>& runs) {
+  std::vector<Choice> heldout_choice(runs.size());
+  for (std::size_t r = 0; r < runs.size(); ++r) heldout_choice[r] = half[1 - r % 2];
+  return run_set_under(s, runs, heldout_choice);
+}
+
+/// The runs first, first + 1, ..., first + n - 1.
+std::vector<int> run_range(std::size_t first, std::size_t n) {
+  std::vector<int> runs(n);
+  std::iota(runs.begin(), runs.end(), static_cast<int>(first));
+  return runs;
 }
 
 /// 2-fold cross-validation (runs alternate between the halves in file order),
@@ -28,7 +35,7 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
              std::uint64_t seed) {
   Scored out;
   out.half_fit = half_fits(s, n, m0);
-  out.heldout = heldout_set(out.half_fit, s, n);
+  out.heldout = heldout_set(out.half_fit, s, all_runs(n));
   out.heldout_gap = gap::gap_value(out.heldout, all_runs(n), m0);
   out.full_fit = choose(s, all_runs(n), m0);
   const std::vector<double> best = parameter_values(c, out.full_fit);
@@ -51,14 +58,18 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
 
 }  // namespace
 
-std::array<Choice, 2> half_fits(const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0) {
+std::array<Choice, 2> half_fits(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0) {
   std::array<Choice, 2> out;
   for (std::size_t h = 0; h < 2; ++h) {
     std::vector<int> train;
-    for (std::size_t r = h; r < n; r += 2) train.push_back(static_cast<int>(r));
+    for (std::size_t r = h; r < runs.size(); r += 2) train.push_back(runs[r]);
     out[h] = choose(s, train, m0);
   }
   return out;
+}
+
+std::array<Choice, 2> half_fits(const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0) {
+  return half_fits(s, run_range(0, n), m0);
 }
 
 int null_file_count(const PreparedRuns& p, const Null& null, const DiagnosisOptions& options) {
@@ -99,27 +110,34 @@ std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, const 
   const auto& registry = candidates_of(options);
   const std::size_t n = p.runs.size();
   const int files = null_file_count(p, null, options);
-  std::atomic<std::uint64_t> done{0};
-  const auto total = static_cast<std::uint64_t>(files) * registry.size();
-  std::vector<std::vector<double>> per(registry.size());
-  const std::vector<std::vector<gap::Extension>> none(p.layouts.size());
-  for (int f = 0; f < files; ++f) {
-    const PreparedRuns q = null_file(p, null, f);
-    std::vector<int> idx(n);
-    for (std::size_t r = 0; r < n; ++r) idx[r] = static_cast<int>(f * n + r);
-    const double before = gap::gap_value(null.set, idx, m0);
-    std::vector<double> shrink(registry.size());
-    tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
-      const CandidateSums sums = evaluate_candidate(q, registry[c], none, m0);
-      const gap::RunSet held = heldout_set(half_fits(sums, n, m0), sums, n);
-      shrink[c] = before > 0 ? 1.0 - gap::gap_value(held, all_runs(n), m0) / before : 0.0;
-      report_progress(options, "candidates on null files", ++done, total, "fits");
-    });
-    for (std::size_t c = 0; c < registry.size(); ++c) per[c].push_back(shrink[c]);
-  }
   std::vector<double> out(registry.size(), std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t c = 0; c < registry.size(); ++c)
-    if (!per[c].empty()) out[c] = quantile(per[c], 0.5);
+  if (files == 0) return out;
+  // The null files together: each candidate's models (one per grid point
+  // and layout, the cost) are built once for all of them; each file keeps
+  // its own search, fits and held-out sets.
+  PreparedRuns q = p;
+  q.runs.assign(null.runs.begin(), null.runs.begin() + static_cast<std::ptrdiff_t>(files * n));
+  q.layout_of.assign(null.layout_of.begin(), null.layout_of.begin() + static_cast<std::ptrdiff_t>(files * n));
+  std::vector<std::vector<int>> file_runs;
+  std::vector<double> before;
+  for (int f = 0; f < files; ++f) {
+    file_runs.push_back(run_range(static_cast<std::size_t>(f) * n, n));
+    before.push_back(gap::gap_value(null.set, file_runs.back(), m0));
+  }
+  std::atomic<std::uint64_t> done{0};
+  const std::vector<std::vector<gap::Extension>> none(p.layouts.size());
+  tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
+    const CandidateSums sums = evaluate_candidate(q, registry[c], none, m0, file_runs);
+    std::vector<double> shrink;
+    for (int f = 0; f < files; ++f) {
+      const std::vector<int>& runs = file_runs[static_cast<std::size_t>(f)];
+      const gap::RunSet held = heldout_set(half_fits(sums, runs, m0), sums, runs);
+      const double b = before[static_cast<std::size_t>(f)];
+      shrink.push_back(b > 0 ? 1.0 - gap::gap_value(held, all_runs(n), m0) / b : 0.0);
+    }
+    out[c] = quantile(shrink, 0.5);
+    report_progress(options, "candidates on null files", ++done, registry.size(), "candidates");
+  });
   return out;
 }
 

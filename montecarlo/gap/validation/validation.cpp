@@ -13,6 +13,7 @@
 #include "lib/truth/effect.h"
 #include "lib/units/units.h"
 #include "montecarlo/gap/null/record_simulation.h"
+#include "montecarlo/gap/validation/foreign_layout.h"
 #include "montecarlo/write/csv.h"
 #include "montecarlo/write/json.h"
 #include "montecarlo/write/markdown.h"
@@ -89,6 +90,14 @@ RecordFile simulate_file(const std::vector<EffectSpec>& effects, std::uint64_t s
   return without_truth(std::move(file));  // the diagnosis is blind
 }
 
+RecordFile foreign_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs, const ForeignLayout& layout) {
+  TruthOptions truth;
+  truth.effects = effects;
+  ForeignRuns spec;
+  spec.runs = runs;
+  return simulate_foreign_file(truth, Sampler(UncertaintyModel{}), seed, spec, layout);
+}
+
 bool selected(const ValidationOptions& options, const std::string& effect) {
   return options.effects.empty() ||
          std::find(options.effects.begin(), options.effects.end(), effect) != options.effects.end();
@@ -155,11 +164,16 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
     const Job& job = jobs[j];
     std::vector<EffectSpec> effects;
     if (job.spec) effects.push_back(*job.spec);
-    const RecordFile records = simulate_file(effects, job.file_seed, options.runs_per_file);
+    std::optional<ForeignLayout> layout;
+    if (options.foreign_layouts)
+      layout = foreign_layout_of(job.file_seed, job.spec && job.spec->kind == EffectKind::kQuantization);
+    const RecordFile records = layout ? foreign_file(effects, job.file_seed, options.runs_per_file, *layout)
+                                      : simulate_file(effects, job.file_seed, options.runs_per_file);
     const auto start = std::chrono::steady_clock::now();
     const Diagnosis g = diagnose(records, d);
-    ValidationCase c{job.effect, job.magnitude, job.seed, g.significant, g.top, false, 0.0, 0.0, g.gap, g.p_value};
+    ValidationCase c{job.effect, job.magnitude, job.seed, g.significant, g.top, false, 0.0, 0.0, g.gap, g.p_value, 0.0, ""};
     c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (layout) c.layout = layout->describe();
     if (!job.spec) {
       c.top = g.significant ? g.top : "";
       c.identified = !g.significant;
@@ -294,22 +308,34 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
                     s.median_recovered_ratio > 0 ? fmt::format("{:.2f}", s.median_recovered_ratio) : "-"});
   // No time per file here: a file's row is the same in any subset of the
   // study (tests/cli/gap_validate_test.cpp), its time is not.
-  Table cases({"effect", "magnitude", "seed", "G", "p", "top", "identified", "shrink"});
-  for (const ValidationCase& c : r.cases)
-    cases.add_row({c.effect, fmt::format("{}", c.magnitude), std::to_string(c.seed), fmt::format("{:.3g}", c.gap),
-                   fmt::format("{:.3g}", c.p_value), c.top, c.identified ? "yes" : "no", fmt::format("{:.2f}", c.shrink)});
+  std::vector<std::string> case_columns = {"effect", "magnitude", "seed", "G", "p", "top", "identified", "shrink"};
+  if (options.foreign_layouts) case_columns.push_back("layout");
+  Table cases(case_columns);
+  for (const ValidationCase& c : r.cases) {
+    std::vector<std::string> row = {c.effect, fmt::format("{}", c.magnitude), std::to_string(c.seed),
+                                    fmt::format("{:.3g}", c.gap), fmt::format("{:.3g}", c.p_value), c.top,
+                                    c.identified ? "yes" : "no", fmt::format("{:.2f}", c.shrink)};
+    if (options.foreign_layouts) row.push_back(c.layout);
+    cases.add_row(row);
+  }
   std::string md = fmt::format(
       "# Gap diagnosis validation on withheld effects{}\n\n"
       "Records from the truth simulator ({} runs per file, system 1, 45°, 15 min test + 90 min), one effect at a "
       "time at magnitudes {} × its defaults (`insmc effects`), {} file(s) each; the diagnosis sees the records "
-      "without their `truth.` keys.\n\n"
-      "Null data (the model itself, with its 0.1 ft/s pulses): {} false alarm(s) in {} files (alpha = {}; rate 95 % "
+      "without their `truth.` keys.{}\n\n"
+      "Null data (the model itself{}): {} false alarm(s) in {} files (alpha = {}; rate 95 % "
       "interval {:.2g}–{:.2g}, binomial p of so many at alpha {:.2g}).\n\n"
       "Median held-out shrink over the detected files (significant files at magnitudes where the effect is detectable: more "
       "than half of that magnitude's files significant): {:.2f}.\n\nDiagnosis time per file (wall, null calibration "
       "included; the study diagnoses files side by side on every core): median {:.1f} s, max {:.1f} s.\n\n## Per effect\n\n{}\n## Confusion "
       "(rows: true effect; columns: the diagnosis' top effect or class)\n\n{}\n## Every file\n\n{}\n## Targets\n\n",
       options.quick ? " (quick subset)" : "", options.runs_per_file, fmt::join(options.magnitudes, ", "), options.seeds,
+      options.foreign_layouts
+          ? " Each file is written in another recorder's conventions (`--layout foreign`, docs/gap.md §5): f and r "
+            "on grids of their own (column `layout`), a third of the runs stopping 60-80 min into the navigation, "
+            "run numbers not consecutive, unknown header keys, no pulse-weight or filter-interval key."
+          : "",
+      options.foreign_layouts ? ", its f continuous or in 0.1 ft/s pulses as the layout says" : ", with its 0.1 ft/s pulses",
       r.false_alarms, r.null_files, options.alpha, r.false_alarm_low, r.false_alarm_high, r.false_alarm_p, r.median_shrink, r.median_seconds, r.max_seconds, render_markdown(scores), render_markdown(confusion),
       render_markdown(cases));
   for (const std::string& e : r.undetectable)
@@ -319,6 +345,7 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
   for (const std::string& f : r.failures) md += "- not met: " + f + "\n";
   Json j = Json::object();
   j["quick"] = options.quick;
+  j["layout"] = options.foreign_layouts ? "foreign" : "own";
   j["null_files"] = r.null_files;
   j["false_alarms"] = r.false_alarms;
   Json ci = Json::array();

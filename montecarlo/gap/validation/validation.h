@@ -24,6 +24,9 @@ struct ValidationOptions {
   /// file's seed depends only on (seed, effect, magnitude, file), so a
   /// subset reproduces the full study's files.
   std::vector<std::string> effects;
+  /// The files as gap-validate's own simulator writes them, or rewritten in
+  /// another recorder's conventions (foreign_layout.h), each file its own.
+  bool foreign_layouts = false;
   DiagnosisProgress progress;  ///< files diagnosed; may be empty
   /// The quick CI subset: 10-run files, one dominant magnitude (30x), one seed, 4 null files.
   static ValidationOptions quick_subset();
@@ -41,6 +44,7 @@ struct ValidationCase {
   double recovered_ratio = 0;  ///< fitted / true of the magnitude parameter (0: not comparable)
   double gap = 0, p_value = 1;
   double seconds = 0;      ///< wall time of the diagnosis (null calibration included)
+  std::string layout;      ///< the file's layout (foreign_layout.h), or "" for the own
 };
 
 /// The targets are judged at the magnitudes where the effect is detectable:
