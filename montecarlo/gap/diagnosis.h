@@ -189,6 +189,11 @@ struct CandidateResult {
   double null_shrink = std::numeric_limits<double>::quiet_NaN();
   gap::LogRatios heldout_log_ratios{};  ///< ℓ on held-out runs with the effect added
   LikelihoodResult likelihood;          ///< fitted for the top candidates only
+  /// The finding as `insmc simulate --effect` takes it (ranking/effect_terms.h;
+  /// empty when the candidate's parameters are not the effect's), and the
+  /// effect's parameters it keeps at a default or a header value, with why.
+  std::string as_effect;
+  std::vector<std::string> as_effect_kept;
 };
 
 /// Two of the top candidates together, their parameters fitted jointly.

@@ -53,6 +53,10 @@ struct Candidate {
   std::vector<CandidateParameter> parameters;
   /// The extension at one point of the parameter grid (values in parameter order).
   std::function<Extension(const LayoutContext&, std::span<const double>)> build;
+  /// The fitted values (parameter order) in the terms `insmc effects`
+  /// defines the effect by, in place, where the candidate's own differ
+  /// (a transient fitted at switch-over, defined at switch-on); empty: the same.
+  std::function<void(std::span<double>, const RecordSite&)> to_effect_terms = {};
 
   /// Number of grid points (the product of the parameters' grids).
   int grid_size() const;

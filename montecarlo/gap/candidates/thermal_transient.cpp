@@ -11,7 +11,7 @@ namespace insmc::gap::candidates {
 Candidate thermal_transient() {
   return {"thermal_transient",
           "bias and drift settling exponentially after switch-on, the same in every run (a design effect): "
-          "a(t) = b (e^{-t/tau} − 1), θ(t) = d (tau (1 − e^{-t/tau}) − t) on every axis; b, d at switch-over",
+          "a(t) = b (e^{-t/tau} − 1), θ(t) = d (tau (1 − e^{-t/tau}) − t) on every axis; b, d fitted at switch-over and reported at switch-on (warm-up: header warmup_s, else 900 s)",
           {amplitude("bias", Dimension::kAcceleration, 10 * kMgToMps2, "10 times Table 3.1's 1 mg bias"),
            amplitude("drift", Dimension::kAngularRate, 300 * kMeruToRadps, "30 times Table 3.1's 10 meru drift"),
            searched("tau", Dimension::kTime, {600.0, 1200.0, 2400.0}, 1.0, magnitude_limit(Dimension::kTime),
@@ -35,6 +35,14 @@ Candidate thermal_transient() {
             Extension e;
             e.mean = p[0] * (cols.col(0) + fixed_bias) + p[1] * (cols.col(1) + fixed_drift);
             return e;
+          },
+          // b and d are fitted at switch-over; the effect is defined at
+          // switch-on, a warm-up earlier: b_on = b e^{warmup/tau} (each
+          // resampled fit with its own tau, so tau's spread carries through).
+          [](std::span<double> p, const RecordSite& site) {
+            const double grown = std::exp(site.warmup_s / p[2]);
+            p[0] *= grown;
+            p[1] *= grown;
           }};
 }
 

@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "montecarlo/gap/null/bootstrap.h"
+#include "montecarlo/gap/ranking/effect_terms.h"
 #include "montecarlo/gap/ranking/likelihood_ranking.h"
 
 namespace insmc::mc {
@@ -32,23 +33,28 @@ std::vector<int> run_range(std::size_t first, std::size_t n) {
 /// 2-fold cross-validation (runs alternate between the halves in file order),
 /// the full-data fit and its resampled 16–84 % range.
 Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0,
-             std::uint64_t seed) {
+             std::uint64_t seed, const gap::RecordSite& site) {
+  const auto in_effect_terms = [&](std::vector<double> theta) {
+    if (c.to_effect_terms) c.to_effect_terms(theta, site);
+    return theta;
+  };
   Scored out;
   out.half_fit = half_fits(s, n, m0);
   out.heldout = heldout_set(out.half_fit, s, all_runs(n));
   out.heldout_gap = gap::gap_value(out.heldout, all_runs(n), m0);
   out.full_fit = choose(s, all_runs(n), m0);
   const std::vector<double> best = parameter_values(c, out.full_fit);
+  const std::vector<double> reported = in_effect_terms(best);
   constexpr int kResamples = 200;
   std::vector<std::vector<double>> draws(c.parameters.size());
   for (int b = 0; b < kResamples; ++b) {
     const std::vector<int> runs = resample(seed, 1'000'000 + static_cast<std::uint64_t>(b), static_cast<int>(n), static_cast<int>(n));
-    const std::vector<double> theta = parameter_values(c, choose(s, runs, m0));
+    const std::vector<double> theta = in_effect_terms(parameter_values(c, choose(s, runs, m0)));
     for (std::size_t i = 0; i < theta.size(); ++i) draws[i].push_back(theta[i]);
   }
   for (std::size_t i = 0; i < c.parameters.size(); ++i) {
     const gap::CandidateParameter& par = c.parameters[i];
-    ParameterEstimate e{par.name, par.dimension, best[i], quantile(draws[i], 0.16), quantile(draws[i], 0.84),
+    ParameterEstimate e{par.name, par.dimension, reported[i], quantile(draws[i], 0.16), quantile(draws[i], 0.84),
                         par.amplitude ? std::abs(best[i]) >= par.grid.front()
                                       : par.grid.size() > 1 && (best[i] == par.grid.front() || best[i] == par.grid.back())};
     out.parameters.push_back(e);
@@ -93,7 +99,8 @@ std::vector<Scored> rank_candidates(const PreparedRuns& p, const std::vector<std
   std::atomic<std::uint64_t> done{0};
   tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
     if (std::find(exclude.begin(), exclude.end(), registry[c].name) != exclude.end()) return;
-    scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected, m0), p.runs.size(), m0, options.seed);
+    scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected, m0), p.runs.size(), m0, options.seed,
+                      p.site);
     scored[c].candidate = static_cast<int>(c);
     used[c] = true;
     report_progress(options, stage, ++done, registry.size() - exclude.size(), "candidates");
@@ -151,7 +158,10 @@ void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const Prepa
     d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before,
                          std::numeric_limits<double>::quiet_NaN(),
                          gap::log_ratios(gap::pool(s.heldout, all_runs(p.runs.size())), null.calibration),
-                         {}});
+                         {}, {}, {}});
+    EffectArgument a = effect_argument(d.ranking.back(), p.site);
+    d.ranking.back().as_effect = std::move(a.text);
+    d.ranking.back().as_effect_kept = std::move(a.kept);
   }
   d.top = d.ranking.front().effect;
   if (options.null_shrink_files > 0) {

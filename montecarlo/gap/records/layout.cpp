@@ -153,6 +153,13 @@ RecordSite read_site(const RecordHeader& header, double default_pulse_mps) {
   } else {
     site.filter_interval_s = 0.0;  // filled in from the data by the caller
   }
+  if (const std::string* warmup = header.find("warmup_s")) {
+    double v = 0.0;
+    if (records_detail::parse_double(*warmup, v) != records_detail::NumberStatus::kOk || !(v >= 0) || v > 48 * 3600.0)
+      throw InputError("header warmup_s", *warmup, "must be a number of seconds in [0, 172800] (switch-on to switch-over)");
+    site.warmup_s = v;
+    site.warmup_from_header = true;
+  }
   if (site.system == System::kGyrocompass && std::abs(header.latitude_deg()) >= 89.0)
     throw InputError("header latitude_deg", fmt::format("{}", header.latitude_deg()),
                      "system 2 (gyrocompass) needs |latitude| < 89 deg");

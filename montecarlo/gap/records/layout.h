@@ -94,6 +94,11 @@ struct RecordSite {
   double position_resolution_m = 0.0;
   Scheme scheme = Scheme::kNone;      ///< applied after the test run
   double nav_start_s = 0.0;           ///< second switch-over (realigning schemes)
+  /// Time from switch-on to switch-over (header warmup_s, else the
+  /// thermal_transient effect's 900 s): the records see a transient only
+  /// from switch-over on; its switch-on size is read through this.
+  double warmup_s = 900.0;
+  bool warmup_from_header = false;
   /// The scheme's least-squares estimators (set by the diagnosis for a
   /// scheme that uses the test run, scheme_rows.h).
   std::optional<TestRunEstimators> estimators;

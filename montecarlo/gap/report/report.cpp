@@ -174,6 +174,10 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
     e["heldout_gap_after"] = c.heldout_gap_after;
     e["shrink"] = c.shrink;
     e["null_shrink"] = std::isfinite(c.null_shrink) ? Json(c.null_shrink) : Json(nullptr);
+    e["as_effect"] = c.as_effect.empty() ? Json(nullptr) : Json(c.as_effect);
+    Json kept = Json::array();
+    for (const std::string& k : c.as_effect_kept) kept.push_back(k);
+    e["as_effect_kept"] = kept;
     Json left = Json::object();
     for (int g = 0; g < gap::kGroupCount; ++g)
       if (std::isfinite(c.heldout_log_ratios.scatter[g])) left[gap::group_name(g)] = c.heldout_log_ratios.scatter[g];
@@ -288,6 +292,14 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
     md += fmt::format("Top: **{}**; runner-up margin {:.3g} ± {:.3g} (resampled runs){}.\n\n", d.top,
                       d.runner_up_margin, d.runner_up_margin_se,
                       d.top.find('|') != std::string::npos ? " — within two standard errors: reported as one class" : "");
+    if (!d.ranking.front().as_effect.empty()) {
+      const CandidateResult& top = d.ranking.front();
+      md += fmt::format("The first-ranked finding as an effect, to simulate and compare (`insmc simulate --effect "
+                        "{}`){}.\n\n", top.as_effect,
+                        top.as_effect_kept.empty() ? ""
+                                                   : fmt::format("; not fitted from the records: {}",
+                                                                 fmt::join(top.as_effect_kept, "; ")));
+    }
     md += likelihood_markdown(d);
   }
   md += "## 4. How far it shrinks\n\n";
