@@ -42,8 +42,11 @@ Evaluated evaluate_under(const Prepared& p, const Build& build, std::vector<std:
 namespace {
 /// The raw-sensor stage's verdict, when import-imu left one in the header.
 void add_raw_stage(Diagnosis& d, const RecordFile& file) {
-  if (const auto raw = raw_stage_from_header(file.header))
+  if (const auto raw = raw_stage_from_header(file.header)) {
     for (std::string& s : raw_stage_statements(*raw, d.top)) d.statements.push_back(std::move(s));
+    d.raw_gyro_ratio = raw->gyro_ratio;
+    d.raw_accel_ratio = raw->accel_ratio;
+  }
 }
 }  // namespace
 

@@ -257,6 +257,10 @@ struct Diagnosis {
   int calibration_runs = 0;
   std::vector<std::string> statements;  ///< what the data cannot support, plainly
   std::vector<SiteValue> site;          ///< every value of the site the null uses, with its source
+  /// From a raw-sensor stage (records/raw_stage.h; 0 without one): the
+  /// gyros' and accelerometers' fitted noise over one Schuler period over
+  /// Table 3.1's bounds, the largest axis of each.
+  double raw_gyro_ratio = 0, raw_accel_ratio = 0;
   /// G (two-sided, what the candidates shrink); p_value and significant are
   /// those of an unmodelled effect: the one-sided G₊ against the null's.
   double gap = 0, p_value = 1, alpha = 0.01;

@@ -58,6 +58,11 @@ TEST(RealDataDocs, TheCommandBlockRunsAsPasted) {
   ASSERT_EQ(r.exit_code, 0) << script << "\n" << r.err;
   for (const char* out : {"noise_adis6/noise.md", "adis6.csv", "gap_adis6/gap.json", "adis18.csv", "gap_adis18/gap.json"})
     EXPECT_TRUE(std::filesystem::exists(work / out)) << out;
+  // The report's first sentence is what an engineer needs first about this
+  // MEMS unit: how far outside Table 3.1 it lies, per sensor.
+  const std::string md = read_file(work / "gap_adis6" / "gap.md");
+  const std::string first = md.substr(0, md.find("\n\n", md.find("\n\n") + 2));
+  EXPECT_NE(first.find("The unit lies outside the model's priors"), std::string::npos) << first;
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "montecarlo/gap/report/report.h"
 
+#include "montecarlo/gap/report/leading_finding.h"
+
 #include <cmath>
 #include <fmt/format.h>
 
@@ -208,6 +210,7 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   Json selected = Json::array();
   for (const std::string& s : d.selected) selected.push_back(s);
   j["selected"] = selected;
+  j["finding"] = leading_finding(d);
   Json statements = Json::array();
   for (const std::string& s : d.statements) statements.push_back(s);
   j["statements"] = statements;
@@ -216,7 +219,7 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
 
 std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosis& d,
                                                                   const std::vector<std::string>& record_files) {
-  std::string md = "# Sim-to-real gap diagnosis\n\n";
+  std::string md = "# Sim-to-real gap diagnosis\n\n**" + leading_finding(d) + "**\n\n";
   md += fmt::format("Records: {} ({} runs, scheme {}). Null: {} truth-level runs of the model itself at the "
                     "records' times, pulse weight, site and scheme{}.\n\n",
                     fmt::join(record_files, ", "), d.runs, d.scheme, d.calibration_runs,
