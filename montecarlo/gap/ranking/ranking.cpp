@@ -75,7 +75,7 @@ std::array<Choice, 2> half_fits(const CandidateSums& s, const std::vector<int>& 
 }
 
 std::array<Choice, 2> half_fits(const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0) {
-  return half_fits(s, run_range(0, n), m0);
+  return half_fits(s, all_runs(n), m0);
 }
 
 int null_file_count(const PreparedRuns& p, const Null& null, const DiagnosisOptions& options) {
