@@ -14,6 +14,7 @@
 #include "montecarlo/gap/null/bootstrap.h"
 #include "montecarlo/gap/null/import_null.h"
 #include "montecarlo/gap/null/null_calibration.h"
+#include "montecarlo/gap/ranking/finding_check.h"
 #include "montecarlo/gap/ranking/greedy.h"
 #include "montecarlo/gap/ranking/statements.h"
 #include "montecarlo/gap/records/diagnosis_records.h"
@@ -157,6 +158,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
     return d;
   }
   rank_and_select(d, p, null, options);
+  if (d.model_gap_significant()) check_finding(d, p, records.file, null, options);
   honest_statements(d);
   add_raw_stage(d, file);
   return d;

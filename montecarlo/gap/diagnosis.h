@@ -139,11 +139,27 @@ struct AllanCurve {
   std::vector<AllanPoint> points;
 };
 
+/// How the fit of a parameter behaves on files simulated with the finding
+/// (ranking/finding_check.h): their mean fitted value over the simulated
+/// one, as a ratio (logarithmic) or a difference (linear), and the spread.
+struct SimulatedCheck {
+  bool measured = false;
+  int files = 0;
+  double simulated = 0;  ///< the value simulated (SI)
+  bool logarithmic = true;
+  double bias = 0;       ///< mean of ln(fitted) − ln(simulated), or of fitted − simulated
+  double spread = 0;     ///< standard deviation of the same over the files
+};
+
 struct ParameterEstimate {
   std::string name;
   Dimension dimension = Dimension::kDimensionless;
-  double value = 0, low = 0, high = 0;  ///< grid point of least G, 16–84 % of resampled fits
+  /// Value of least G (between grid points, fit/subgrid.h) and the 16–84 %
+  /// range of the fits on resampled runs; for the first-ranked finding both
+  /// corrected by `check` when it was measured.
+  double value = 0, low = 0, high = 0;
   bool at_grid_edge = false;
+  SimulatedCheck check;
 };
 
 /// A likelihood profile interval (fit/likelihood_fit.h); an open end stays

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <utility>
 
 namespace insmc::mc {
 
@@ -209,30 +210,41 @@ gap::RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, 
   return gap::make_run_set(std::move(sums), keyed, *s.keys);
 }
 
-Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0) {
-  Choice best;
-  double best_gap = std::numeric_limits<double>::infinity();
-  // Amplitude candidates: the distinct runs of the multiset and where each
-  // entry of the multiset sits among them.
-  std::vector<int> distinct, at;
-  if (s.amplitudes) {
-    std::map<int, int> index;
-    for (int r : runs) {
-      auto [it, added] = index.emplace(r, static_cast<int>(distinct.size()));
-      if (added) distinct.push_back(r);
-      at.push_back(it->second);
-    }
+RunsUnderChoice::RunsUnderChoice(const CandidateSums& sums, std::vector<int> runs_in) : s(&sums), runs(std::move(runs_in)) {
+  if (!s->amplitudes) return;
+  std::map<int, int> index;
+  for (int r : runs) {
+    auto [it, added] = index.emplace(r, static_cast<int>(distinct.size()));
+    if (added) distinct.push_back(r);
+    at.push_back(it->second);
   }
-  for (int k = 0; k < s.grid_size(); ++k) {
-    Choice here{k, {}};
-    double g = 0;
-    if (s.amplitudes) {
-      here.amplitude = least_squares_amplitudes(s, k, runs);
-      g = gap::gap_value(run_set_under(s, distinct, std::vector<Choice>(distinct.size(), here)), at, m0);
-    } else {
-      if (!s.evaluated[static_cast<std::size_t>(k)]) continue;
-      g = gap::gap_value(s.sets[static_cast<std::size_t>(k)], runs, m0);
-    }
+}
+
+double RunsUnderChoice::gap_at(int k, const gap::NullCalibration& m0, Choice* choice) const {
+  Choice here{k, {}};
+  double g = 0;
+  if (s->amplitudes) {
+    // Amplitudes by least squares on the multiset; G over its distinct runs
+    // each counted as often as it is drawn.
+    here.amplitude = least_squares_amplitudes(*s, k, runs);
+    g = gap::gap_value(run_set_under(*s, distinct, std::vector<Choice>(distinct.size(), here)), at, m0);
+  } else {
+    if (!s->evaluated[static_cast<std::size_t>(k)]) return std::numeric_limits<double>::infinity();
+    g = gap::gap_value(s->sets[static_cast<std::size_t>(k)], runs, m0);
+  }
+  if (choice) *choice = std::move(here);
+  return g;
+}
+
+Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0) {
+  return choose(RunsUnderChoice(s, runs), m0);
+}
+
+Choice choose(const RunsUnderChoice& under, const gap::NullCalibration& m0) {
+  Choice best, here;
+  double best_gap = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < under.grid_size(); ++k) {
+    const double g = under.gap_at(k, m0, &here);
     if (g < best_gap) best_gap = g, best = here;
   }
   return best;

@@ -93,8 +93,25 @@ CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
 /// folds, each under the other fold's fit), as a run set in that order.
 gap::RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices);
 
+/// A multiset of runs (indices into the candidate's runs, repeats allowed:
+/// a resample) and G on it at any grid point.
+class RunsUnderChoice {
+ public:
+  RunsUnderChoice(const CandidateSums& s, std::vector<int> runs);
+  /// G at grid point k (amplitudes by least squares on the multiset, into
+  /// *choice when given); +inf at a point the search did not evaluate.
+  double gap_at(int k, const gap::NullCalibration& m0, Choice* choice = nullptr) const;
+  int grid_size() const { return s->grid_size(); }
+
+ private:
+  const CandidateSums* s;
+  std::vector<int> runs;
+  std::vector<int> distinct, at;  ///< amplitude candidates: the distinct runs and where each entry sits among them
+};
+
 /// The choice of least G on the multiset `runs` (m0: the null's calibration).
 Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0);
+Choice choose(const RunsUnderChoice& under, const gap::NullCalibration& m0);
 
 /// The candidate's parameter values of a choice (grid values and amplitudes).
 std::vector<double> parameter_values(const gap::Candidate& c, const Choice& choice);

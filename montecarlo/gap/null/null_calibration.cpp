@@ -12,15 +12,17 @@
 
 namespace insmc::mc {
 
-Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
-               std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of, const ImportNull* import) {
+std::vector<gap::RunData> simulate_like_records(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options,
+                                                int runs, std::uint64_t first_run, const std::vector<EffectSpec>& effects,
+                                                std::vector<int>& layout_of, const ImportNull* import) {
   TruthOptions truth;
   truth.model = p.site.model;
   truth.system = p.site.system;
   truth.dv_pulse_mps = p.site.dv_pulse_mps;
   truth.filter_interval_s = p.site.filter_interval_s;
+  truth.effects = effects;
   const Sampler sampler(options.prior);
-  // The null after the records' scheme, with the estimators the diagnosis uses.
+  // The runs after the records' scheme, with the estimators the diagnosis uses.
   const TestRunOptions test = gap::record_test_options(p.site);
   const TruthSchemeSetup setup(truth, test, p.site.estimators ? *p.site.estimators : TestRunEstimators{});
   const RecordRunSpec spec{p.site.test_duration_s, p.site.position_resolution_m, p.site.scheme, &setup,
@@ -29,27 +31,34 @@ Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& 
   std::vector<gap::SchemeEstimates> estimates(static_cast<std::size_t>(runs));
   std::atomic<std::uint64_t> simulated{0};
   const auto total = static_cast<std::uint64_t>(runs);
+  const char* stage = !effects.empty() ? "runs with the finding" : import ? "null through the import" : "null calibration";
   tbb::parallel_for(0, runs, [&](int j) {
-    report_progress(options, import ? "null through the import" : "null calibration", simulated++, total, "truth runs");
+    report_progress(options, stage, simulated++, total, "truth runs");
     const RecordRun& pattern = file.runs[static_cast<std::size_t>(j) % file.runs.size()];
+    const std::uint64_t run = first_run + static_cast<std::uint64_t>(j);
     RecordFile one;
     one.header = file.header;
-    one.runs.push_back(simulate_like(pattern, truth, sampler, options.seed, static_cast<std::uint64_t>(j), spec));
-    if (import)
-      add_import_noise(one.runs.front(), file.header, pattern.id, *import, options.seed, static_cast<std::uint64_t>(j));
+    one.runs.push_back(simulate_like(pattern, truth, sampler, options.seed, run, spec));
+    if (import) add_import_noise(one.runs.front(), file.header, pattern.id, *import, options.seed, run);
     sim[static_cast<std::size_t>(j)] = std::move(gap::extract_runs(one, p.site, options.extraction).front());
     if (p.site.estimators) {
       const std::optional<gap::SchemeEstimates> u = gap::record_estimates(one.runs.front(), p.site, *p.site.estimators);
-      INSMC_ASSERT(u.has_value(), "null run {} lacks its test grid", j);
+      INSMC_ASSERT(u.has_value(), "simulated run {} lacks its test grid", j);
       estimates[static_cast<std::size_t>(j)] = *u;
     }
   });
   layout_of.resize(sim.size());
   for (std::size_t j = 0; j < sim.size(); ++j) {
     layout_of[j] = p.place(sim[j]);
-    // The null run's own estimates, taken off its rows as the records' are.
+    // The run's own estimates, taken off its rows as the records' are.
     if (p.site.estimators) take_off_estimates(sim[j], p.bases[static_cast<std::size_t>(layout_of[j])], estimates[j]);
   }
+  return sim;
+}
+
+Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
+               std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of, const ImportNull* import) {
+  std::vector<gap::RunData> sim = simulate_like_records(p, file, options, runs, 0, {}, layout_of, import);
   std::vector<gap::RunAnalyser> analysers;
   std::vector<const gap::RunAnalyser*> pointers;
   analysers.reserve(p.layouts.size());

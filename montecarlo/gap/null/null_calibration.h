@@ -4,8 +4,11 @@
 /// (metric/gap_metric.h) and giving the null files every p-value is read
 /// against.
 #include <Eigen/Dense>
+#include <cstdint>
 #include <vector>
 
+#include "lib/records/record.h"
+#include "lib/truth/effect.h"
 #include "montecarlo/gap/diagnosis.h"
 #include "montecarlo/gap/fit/candidate_fit.h"
 #include "montecarlo/gap/metric/gap_metric.h"
@@ -24,6 +27,16 @@ struct Null {
   std::vector<gap::RunData> runs;          // the null runs (estimates taken off)
   std::vector<int> layout_of;              // their layouts
 };
+
+/// `runs` truth runs like the records' (their times and f rows, run j on
+/// the pattern of record j mod their count), as the diagnosis reads them
+/// (estimates taken off), placed in p's layouts (into layout_of). Run j is
+/// run first_run + j of options.seed's streams; `effects` are added to the
+/// model (none: the null); with `import`, the sensor's noise through the
+/// import is added to each.
+std::vector<gap::RunData> simulate_like_records(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options,
+                                                int runs, std::uint64_t first_run, const std::vector<EffectSpec>& effects,
+                                                std::vector<int>& layout_of, const ImportNull* import = nullptr);
 
 /// The model's own null: truth runs like the records' (their times, f rows,
 /// site, pulses), their run set under the base model, the calibration, and

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numeric>
 
+#include "montecarlo/gap/fit/subgrid.h"
 #include "montecarlo/gap/null/bootstrap.h"
 #include "montecarlo/gap/ranking/effect_terms.h"
 #include "montecarlo/gap/ranking/likelihood_ranking.h"
@@ -44,19 +45,24 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
   out.heldout_gap = gap::gap_value(out.heldout, all_runs(n), m0);
   out.full_fit = choose(s, all_runs(n), m0);
   const std::vector<double> best = parameter_values(c, out.full_fit);
-  const std::vector<double> reported = in_effect_terms(best);
+  // Reported between grid points (fit/subgrid.h), so that the resampled
+  // fits spread as the data do, not only from one grid point to the next.
+  const std::vector<double> reported =
+      in_effect_terms(subgrid_values(c, RunsUnderChoice(s, all_runs(n)), out.full_fit, m0));
   constexpr int kResamples = 200;
   std::vector<std::vector<double>> draws(c.parameters.size());
   for (int b = 0; b < kResamples; ++b) {
-    const std::vector<int> runs = resample(seed, 1'000'000 + static_cast<std::uint64_t>(b), static_cast<int>(n), static_cast<int>(n));
-    const std::vector<double> theta = in_effect_terms(parameter_values(c, choose(s, runs, m0)));
+    const RunsUnderChoice runs(
+        s, resample(seed, 1'000'000 + static_cast<std::uint64_t>(b), static_cast<int>(n), static_cast<int>(n)));
+    const std::vector<double> theta = in_effect_terms(subgrid_values(c, runs, choose(runs, m0), m0));
     for (std::size_t i = 0; i < theta.size(); ++i) draws[i].push_back(theta[i]);
   }
   for (std::size_t i = 0; i < c.parameters.size(); ++i) {
     const gap::CandidateParameter& par = c.parameters[i];
     ParameterEstimate e{par.name, par.dimension, reported[i], quantile(draws[i], 0.16), quantile(draws[i], 0.84),
                         par.amplitude ? std::abs(best[i]) >= par.grid.front()
-                                      : par.grid.size() > 1 && (best[i] == par.grid.front() || best[i] == par.grid.back())};
+                                      : par.grid.size() > 1 && (best[i] == par.grid.front() || best[i] == par.grid.back()),
+                        {}};
     out.parameters.push_back(e);
   }
   return out;

@@ -29,9 +29,41 @@ Json parameters_json(const std::vector<ParameterEstimate>& ps) {
     e["high_84"] = p.high;
     e["unit"] = std::string(si_suffix(p.dimension));
     e["at_grid_edge"] = p.at_grid_edge;
+    if (p.check.measured) {
+      // The fit on files simulated with the finding (ranking/finding_check.h).
+      Json c = Json::object();
+      c["files"] = p.check.files;
+      c["simulated"] = p.check.simulated;
+      c["scale"] = p.check.logarithmic ? "log" : "linear";
+      c["bias"] = p.check.bias;
+      c["spread"] = p.check.spread;
+      e["simulated_check"] = c;
+    }
     j[p.name] = e;
   }
   return j;
+}
+
+/// What the first-ranked finding's check on simulated files measured and did
+/// to its values (ranking/finding_check.h).
+std::string checked_markdown(const CandidateResult& top) {
+  std::vector<std::string> parts;
+  int files = 0;
+  for (const ParameterEstimate& p : top.parameters) {
+    if (!p.check.measured) continue;
+    files = p.check.files;
+    parts.push_back(p.check.logarithmic
+                        ? fmt::format("{} fitted {:.3g}× the value simulated (spread {:.2g} in ln)", p.name,
+                                      std::exp(p.check.bias), p.check.spread)
+                        : fmt::format("{} fitted {} off the value simulated (spread {})", p.name,
+                                      format_quantity_rounded(p.check.bias, p.dimension),
+                                      format_quantity_rounded(p.check.spread, p.dimension)));
+  }
+  if (parts.empty()) return "";
+  return fmt::format("Its values and ranges above are corrected for the fit's own bias, measured on {} files of the "
+                     "records' size simulated with it and fitted the same way: {}; each range is widened by that "
+                     "bias' standard error.\n\n",
+                     files, fmt::join(parts, "; "));
 }
 
 std::string params_text(const std::vector<ParameterEstimate>& ps) {
@@ -302,6 +334,7 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                         top.as_effect_kept.empty() ? ""
                                                    : fmt::format("; not fitted from the records: {}",
                                                                  fmt::join(top.as_effect_kept, "; ")));
+      md += checked_markdown(top);
     }
     md += likelihood_markdown(d);
   }

@@ -73,31 +73,6 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-RecordFile simulate_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs) {
-  TruthOptions truth;
-  truth.effects = effects;
-  const double T = 900.0, nav = 90 * 60.0;
-  RecordFile file;
-  file.header = RecordHeader::make(truth.model.latitude_rad / kDegToRad, truth.system, T, Scheme::kNone);
-  file.header.set("dv_pulse_mps", truth.dv_pulse_mps);
-  file.header.set("filter_interval_s", truth.filter_interval_s);
-  for (std::size_t i = 0; i < effects.size(); ++i)
-    file.header.set(fmt::format("truth.effect.{}", i), format_effect(effects[i]));
-  const Sampler sampler(UncertaintyModel{});
-  const std::vector<double> times = uniform_times(T + nav, truth.filter_interval_s, false);
-  for (int r = 0; r < runs; ++r)
-    file.runs.push_back(simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(r), times, {T, 0.0}));
-  return without_truth(std::move(file));  // the diagnosis is blind
-}
-
-RecordFile foreign_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs, const ForeignLayout& layout) {
-  TruthOptions truth;
-  truth.effects = effects;
-  ForeignRuns spec;
-  spec.runs = runs;
-  return simulate_foreign_file(truth, Sampler(UncertaintyModel{}), seed, spec, layout);
-}
-
 bool selected(const ValidationOptions& options, const std::string& effect) {
   return options.effects.empty() ||
          std::find(options.effects.begin(), options.effects.end(), effect) != options.effects.end();
@@ -119,6 +94,31 @@ ValidationOptions ValidationOptions::quick_subset() {
   o.seeds = 1;
   o.null_files = 4;
   return o;
+}
+
+RecordFile own_layout_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs) {
+  TruthOptions truth;
+  truth.effects = effects;
+  const double T = 900.0, nav = 90 * 60.0;
+  RecordFile file;
+  file.header = RecordHeader::make(truth.model.latitude_rad / kDegToRad, truth.system, T, Scheme::kNone);
+  file.header.set("dv_pulse_mps", truth.dv_pulse_mps);
+  file.header.set("filter_interval_s", truth.filter_interval_s);
+  for (std::size_t i = 0; i < effects.size(); ++i)
+    file.header.set(fmt::format("truth.effect.{}", i), format_effect(effects[i]));
+  const Sampler sampler(UncertaintyModel{});
+  const std::vector<double> times = uniform_times(T + nav, truth.filter_interval_s, false);
+  for (int r = 0; r < runs; ++r)
+    file.runs.push_back(simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(r), times, {T, 0.0}));
+  return without_truth(std::move(file));  // the diagnosis is blind
+}
+
+RecordFile foreign_layout_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs, const ForeignLayout& layout) {
+  TruthOptions truth;
+  truth.effects = effects;
+  ForeignRuns spec;
+  spec.runs = runs;
+  return simulate_foreign_file(truth, Sampler(UncertaintyModel{}), seed, spec, layout);
 }
 
 ValidationResult validate_diagnosis(const ValidationOptions& options) {
@@ -167,8 +167,8 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
     std::optional<ForeignLayout> layout;
     if (options.foreign_layouts)
       layout = foreign_layout_of(job.file_seed, job.spec && job.spec->kind == EffectKind::kQuantization);
-    const RecordFile records = layout ? foreign_file(effects, job.file_seed, options.runs_per_file, *layout)
-                                      : simulate_file(effects, job.file_seed, options.runs_per_file);
+    const RecordFile records = layout ? foreign_layout_file(effects, job.file_seed, options.runs_per_file, *layout)
+                                      : own_layout_file(effects, job.file_seed, options.runs_per_file);
     const auto start = std::chrono::steady_clock::now();
     const Diagnosis g = diagnose(records, d);
     ValidationCase c{job.effect, job.magnitude, job.seed, g.significant, g.top, false, 0.0, 0.0, g.gap, g.p_value, 0.0, ""};

@@ -9,6 +9,9 @@
 #include <vector>
 
 #include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/gap/validation/foreign_layout.h"
+#include "lib/records/record.h"
+#include "lib/truth/effect.h"
 
 namespace insmc::mc {
 
@@ -76,6 +79,13 @@ struct ValidationResult {
 };
 
 ValidationResult validate_diagnosis(const ValidationOptions& options);
+
+/// A study file as validate_diagnosis writes it, blind (no truth keys):
+/// `runs` runs of `seed` with `effects`, system 1 at 45°, T = 15 min and
+/// 90 min of navigation, in insmc's own layout or in `layout`.
+RecordFile own_layout_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs);
+RecordFile foreign_layout_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs,
+                               const ForeignLayout& layout);
 
 /// The confusion matrix: files per true effect (rows: "none", then the
 /// registry's effects) and reported top (columns, first seen first: an

@@ -41,9 +41,9 @@ TEST(EffectTerms, ATransientAtSwitchOverIsReportedAtSwitchOnAsTheTruthDefinesIt)
 TEST(EffectTerms, TheFindingIsAnEffectArgumentSimulateAccepts) {
   CandidateResult c;
   c.effect = "thermal_transient";
-  c.parameters = {{"bias", Dimension::kAcceleration, 0.2 * kMgToMps2, 0, 0, false},
-                  {"drift", Dimension::kAngularRate, 3 * kMeruToRadps, 0, 0, false},
-                  {"tau", Dimension::kTime, 1200.0, 0, 0, false}};
+  c.parameters = {{"bias", Dimension::kAcceleration, 0.2 * kMgToMps2, 0, 0, false, {}},
+                  {"drift", Dimension::kAngularRate, 3 * kMeruToRadps, 0, 0, false, {}},
+                  {"tau", Dimension::kTime, 1200.0, 0, 0, false, {}}};
   gap::RecordSite site;
   EffectArgument a = effect_argument(c, site);
   EXPECT_EQ(a.text, "thermal_transient:bias=0.2mg,drift=3meru,tau=1.2e+03s,warmup=900s");
@@ -59,7 +59,7 @@ TEST(EffectTerms, TheFindingIsAnEffectArgumentSimulateAccepts) {
   // A candidate whose parameters are not the effect's has no such form.
   CandidateResult gravity;
   gravity.effect = "gravity_model";
-  gravity.parameters = {{"north_offset", Dimension::kAcceleration, 1e-5, 0, 0, false}};
+  gravity.parameters = {{"north_offset", Dimension::kAcceleration, 1e-5, 0, 0, false, {}}};
   EXPECT_TRUE(effect_argument(gravity, site).text.empty());
 }
 

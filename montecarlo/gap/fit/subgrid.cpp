@@ -1,0 +1,51 @@
+#include "montecarlo/gap/fit/subgrid.h"
+
+#include <cmath>
+#include <limits>
+
+namespace insmc::mc {
+
+double parabola_vertex(const double (&x)[3], const double (&y)[3]) {
+  const double a = (x[1] - x[0]) * (y[1] - y[2]), b = (x[1] - x[2]) * (y[1] - y[0]);
+  const double den = a - b;
+  // Convex with its least at the middle point: y[1] below the chord.
+  const double chord = y[0] + (y[2] - y[0]) * (x[1] - x[0]) / (x[2] - x[0]);
+  if (!(den != 0.0) || !(y[1] < chord) || !std::isfinite(den)) return x[1];
+  const double v = x[1] - 0.5 * ((x[1] - x[0]) * a - (x[1] - x[2]) * b) / den;
+  return std::isfinite(v) ? v : x[1];
+}
+
+std::vector<double> subgrid_values(const gap::Candidate& c, const RunsUnderChoice& under,
+                                   const Choice& best, const gap::NullCalibration& m0) {
+  std::vector<double> values = parameter_values(c, best);
+  // Grid index = Σ index_i × stride_i, the last searched parameter fastest (Candidate::grid_point).
+  int stride = 1;
+  for (std::size_t i = c.parameters.size(); i-- > 0;) {
+    const gap::CandidateParameter& par = c.parameters[i];
+    if (par.amplitude) continue;
+    const int n = static_cast<int>(par.grid.size());
+    const int at = (best.grid / stride) % n;
+    const int here_stride = stride;
+    stride *= n;
+    if (at == 0 || at == n - 1) continue;
+    // The nearest point on each side that the search evaluated.
+    const auto gap_at = [&](int j) { return under.gap_at(best.grid + (j - at) * here_stride, m0); };
+    int lo = at - 1, hi = at + 1;
+    while (lo > 0 && !std::isfinite(gap_at(lo))) --lo;
+    while (hi < n - 1 && !std::isfinite(gap_at(hi))) ++hi;
+    const double g[3] = {gap_at(lo), gap_at(at), gap_at(hi)};
+    if (!std::isfinite(g[0]) || !std::isfinite(g[2])) continue;
+    const double v[3] = {par.grid[static_cast<std::size_t>(lo)], par.grid[static_cast<std::size_t>(at)],
+                         par.grid[static_cast<std::size_t>(hi)]};
+    // A grid's 0 is a limit of its own (no effect, or a random walk where
+    // a correlation time is searched), not a point on the scale: no
+    // refinement across it.
+    if (!(v[0] > 0)) continue;
+    double x[3], y[3];
+    for (int k = 0; k < 3; ++k) x[k] = std::log(v[k]), y[k] = g[k] * g[k];
+    values[i] = std::exp(parabola_vertex(x, y));
+  }
+  return values;
+}
+
+}  // namespace insmc::mc
