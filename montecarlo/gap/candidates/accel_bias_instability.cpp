@@ -16,7 +16,9 @@ Candidate accel_bias_instability() {
                     "1 s (shorter is white noise in f) to 48 h, the longest run; a random walk is its upper end")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             return process_extension(ctx, Drive::kAccel, p[0], p[1]);
-          }};
+          },
+          {},
+          "a longer stationary test run (the accelerometers' wander beyond its correlation time)"};
 }
 
 }  // namespace insmc::gap::candidates

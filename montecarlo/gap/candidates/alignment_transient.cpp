@@ -18,7 +18,9 @@ Candidate alignment_transient() {
             Extension e;
             e.x_var_add.segment<3>(ux::kMisalignAlign) = Eigen::Vector3d(p[0] * p[0], p[0] * p[0], p[1] * p[1]);
             return e;
-          }};
+          },
+          {},
+          "a longer fine alignment (what is left of the initial error decays with it)"};
 }
 
 }  // namespace insmc::gap::candidates

@@ -13,7 +13,9 @@ Candidate angle_random_walk() {
                     "1e-6 of Table 3.1's 0.5 mrad misalignment up to the 100 mrad of the small-angle model")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             return process_extension(ctx, Drive::kAngle, p[0], 0.0);
-          }};
+          },
+          {},
+          "the gyros' raw outputs (import-imu's raw-sensor stage) or a longer stationary test run"};
 }
 
 }  // namespace insmc::gap::candidates

@@ -52,7 +52,9 @@ Candidate anisoelastic_drift() {
                               th.col(0) = theta.at(t);
                             }).col(0);
             return e;
-          }};
+          },
+          {},
+          "another orientation (the drift follows products of the specific-force components)"};
 }
 
 }  // namespace insmc::gap::candidates

@@ -13,7 +13,9 @@ Candidate bounds() {
             Extension e;
             e.x_var_scale = UncertaintyVector::Constant(p[0] * p[0]);
             return e;
-          }};
+          },
+          {},
+          "more runs (a prior's width is read from the run-to-run scatter)"};
 }
 
 }  // namespace insmc::gap::candidates

@@ -57,6 +57,10 @@ struct Candidate {
   /// defines the effect by, in place, where the candidate's own differ
   /// (a transient fitted at switch-over, defined at switch-on); empty: the same.
   std::function<void(std::span<double>, const RecordSite&)> to_effect_terms = {};
+  /// The test that shows this effect's own signature, where records of
+  /// another may look alike: said when the ranking cannot tell it from its
+  /// runner-up (ranking/statements.cpp).
+  std::string told_apart_by;
 
   /// Number of grid points (the product of the parameters' grids).
   int grid_size() const;

@@ -16,7 +16,9 @@ Candidate deflection_of_vertical() {
             Extension e;
             e.mean = p[0] * ctx.base->H_x.col(ux::kDeflection) + p[1] * ctx.base->H_x.col(ux::kDeflection + 1);
             return e;
-          }};
+          },
+          {},
+          "a second site (the deflection belongs to the site: the same in every run)"};
 }
 
 }  // namespace insmc::gap::candidates

@@ -42,7 +42,9 @@ Candidate gravity_model() {
               e.mean[static_cast<Eigen::Index>(i)] += p[0] * C(row.axis, 0) + p[1] * C(row.axis, 2);
             }
             return e;
-          }};
+          },
+          {},
+          "a second site at another latitude"};
 }
 
 }  // namespace insmc::gap::candidates

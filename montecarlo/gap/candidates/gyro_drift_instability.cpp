@@ -16,7 +16,9 @@ Candidate gyro_drift_instability() {
                     "1 s (shorter is white rate noise) to 48 h, the longest run; a random walk is its upper end")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             return process_extension(ctx, Drive::kRate, p[0], p[1]);
-          }};
+          },
+          {},
+          "a longer stationary test run (the tilt's growth beyond the drift's correlation time)"};
 }
 
 }  // namespace insmc::gap::candidates

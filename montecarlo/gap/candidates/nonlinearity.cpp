@@ -22,7 +22,9 @@ Candidate nonlinearity() {
               if (ctx.layout->rows[i].quantity == Quantity::kR)
                 e.noise_var_add[static_cast<Eigen::Index>(i)] = std::pow(p[0] * ctx.base->prior_std[static_cast<Eigen::Index>(i)], 2);
             return e;
-          }};
+          },
+          {},
+          "the truth level beside the linear one (insmc run --fidelity truth) on the same samples"};
 }
 
 }  // namespace insmc::gap::candidates

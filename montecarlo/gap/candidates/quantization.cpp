@@ -15,7 +15,9 @@ Candidate quantization() {
             Extension e;
             e.counting = pulse_counting(*ctx.layout, *ctx.site, p[0], ctx.base->x_var, ctx.base->noise_var.cwiseSqrt());
             return e;
-          }};
+          },
+          {},
+          "the recorder's pulse weight (header dv_pulse_mps) or f at a finer resolution"};
 }
 
 }  // namespace insmc::gap::candidates

@@ -26,7 +26,9 @@ Candidate scale_factor_nonlinearity() {
                                            a.col(0) = (f.array().square() - f0.array().square()).matrix() / g2;
                                          }).col(0));
             return e;
-          }};
+          },
+          {},
+          "another orientation (a multi-position test: the error follows f squared)"};
 }
 
 }  // namespace insmc::gap::candidates

@@ -57,7 +57,9 @@ Candidate sway() {
             e.counting = pulse_counting(*ctx.layout, *ctx.site, ctx.site->dv_pulse_mps, ctx.base->x_var,
                                         ctx.base->noise_var.cwiseSqrt(), motion);
             return e;
-          }};
+          },
+          {},
+          "a test run with the vehicle held still, or f sampled faster than the sway periods"};
 }
 
 }  // namespace insmc::gap::candidates

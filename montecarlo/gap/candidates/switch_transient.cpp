@@ -20,7 +20,9 @@ Candidate switch_transient() {
             e.x_var_add.segment<2>(ux::kBiasChangeAlign).setConstant(p[1] * p[1]);
             e.x_var_add[ux::kAccelBias + 2] = p[1] * p[1];
             return e;
-          }};
+          },
+          {},
+          "repeated alignments of one unit (a step at switch-over is drawn anew each time)"};
 }
 
 }  // namespace insmc::gap::candidates

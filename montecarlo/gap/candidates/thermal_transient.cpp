@@ -43,7 +43,8 @@ Candidate thermal_transient() {
             const double grown = std::exp(site.warmup_s / p[2]);
             p[0] *= grown;
             p[1] *= grown;
-          }};
+          },
+          "another warm-up time before switch-over (the transient decays from switch-on)"};
 }
 
 }  // namespace insmc::gap::candidates

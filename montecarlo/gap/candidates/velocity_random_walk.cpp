@@ -19,7 +19,9 @@ Candidate velocity_random_walk() {
             const double q = p[0] * p[0] / 3600.0;
             e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(q / ctx.site->filter_interval_s));
             return e;
-          }};
+          },
+          {},
+          "the accelerometers' raw outputs (import-imu's raw-sensor stage) or f sampled faster"};
 }
 
 }  // namespace insmc::gap::candidates

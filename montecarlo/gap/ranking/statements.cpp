@@ -7,8 +7,21 @@
 
 #include "lib/units/quantity.h"
 #include "lib/units/quantity_display.h"
+#include "montecarlo/gap/candidates/candidates.h"
 
 namespace insmc::mc {
+
+std::string what_tells_apart(const std::string& a, const std::string& b) {
+  const auto test_of = [](const std::string& name) {
+    for (const gap::Candidate& c : gap::candidate_registry())
+      if (c.name == name) return c.told_apart_by;
+    return std::string();
+  };
+  const std::string ta = test_of(a), tb = test_of(b);
+  if (ta.empty() || tb.empty()) return "more runs would tell them apart";
+  if (ta == tb) return "what would tell them apart: " + ta;
+  return fmt::format("what would tell them apart: for {}, {}; for {}, {}", a, ta, b, tb);
+}
 
 void honest_statements(Diagnosis& d) {
   if (!d.ranked || !d.model_gap_significant()) return;
@@ -43,7 +56,8 @@ void honest_statements(Diagnosis& d) {
                                        "or masked by what is present, so the data say nothing about them", traceless));
   if (d.top.find('|') != std::string::npos)
     d.statements.push_back(fmt::format("{} are not told apart by these data (held-out margin {:.3g} ± {:.3g}): "
-                                       "reported as one class", d.top, d.runner_up_margin, d.runner_up_margin_se));
+                                       "reported as one class; {}", d.top, d.runner_up_margin, d.runner_up_margin_se,
+                                       what_tells_apart(d.ranking[0].effect, d.ranking[1].effect)));
 }
 
 }  // namespace insmc::mc
