@@ -1,5 +1,7 @@
 #include "montecarlo/gap/candidates/common.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <utility>
 
@@ -41,6 +43,20 @@ Eigen::VectorXd f_noise(const LayoutContext& ctx, const Eigen::Vector3d& var) {
   for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
     const ObservationRow& r = ctx.layout->rows[i];
     if (r.quantity == Quantity::kF) add[static_cast<Eigen::Index>(i)] = var[r.axis];
+  }
+  return add;
+}
+
+Eigen::VectorXd tilt_f_noise(const LayoutContext& ctx, double angle_var_rad2, double growth_rad2ps) {
+  Eigen::VectorXd add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));
+  for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
+    const ObservationRow& r = ctx.layout->rows[i];
+    if (r.quantity != Quantity::kF) continue;
+    // δf = δθ × f: with the same variance about every axis, axis k sees the
+    // other two components of f.
+    const Eigen::Vector3d f = specific_force(r.t_s, ctx.site->model);
+    const double var = angle_var_rad2 + growth_rad2ps * std::max(r.t_s, 0.0);
+    add[static_cast<Eigen::Index>(i)] = var * (f.squaredNorm() - f[r.axis] * f[r.axis]);
   }
   return add;
 }

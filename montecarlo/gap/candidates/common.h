@@ -39,6 +39,12 @@ double layout_end(const Layout& layout);
 /// Noise added to the f rows (per axis weight) [ (m/s²)² ].
 Eigen::VectorXd f_noise(const LayoutContext& ctx, const Eigen::Vector3d& var);
 
+/// Noise added to the f rows by a platform angle of variance angle_var_rad2
+/// + growth_rad2ps × t about each axis, through the specific force of each
+/// row's time: the platform is space-stabilized, so gravity turns in it with
+/// the earth and reaches the vertical accelerometer as well [ (m/s²)² ].
+Eigen::VectorXd tilt_f_noise(const LayoutContext& ctx, double angle_var_rad2, double growth_rad2ps = 0.0);
+
 /// Columns of a deterministic signature with amplitude prior params (one
 /// column per axis unless `shared`).
 Eigen::MatrixXd signature_columns(const LayoutContext& ctx, const std::string& key, int columns,

@@ -148,16 +148,31 @@ Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma,
   e.columns = process_columns(ctx, drive, tau);
   e.column_var = Eigen::VectorXd::Constant(e.columns.cols(), sigma * sigma);
   // The bridges' higher modes, seen by the f rows only: of the process
-  // itself (accelerometer) or of g × θ (a tilt on the horizontal axes).
+  // itself (accelerometer) or of θ × f (a platform angle, through the
+  // specific force of the row's time).
   // The f rows' knots: after a realignment those of the test part, the only
   // part with modelled f rows (process_columns spaces each part's own).
   const Layout& layout = *ctx.layout;
   const bool restarted = layout.nav == NavSegment::kRestart && layout.test_rows < static_cast<int>(layout.rows.size());
   const double spacing = knot_spacing(tau, restarted ? layout.test_part() : layout);
   const double rest = bridge_rest_share(kBridgeModes) * sigma * sigma * unit_diffusion(tau) * spacing;
-  const double g = ctx.site->model.gravity_mps2;
   if (drive == Drive::kAccel) e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(rest));
-  if (drive == Drive::kAngle) e.noise_var_add = f_noise(ctx, Eigen::Vector3d(g * g * rest, g * g * rest, 0.0));
+  if (drive == Drive::kAngle) e.noise_var_add = tilt_f_noise(ctx, rest);
+  if (drive == Drive::kRate) {
+    // A drift's higher bridge modes turn the platform by ∫ω: on average over
+    // an interval 3qΔ³ Σ_{m>M} (mπ)⁻⁴, and the odd ones leave an angle at
+    // the interval's end that adds up from interval to interval,
+    // 8qΔ³ Σ_{odd m>M} (mπ)⁻⁴ each. Invisible at the pulses' resolution,
+    // they are what a continuous f record shows of a drift.
+    const double q = sigma * sigma * unit_diffusion(tau), d3 = spacing * spacing * spacing;
+    const double pi4 = std::pow(std::numbers::pi, 4);
+    double all = 1.0 / 90.0, odd = 1.0 / 96.0;  // Σ (mπ)⁻⁴ over all m, over odd m
+    for (int m = 1; m <= kBridgeModes; ++m) {
+      all -= 1.0 / (m * m * m * m * pi4);
+      if (m % 2) odd -= 1.0 / (m * m * m * m * pi4);
+    }
+    e.noise_var_add = tilt_f_noise(ctx, 3.0 * q * d3 * all, 8.0 * q * d3 * odd / spacing);
+  }
   return e;
 }
 
