@@ -1,5 +1,7 @@
 #include "montecarlo/gap/fit/candidate_fit.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <limits>
 #include <map>
@@ -71,20 +73,35 @@ CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
   out.at.resize(static_cast<std::size_t>(K));
   out.sets.resize(static_cast<std::size_t>(K));
   out.evaluated.assign(static_cast<std::size_t>(K), false);
-  const auto evaluate = [&](int k) {
-    if (out.evaluated[static_cast<std::size_t>(k)]) return;
-    const std::vector<double> theta = c.grid_point(k);
-    std::vector<std::optional<gap::RunAnalyser>> analysers(p.layouts.size());
-    std::vector<const gap::RunAnalyser*> pointers_to(p.layouts.size(), nullptr);
-    for (std::size_t L = 0; L < p.layouts.size(); ++L) {
-      if (!used(p, L)) continue;
-      const gap::Extension e = c.build(ctx[L], theta);
-      analysers[L].emplace(p.layouts[L], gap::combine(p.bases[L], pointers(selected[L], &e)));
-      pointers_to[L] = &*analysers[L];
+  // The points of a batch: their extensions built one after another (a
+  // candidate's build fills the layout's response cache, which is not
+  // shared across threads), then the run models and the runs under them
+  // (most of the cost) side by side. Each point's result is its own, so the
+  // order does not change it.
+  const auto evaluate = [&](std::vector<int> ks) {
+    std::sort(ks.begin(), ks.end());
+    ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
+    std::erase_if(ks, [&](int k) { return out.evaluated[static_cast<std::size_t>(k)]; });
+    std::vector<std::vector<std::optional<gap::Extension>>> extensions(ks.size());
+    for (std::size_t b = 0; b < ks.size(); ++b) {
+      const std::vector<double> theta = c.grid_point(ks[b]);
+      extensions[b].resize(p.layouts.size());
+      for (std::size_t L = 0; L < p.layouts.size(); ++L)
+        if (used(p, L)) extensions[b][L].emplace(c.build(ctx[L], theta));
     }
-    out.at[static_cast<std::size_t>(k)] = evaluate_runs(p.runs, p.layout_of, pointers_to, p.keys);
-    out.sets[static_cast<std::size_t>(k)] = out.at[static_cast<std::size_t>(k)].set(p.keys);
-    out.evaluated[static_cast<std::size_t>(k)] = true;
+    tbb::parallel_for(std::size_t{0}, ks.size(), [&](std::size_t b) {
+      std::vector<std::optional<gap::RunAnalyser>> analysers(p.layouts.size());
+      std::vector<const gap::RunAnalyser*> pointers_to(p.layouts.size(), nullptr);
+      for (std::size_t L = 0; L < p.layouts.size(); ++L) {
+        if (!extensions[b][L]) continue;
+        analysers[L].emplace(p.layouts[L], gap::combine(p.bases[L], pointers(selected[L], &*extensions[b][L])));
+        pointers_to[L] = &*analysers[L];
+      }
+      const auto k = static_cast<std::size_t>(ks[b]);
+      out.at[k] = evaluate_runs(p.runs, p.layout_of, pointers_to, p.keys);
+      out.sets[k] = out.at[k].set(p.keys);
+    });
+    for (int k : ks) out.evaluated[static_cast<std::size_t>(k)] = true;
   };
   // Grid index = first-parameter index × rest + rest index (grid_point).
   const int first = static_cast<int>(c.parameters.front().grid.size()), rest = K / first;
@@ -93,7 +110,10 @@ CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
     for (std::size_t r = 0; r < p.runs.size(); ++r) groups.front()[r] = static_cast<int>(r);
   }
   for (int j = 0; j < rest; ++j) {
-    for (int i = 0; i < first; i += 2) evaluate(i * rest + j);
+    std::vector<int> every_other;
+    for (int i = 0; i < first; i += 2) every_other.push_back(i * rest + j);
+    evaluate(every_other);
+    std::vector<int> next_to_best;
     for (const std::vector<int>& runs : groups) {
       int best = -1;
       double best_gap = std::numeric_limits<double>::infinity();
@@ -102,8 +122,9 @@ CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
         if (g < best_gap) best_gap = g, best = i;
       }
       for (int i : {best - 1, best + 1})
-        if (i >= 0 && i < first) evaluate(i * rest + j);
+        if (i >= 0 && i < first) next_to_best.push_back(i * rest + j);
     }
+    evaluate(next_to_best);
   }
   return out;
 }
