@@ -8,6 +8,7 @@
 
 #include "apps/config_file.h"
 #include "apps/sweep.h"
+#include "lib/common/closest_name.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 #include "lib/units/physical_range.h"
@@ -53,7 +54,14 @@ std::optional<po::variables_map> parse_args(const Args& args, const std::string&
   const po::options_description all = with_generic(options);
   {
     po::variables_map first;
-    po::store(po::command_line_parser(args).options(all).run(), first);
+    try {
+      po::store(po::command_line_parser(args).options(all).run(), first);
+    } catch (const po::unknown_option& e) {
+      std::vector<std::string> names;
+      for (const auto& o : all.options()) names.push_back("--" + o->long_name());
+      throw po::error("unrecognised option '" + echo_input(e.get_option_name()) + "'" +
+                      did_you_mean(e.get_option_name(), names));
+    }
     if (first.count("help")) {
       fmt::print("usage: insmc {} {}\n\n", subcommand, synopsis);
       std::cout << all << std::flush;

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "lib/common/assert.h"
+#include "lib/common/closest_name.h"
+#include "lib/common/input_text.h"
 #include "lib/common/input_error.h"
 #include "lib/truth/effects/effects.h"
 #include "lib/units/units.h"
@@ -70,7 +72,10 @@ std::string_view to_string(EffectKind kind) { return effect_info(kind).name; }
 EffectKind parse_effect_kind(std::string_view text, std::string_view field) {
   for (const EffectInfo& e : effect_registry())
     if (e.name == text) return e.kind;
-  throw InputError(std::string(field), std::string(text), "unknown effect; expected one of " + effect_names());
+  std::vector<std::string> names;
+  for (const EffectInfo& e : effect_registry()) names.emplace_back(e.name);
+  throw InputError(std::string(field), echo_input(text),
+                   "unknown effect" + did_you_mean(text, names) + "; expected one of " + effect_names());
 }
 
 double EffectSpec::value(std::string_view name) const {

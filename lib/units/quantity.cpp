@@ -40,6 +40,30 @@ constexpr UnitFactor kAngleWalkUnits[] = {{"radprts", 1.0}, {"degprth", kDegToRa
 constexpr UnitFactor kVelocityWalkUnits[] = {{"mpsprts", 1.0}, {"mpsprth", 1.0 / 60}, {"ftpsprth", kFtToM / 60}};
 constexpr UnitFactor kDimensionlessUnits[] = {{"", 1.0}, {"ppm", kPpmToUnit}};
 
+/// Spellings engineers type for the units above (the paper's, data sheets'
+/// and plain SI), each to the name in the tables.
+struct UnitSpelling {
+  const char* typed;
+  const char* name;
+};
+constexpr UnitSpelling kSpellings[] = {
+    {"deg/h", "degph"},    {"deg/hr", "degph"},     {"°/h", "degph"},           {"°/hr", "degph"},
+    {"dph", "degph"},      {"deg/s", "degps"},      {"°/s", "degps"},           {"mrad/s", "mradps"},
+    {"rad/s", "radps"},    {"µg", "ug"},            {"μg", "ug"},               {"m/s", "mps"},
+    {"ft/s", "ftps"},      {"fps", "ftps"},         {"mm/s", "mmps"},           {"m/s2", "mps2"},
+    {"m/s^2", "mps2"},     {"m/s²", "mps2"},        {"ft/s2", "ftps2"},         {"ft/s^2", "ftps2"},
+    {"ft/s²", "ftps2"},    {"NM", "nmi"},           {"nm", "nmi"},              {"n.mi.", "nmi"},
+    {"µrad", "urad"},      {"μrad", "urad"},        {"°", "deg"},               {"hr", "h"},
+    {"sec", "s"},          {"deg/sqrt(h)", "degprth"}, {"deg/√h", "degprth"},   {"deg/rt-h", "degprth"},
+    {"m/s/sqrt(h)", "mpsprth"}, {"m/s/√h", "mpsprth"}, {"ft/s/sqrt(h)", "ftpsprth"}, {"ft/s/√h", "ftpsprth"},
+};
+
+std::string_view unit_name_of(std::string_view typed) {
+  for (const UnitSpelling& s : kSpellings)
+    if (typed == s.typed) return s.name;
+  return typed;
+}
+
 std::span<const UnitFactor> units_of(Dimension d) {
   switch (d) {
     case Dimension::kLength: return kLengthUnits;
@@ -58,7 +82,8 @@ std::span<const UnitFactor> units_of(Dimension d) {
 std::string accepted_list(Dimension d) {
   if (d == Dimension::kDimensionless) return "a bare number (or NUMBERppm)";
   std::vector<std::string> names = accepted_units(d);
-  return fmt::format("a number with one of the units {}", fmt::join(names, ", "));
+  return fmt::format("a number with one of the units {} (or their usual spellings: deg/h, µg, ft/s, m/s², NM, ...)",
+                     fmt::join(names, ", "));
 }
 
 }  // namespace
@@ -104,8 +129,9 @@ double parse_quantity(std::string_view text, Dimension dimension, std::string_vi
     throw InputError(std::string(field), shown, "must be finite; expected " + allowed);
   std::string unit(end);
   while (!unit.empty() && unit.front() == ' ') unit.erase(unit.begin());
+  const std::string_view name = unit_name_of(unit);
   for (const auto& u : units_of(dimension)) {
-    if (unit == u.name) {
+    if (name == u.name) {
       const double si = number * u.to_si;
       if (!std::isfinite(si)) throw InputError(std::string(field), shown, "must be finite; expected " + allowed);
       return si;

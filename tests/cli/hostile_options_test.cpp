@@ -119,5 +119,29 @@ TEST(HostileOptions, APercentPlaceholderInAnArgumentIsRefusedNotLoopedOn) {
   }
 }
 
+TEST(HostileOptions, AMisspelledOptionOrEffectNameGetsTheNameMeant) {
+  const ProgramResult option = run_insmc("gap --recrods x.csv");
+  EXPECT_EQ(option.exit_code, 2);
+  EXPECT_NE(option.err.find("unrecognised option '--recrods' (did you mean --records?)"), std::string::npos)
+      << option.err;
+  const ProgramResult effect = run_insmc("simulate --effect angle_randomwalk --out x.csv");
+  EXPECT_EQ(effect.exit_code, 2);
+  EXPECT_NE(effect.err.find("unknown effect (did you mean angle_random_walk?)"), std::string::npos) << effect.err;
+  // Nothing close: no guess.
+  const ProgramResult far = run_insmc("run --gyro-drift-bound 1meru");
+  EXPECT_EQ(far.exit_code, 2);
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+}
+
+TEST(HostileOptions, AUnitInItsUsualSpellingIsTakenForTheOneInsmcNamesIt) {
+  // deg/h for degph, as data sheets write it; the same study bit for bit.
+  TempDir dir;
+  const ProgramResult typed = run_insmc("run --samples 200 --quiet --bound gyro_drift=3deg/h --out " + dir.str() + "/a");
+  const ProgramResult named = run_insmc("run --samples 200 --quiet --bound gyro_drift=3degph --out " + dir.str() + "/b");
+  ASSERT_EQ(typed.exit_code, 0) << typed.err;
+  ASSERT_EQ(named.exit_code, 0) << named.err;
+  EXPECT_EQ(typed.out, named.out);
+}
+
 }  // namespace
 }  // namespace insmc::testing

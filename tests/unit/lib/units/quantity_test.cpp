@@ -116,5 +116,27 @@ TEST(SensorSpecUnits, EffectsTakeTheWalkForTheirValueAfterOneHour) {
   EXPECT_NEAR(v.values_si[0], 0.03, 1e-12);
 }
 
+TEST(UnitSpellings, TheUsualSpellingsOfDataSheetsAndThePaperAreTheirUnits) {
+  // Each spelling against its table unit, so a slip in the table shows.
+  const struct {
+    const char* typed;
+    const char* unit;
+    Dimension d;
+  } cases[] = {{"3deg/h", "3degph", Dimension::kAngularRate},   {"3 deg/hr", "3degph", Dimension::kAngularRate},
+               {"3°/h", "3degph", Dimension::kAngularRate},     {"0.2dph", "0.2degph", Dimension::kAngularRate},
+               {"5µg", "5ug", Dimension::kAcceleration},        {"5μg", "5ug", Dimension::kAcceleration},
+               {"2m/s²", "2mps2", Dimension::kAcceleration},    {"2m/s^2", "2mps2", Dimension::kAcceleration},
+               {"0.1ft/s", "0.1ftps", Dimension::kVelocity},    {"0.3m/s", "0.3mps", Dimension::kVelocity},
+               {"1.5NM", "1.5nmi", Dimension::kLength},         {"1.5n.mi.", "1.5nmi", Dimension::kLength},
+               {"20µrad", "20urad", Dimension::kAngle},         {"1°", "1deg", Dimension::kAngle},
+               {"2hr", "2h", Dimension::kTime},                 {"0.1deg/sqrt(h)", "0.1degprth", Dimension::kAngleRandomWalk},
+               {"0.03m/s/√h", "0.03mpsprth", Dimension::kVelocityRandomWalk}};
+  for (const auto& c : cases)
+    EXPECT_EQ(parse_quantity(c.typed, c.d, "f"), parse_quantity(c.unit, c.d, "f")) << c.typed;
+  // A spelling of another dimension is still refused.
+  EXPECT_THROW(parse_quantity("3deg/h", Dimension::kAcceleration, "f"), InputError);
+  EXPECT_THROW(parse_quantity("5µg", Dimension::kAngularRate, "f"), InputError);
+}
+
 }  // namespace
 }  // namespace insmc
