@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "apps/config_file.h"
+#include "apps/help_examples.h"
 #include "apps/sweep.h"
 #include "lib/common/closest_name.h"
 #include "lib/common/input_error.h"
@@ -64,7 +65,11 @@ std::optional<po::variables_map> parse_args(const Args& args, const std::string&
     }
     if (first.count("help")) {
       fmt::print("usage: insmc {} {}\n\n", subcommand, synopsis);
-      std::cout << all << std::flush;
+      std::cout << all;
+      const auto examples = help_examples(subcommand);
+      if (!examples.empty()) std::cout << "\nExample" << (examples.size() > 1 ? "s" : "") << ":\n";
+      for (std::string_view line : examples) std::cout << "  " << line << "\n";
+      std::cout << std::flush;
       return std::nullopt;
     }
   }

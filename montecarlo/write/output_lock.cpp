@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 
 #include "montecarlo/write/output_error.h"
 
@@ -51,7 +52,13 @@ OutputLock::OutputLock(const std::filesystem::path& given_dir, const std::string
         fd_ = std::move(fd);
         return;
       }
-      throw_system_error(lock, "create the lock file", error);
+      // Nothing can be created beside the output (a read-only or special
+      // file system, a parent that is not a folder): say so of the output
+      // itself, not of the lock file the user never named.
+      throw OutputError(target,
+                        "cannot create the output in " + dir.string() + " (" + std::strerror(error) +
+                            "): choose a folder you can write to",
+                        error);
     }
     if (::flock(fd.get(), LOCK_EX | LOCK_NB) != 0) {
       if (errno == EWOULDBLOCK) held_by_another(target, lock);
