@@ -86,7 +86,10 @@ int run_compensate(const Args& args) {
       "folder for compensate.md, estimates.csv, compensation.csv, envelope.csv, compensate.json and "
       "compensate.gp/.svg/.png")(
       "format", po::value<std::string>()->default_value("markdown"),
-      "stdout: markdown (compensate.md), csv (envelope.csv) or json (compensate.json)");
+      "stdout: markdown (compensate.md), csv (envelope.csv) or json (compensate.json)")(
+      "units", po::value<std::string>()->default_value("si"),
+      "lengths of the roll-up and the verdicts: si (metres), paper (feet) or nmi (nautical miles); the CSV and "
+      "JSON stay in metres (_m)");
   opts.add(uncertainty_options_description());
   const auto vm = parse_args(args, "compensate", "--records FILE [--run ID] [--limit horizontal@84min=3nmi] [options]", opts);
   if (!vm) return 0;
@@ -104,6 +107,7 @@ int run_compensate(const Args& args) {
       throw InputError("--limit", fmt::format("({} limits)", texts.size()), fmt::format("at most {}", kMaxLimits));
     for (const std::string& t : texts) options.limits.push_back(parse_limit(t));
   }
+  options.units = read_length_unit(*vm);
   options.risk = (*vm)["risk"].as<double>();
   if (!(options.risk > 0 && options.risk <= 0.5))
     throw InputError("--risk", fmt::format("{}", options.risk), "must lie in (0, 0.5]");

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "montecarlo/compensate/unit_prediction.h"
+#include "montecarlo/write/length_unit.h"
 
 namespace insmc::mc {
 
@@ -31,6 +32,7 @@ struct CompensateOptions {
   double realignment_duration_s = 600.0;
   std::optional<std::int64_t> run;      ///< one run, or every run
   std::optional<double> site_gravity_mps2;  ///< the site's specific force (read_unit_records)
+  LengthUnit units = LengthUnit::kMetre;    ///< of the roll-up and the verdicts (SI inside)
 };
 
 struct LimitCheck {

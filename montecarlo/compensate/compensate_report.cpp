@@ -33,6 +33,45 @@ Json site_json(const UnitRecords& r) {
   return j;
 }
 
+/// A length in the user's unit, to the digits that matter at these sizes.
+std::string length_text(double m, LengthUnit u) {
+  const double v = m * length_factor(u);
+  return u == LengthUnit::kNauticalMile ? fmt::format("{:.3f}", v) : fmt::format("{:.1f}", v);
+}
+
+/// One line per unit before the detail: what a fleet's test campaign needs
+/// on one screen.
+std::string rollup_markdown(const CompensateResult& result, const CompensateOptions& options) {
+  if (result.units.empty()) return "";
+  const std::string unit = length_suffix(options.units);
+  Table t({"run", "scheme to use", fmt::format("horizontal RMS at {} min ({})", t_min_text(options.flight_time_s), unit),
+           "ahead of the runner-up", "worst limit: P(exceed)", "verdict"});
+  int go = 0;
+  for (const UnitResult& u : result.units) {
+    go += u.go;
+    std::string worst = "-";
+    double p = -1;
+    for (const LimitCheck& c : u.checks)
+      if (c.probability > p) p = c.probability, worst = fmt::format("{}: {:.2g}", c.limit.text, c.probability);
+    const std::string verdict = !u.fits_model() ? "NO-GO (test rows do not fit the model)"
+                                : u.checks.empty() ? (u.go ? "no limits given" : "NO-GO")
+                                : u.go              ? "GO"
+                                                    : "NO-GO";
+    t.add_row({std::to_string(u.run), std::string(to_string(u.recommended)), length_text(u.recommended_rms_m, options.units),
+               u.runner_up ? fmt::format("{} {} over {}", length_text(u.margin_m, options.units), unit,
+                                         to_string(*u.runner_up))
+                           : "-",
+               worst, verdict});
+  }
+  const int n = static_cast<int>(result.units.size());
+  return fmt::format("## The units at a glance\n\n{}\n{} of {} unit(s) go{}. The detail of each follows.\n\n",
+                     render_markdown(t), go, n,
+                     options.limits.empty() ? " (no --limit given: only a unit whose test rows do not fit the model "
+                                              "is no-go)"
+                                            : fmt::format(" (every --limit exceeded with probability at most {:g})",
+                                                          options.risk));
+}
+
 }  // namespace
 
 CompensateFiles render_compensate(const CompensateResult& result, const CompensateOptions& options,
@@ -48,6 +87,7 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
       "{} min on each scheme's clock; the scheme to use is the one with the least horizontal RMS there.\n\n",
       system_number(rec.site.system), rec.site.test_duration_s / 60.0, rec.site.filter_interval_s,
       rec.site.estimators->fitted_terms, t_min_text(options.flight_time_s));
+  md += rollup_markdown(result, options);
   {
     Table site({"key", "value", "source", "reason"});
     for (const SiteValue& v : rec.site_values) site.add_row({v.key, format_number(v.value), v.source, v.reason});
@@ -201,9 +241,9 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
     std::string verdict_line = u.fits_model() ? "no limits given" : "NO-GO (the test rows do not fit the model)";
     Json checks = Json::array();
     if (!u.checks.empty()) {
-      Table lim({"limit", "RMS (m)", "P(exceed)", "within risk"});
+      Table lim({"limit", fmt::format("RMS ({})", length_suffix(options.units)), "P(exceed)", "within risk"});
       for (const LimitCheck& c : u.checks) {
-        lim.add_row({c.limit.text, fmt::format("{:.1f}", c.rms_m), fmt::format("{:.3g}", c.probability),
+        lim.add_row({c.limit.text, length_text(c.rms_m, options.units), fmt::format("{:.3g}", c.probability),
                      c.within() ? "yes" : "no"});
         Json j = Json::object();
         j["limit"] = c.limit.text;

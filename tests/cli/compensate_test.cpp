@@ -56,6 +56,26 @@ TEST(Compensate, ReportsEachUnitWithItsFilesAndJson) {
   EXPECT_TRUE(has(svg, "5.1.2") && has(svg, "population") && has(svg, "<path")) << svg.substr(0, 400);
 }
 
+TEST(Compensate, AFleetGetsOneLinePerUnitBeforeTheDetailInTheUnitsAsked) {
+  const TempDir dir;
+  const std::string records = simulate(dir, 4);
+  const ProgramResult r = run_insmc("compensate --records " + records + " --limit horizontal@20min=0.5nmi --units nmi");
+  const std::size_t glance = r.out.find("## The units at a glance"), site = r.out.find("## The site and its test run");
+  ASSERT_NE(glance, std::string::npos) << r.out.substr(0, 600);
+  EXPECT_LT(glance, site);
+  const std::string rollup = r.out.substr(glance, site - glance);
+  EXPECT_TRUE(has(rollup, "horizontal RMS at 84 min (nmi)")) << rollup;
+  int rows = 0, go = 0;
+  std::istringstream in(rollup);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("|   ", 0) == 0) rows += 1, go += has(line, "| GO ");
+  EXPECT_EQ(rows, 4) << rollup;
+  EXPECT_TRUE(has(rollup, std::to_string(go) + " of 4 unit(s) go")) << rollup;
+  // Exit 1 when any unit is no-go.
+  EXPECT_EQ(r.exit_code, go == 4 ? 0 : 1) << r.err;
+  EXPECT_TRUE(has(r.out, "| RMS (nmi) |")) << "the verdict's table in the same unit";
+}
+
 TEST(Compensate, TheVerdictIsItsExitCode) {
   const TempDir dir;
   const std::string records = simulate(dir, 1);
