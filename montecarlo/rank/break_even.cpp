@@ -1,5 +1,7 @@
 #include "montecarlo/rank/break_even.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -143,9 +145,11 @@ RmsTable predicted_horizontal_rms(const StudyConfig& config) {
 
 namespace {
 
+/// Each value's study built and predicted on its own: side by side.
 std::vector<RmsTable> rms_along(const StudyConfig& config, Assumption a, const std::vector<double>& values) {
-  std::vector<RmsTable> out;
-  for (double v : values) out.push_back(predicted_horizontal_rms(with_assumption(config, a, v)));
+  std::vector<RmsTable> out(values.size());
+  tbb::parallel_for(std::size_t{0}, values.size(),
+                    [&](std::size_t q) { out[q] = predicted_horizontal_rms(with_assumption(config, a, values[q])); });
   return out;
 }
 
@@ -192,10 +196,17 @@ BreakEven break_even(const StudyConfig& config, double max_test_duration_s) {
   auto add = [&](std::size_t j, std::size_t k, Assumption a, std::size_t leader, std::size_t c, double v) {
     out.crossings.push_back({config.systems[j], config.report_times_s[k], a, config.schemes[leader], config.schemes[c], v});
   };
-  for (Assumption a : kAllAssumptions) {
+  // Every assumption's polynomials side by side (a study map each), then
+  // the crossings and curves in the assumptions' order.
+  std::vector<MeanSquarePolynomials> polynomials(std::size(kAllAssumptions));
+  tbb::parallel_for(std::size_t{0}, polynomials.size(), [&](std::size_t q) {
+    if (kAllAssumptions[q] != Assumption::kTestDuration) polynomials[q] = mean_square_polynomials(config, kAllAssumptions[q]);
+  });
+  for (std::size_t q = 0; q < polynomials.size(); ++q) {
+    const Assumption a = kAllAssumptions[q];
     if (a == Assumption::kTestDuration) continue;
     const bool bound = is_bound(a);
-    const MeanSquarePolynomials p = mean_square_polynomials(config, a);
+    const MeanSquarePolynomials& p = polynomials[q];
     // A bound is searched within the catalogue's physical range of it (--bound's).
     const double ceiling = bound ? bound_range(catalogue()[static_cast<std::size_t>(bound_slot(a))]).max_si : 1.0;
     // The plot's range: 10 defaults, or 3 times the first change at the last report time.
