@@ -58,6 +58,8 @@ std::optional<po::variables_map> parse_args(const Args& args, const std::string&
     try {
       po::store(po::command_line_parser(args).options(all).run(), first);
     } catch (const po::unknown_option& e) {
+      // A '%' in it: parse_error_message's own line (Boost's placeholders).
+      if (e.get_option_name().find('%') != std::string::npos) throw;
       std::vector<std::string> names;
       for (const auto& o : all.options()) names.push_back("--" + o->long_name());
       throw po::error("unrecognised option '" + echo_input(e.get_option_name()) + "'" +

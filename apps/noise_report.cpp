@@ -110,6 +110,24 @@ std::string identifiability(const std::vector<Orientation>& o, const std::vector
   return s;
 }
 
+/// A channel's white noise with its Gauss–Markov term at the sampling
+/// interval, and an outer interval: each fitted term at its own interval's
+/// end (N_eff grows with N, σ and T_c), so at least the stated confidence.
+struct WhiteTogether {
+  double value_si = 0, lower_si = 0, upper_si = 0;
+};
+
+std::optional<WhiteTogether> white_together(const noise::ChannelNoise& ch, const noise::TermFit& white) {
+  const std::optional<double> n_eff = white_noise_effective(ch);
+  if (!n_eff) return std::nullopt;
+  const auto gm = std::find_if(ch.fit.terms.begin(), ch.fit.terms.end(),
+                               [](const noise::TermFit& t) { return t.term == NoiseTerm::kGaussMarkov; });
+  if (gm == ch.fit.terms.end()) return std::nullopt;
+  const auto combined = [](double n, double sigma, double tc) { return std::sqrt(n * n + 2 * sigma * sigma * tc); };
+  return WhiteTogether{*n_eff, combined(white.lower_si, gm->lower_si, ch.fit.correlation_time_lower_s),
+                       combined(white.upper_si, gm->upper_si, ch.fit.correlation_time_upper_s)};
+}
+
 /// The fitted white noise and bias instability beside the data sheet's:
 /// the ratio, and whether the sheet's value lies inside the fitted interval.
 std::string datasheet_section(const noise::NoiseAnalysis& a, const Datasheet& sheet) {
@@ -130,11 +148,20 @@ std::string datasheet_section(const noise::NoiseAnalysis& a, const Datasheet& sh
                           g3(sheet_value), unit);
         continue;
       }
-      const bool inside = *given >= fit->lower_si && *given <= fit->upper_si;
-      md += fmt::format("| {} | {} | {} {} | [{}, {}] | {} {} | {} | {} |\n", ch.name, noise::term_name(term, ch.kind),
-                        g3(fit->value_si * f), unit, g3(fit->lower_si * f), g3(fit->upper_si * f), g3(sheet_value), unit,
-                        *given > 0 ? fmt::format("{:.3g}", fit->value_si / *given) : "-",
-                        inside ? "yes" : fit->lower_si > *given ? "**no: worse than the sheet**" : "no: better");
+      // A Gauss–Markov term at the sampling interval is white noise too (the
+      // note under the fitted terms): the sheet's white noise is compared
+      // with both together, N_eff, as the note states it.
+      const std::optional<WhiteTogether> together =
+          term == NoiseTerm::kWhiteRate ? white_together(ch, *fit) : std::nullopt;
+      const double value = together ? together->value_si : fit->value_si;
+      const double lower = together ? together->lower_si : fit->lower_si;
+      const double upper = together ? together->upper_si : fit->upper_si;
+      const bool inside = *given >= lower && *given <= upper;
+      md += fmt::format("| {} | {}{} | {} {} | [{}, {}] | {} {} | {} | {} |\n", ch.name, noise::term_name(term, ch.kind),
+                        together ? " (with the Gauss–Markov term at the sampling interval, √(N² + 2σ²T_c))" : "",
+                        g3(value * f), unit, g3(lower * f), g3(upper * f), g3(sheet_value), unit,
+                        *given > 0 ? fmt::format("{:.3g}", value / *given) : "-",
+                        inside ? "yes" : lower > *given ? "**no: worse than the sheet**" : "no: better");
     }
   return md;
 }

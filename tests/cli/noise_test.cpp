@@ -111,6 +111,43 @@ TEST(Noise, WhiteNoiseRecordingIsReportedWithItsTruthInsideTheInterval) {
 // against the fit in noise.md (the recording's true ARW 0.3 deg/√h lies in
 // the fitted interval; a sheet claiming 0.03 does not, and the fit is worse
 // than it), kept in noise.json; a bad key or value exits 2.
+// A band-limited gyro (a Gauss–Markov term at the sampling interval beside
+// its white noise): the sheet's white noise is compared with both together,
+// the value the note under the fitted terms states, with an interval.
+TEST(Noise, TheSheetsWhiteNoiseIsComparedWithWhatTheNoteSaysTheSensorHas) {
+  TempDir dir;
+  const std::string input = (dir.path() / "banded.csv").string();
+  {
+    std::ofstream f(input);
+    f << "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g\n";
+    std::mt19937_64 rng(3);
+    std::normal_distribution<double> e(0.0, 1.0);
+    const double dt = 0.01, n = 0.3 / 60 / std::sqrt(dt), sigma = 0.6 / 60 / std::sqrt(dt), phi = std::exp(-1.0);
+    double y = 0;
+    for (int k = 0; k < 200000; ++k) {
+      y = phi * y + sigma * std::sqrt(1 - phi * phi) * e(rng);
+      f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", n * e(rng) + y, n * e(rng), n * e(rng),
+                       1e-4 * e(rng), 1e-4 * e(rng), -1 + 1e-4 * e(rng));
+    }
+  }
+  const std::string out = (dir.path() / "out").string();
+  const ProgramResult r =
+      run_insmc(fmt::format("noise --input {} --rate 100Hz --out {} --datasheet gyro_arw=0.5degprth", input, out));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string md = read_file(std::filesystem::path(out) / "noise.md");
+  const std::size_t note = md.find("gyro_x: the Gauss–Markov term has T_c at the sampling interval");
+  ASSERT_NE(note, std::string::npos) << md;
+  const std::string said = md.substr(md.find("it makes ", note) + 9, 4);
+  const std::size_t at = md.find("| gyro_x | angle_random_walk (with the Gauss–Markov term", md.find("## Against the data sheet"));
+  ASSERT_NE(at, std::string::npos) << md;
+  const std::string row = md.substr(at, md.find('\n', at) - at);
+  EXPECT_TRUE(has(row, "| " + said)) << "the note says " << said << "; the row: " << row;
+  EXPECT_TRUE(has(row, "worse than the sheet")) << row;
+  // An interval, not a point.
+  const std::size_t open = row.find("| ["), comma = row.find(", ", open);
+  EXPECT_LT(std::stod(row.substr(open + 3)), std::stod(row.substr(comma + 2))) << row;
+}
+
 TEST(Noise, DatasheetValuesAreDrawnAndComparedWithTheFit) {
   TempDir dir;
   const std::string input = write_recording(dir, false);
