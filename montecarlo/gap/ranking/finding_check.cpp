@@ -68,6 +68,12 @@ void check_finding(Diagnosis& d, const PreparedRuns& p, const RecordFile& file, 
   const gap::Candidate* c = candidate_named(options, finding.effect);
   if (c == nullptr) return;
   const EffectSpec spec = parse_effect(finding.as_effect, "as_effect");
+  // Only a parameter off its grid's edges and of the effect's own is corrected.
+  const auto checkable = [&](const ParameterEstimate& e) {
+    double simulated = 0;
+    return !e.at_grid_edge && simulated_value(spec, e.name, simulated);
+  };
+  if (std::none_of(finding.parameters.begin(), finding.parameters.end(), checkable)) return;
   const std::size_t n = p.runs.size();
   PreparedRuns q = p;
   std::vector<int> layout_of;
@@ -91,7 +97,7 @@ void check_finding(Diagnosis& d, const PreparedRuns& p, const RecordFile& file, 
   for (std::size_t i = 0; i < finding.parameters.size(); ++i) {
     ParameterEstimate& e = finding.parameters[i];
     double simulated = 0;
-    if (e.at_grid_edge || !simulated_value(spec, e.name, simulated)) continue;
+    if (!checkable(e) || !simulated_value(spec, e.name, simulated)) continue;
     e = corrected(e, measure(simulated, fitted[i]));
   }
   const EffectArgument a = effect_argument(finding, p.site);
