@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "lib/common/input_error.h"
+#include "lib/units/physical_range.h"
 #include "lib/common/input_text.h"
 #include "lib/records/number_text.h"
 #include "lib/units/quantity.h"
@@ -180,10 +181,7 @@ class BoundsParser {
       x = number(value, key) * u->second;
       b.unit = unit == "nmi" ? mc::LengthUnit::kNauticalMile : unit == "ft" ? mc::LengthUnit::kFoot : mc::LengthUnit::kMetre;
     }
-    // A position error beyond the earth's circumference means nothing; a
-    // larger number is a typo (1e306 nmi once became inf m and held).
-    constexpr double kMaxLimitM = 4.0e7;
-    if (!(x >= 0) || !(x <= kMaxLimitM))
+    if (!(x >= 0) || !(x <= kPositionLimitRange.max_si))
       fail(value.column, fmt::format("{}: the limit must lie in [0, 40000 km] (the earth's circumference)", quote(t.text)));
     b.metric = metric;
     b.limit_m = x;

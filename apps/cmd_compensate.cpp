@@ -32,7 +32,7 @@ constexpr PhysicalRange kSiteGravity{9.7, 9.9};
 
 mc::PositionLimit parse_limit(const std::string& text) {
   const std::string allowed =
-      "COMPONENT@TIME=LENGTH, COMPONENT horizontal, x, y or z, TIME in (0, 12h], LENGTH > 0 (e.g. horizontal@84min=3nmi)";
+      "COMPONENT@TIME=LENGTH, COMPONENT horizontal, x, y or z, TIME in (0, 12h], LENGTH in (0, 40000 km] (e.g. horizontal@84min=3nmi)";
   const auto at = text.find('@'), eq = text.find('=');
   if (at == std::string::npos || eq == std::string::npos || eq < at) throw InputError("--limit", echo_input(text), allowed);
   mc::PositionLimit l;
@@ -45,7 +45,8 @@ mc::PositionLimit parse_limit(const std::string& text) {
   else throw InputError("--limit", echo_input(text), allowed);
   l.t_s = parse_quantity(std::string_view(text).substr(at + 1, eq - at - 1), Dimension::kTime, "--limit");
   l.limit_m = parse_quantity(std::string_view(text).substr(eq + 1), Dimension::kLength, "--limit");
-  if (!(l.t_s > 0 && l.t_s <= kMaxFlightTimeS) || !(l.limit_m > 0)) throw InputError("--limit", echo_input(text), allowed);
+  if (!(l.t_s > 0 && l.t_s <= kMaxFlightTimeS) || !kPositionLimitRange.contains(l.limit_m))
+    throw InputError("--limit", echo_input(text), allowed);
   return l;
 }
 

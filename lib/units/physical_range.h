@@ -20,6 +20,10 @@ struct PhysicalRange {
   bool contains(double v) const { return (min_open ? v > min_si : v >= min_si) && v <= max_si; }
 };
 
+/// A position error or a limit on one: beyond the earth's circumference it
+/// means nothing, and a larger number is a typo (1e306 nmi once became inf m).
+inline constexpr PhysicalRange kPositionLimitRange{0.0, 4.0e7, true};
+
 /// "[0, 1mps]" or "(0s, 2h]": the range in the units format_quantity picks.
 std::string describe(const PhysicalRange& range, Dimension dimension);
 

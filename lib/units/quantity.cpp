@@ -81,9 +81,12 @@ std::span<const UnitFactor> units_of(Dimension d) {
 
 std::string accepted_list(Dimension d) {
   if (d == Dimension::kDimensionless) return "a bare number (or NUMBERppm)";
-  std::vector<std::string> names = accepted_units(d);
-  return fmt::format("a number with one of the units {} (or their usual spellings: deg/h, µg, ft/s, m/s², NM, ...)",
-                     fmt::join(names, ", "));
+  std::vector<std::string> names = accepted_units(d), spellings;
+  for (const UnitSpelling& s : kSpellings)
+    for (const auto& u : units_of(d))
+      if (std::string_view(s.name) == u.name) spellings.emplace_back(s.typed);
+  return fmt::format("a number with one of the units {}{}", fmt::join(names, ", "),
+                     spellings.empty() ? "" : fmt::format(" (also {})", fmt::join(spellings, ", ")));
 }
 
 }  // namespace

@@ -74,6 +74,10 @@ TEST(Compensate, AFleetGetsOneLinePerUnitBeforeTheDetailInTheUnitsAsked) {
   // Exit 1 when any unit is no-go.
   EXPECT_EQ(r.exit_code, go == 4 ? 0 : 1) << r.err;
   EXPECT_TRUE(has(r.out, "| RMS (nmi) |")) << "the verdict's table in the same unit";
+  // A limit beyond the earth's circumference is a typo, not a go.
+  const ProgramResult absurd = run_insmc("compensate --records " + records + " --limit horizontal@84min=1e300nmi");
+  EXPECT_EQ(absurd.exit_code, 2);
+  EXPECT_TRUE(has(absurd.err, "LENGTH in (0, 40000 km]")) << absurd.err;
 }
 
 TEST(Compensate, TheVerdictIsItsExitCode) {

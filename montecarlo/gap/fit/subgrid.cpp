@@ -28,19 +28,24 @@ std::vector<double> subgrid_values(const gap::Candidate& c, const RunsUnderChoic
     const int here_stride = stride;
     stride *= n;
     if (at == 0 || at == n - 1) continue;
-    // The nearest point on each side that the search evaluated.
+    // The nearest point on each side that the search evaluated, and G there
+    // (each G once: for an amplitude candidate it is a least-squares fit).
     const auto gap_at = [&](int j) { return under.gap_at(best.grid + (j - at) * here_stride, m0); };
-    int lo = at - 1, hi = at + 1;
-    while (lo > 0 && !std::isfinite(gap_at(lo))) --lo;
-    while (hi < n - 1 && !std::isfinite(gap_at(hi))) ++hi;
-    const double g[3] = {gap_at(lo), gap_at(at), gap_at(hi)};
-    if (!std::isfinite(g[0]) || !std::isfinite(g[2])) continue;
-    const double v[3] = {par.grid[static_cast<std::size_t>(lo)], par.grid[static_cast<std::size_t>(at)],
-                         par.grid[static_cast<std::size_t>(hi)]};
+    const auto nearest = [&](int j, int step, int end, double& g) {
+      for (g = gap_at(j); !std::isfinite(g) && j != end; g = gap_at(j)) j += step;
+      return j;
+    };
+    double g[3];
+    const int lo = nearest(at - 1, -1, 0, g[0]);
     // A grid's 0 is a limit of its own (no effect, or a random walk where
     // a correlation time is searched), not a point on the scale: no
     // refinement across it.
-    if (!(v[0] > 0)) continue;
+    if (!(par.grid[static_cast<std::size_t>(lo)] > 0) || !std::isfinite(g[0])) continue;
+    const int hi = nearest(at + 1, 1, n - 1, g[2]);
+    if (!std::isfinite(g[2])) continue;
+    g[1] = gap_at(at);
+    const double v[3] = {par.grid[static_cast<std::size_t>(lo)], par.grid[static_cast<std::size_t>(at)],
+                         par.grid[static_cast<std::size_t>(hi)]};
     double x[3], y[3];
     for (int k = 0; k < 3; ++k) x[k] = std::log(v[k]), y[k] = g[k] * g[k];
     values[i] = std::exp(parabola_vertex(x, y));

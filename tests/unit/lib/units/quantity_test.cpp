@@ -136,6 +136,15 @@ TEST(UnitSpellings, TheUsualSpellingsOfDataSheetsAndThePaperAreTheirUnits) {
   // A spelling of another dimension is still refused.
   EXPECT_THROW(parse_quantity("3deg/h", Dimension::kAcceleration, "f"), InputError);
   EXPECT_THROW(parse_quantity("5µg", Dimension::kAngularRate, "f"), InputError);
+  // The refusal lists the spellings of that dimension only.
+  try {
+    parse_quantity("3deg/h", Dimension::kAcceleration, "f");
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    const std::string listed = m.substr(m.find("expected"));
+    EXPECT_NE(listed.find("µg"), std::string::npos) << m;
+    EXPECT_EQ(listed.find("deg/h"), std::string::npos) << "a rate's spelling listed for an acceleration: " << m;
+  }
 }
 
 }  // namespace
