@@ -125,7 +125,7 @@ int run_compensate(const Args& args) {
   }
   std::optional<OutputFolderOption> out = prepare_figure_folder(
       *vm, "compensate", {"compensate.md", "estimates.csv", "compensation.csv", "envelope.csv", "compensate.json"},
-      "compensate");
+      {"compensate"});
 
   const std::string name = (*vm)["records"].as<std::string>();
   const RecordFile file = read_input("--records", name, [&] { return read_record_file(name); });

@@ -43,7 +43,7 @@ int run_covariance(const Args& args) {
   const StdoutChoice shown = read_stdout_choice(*vm);
   const mc::LengthUnit unit = read_length_unit(*vm);
   std::optional<OutputFolderOption> out = prepare_figure_folder(
-      *vm, "covariance", {"covariance.csv", "covariance_grid.csv", "budget.csv", "covariance.md"}, "budget");
+      *vm, "covariance", {"covariance.csv", "covariance_grid.csv", "budget.csv", "covariance.md"}, {"budget"});
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
   const mc::CovarianceFiles files = mc::render_covariance(config, layout, map, unit);

@@ -66,7 +66,7 @@ int run_gap(const Args& args) {
   else if (rank == "never") options.rank = mc::RankWhen::kNever;
   else throw InputError("--rank", echo_input(rank), "always, significant or never");
   options.prior = read_uncertainty_model(*vm);
-  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "gap", mc::diagnosis_file_names());
+  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "gap", mc::diagnosis_file_names(), mc::diagnosis_figure_stems());
 
   const std::vector<std::string> names = (*vm)["records"].as<std::vector<std::string>>();
   std::vector<RecordFile> files;
@@ -94,6 +94,7 @@ int run_gap(const Args& args) {
   std::vector<std::pair<std::string, std::string>> report = mc::diagnosis_report(d, names);
   if (out) {
     OutputFiles files_out(report.begin(), report.end());
+    for (auto& f : mc::diagnosis_figures(d)) files_out.push_back(std::move(f));
     files_out.emplace_back("gap.json", json);
     out->write(files_out);
   }

@@ -58,7 +58,7 @@ int run_gap_validate(const Args& args) {
       options.magnitudes.push_back(m);
     }
   }
-  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "gap-validate", mc::validation_file_names(), "confusion");
+  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "gap-validate", mc::validation_file_names(), {"confusion"});
   mc::ValidationResult r;
   {
     Progress progress(0, "files");

@@ -24,7 +24,7 @@ int run_noise(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("input", po::value<std::vector<std::string>>()->composing(),
                      "IMU CSV file of a static recording (plain text), repeatable: one recording each")(
-      "out", po::value<std::string>(), "folder for noise.md, noise.json, allan.csv, noise_terms.csv, allan.svg, stationarity.svg, calibration.csv")(
+      "out", po::value<std::string>(), "folder for noise.md, noise.json, allan.csv, noise_terms.csv, calibration.csv and the figures allan and stationarity (.gp, .svg, .png)")(
       "format", po::value<std::string>()->default_value("markdown"), "what to print: markdown or json")(
       "alpha", po::value<double>()->default_value(0.01, "0.01"),
       "family-wise level of the masking, the stationarity test and the term selection, in [1e-6, 0.2]")(
@@ -33,7 +33,7 @@ int run_noise(const Args& args) {
       "start of each recording tested against the rest (warm-up); at most half the longest recording is used; 0s: no test")(
       "mask", po::value<std::string>()->default_value("on"), "on: mask disturbances; off: use every sample")(
       "datasheet", po::value<std::vector<std::string>>()->composing(),
-      "a data-sheet value to draw on allan.svg and compare with the fit, repeatable: gyro_arw=0.15degprth, "
+      "a data-sheet value to draw on the allan figure and compare with the fit, repeatable: gyro_arw=0.15degprth, "
       "gyro_bias_instability=1degph, accel_vrw=0.03mpsprth, accel_bias_instability=50ug")(
       "gravity", po::value<std::string>()->default_value("9.80665mps2"),
       "the site's gravity magnitude, the reference of a multi-position calibration, in [9.7, 9.9] m/s2");
@@ -71,7 +71,7 @@ int run_noise(const Args& args) {
     throw InputError("--gravity", echo_input(gravity_text),
                      "must lie in [9.7, 9.9] m/s2 (surface gravity, equator to poles, with room for altitude), "
                      "e.g. 9.80665mps2");
-  std::optional<OutputFolderOption> out = prepare_output_folder(*vm, "noise", noise_file_names());
+  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "noise", noise_file_names(), noise_figure_stems());
 
   std::vector<ImuSamples> recordings;
   for (const std::string& input : (*vm)["input"].as<std::vector<std::string>>()) {
@@ -92,7 +92,9 @@ int run_noise(const Args& args) {
   noise::NoiseAnalysis analysis;
   {
     Progress progress(0, "");
-    progress.update("noise analysis", 0, 1, "");
+    options.progress = [&progress](std::string_view stage, std::size_t done, std::size_t total) {
+      progress.update(stage, done, total, "channels");
+    };
     analysis = noise::analyse_noise(rec, options);
   }
   const std::string json = noise_json(rec, analysis, options.confidence, sheet, calibrations).dump(2) + "\n";
@@ -100,6 +102,7 @@ int run_noise(const Args& args) {
   if (out) {
     OutputFiles files(report.begin(), report.end());
     files.emplace_back("noise.json", json);
+    for (auto& f : noise_figures(rec, analysis, sheet)) files.push_back(std::move(f));
     out->write(files);
   }
   fmt::print("{}", format == "json" ? json : report.front().second);

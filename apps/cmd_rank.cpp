@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "apps/cli_common.h"
+#include "apps/progress.h"
 #include "apps/output_paths.h"
 #include "apps/stdout_choice.h"
 #include "apps/study_options.h"
@@ -46,12 +47,21 @@ int run_rank(const Args& args) {
   const mc::LengthUnit unit = read_length_unit(*vm);
   const StdoutChoice shown = read_stdout_choice(*vm);
   std::optional<OutputFolderOption> out =
-      prepare_figure_folder(*vm, "rank", {"ranking.csv", "breakeven.csv", "rank.md", "rank.json"}, "rank");
+      prepare_figure_folder(*vm, "rank", {"ranking.csv", "breakeven.csv", "rank.md", "rank.json"}, {"rank"});
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
-  const mc::StudyAccumulator state = mc::run_blocks(config, map, 0, mc::block_count(config.samples));
-  const std::vector<mc::SchemeOrder> orders = mc::order_schemes(config, layout, state);
-  const mc::BreakEven even = mc::break_even(config);
+  mc::BreakEven even;
+  std::vector<mc::SchemeOrder> orders;
+  {
+    Progress progress(0, "");
+    progress.update("Monte Carlo study", 0, 1, "study");
+    const mc::StudyAccumulator state = mc::run_blocks(config, map, 0, mc::block_count(config.samples));
+    orders = mc::order_schemes(config, layout, state);
+    even = mc::break_even(config, 40 * 60.0,
+                          [&progress](std::string_view stage, std::uint64_t done, std::uint64_t total) {
+                            progress.update(stage, done, total, "study maps");
+                          });
+  }
   mc::RankFiles files = mc::render_rank(config, orders, even, unit);
   mc::Json json = mc::Json::object();
   json["settings"] = mc::settings_json(config);

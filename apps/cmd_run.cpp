@@ -5,6 +5,7 @@
 // (apps/study_runner.h, apps/ranks.h).
 #include <algorithm>
 #include <chrono>
+#include <fmt/ranges.h>
 #include <fmt/format.h>
 #include <fstream>
 #include <optional>
@@ -12,6 +13,7 @@
 #include <stdexcept>
 
 #include "apps/checkpoint.h"
+#include "apps/progress.h"
 #include "apps/cli_common.h"
 #include "apps/interrupt.h"
 #include "apps/option_sources.h"
@@ -275,7 +277,7 @@ int run_command(const Args& args, Ranks& ranks) {
           sweeps.empty() ? std::vector<std::string>{"envelope.csv", "envelope_grid.csv", "envelope.md", "run.json"}
                          : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.json"};
       for (InputFile& in : input_files(*vm)) inputs.push_back(std::move(in));
-      out = prepare_figure_folder(*vm, "run", names, sweeps.empty() ? "envelope" : "sweep", inputs);
+      out = prepare_figure_folder(*vm, "run", names, {sweeps.empty() ? "envelope" : "sweep"}, inputs);
       if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path, inputs);
     });
   }
@@ -285,12 +287,22 @@ int run_command(const Args& args, Ranks& ranks) {
       throw InputError("--checkpoint", checkpoint_path,
                        "cannot be combined with a sweep (checkpoint the points as separate runs)");
     // Each point's blocks are split over the ranks (one rank without MPI).
+    const auto sweep_start = std::chrono::steady_clock::now();
+    std::uint64_t points_total = 1, points_done = 0;
+    for (const SweepAxis& a : sweeps) points_total *= a.texts.size();
+    std::optional<Progress> points_progress;
+    if (ranks.root()) points_progress.emplace(points_total, "points");
     const SweepFiles files =
         run_sweep(config, sweeps, unit, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
           RunPlan plan;
           plan.result_everywhere = true;
-          return run_study_blocks(c, m, ranks, StudyProgress{{}, mc::StudyAccumulator(m)}, plan).progress.state;
+          mc::StudyAccumulator state =
+              run_study_blocks(c, m, ranks, StudyProgress{{}, mc::StudyAccumulator(m)}, plan).progress.state;
+          // The sweep's own count (a point's samples have their own line while it runs).
+          if (points_progress) points_progress->update("sweep", ++points_done, points_total, "points");
+          return state;
         });
+    points_progress.reset();
     if (!ranks.root()) return 0;
     mc::Json json = files.json;
     json["settings"] = settings;
@@ -300,10 +312,28 @@ int run_command(const Args& args, Ranks& ranks) {
       for (auto& f : mc::figure_files("sweep", mc::render_panel_figure(files.plot))) written.push_back(std::move(f));
       out->write(written);
     }
-    if (!shown.quiet)
-      fmt::print("{}", shown.format == OutputFormat::kCsv    ? files.sweep_csv
-                       : shown.format == OutputFormat::kJson ? sweep_json
-                                                              : files.summary_md);
+    if (shown.quiet) return 0;
+    if (shown.format != OutputFormat::kMarkdown) {
+      fmt::print("{}", shown.format == OutputFormat::kCsv ? files.sweep_csv : sweep_json);
+      return 0;
+    }
+    std::vector<std::string> swept;
+    std::size_t points = 1;
+    for (const SweepAxis& a : sweeps) {
+      swept.push_back(quantity_name(a.column));
+      points *= a.texts.size();
+    }
+    fmt::print("insmc run: sweep of {} over {} points, {} samples each, seed {}, fidelity {}, {:.2f} s\n\n"
+               "Horizontal RMS position error [{}] ± half its {}% interval at each report time.\n\n{}",
+               fmt::join(swept, " × "), points, config.samples, config.seed, to_string(config.fidelity),
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count(),
+               mc::length_suffix(unit), mc::format_number(100 * config.confidence), files.summary_md);
+    if (out)
+      fmt::print("\nFiles written in {}: sweep.csv (every axis and time), sweep.md, sweep.json, sweep.gp, sweep.svg, "
+                 "sweep.png\n", (*vm)["out"].as<std::string>());
+    else
+      fmt::print("\nEvery axis and time: --format csv, or --out DIR for sweep.csv, sweep.md, sweep.json and the "
+                 "figure\n");
     return 0;
   }
   const mc::StudyLayout layout = mc::make_layout(config);

@@ -94,7 +94,7 @@ int run_tables(const Args& args) {
       tables::parse_table_convention((*vm)["convention"].as<std::string>(), "--convention");
   const ModelOptions model = read_model_options(*vm, true);
   std::optional<OutputFolderOption> out =
-      prepare_figure_folder(*vm, "tables", {"tables.md", "tables.csv"}, "fig3_2");
+      prepare_figure_folder(*vm, "tables", {"tables.md", "tables.csv"}, {"fig3_2"});
   const std::vector<tables::TableCell> cells = tables::compute_tables(model, conv);
   const std::string csv = mc::render_csv(cells_table(cells, true));
   const std::string md = render_markdown_report(cells, conv);

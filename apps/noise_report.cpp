@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
-#include <limits>
-#include <numbers>
 #include <optional>
 
 #include "lib/calibration/multiposition.h"
@@ -14,7 +12,7 @@
 #include "lib/units/physical_range.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
-#include "montecarlo/write/svg_frame.h"
+#include "montecarlo/write/noise_figures.h"
 
 namespace insmc::app {
 namespace {
@@ -22,14 +20,10 @@ namespace {
 using noise::NoiseTerm;
 using noise::SensorKind;
 
-constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c"};
-
 using noise::equivalent_constant;
 using noise::schuler_period_s;
 using noise::table31_bound_si;
 
-/// The Allan deviation's floor per unit of bias instability: √(2 ln 2 / π) ≈ 0.664 (IEEE Std 952, C.1).
-const double kFlatFactor = std::sqrt(2 * std::numbers::ln2 / std::numbers::pi);
 
 std::string g3(double v) { return fmt::format("{:.3g}", v); }
 
@@ -211,14 +205,21 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
                           g3(ch.fit.model.correlation_time_s));
     }
   }
-  for (const noise::ChannelNoise& ch : a.channels)
-    if (const auto n_eff = white_noise_effective(ch)) {
-      const auto [v, unit] = spec_value(NoiseTerm::kWhiteRate, ch.kind, *n_eff);
+  for (const noise::ChannelNoise& ch : a.channels) {
+    const auto white = std::find_if(ch.fit.terms.begin(), ch.fit.terms.end(),
+                                    [](const noise::TermFit& t) { return t.term == NoiseTerm::kWhiteRate; });
+    if (white == ch.fit.terms.end()) continue;
+    if (const std::optional<WhiteTogether> together = white_together(ch, *white)) {
+      const auto [v, unit] = spec_value(NoiseTerm::kWhiteRate, ch.kind, together->value_si);
+      const double f = v / together->value_si;
       md += fmt::format("\n{}: the Gauss–Markov term has T_c at the sampling interval ({:g} s), the sensor's own "
-                        "bandwidth; beyond a few samples it is white noise, and together with the random-walk term N it makes "
-                        "{} {} of white noise, √(N² + 2σ²T_c) (no interval: a sum of two fitted terms).\n",
-                        ch.name, ch.fit.model.correlation_time_s, g3(v), unit);
+                        "bandwidth; beyond a few samples it is white noise, and together with the random-walk term N it "
+                        "makes {} {} [{}, {}] of white noise, √(N² + 2σ²T_c) (the interval from each term's own "
+                        "interval's ends: at least the stated confidence).\n",
+                        ch.name, ch.fit.model.correlation_time_s, g3(v), unit, g3(together->lower_si * f),
+                        g3(together->upper_si * f));
     }
+  }
   md += "\nTerms tried and not needed (their likelihood-ratio statistic below the test's critical value):\n";
   for (const noise::ChannelNoise& ch : a.channels) {
     std::string dropped;
@@ -283,153 +284,6 @@ std::string terms_csv(const noise::NoiseAnalysis& a) {
                            ch.fit.correlation_time_upper_s);
     }
   return csv;
-}
-
-/// Two log–log panels (gyros, accelerometers): each axis's Allan deviation
-/// with its interval bars, the fitted model (dashed) and Table 3.1's bound
-/// (dotted grey).
-std::string allan_svg(const noise::NoiseAnalysis& a, const Datasheet& sheet) {
-  std::string svg = mc::open_svg(760, 860, "Overlapping Allan deviation: data with intervals, fitted model dashed");
-  for (int panel = 0; panel < 2; ++panel) {
-    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
-    for (int i = 0; i < 3; ++i)
-      for (const noise::AllanRow& r : a.channels[3 * panel + i].allan) {
-        x0 = std::min(x0, std::log10(r.tau_s)), x1 = std::max(x1, std::log10(r.tau_s));
-        for (double v : {r.adev, r.lower, r.upper, r.model_adev})
-          if (v > 0 && std::isfinite(v)) y0 = std::min(y0, std::log10(v)), y1 = std::max(y1, std::log10(v));
-      }
-    if (!(x1 >= x0) || !(y1 >= y0)) x0 = 0, x1 = 1, y0 = -6, y1 = -5;
-    // Table 3.1's bound on the sensor's bias (10 meru, 0.1 mg) as a reference
-    // level: where the curve lies above it near the Schuler period (84 min),
-    // the bias wanders more than Table 3.1 lets a bias be (docs/noise.md §4).
-    const noise::SensorKind kind = panel == 0 ? noise::SensorKind::kGyro : noise::SensorKind::kAccelerometer;
-    const double bound = std::log10(noise::table31_bound_si(kind));
-    y0 = std::min(y0, bound), y1 = std::max(y1, bound);
-    // The data sheet's bias instability floor 0.664 B, inside the frame too.
-    const std::optional<double> sheet_white = sheet.white(kind), sheet_flat = sheet.instability(kind);
-    if (sheet_flat && *sheet_flat > 0) {
-      const double level = std::log10(kFlatFactor * *sheet_flat);
-      y0 = std::min(y0, level), y1 = std::max(y1, level);
-    }
-    x0 = std::floor(x0), x1 = std::max(std::ceil(x1), x0 + 1), y0 = std::floor(y0), y1 = std::max(std::ceil(y1), y0 + 1);
-    const mc::Frame f{90, 50 + 410.0 * panel, 520, 330, x0, x1, y0, y1};
-    svg += mc::decade_grid_svg(f, " s");
-    std::string frame = mc::frame_svg(f, panel == 0 ? "gyro Allan deviation [rad/s]" : "accelerometer Allan deviation [m/s^2]");
-    // One clip path per panel.
-    const std::string id = fmt::format("frame{}", panel);
-    if (const std::size_t p = frame.find("id=\"frame\""); p != std::string::npos) frame.replace(p, 10, "id=\"" + id + "\"");
-    svg += frame;
-    svg += fmt::format("<g clip-path=\"url(#{})\">\n", id);
-    for (int i = 0; i < 3; ++i) {
-      const noise::ChannelNoise& ch = a.channels[3 * panel + i];
-      std::string data, model;
-      for (const noise::AllanRow& r : ch.allan) {
-        const double x = f.px(std::log10(r.tau_s));
-        data += fmt::format("{:.1f},{:.1f} ", x, f.py(std::log10(r.adev)));
-        if (r.model_adev > 0) model += fmt::format("{:.1f},{:.1f} ", x, f.py(std::log10(r.model_adev)));
-        svg += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\"/>"
-                           "<circle class=\"point\" cx=\"{0:.1f}\" cy=\"{4:.1f}\" r=\"3\" fill=\"{3}\"/>\n",
-                           x, f.py(std::log10(std::max(r.lower, 1e-300))), f.py(std::log10(r.upper)), kColours[i],
-                           f.py(std::log10(r.adev)));
-      }
-      svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"/>\n", data, kColours[i]);
-      svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\" stroke-dasharray=\"6,4\"/>\n",
-                         model, kColours[i]);
-    }
-    svg += fmt::format("<line class=\"reference\" x1=\"{0:.1f}\" y1=\"{2:.1f}\" x2=\"{1:.1f}\" y2=\"{2:.1f}\" stroke=\"#777\" "
-                       "stroke-dasharray=\"2,3\"/><text x=\"{0:.1f}\" y=\"{3:.1f}\" fill=\"#555\">Table 3.1 bound ({4})</text>\n",
-                       f.px(x0) + 4, f.px(x1), f.py(bound), f.py(bound) - 4,
-                       kind == noise::SensorKind::kGyro ? "10 meru" : "0.1 mg");
-    // The data sheet: its white noise as σ = N/√τ (slope −1/2 across the
-    // frame, clipped) and its bias instability as the floor 0.664 B.
-    if (sheet_white && *sheet_white > 0) {
-      const double n = std::log10(*sheet_white);
-      svg += fmt::format("<line class=\"datasheet\" x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#000\" "
-                         "stroke-dasharray=\"8,3,2,3\"/><text x=\"{:.1f}\" y=\"{:.1f}\">data sheet {}</text>\n",
-                         f.px(x0), f.py(n - 0.5 * x0), f.px(x1), f.py(n - 0.5 * x1), f.px(x0) + 4,
-                         f.py(n - 0.5 * x0) + 14, kind == SensorKind::kGyro ? "ARW" : "VRW");
-    }
-    if (sheet_flat && *sheet_flat > 0) {
-      const double level = f.py(std::log10(kFlatFactor * *sheet_flat));
-      svg += fmt::format("<line class=\"datasheet\" x1=\"{0:.1f}\" y1=\"{2:.1f}\" x2=\"{1:.1f}\" y2=\"{2:.1f}\" stroke=\"#000\" "
-                         "stroke-dasharray=\"8,3,2,3\"/><text x=\"{3:.1f}\" y=\"{4:.1f}\" text-anchor=\"end\">data sheet "
-                         "bias instability (0.664 B)</text>\n",
-                         f.px(x0), f.px(x1), level, f.px(x1) - 4, level - 4);
-    }
-    svg += "</g>\n";
-    for (int i = 0; i < 3; ++i)
-      svg += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"3\"/>"
-                         "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
-                         f.left + f.width + 20, f.top + 12 + 20.0 * i, f.left + f.width + 44, f.top + 12 + 20.0 * i,
-                         kColours[i], f.left + f.width + 50, f.top + 16 + 20.0 * i, mc::svg_escape(a.channels[3 * panel + i].name));
-    svg += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">cluster time τ (log scale)</text>\n",
-                       f.left + f.width / 2, f.top + f.height + 36);
-  }
-  return svg + "</svg>\n";
-}
-
-/// The stationarity picture: per channel, each recording's block means
-/// (τ_b = first part / 6) minus its mean after the first part, against time,
-/// the first part shaded; small multiples, 3 × 2.
-std::string stationarity_svg(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a) {
-  const double w = 360, h = 230;
-  std::string svg = mc::open_svg(60 + 2 * (w + 60), 60 + 3 * (h + 60),
-                                 "Block means of each recording minus its mean after the first part (shaded)");
-  for (std::size_t c = 0; c < noise::kChannels; ++c) {
-    const noise::ChannelNoise& ch = a.channels[c];
-    const bool gyro = ch.kind == SensorKind::kGyro;
-    const double unit = gyro ? kDegphToRadps : kUgToMps2;
-    const double part_s = ch.stationarity.first_part_s, block_s = ch.stationarity.block_s;
-    const auto block = static_cast<std::size_t>(std::llround(block_s / rec.dt_s));
-    std::vector<std::vector<std::pair<double, double>>> lines;
-    double x1 = 1e-9, y0 = 0, y1 = 0;
-    if (block > 0)
-      for (const noise::Segment& run : rec.runs) {
-        const std::vector<double>& y = rec.channel[c];
-        const auto part = static_cast<std::size_t>(std::llround(part_s / rec.dt_s));
-        double rest = 0;
-        for (std::size_t k = run.begin + std::min(part, run.size()); k < run.end; ++k) rest += y[k];
-        const std::size_t rest_n = run.size() > part ? run.size() - part : 0;
-        if (rest_n == 0) continue;
-        rest /= static_cast<double>(rest_n);
-        std::vector<std::pair<double, double>> line;
-        for (std::size_t b = run.begin; b + block <= run.end; b += block) {
-          double m = 0;
-          for (std::size_t k = b; k < b + block; ++k) m += y[k];
-          const double t_h = (static_cast<double>(b - run.begin) + block / 2.0) * rec.dt_s / 3600;
-          const double v = (m / static_cast<double>(block) - rest) / unit;
-          line.emplace_back(t_h, v);
-          x1 = std::max(x1, t_h), y0 = std::min(y0, v), y1 = std::max(y1, v);
-        }
-        lines.push_back(std::move(line));
-      }
-    const double pad = 0.05 * std::max(y1 - y0, 1e-12);
-    const mc::Frame f{60 + static_cast<double>(c / 3) * (w + 60), 50 + static_cast<double>(c % 3) * (h + 60), w, h,
-                      0, x1 * 1.02, y0 - pad, y1 + pad};
-    std::string frame = mc::frame_svg(f, "");
-    const std::string id = fmt::format("frame{}", c);
-    if (const std::size_t p = frame.find("id=\"frame\""); p != std::string::npos) frame.replace(p, 10, "id=\"" + id + "\"");
-    svg += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"#eee\"/>\n", f.left,
-                       f.top, std::max(0.0, std::min(f.px(part_s / 3600), f.left + w) - f.left), h);
-    svg += frame;
-    svg += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{} [{}] {}</text>\n", f.left, f.top - 6, mc::svg_escape(ch.name),
-                       gyro ? "deg/h" : "ug", ch.stationarity.tested ? (ch.stationarity.stationary ? "stationary" : "NON-STATIONARY") : "");
-    svg += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{:.3g}</text><text x=\"{:.1f}\" y=\"{:.1f}\" "
-                       "text-anchor=\"end\">{:.3g}</text><text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{:.3g} h</text>\n",
-                       f.left - 4, f.top + 10, f.y1, f.left - 4, f.top + h, f.y0, f.left + w, f.top + h + 14, f.x1);
-    svg += fmt::format("<g clip-path=\"url(#{})\">\n", id);
-    for (std::size_t r = 0; r < lines.size(); ++r) {
-      std::string pts;
-      for (const auto& [x, v] : lines[r]) {
-        pts += fmt::format("{:.1f},{:.1f} ", f.px(x), f.py(v));
-        svg += fmt::format("<circle class=\"point\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"2\" fill=\"{}\"/>", f.px(x), f.py(v),
-                           kColours[r % 3]);
-      }
-      svg += fmt::format("\n<polyline points=\"{}\" fill=\"none\" stroke=\"{}\"/>\n", pts, kColours[r % 3]);
-    }
-    svg += "</g>\n";
-  }
-  return svg + "</svg>\n";
 }
 
 }  // namespace
@@ -565,13 +419,24 @@ std::vector<std::pair<std::string, std::string>> noise_report(const noise::Senso
   return {{"noise.md", markdown(rec, a, confidence, sheet, calibrations)},
           {"allan.csv", allan_csv(a)},
           {"noise_terms.csv", terms_csv(a)},
-          {"allan.svg", allan_svg(a, sheet)},
-          {"stationarity.svg", stationarity_svg(rec, a)},
           {"calibration.csv", calibration_csv(calibrations)}};
 }
 
 std::vector<std::string> noise_file_names() {
-  return {"noise.md", "allan.csv", "noise_terms.csv", "allan.svg", "stationarity.svg", "calibration.csv", "noise.json"};
+  return {"noise.md", "allan.csv", "noise_terms.csv", "calibration.csv", "noise.json"};
+}
+
+std::vector<std::string> noise_figure_stems() { return {"allan", "stationarity"}; }
+
+std::vector<std::pair<std::string, std::string>> noise_figures(const noise::SensorRecording& rec,
+                                                               const noise::NoiseAnalysis& a, const Datasheet& sheet) {
+  const std::array<mc::SheetLevels, 2> levels{
+      mc::SheetLevels{sheet.white(SensorKind::kGyro), sheet.instability(SensorKind::kGyro)},
+      mc::SheetLevels{sheet.white(SensorKind::kAccelerometer), sheet.instability(SensorKind::kAccelerometer)}};
+  std::vector<std::pair<std::string, std::string>> files =
+      mc::figure_files("allan", mc::render_noise_allan_figure(a, levels));
+  for (auto& f : mc::figure_files("stationarity", mc::render_stationarity_figure(rec, a))) files.push_back(std::move(f));
+  return files;
 }
 
 }  // namespace insmc::app

@@ -1,7 +1,7 @@
 #pragma once
 // The report of `insmc noise` (docs/noise.md §6): Markdown for people,
 // allan.csv and noise_terms.csv for tables, noise.json for programs,
-// allan.svg and stationarity.svg for the eye. Values in SI and in the units engineers quote
+// the allan and stationarity figures (SVG and PNG) for the eye. Values in SI and in the units engineers quote
 // (deg/sqrt(h), deg/h, m/s/sqrt(h), ug), beside Table 3.1's bounds.
 #include <optional>
 #include <string>
@@ -15,7 +15,7 @@
 namespace insmc::app {
 
 /// A sensor's data-sheet values (`insmc noise --datasheet KEY=VALUE`), SI;
-/// absent when not given. Drawn on allan.svg (the white noise as its
+/// absent when not given. Drawn on the allan figure (the white noise as its
 /// −1/2 slope N/√τ, the bias instability as its flat floor 0.664 B) and set
 /// against the fitted terms in noise.md and noise.json.
 struct Datasheet {
@@ -37,11 +37,16 @@ void parse_datasheet_entry(const std::string& text, Datasheet& sheet);
 /// The value of a fitted term in the units engineers quote: (value, unit).
 std::pair<double, std::string> spec_value(noise::NoiseTerm term, noise::SensorKind kind, double value_si);
 
-/// The files of the report: noise.md first, then allan.csv, noise_terms.csv,
-/// allan.svg, stationarity.svg, calibration.csv (the multi-position
-/// calibrations, apps/calibration_report.h).
 /// The names of the files noise_report returns, and noise.json beside them.
 std::vector<std::string> noise_file_names();
+/// The figures' stems (gnuplot: `.gp`, `.svg`, `.png` each).
+std::vector<std::string> noise_figure_stems();
+/// The figures (montecarlo/write/noise_figures.h), as (file name, contents).
+std::vector<std::pair<std::string, std::string>> noise_figures(const noise::SensorRecording& rec,
+                                                               const noise::NoiseAnalysis& a, const Datasheet& sheet);
+
+/// The files of the report: noise.md first, then allan.csv, noise_terms.csv,
+/// calibration.csv (the multi-position calibrations, apps/calibration_report.h).
 
 std::vector<std::pair<std::string, std::string>> noise_report(
     const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence, const Datasheet& sheet = {},

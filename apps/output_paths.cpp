@@ -110,9 +110,10 @@ void OutputFileOption::write(std::string_view contents) const {
 
 std::optional<OutputFolderOption> prepare_figure_folder(const po::variables_map& vm, const std::string& command,
                                                         std::vector<std::string> other_files,
-                                                        const std::string& figure_stem,
+                                                        const std::vector<std::string>& figure_stems,
                                                         const std::vector<InputFile>& read_before) {
-  for (std::string& name : mc::figure_file_names(figure_stem)) other_files.push_back(std::move(name));
+  for (const std::string& stem : figure_stems)
+    for (std::string& name : mc::figure_file_names(stem)) other_files.push_back(std::move(name));
   std::optional<OutputFolderOption> out = prepare_output_folder(vm, command, other_files, read_before);
   if (out && !mc::gnuplot_available()) throw InputError("--out", vm["out"].as<std::string>(), mc::gnuplot_missing_message());
   return out;

@@ -47,12 +47,12 @@ std::optional<OutputFolderOption> prepare_output_folder(const po::variables_map&
                                                         const std::vector<std::string>& expected_files,
                                                         const std::vector<InputFile>& read_before = {});
 
-/// The same for a set that also holds the figure `figure_stem` (.gp, .svg,
-/// .png): gnuplot must be there, or the command stops now (exit 2, naming
-/// the package), before any work.
+/// The same for a set that also holds the figures `figure_stems` (.gp,
+/// .svg, .png each): gnuplot must be there, or the command stops now
+/// (exit 2, naming the package), before any work.
 std::optional<OutputFolderOption> prepare_figure_folder(const po::variables_map& vm, const std::string& command,
                                                         std::vector<std::string> other_files,
-                                                        const std::string& figure_stem,
+                                                        const std::vector<std::string>& figure_stems,
                                                         const std::vector<InputFile>& read_before = {});
 
 /// One output file (`--out FILE`, `--checkpoint FILE`), checked and locked;

@@ -1,6 +1,9 @@
 #pragma once
 /// Progress on stderr (count, rate and ETA) for work longer than a second,
 /// only when stderr is a terminal; silent otherwise (scripts, CI, pipes).
+/// The environment variable INSMC_PROGRESS=always prints it anyway, from
+/// the start, a line per update where stderr is not a terminal (a CI log);
+/// INSMC_PROGRESS=never silences it on a terminal too.
 #include <chrono>
 #include <cstdint>
 #include <mutex>
@@ -22,7 +25,7 @@ class Progress {
  private:
   std::uint64_t total_;
   std::string unit_, stage_;
-  bool enabled_;
+  bool enabled_, always_, terminal_;
   std::chrono::steady_clock::time_point start_, stage_start_, last_;
   std::mutex mutex_;
   bool printed_ = false;

@@ -1,6 +1,7 @@
 #include "apps/sweep.h"
 
 #include <algorithm>
+#include <cctype>
 #include <fmt/format.h>
 
 #include "apps/study_options.h"
@@ -79,29 +80,18 @@ mc::StudyConfig point_config(const mc::StudyConfig& base, const std::vector<Swee
   return c;
 }
 
-
-/// A sweep column without its SI unit (test_duration_s → test_duration), for
-/// labels that carry the unit the user typed.
-std::string quantity_name(std::string_view column) {
-  for (const std::string_view si : {"_s", "_m", "_mps", "_mps2", "_rad", "_radps", "_si"})
-    if (column.size() > si.size() && column.ends_with(si)) {
-      column.remove_suffix(si.size());
-      break;
-    }
-  return std::string(column);
-}
-
 /// The first swept quantity as the user gave it: when every value carries
 /// the same unit (5min,10min,15min; 1meru,10meru), the numbers in that unit;
 /// otherwise SI. Logarithmic when it spans a factor of 20 or more.
 struct AxisInUserUnits {
   std::vector<double> x;
   std::string label;
+  std::string unit;  ///< the unit typed, empty when SI
   bool logarithmic = false;
 };
 
 AxisInUserUnits in_user_units(const SweepAxis& a) {
-  AxisInUserUnits out{a.values_si, a.column};
+  AxisInUserUnits out{a.values_si, a.column, "", false};
   std::string common;
   std::vector<double> given;
   for (std::size_t i = 0; i < a.texts.size(); ++i) {
@@ -120,13 +110,45 @@ AxisInUserUnits in_user_units(const SweepAxis& a) {
   }
   if (!given.empty()) {
     out.x = given;
+    out.unit = common;
     out.label = fmt::format("{} [{}]", quantity_name(a.column), common);
   }
   const auto [lo, hi] = std::minmax_element(out.x.begin(), out.x.end());
   out.logarithmic = lo != out.x.end() && *lo > 0 && *hi / *lo >= 20;
   return out;
 }
+
+/// The CSV column of a swept quantity in the unit typed (beside its SI
+/// column): gyro_drift.bound in meru → gyro_drift.bound_meru, in deg/h →
+/// gyro_drift.bound_deg_per_h.
+std::string user_unit_column(const SweepAxis& a, const std::string& unit) {
+  std::string suffix;
+  for (const char ch : unit) {
+    if (ch == '/') suffix += "_per_";
+    else if (std::isalnum(static_cast<unsigned char>(ch))) suffix += ch;
+    else if (!suffix.empty() && suffix.back() != '_') suffix += '_';
+  }
+  while (!suffix.empty() && suffix.back() == '_') suffix.pop_back();
+  return quantity_name(a.column) + "_" + (suffix.empty() ? "user" : suffix);
+}
+
+/// One line of the terminal's summary: a point's scheme and system with the
+/// horizontal RMS at each report time.
+struct SummaryRow {
+  std::string scheme, system;
+  std::vector<std::string> rms;  ///< per report time
+  std::string accuracy, fitted;
+};
 }  // namespace
+
+std::string quantity_name(std::string_view column) {
+  for (const std::string_view si : {"_s", "_m", "_mps", "_mps2", "_rad", "_radps", "_si"})
+    if (column.size() > si.size() && column.ends_with(si)) {
+      column.remove_suffix(si.size());
+      break;
+    }
+  return std::string(column);
+}
 
 void refuse_sweeps(const po::variables_map& vm, const std::string& subcommand) {
   std::vector<std::string> names = {"bound", "random-fraction"};
@@ -204,8 +226,13 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
                      const StudyRunner& run) {
   const double k = mc::length_factor(unit);
   const std::string u = mc::length_suffix(unit);
+  std::vector<AxisInUserUnits> typed;
+  for (const SweepAxis& a : axes) typed.push_back(in_user_units(a));
   std::vector<std::string> header;
-  for (const auto& a : axes) header.push_back(a.column);
+  for (std::size_t i = 0; i < axes.size(); ++i) {
+    header.push_back(axes[i].column);
+    if (!typed[i].unit.empty()) header.push_back(user_unit_column(axes[i], typed[i].unit));
+  }
   for (const char* c : {"scheme", "system", "clock", "axis", "t_min", "n"}) header.emplace_back(c);
   for (const char* q : {"rms", "rms_lo", "rms_hi", "mean", "std", "min", "max", "p95"})
     header.push_back(fmt::format("{}_{}", q, u));
@@ -213,12 +240,15 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
   header.emplace_back("fitted_terms");
   for (std::string& column : mc::accuracy_header(unit)) header.push_back(std::move(column));
   mc::Table table(header);
-  mc::Table summary({"point", "scheme", "system", fmt::format("horizontal RMS [{}] at {} min", u,
-                                                              mc::format_number(base.report_times_s.back() / 60)),
-                     mc::readable_accuracy_header(unit).front(), "fitted"});
+  std::vector<std::string> summary_header{"point", "scheme", "system"};
+  for (const double t : base.report_times_s)
+    summary_header.push_back(fmt::format("RMS [{}] {} min", u, mc::format_number(t / 60)));
+  summary_header.push_back(mc::readable_accuracy_header(unit).front());
+  summary_header.emplace_back("fitted");
+  mc::Table summary(summary_header);
   mc::PanelFigure plot;
   check_sweep_size(axes);
-  const AxisInUserUnits x_axis = in_user_units(axes[0]);
+  const AxisInUserUnits& x_axis = typed[0];
   std::size_t points = 1;
   for (const auto& a : axes) points *= a.texts.size();
   mc::Json point_list = mc::Json::array();
@@ -234,9 +264,10 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
     std::string point_name;
     mc::Json point = mc::Json::object(), values = mc::Json::object(), rows = mc::Json::array();
     for (std::size_t i = 0; i < axes.size(); ++i) {
-      point_name += fmt::format("{}{}={}", i ? " " : "", axes[i].column, axes[i].texts[idx[i]]);
+      point_name += fmt::format("{}{}={}", i ? " " : "", quantity_name(axes[i].column), axes[i].texts[idx[i]]);
       values[axes[i].column] = axes[i].values_si[idx[i]];
     }
+    std::vector<SummaryRow> point_rows;
     for (std::size_t o = 0; o < layout.outputs.size(); ++o) {
       const auto& spec = layout.outputs[o];
       if (!layout.is_report_time[spec.time_index]) continue;
@@ -245,7 +276,11 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
       int scheme_i = 0;
       while (c.schemes[static_cast<std::size_t>(scheme_i)] != spec.scheme) ++scheme_i;
       std::vector<std::string> row;
-      for (std::size_t i = 0; i < axes.size(); ++i) row.push_back(mc::format_number(axes[i].values_si[idx[i]]));
+      for (std::size_t i = 0; i < axes.size(); ++i) {
+        row.push_back(mc::format_number(axes[i].values_si[idx[i]]));
+        if (!typed[i].unit.empty()) row.push_back(mc::format_number(typed[i].x[idx[i]]));
+      }
+      const std::size_t swept_columns = row.size();
       const double t = layout.times_s[spec.time_index];
       const std::string& fitted = map.fitted_terms(map.system_index(o));
       for (const std::string& cell :
@@ -262,10 +297,23 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
       r["fitted_terms"] = fitted;
       mc::add_accuracy_json(r, accuracy);
       rows.push_back(r);
+      if (spec.axis == mc::Axis::kHorizontal) {
+        SummaryRow* line = nullptr;
+        for (SummaryRow& r : point_rows)
+          if (r.scheme == row[swept_columns] && r.system == row[swept_columns + 1]) line = &r;
+        if (!line) {
+          point_rows.push_back({row[swept_columns], row[swept_columns + 1],
+                                std::vector<std::string>(c.report_times_s.size(), "—"), "—", fitted});
+          line = &point_rows.back();
+        }
+        for (std::size_t q = 0; q < c.report_times_s.size() && q < line->rms.size(); ++q)
+          if (std::abs(t - c.report_times_s[q]) < 1e-6)
+            line->rms[q] = mc::format_with_interval(k * s.rms, k * (s.rms_hi - s.rms_lo) / 2);
+      }
       if (spec.axis == mc::Axis::kHorizontal && std::abs(t - c.report_times_s.back()) < 1e-6) {
-        summary.add_row({point_name, row[axes.size()], row[axes.size() + 1],
-                         mc::format_with_interval(k * s.rms, k * (s.rms_hi - s.rms_lo) / 2),
-                         mc::readable_accuracy_cells(accuracy, unit).front(), fitted});
+        for (SummaryRow& r : point_rows)
+          if (r.scheme == row[swept_columns] && r.system == row[swept_columns + 1])
+            r.accuracy = mc::readable_accuracy_cells(accuracy, unit).front();
         // One panel per scheme; one line per system and combination of the
         // other swept quantities (every line of a product sweep).
         if (plot.panels.size() <= static_cast<std::size_t>(scheme_i)) plot.panels.resize(static_cast<std::size_t>(scheme_i) + 1);
@@ -281,7 +329,10 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
         for (mc::PlotLine& l : panel.lines)
           if (l.name == name) line = &l;
         if (!line) {
-          panel.lines.push_back({name, {}, {}, {}, {}, {}, static_cast<int>(others), spec.system == System::kGyrocompass});
+          // A colour per system and combination of the other quantities;
+          // system 2 dashed as well (told apart in grey print).
+          const int system_i = spec.system == System::kGyrocompass ? 1 : 0;
+          panel.lines.push_back({name, {}, {}, {}, {}, {}, static_cast<int>(2 * others) + system_i, system_i == 1});
           line = &panel.lines.back();
         }
         line->x.push_back(x_axis.x[idx[0]]);
@@ -290,6 +341,13 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
         line->hi.push_back(k * s.rms_hi);
         line->marks.push_back({x_axis.x[idx[0]], k * s.rms, k * s.rms_lo, k * s.rms_hi});  // the studied points
       }
+    }
+    for (const SummaryRow& r : point_rows) {
+      std::vector<std::string> cells{point_name, r.scheme, r.system};
+      cells.insert(cells.end(), r.rms.begin(), r.rms.end());
+      cells.push_back(r.accuracy);
+      cells.push_back(r.fitted);
+      summary.add_row(cells);
     }
     point["values_si"] = values;
     point["rows"] = rows;
@@ -316,6 +374,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
   plot.title = fmt::format("Horizontal RMS at {} min against {} (shaded: {}% confidence interval)",
                            mc::format_number(base.report_times_s.back() / 60), x_axis.label,
                            mc::format_number(100 * base.confidence));
+  plot.band_name = fmt::format("{}% interval", mc::format_number(100 * base.confidence));
   plot.x_label = x_axis.label;
   plot.y_label = fmt::format("RMS horizontal error [{}]", u);
   plot.log_x = x_axis.logarithmic;

@@ -5,6 +5,7 @@
 /// sweep over their Cartesian product. Each point is a full study.
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "apps/cli_common.h"
@@ -40,6 +41,10 @@ void check_sweep_points(const mc::StudyConfig& base, const std::vector<SweepAxis
 /// swept quantity in the units it was given in (a panel per scheme, a line
 /// per system and combination of the other swept quantities), and sweep.json's axes and points (SI keys whatever
 /// --units; the caller adds the settings).
+/// A sweep column without its SI unit (test_duration_s → test_duration), for
+/// labels that carry the unit the user typed.
+std::string quantity_name(std::string_view column);
+
 struct SweepFiles {
   std::string sweep_csv, summary_md;
   mc::PanelFigure plot;

@@ -43,13 +43,14 @@ stage_done "suite"
 # validation, the raw rankings, the real-data commands, the noise fit's
 # coverage, the kill and two-writer loops of the output sets, the long and
 # huge inputs, rank's studies, the golden studies, the truth level at each
-# thread count, the benchmark); the code each drives runs under the
+# thread count, the benchmark, the figure gallery, the progress lines on a
+# terminal); the code each drives runs under the
 # sanitizers in the unit tests and the short end-to-end cases of the same
 # commands.
 sanitizer_skip='^(GapValidate[.]|RealDataDocs[.]|RawRanking[.]|NoiseFit[.](WhiteAndRandomWalk|GaussMarkovCorrelationTime)|GapLinearNull[.]|GapImportedNull[.]|GapImportedNoise[.]|GapLikelihood[.]|Outputs[.](ASigkill|OfTwoRuns)'
 sanitizer_skip+='|HostileFiles[.]InputsLarger|Rank[.]|Plots[.]Rank|Checkpoint[.]Sigterm|SchemeErrorsGolden[.]'
 sanitizer_skip+='|Cli[.](TruthFidelity|BenchJson)|Compensate[.]TheVerdict|HostileInput[.]ValuesAtTheEdges'
-sanitizer_skip+='|Gap[.]FilterWindows'
+sanitizer_skip+='|Gap[.]FilterWindows|FigureGallery[.]Every|Progress[.]'
 sanitizer_skip+='|Gap[.](AnEffectAfterAScheme|RecordsOfOtherSoftware|AWithheld|RecordsOfTheModelItself|ScreeningWithout))'
 bash scripts/build-sanitize.sh
 stage_done "build (clang, sanitizers)"

@@ -36,6 +36,10 @@ std::size_t total(std::span<const Segment> s) {
 NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& options) {
   NoiseAnalysis out;
   out.dt_s = rec.dt_s;
+  const auto tell = [&](std::string_view stage, std::size_t done) {
+    if (options.progress) options.progress(stage, done, kChannels);
+  };
+  tell("disturbance mask", 0);
   out.mask = options.mask ? find_disturbances(rec, options.alpha) : no_mask(rec);
   out.used_s = static_cast<double>(total(out.mask.kept)) * rec.dt_s;
   std::size_t longest = 0;
@@ -47,6 +51,7 @@ NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& opti
   fit_options.confidence = options.confidence;
   const std::vector<Segment> rest = after_first_part(rec.runs, out.mask.kept, rec.dt_s, first_part_s);
   for (std::size_t c = 0; c < kChannels; ++c) {
+    tell("Allan deviation and fit per channel", c);
     ChannelNoise& ch = out.channels[c];
     ch.name = channel_name(c);
     ch.kind = channel_kind(c);

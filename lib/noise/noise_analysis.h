@@ -12,6 +12,9 @@
 #include "lib/noise/allan_variance.h"
 #include "lib/noise/disturbances.h"
 #include "lib/noise/noise_fit.h"
+#include <functional>
+#include <string_view>
+
 #include "lib/noise/recording.h"
 #include "lib/noise/stationarity.h"
 
@@ -22,6 +25,9 @@ struct NoiseOptions {
   double confidence = 0.95;     ///< of every interval
   double first_part_s = 3600;   ///< the warm-up tested against the rest (shortened to half the longest run); 0: no test
   bool mask = true;
+  /// Told each stage as it starts: the disturbance mask (done 0), then each
+  /// channel (done = channels finished, of kChannels).
+  std::function<void(std::string_view stage, std::size_t done, std::size_t total)> progress;
 };
 
 struct AllanRow {

@@ -317,9 +317,13 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
   f.envelope_csv = render_csv(envelope);
 
   f.plot.stem = "compensate";
-  f.plot.title = fmt::format("{}: horizontal RMS after each scheme, unit(s) against the population", source);
-  f.plot.x_label = "time on the scheme's clock (min)";
-  f.plot.y_label = "horizontal RMS (m)";
+  const double per_m = length_factor(options.units);
+  f.plot.title = fmt::format("{}: horizontal RMS of each unit after each scheme, against the population{}", source,
+                             result.units.size() > kMaxPlottedUnits
+                                 ? fmt::format(" (the first {} of {} units)", kMaxPlottedUnits, result.units.size())
+                                 : "");
+  f.plot.x_label = "time on the scheme's clock [min]";
+  f.plot.y_label = fmt::format("horizontal RMS [{}]", length_suffix(options.units));
   f.plot.marked_x = {42, 63, 84};
   f.plot.columns = 3;
   if (!result.units.empty())
@@ -331,16 +335,22 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
       pop.thin = true;
       for (const UnitPositionError& e : result.units.front().schemes[s].envelope) {
         pop.x.push_back(e.t_s / 60.0);
-        pop.y.push_back(e.population_horizontal_rms_m());
+        pop.y.push_back(per_m * e.population_horizontal_rms_m());
       }
       panel.lines.push_back(pop);
+      // The limits the RMS is held against (horizontal ones; a limit on
+      // one axis is not a horizontal RMS).
+      for (const PositionLimit& l : options.limits)
+        if (l.component == PositionLimit::Component::kHorizontal)
+          panel.limits.push_back({per_m * l.limit_m, fmt::format("limit {} at {:g} min", l.text.substr(l.text.find('=') + 1),
+                                                                 l.t_s / 60)});
       for (std::size_t k = 0; k < result.units.size() && k < kMaxPlottedUnits; ++k) {
         PlotLine line;
-        line.name = fmt::format("run {}", result.units[k].run);
+        line.name = fmt::format("unit (run {})", result.units[k].run);
         line.colour = static_cast<int>(k);
         for (const UnitPositionError& e : result.units[k].schemes[s].envelope) {
           line.x.push_back(e.t_s / 60.0);
-          line.y.push_back(e.unit_horizontal_rms_m());
+          line.y.push_back(per_m * e.unit_horizontal_rms_m());
         }
         panel.lines.push_back(std::move(line));
       }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -145,13 +146,36 @@ RmsTable predicted_horizontal_rms(const StudyConfig& config) {
 
 namespace {
 
+/// Counts the study maps built, for the caller's progress.
+class MapCounter {
+ public:
+  MapCounter(const BreakEvenProgress& report, std::uint64_t total, std::string_view stage)
+      : report_(report), total_(total), stage_(stage) {}
+  void built() {
+    const std::uint64_t done = ++done_;
+    if (report_) report_(stage_, done, total_);
+  }
+
+ private:
+  const BreakEvenProgress& report_;
+  std::uint64_t total_;
+  std::string_view stage_;
+  std::atomic<std::uint64_t> done_{0};
+};
+
 /// Each value's study built and predicted on its own: side by side.
-std::vector<RmsTable> rms_along(const StudyConfig& config, Assumption a, const std::vector<double>& values) {
+std::vector<RmsTable> rms_along(const StudyConfig& config, Assumption a, const std::vector<double>& values,
+                                MapCounter& counter) {
   std::vector<RmsTable> out(values.size());
-  tbb::parallel_for(std::size_t{0}, values.size(),
-                    [&](std::size_t q) { out[q] = predicted_horizontal_rms(with_assumption(config, a, values[q])); });
+  tbb::parallel_for(std::size_t{0}, values.size(), [&](std::size_t q) {
+    out[q] = predicted_horizontal_rms(with_assumption(config, a, values[q]));
+    counter.built();
+  });
   return out;
 }
+
+/// The study maps of an assumption's polynomials (below): two for a bound, three for F.
+std::size_t polynomial_points(Assumption a) { return is_bound(a) ? 2 : 3; }
 
 /// Every output's mean square as a polynomial c0 + c1 v + c2 v² in the
 /// assumption's variable v (b² for a bound, F for the random fraction),
@@ -164,11 +188,12 @@ struct MeanSquarePolynomials {
   }
 };
 
-MeanSquarePolynomials mean_square_polynomials(const StudyConfig& config, Assumption a) {
+MeanSquarePolynomials mean_square_polynomials(const StudyConfig& config, Assumption a, MapCounter& counter) {
   const bool bound = is_bound(a);
   const double b1 = bound ? catalogue()[static_cast<std::size_t>(bound_slot(a))].default_bound_si : 0.0;
   const std::vector<double> points = bound ? std::vector<double>{0.0, b1} : std::vector<double>{0.0, 0.5, 1.0};
-  const std::vector<RmsTable> at = rms_along(config, a, points);
+  INSMC_ASSERT(points.size() == polynomial_points(a), "{} points", points.size());
+  const std::vector<RmsTable> at = rms_along(config, a, points, counter);
   MeanSquarePolynomials p;
   p.c.resize(at[0].size());
   for (std::size_t j = 0; j < at[0].size(); ++j)
@@ -188,7 +213,20 @@ MeanSquarePolynomials mean_square_polynomials(const StudyConfig& config, Assumpt
 
 }  // namespace
 
-BreakEven break_even(const StudyConfig& config, double max_test_duration_s) {
+BreakEven break_even(const StudyConfig& config, double max_test_duration_s, const BreakEvenProgress& progress) {
+  // The test duration's scan: whole filter intervals, over whole minutes
+  // (or intervals, when an interval is longer); bisection follows below.
+  const double tau = config.test.filter_interval_s;
+  const auto whole = [&](double t) { return tau * std::ceil(t / tau - 1e-9); };
+  const double lo = whole(std::max(4 * tau, 60.0)), step = whole(std::max(tau, 60.0));
+  const double hi = std::min(max_test_duration_s, kMaxStudyIntervals * tau);  // the study's own limit
+  std::vector<double> scan;
+  for (double t = lo; t <= hi + 1e-9 && scan.size() < 1000; t += step) scan.push_back(t);
+  std::uint64_t maps = scan.size();
+  for (const Assumption a : kAllAssumptions)
+    if (a != Assumption::kTestDuration) maps += polynomial_points(a);
+  MapCounter counter(progress, maps, "break-even searches");
+
   BreakEven out;
   out.at_study = predicted_horizontal_rms(config);
   const RmsTable& base = out.at_study;
@@ -200,7 +238,8 @@ BreakEven break_even(const StudyConfig& config, double max_test_duration_s) {
   // the crossings and curves in the assumptions' order.
   std::vector<MeanSquarePolynomials> polynomials(std::size(kAllAssumptions));
   tbb::parallel_for(std::size_t{0}, polynomials.size(), [&](std::size_t q) {
-    if (kAllAssumptions[q] != Assumption::kTestDuration) polynomials[q] = mean_square_polynomials(config, kAllAssumptions[q]);
+    if (kAllAssumptions[q] != Assumption::kTestDuration)
+      polynomials[q] = mean_square_polynomials(config, kAllAssumptions[q], counter);
   });
   for (std::size_t q = 0; q < polynomials.size(); ++q) {
     const Assumption a = kAllAssumptions[q];
@@ -243,15 +282,38 @@ BreakEven break_even(const StudyConfig& config, double max_test_duration_s) {
     }
     out.curves.push_back(std::move(curve));
   }
-  // The test duration: whole filter intervals; a scan over whole minutes
-  // (or intervals, when an interval is longer), then bisection.
-  const double tau = config.test.filter_interval_s;
-  const auto whole = [&](double t) { return tau * std::ceil(t / tau - 1e-9); };
-  const double lo = whole(std::max(4 * tau, 60.0)), step = whole(std::max(tau, 60.0));
-  const double hi = std::min(max_test_duration_s, kMaxStudyIntervals * tau);  // the study's own limit
-  std::vector<double> scan;
-  for (double t = lo; t <= hi + 1e-9 && scan.size() < 1000; t += step) scan.push_back(t);
-  const std::vector<RmsTable> along = rms_along(config, Assumption::kTestDuration, scan);
+  // The test duration: the scan above, then bisection between its points.
+  const std::vector<RmsTable> along = rms_along(config, Assumption::kTestDuration, scan, counter);
+  const auto sign_changes = [&](std::size_t s) {
+    for (std::size_t j = 0; j < base.size(); ++j)
+      for (std::size_t k = 0; k < base[j].size(); ++k) {
+        const std::size_t leader = leader_of(base[j][k]);
+        for (std::size_t c = 0; c < n_schemes; ++c)
+          if (c != leader && (along[s][j][k][leader] < along[s][j][k][c]) !=
+                                 (along[s + 1][j][k][leader] < along[s + 1][j][k][c]))
+            return true;
+      }
+    return false;
+  };
+  // The bisections' study maps: every whole interval inside a scan step
+  // where a first place changes hands, built side by side once (the
+  // crossings of all systems, times and challengers share them; a step of
+  // more than 8 intervals is bisected with maps built as needed).
+  std::vector<double> inner;
+  for (std::size_t s = 0; s + 1 < scan.size(); ++s) {
+    if (!sign_changes(s)) continue;
+    std::vector<double> step_points;
+    for (double m = whole(scan[s] + tau); m < scan[s + 1] - 1e-9 && step_points.size() <= 8; m = whole(m + tau))
+      step_points.push_back(m);
+    if (step_points.size() <= 8) inner.insert(inner.end(), step_points.begin(), step_points.end());
+  }
+  MapCounter bisection_counter(progress, inner.size(), "test-duration bisection");
+  const std::vector<RmsTable> at_inner = rms_along(config, Assumption::kTestDuration, inner, bisection_counter);
+  const auto rms_at = [&](double m) {
+    const auto it = std::find(inner.begin(), inner.end(), m);
+    return it != inner.end() ? at_inner[static_cast<std::size_t>(it - inner.begin())]
+                             : predicted_horizontal_rms(with_assumption(config, Assumption::kTestDuration, m));
+  };
   for (std::size_t j = 0; j < base.size(); ++j)
     for (std::size_t k = 0; k < base[j].size(); ++k) {
       const std::size_t leader = leader_of(base[j][k]);
@@ -266,7 +328,7 @@ BreakEven break_even(const StudyConfig& config, double max_test_duration_s) {
           for (int it = 0; it < 60 && b - a > tau + 1e-9; ++it) {
             const double m = whole(a + std::floor((b - a) / tau / 2) * tau);
             if (m <= a || m >= b) break;
-            if (sign_at(predicted_horizontal_rms(with_assumption(config, Assumption::kTestDuration, m))) == first)
+            if (sign_at(rms_at(m)) == first)
               a = m;
             else
               b = m;

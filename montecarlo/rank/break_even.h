@@ -16,6 +16,8 @@
 ///     three evaluations give it and a crossing is a root in [0, 1];
 ///   * the test duration T: no closed form (the estimators change with T);
 ///     a scan over whole minutes, then bisection on whole filter intervals.
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -96,6 +98,11 @@ struct BreakEven {
   RmsTable at_study;                    ///< the RMS at the study's own settings
 };
 
-BreakEven break_even(const StudyConfig& config, double max_test_duration_s = 40 * 60.0);
+/// Told the stage, the study maps built in it so far and how many it has in
+/// all (from several threads at once: the callee serialises).
+using BreakEvenProgress = std::function<void(std::string_view stage, std::uint64_t done, std::uint64_t total)>;
+
+BreakEven break_even(const StudyConfig& config, double max_test_duration_s = 40 * 60.0,
+                     const BreakEvenProgress& progress = {});
 
 }  // namespace insmc::mc

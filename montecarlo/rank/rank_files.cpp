@@ -259,16 +259,17 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
   f.plot.title = fmt::format("Horizontal RMS at {} min along each assumption ({} level; scheme none, which none "
                              "of them moves, left out; points: where the first place changes hands)",
                              t_min_text(config.report_times_s[last_k]), fidelity);
-  f.plot.x_label = "the assumption's value (unit in the panel title)";
   f.plot.y_label = fmt::format("horizontal RMS [{}]", u);
-  f.plot.columns = static_cast<int>(config.systems.size());
+  // Two panels a row whatever the systems: one column of six assumptions
+  // runs past an A4 page's height.
+  f.plot.columns = 2;
   for (const AssumptionCurve& c : even.curves) {
     const DisplayUnit d = display_unit(c.assumption);
     for (std::size_t j = 0; j < config.systems.size(); ++j) {
       if (!applies_to(c.assumption, config.systems[j])) continue;
       PlotPanel panel;
-      panel.title = fmt::format("system {}: {}{}", system_number(config.systems[j]), to_string(c.assumption),
-                                d.unit.empty() ? "" : " [" + d.unit + "]");
+      panel.title = fmt::format("system {}: {}", system_number(config.systems[j]), to_string(c.assumption));
+      panel.x_label = fmt::format("{}{}", to_string(c.assumption), d.unit.empty() ? "" : " [" + d.unit + "]");
       const auto& rms = even.at_study[j][last_k];
       const auto leader = leader_of(rms);
       for (std::size_t i = 0; i < config.schemes.size(); ++i) {

@@ -3,12 +3,37 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
+#include "lib/uncertainty/catalogue.h"
 #include "montecarlo/write/csv.h"
 
 namespace insmc::mc {
+namespace {
+
+/// A source's name on the figure: words and the paper's symbol
+/// (gyro_drift_x → "gyro drift x (ω_dox)"); the tables keep the catalogue name.
+std::string readable_source(const std::string& name) {
+  static const std::pair<std::string_view, std::string_view> kOthers[] = {
+      {"position_resolution", "position resolution"}, {"dv_pulses", "Δv pulse quantization"},
+      {"sway", "vehicle sway"}, {"torquer_pulses", "torquer pulse quantization"},
+      {"alignment_dv_pulses", "Δv pulses in alignment"}, {"mean", "mean of the sample"}};
+  for (const auto& [key, text] : kOthers)
+    if (name == key) return std::string(text);
+  const std::string_view realigned = "realignment:";
+  const bool at_realignment = name.starts_with(realigned);
+  const std::string base = at_realignment ? name.substr(realigned.size()) : name;
+  std::string words = base;
+  std::replace(words.begin(), words.end(), '_', ' ');
+  for (const UncertaintySpec& spec : catalogue())
+    if (spec.name == base) words += fmt::format(" ({})", spec.symbol);
+  return at_realignment ? words + " at realignment" : words;
+}
+
+}  // namespace
 
 BarFigure budget_figure(const StudyConfig& c, const StudyLayout& l, const StudyMap& map) {
   const std::vector<std::string> sources = map.budget_sources();
@@ -45,7 +70,7 @@ BarFigure budget_figure(const StudyConfig& c, const StudyLayout& l, const StudyM
     panel.values.resize(outputs.size());
     for (std::size_t i = 0; i < order.size() && panel.categories.size() < kBudgetPlotSources; ++i) {
       if (!(largest(order[i]) > 0)) break;
-      panel.categories.push_back(sources[order[i]]);
+      panel.categories.push_back(readable_source(sources[order[i]]));
       for (std::size_t s = 0; s < outputs.size(); ++s) panel.values[s].push_back(shares[outputs[s]][order[i]]);
     }
     f.panels.push_back(std::move(panel));

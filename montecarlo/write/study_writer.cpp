@@ -192,6 +192,7 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
   plot.title = fmt::format("Horizontal RMS position error: {} samples at fidelity {} (shaded: {}% interval), "
                            "dotted: covariance",
                            c.samples, to_string(c.fidelity), format_number(100 * c.confidence));
+  plot.band_name = fmt::format("{}% interval", format_number(100 * c.confidence));
   plot.x_label = "time on the scheme's clock [min]";
   plot.y_label = fmt::format("RMS horizontal error [{}]", length_suffix(unit));
   for (const double t : c.report_times_s) plot.marked_x.push_back(t / 60.0);

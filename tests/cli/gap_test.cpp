@@ -11,6 +11,7 @@
 
 #include "lib/records/record_io.h"
 #include "tests/cli/run_program.h"
+#include "tests/cli/svg_figure.h"
 
 namespace insmc::testing {
 namespace {
@@ -22,32 +23,6 @@ std::string simulate(const TempDir& dir, const std::string& name, const std::str
   const auto r = run_insmc("simulate --runs " + std::to_string(runs) + " --out " + path + " " + options);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   return path;
-}
-
-/// The number after `name="` in `tag` (NaN when absent).
-double attribute(const std::string& tag, const std::string& name) {
-  const auto at = tag.find(" " + name + "=\"");
-  return at == std::string::npos ? std::nan("") : std::stod(tag.substr(at + name.size() + 3));
-}
-
-/// Parses a plot of the diagnosis: its frame and every data point
-/// (`<circle class="point">`) must lie inside it; returns the points.
-int points_inside_frame(const std::string& svg) {
-  const auto frame_at = svg.find("<rect class=\"frame\"");
-  EXPECT_NE(frame_at, std::string::npos);
-  if (frame_at == std::string::npos) return 0;
-  const std::string frame = svg.substr(frame_at, svg.find('>', frame_at) - frame_at);
-  const double x = attribute(frame, "x"), y = attribute(frame, "y");
-  const double w = attribute(frame, "width"), h = attribute(frame, "height");
-  int points = 0;
-  for (auto at = svg.find("<circle class=\"point\""); at != std::string::npos;
-       at = svg.find("<circle class=\"point\"", at + 1)) {
-    const std::string tag = svg.substr(at, svg.find('>', at) - at);
-    const double cx = attribute(tag, "cx"), cy = attribute(tag, "cy");
-    EXPECT_TRUE(cx >= x && cx <= x + w && cy >= y && cy <= y + h) << tag << " outside " << frame;
-    ++points;
-  }
-  return points;
 }
 
 TEST(Gap, RecordsOfTheModelItselfShowNoSignificantGap) {
@@ -71,15 +46,18 @@ TEST(Gap, AWithheldAccelerometerBiasInstabilityIsFoundAndNamed) {
   const auto top = r.out.find("\"top\": \"");
   ASSERT_NE(top, std::string::npos);
   EXPECT_TRUE(has(r.out.substr(top, 80), "accel_bias_instability")) << r.out.substr(top, 80);
-  for (const char* f : {"gap.md", "gap.json", "gap_groups.svg", "gap_allan.svg"})
+  for (const char* f : {"gap.md", "gap.json", "gap_groups.gp", "gap_groups.svg", "gap_groups.png", "gap_allan.gp",
+                        "gap_allan.svg", "gap_allan.png"})
     EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / f)) << f;
   EXPECT_EQ(read_file(std::filesystem::path(out) / "gap.json"), r.out);
-  // The plots show their data: every group a point inside the frame, named;
-  // the Allan curves (three axes, clusters 10 s and up) inside theirs.
+  // The figures show their data: every group a stem and a point inside the
+  // frame, named; the Allan curves (three axes, clusters 10 s and up) inside theirs.
   const std::string groups = read_file(std::filesystem::path(out) / "gap_groups.svg");
-  EXPECT_GE(points_inside_frame(groups), 22);
+  EXPECT_EQ(frames_of(groups).size(), 1u);
+  EXPECT_GE(plotted_points_inside(groups, "gap_groups"), 22u);
   EXPECT_TRUE(has(groups, "common test f_x")) << groups.substr(0, 400);
-  EXPECT_GE(points_inside_frame(read_file(std::filesystem::path(out) / "gap_allan.svg")), 3 * 4);
+  EXPECT_TRUE(has(groups, "above the band: more than the model")) << "the colours' legend";
+  EXPECT_GE(plotted_points_inside(read_file(std::filesystem::path(out) / "gap_allan.svg"), "gap_allan"), 3u * 4);
 }
 
 TEST(Gap, RecordsOfOtherSoftwareAreDiagnosed) {

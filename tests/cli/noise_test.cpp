@@ -10,6 +10,7 @@
 #include <random>
 
 #include "tests/cli/run_program.h"
+#include "tests/cli/svg_figure.h"
 
 namespace insmc::testing {
 namespace {
@@ -31,38 +32,14 @@ std::string write_recording(const TempDir& dir, bool bump) {
   return path;
 }
 
-/// The number of data points (circles of class "point") in an SVG, each
-/// checked to lie inside one of its `frames` frames (rects of class "frame").
-int points_inside_frames(const std::string& svg, std::size_t frames_expected) {
-  auto attr = [](const std::string& tag, const std::string& name) {
-    const std::size_t p = tag.find(" " + name + "=\"");
-    return p == std::string::npos ? std::nan("") : std::stod(tag.substr(p + name.size() + 3));
-  };
-  std::vector<std::array<double, 4>> frames;
-  for (std::size_t p = svg.find("<rect class=\"frame\""); p != std::string::npos; p = svg.find("<rect class=\"frame\"", p + 1)) {
-    const std::string tag = svg.substr(p, svg.find('>', p) - p);
-    frames.push_back({attr(tag, "x"), attr(tag, "y"), attr(tag, "width"), attr(tag, "height")});
-  }
-  EXPECT_EQ(frames.size(), frames_expected);
-  int points = 0;
-  for (std::size_t p = svg.find("<circle class=\"point\""); p != std::string::npos; p = svg.find("<circle class=\"point\"", p + 1)) {
-    const std::string tag = svg.substr(p, svg.find('>', p) - p);
-    const double x = attr(tag, "cx"), y = attr(tag, "cy");
-    bool inside = false;
-    for (const auto& f : frames) inside = inside || (x >= f[0] && x <= f[0] + f[2] && y >= f[1] && y <= f[1] + f[3]);
-    EXPECT_TRUE(inside) << tag;
-    ++points;
-  }
-  return points;
-}
-
 TEST(Noise, WhiteNoiseRecordingIsReportedWithItsTruthInsideTheInterval) {
   TempDir dir;
   const std::string input = write_recording(dir, true);
   const std::string out = (dir.path() / "out").string();
   const ProgramResult r = run_insmc(fmt::format("noise --input {} --rate 10Hz --out {} --format json", input, out));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* name : {"noise.md", "noise.json", "allan.csv", "noise_terms.csv", "allan.svg", "stationarity.svg"})
+  for (const char* name : {"noise.md", "noise.json", "allan.csv", "noise_terms.csv", "allan.gp", "allan.svg", "allan.png",
+                           "stationarity.gp", "stationarity.svg", "stationarity.png"})
     EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / name)) << name;
   const std::string terms = read_file(std::filesystem::path(out) / "noise_terms.csv");
   // gyro_x's angle random walk: 0.3 deg/√h inside its interval.
@@ -88,26 +65,20 @@ TEST(Noise, WhiteNoiseRecordingIsReportedWithItsTruthInsideTheInterval) {
   EXPECT_TRUE(has(md, "One static orientation")) << md;
   EXPECT_TRUE(has(r.out, "\"channels\""));
 
-  // Every data point of both plots lies inside one of its panels' frames.
-  EXPECT_GE(points_inside_frames(read_file(std::filesystem::path(out) / "allan.svg"), 2), 6 * 8);  // 8+ octaves
-  EXPECT_GE(points_inside_frames(read_file(std::filesystem::path(out) / "stationarity.svg"), 6), 6 * 6);
-  // Table 3.1's bound as a reference level in each Allan panel, inside it.
+  // Every data point of both figures lies inside one of its panels' frames:
+  // gyros and accelerometers; the six channels.
   const std::string allan = read_file(std::filesystem::path(out) / "allan.svg");
-  EXPECT_TRUE(has(allan, "Table 3.1 bound (10 meru)") && has(allan, "Table 3.1 bound (0.1 mg)"));
-  std::string as_points;
-  for (std::size_t p = allan.find("<line class=\"reference\""); p != std::string::npos;
-       p = allan.find("<line class=\"reference\"", p + 1)) {
-    const std::string tag = allan.substr(p, allan.find('>', p) - p);
-    const auto number = [&](const char* name) { return tag.substr(tag.find(name) + std::string(name).size()); };
-    as_points += fmt::format("<circle class=\"point\" cx=\"{}\" cy=\"{}\"/>", std::stod(number(" x2=\"")),
-                             std::stod(number(" y1=\"")));
-  }
-  const std::string frames = allan.substr(0, allan.find("<g clip-path"));
-  const std::string second = allan.substr(allan.find("<rect class=\"frame\"", allan.find("<g clip-path")));
-  EXPECT_EQ(points_inside_frames(frames + second.substr(0, second.find('>') + 1) + as_points, 2), 2);
+  const std::string stationarity = read_file(std::filesystem::path(out) / "stationarity.svg");
+  EXPECT_EQ(frames_of(allan).size(), 2u);
+  EXPECT_EQ(frames_of(stationarity).size(), 6u);
+  EXPECT_GE(plotted_points_inside(allan, "allan"), 6u * 8);  // 8+ octaves
+  EXPECT_GE(plotted_points_inside(stationarity, "stationarity"), 6u * 6);
+  // In the units of the tables, with Table 3.1's bound as a reference level in each panel.
+  EXPECT_TRUE(has(allan, "Allan deviation [deg/h]") && has(allan, "Allan deviation [µg]"));
+  EXPECT_TRUE(has(allan, "Table 3.1 bias bound (10 meru)") && has(allan, "Table 3.1 bias bound (0.1 mg)"));
 }
 
-// Data-sheet values: drawn on allan.svg inside each panel's frame, set
+// Data-sheet values: drawn on the allan figure inside each panel's frame, set
 // against the fit in noise.md (the recording's true ARW 0.3 deg/√h lies in
 // the fitted interval; a sheet claiming 0.03 does not, and the fit is worse
 // than it), kept in noise.json; a bad key or value exits 2.
@@ -166,25 +137,11 @@ TEST(Noise, DatasheetValuesAreDrawnAndComparedWithTheFit) {
   EXPECT_TRUE(has(row("| gyro_x | angle_random_walk |"), "| yes |")) << md;            // the truth: inside
   EXPECT_TRUE(has(row("| accel_x | velocity_random_walk |"), "worse than the sheet")) << md;  // 0.05 true vs 0.005
   EXPECT_TRUE(has(row("| gyro_x | bias_instability |"), "not selected")) << md;         // white noise only
+  // The three data-sheet lines, named in the legend, inside the frames.
   const std::string svg = read_file(std::filesystem::path(out) / "allan.svg");
-  // Three data-sheet lines: the gyro panel's ARW (the recording's own
-  // value, so through the data) and instability floor (the frame is widened
-  // to it) start inside that panel's frame; the accelerometer's VRW, ten
-  // times below the data, may run below its frame and is clipped.
-  std::string ends;
-  int lines = 0;
-  for (std::size_t p = svg.find("<line class=\"datasheet\""); p != std::string::npos;
-       p = svg.find("<line class=\"datasheet\"", p + 1), ++lines) {
-    const std::string tag = svg.substr(p, svg.find('>', p) - p);
-    const auto number = [&](const char* name) { return std::stod(tag.substr(tag.find(name) + std::string(name).size())); };
-    if (lines < 2)
-      ends += fmt::format("<circle class=\"point\" cx=\"{}\" cy=\"{}\"/>", number(" x1=\"") + 1, number(" y1=\""));
-  }
-  EXPECT_EQ(lines, 3);
-  const std::string first_frame = svg.substr(0, svg.find("<g clip-path"));
-  const std::string second = svg.substr(svg.find("<rect class=\"frame\"", svg.find("<g clip-path")));
-  EXPECT_EQ(points_inside_frames(first_frame + second.substr(0, second.find('>') + 1) + ends, 2), 2);
-  EXPECT_TRUE(has(svg, "data sheet bias instability (0.664 B)"));
+  EXPECT_GE(plotted_points_inside(svg, "allan"), 6u * 8);
+  for (const char* entry : {"data sheet ARW (N/√τ)", "data sheet VRW (N/√τ)", "data sheet bias instability (0.664 B)"})
+    EXPECT_TRUE(has(svg, entry)) << entry;
   EXPECT_TRUE(has(read_file(std::filesystem::path(out) / "noise.json"), "\"gyro_arw_radprts\""));
   for (const char* bad : {"--datasheet gyro_arw=-1degprth", "--datasheet gyro_arw=1mg", "--datasheet arw=0.1degprth",
                           "--datasheet gyro_arw"}) {

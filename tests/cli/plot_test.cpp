@@ -90,7 +90,7 @@ TEST(Plots, TheErrorBudgetHasBarsPerSystemInEachSchemesFrame) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string svg = read_file(out.path() / "budget.svg");
   expect_data_inside_frames(svg, 2, 4, true);  // 2 schemes x 2 systems
-  EXPECT_NE(svg.find("gyro_drift_x"), std::string::npos);  // a source named on the axis
+  EXPECT_NE(svg.find("gyro drift x (ω_dox)"), std::string::npos);  // a source named on the axis, with its symbol
   expect_png(read_file(out.path() / "budget.png"));
 }
 
@@ -156,6 +156,47 @@ TEST(Plots, RankDrawsEveryAssumptionWithEachSchemesCurveInsideItsFrame) {
   expect_data_inside_frames(svg, 6, 12);
   expect_png(read_file(out.path() / "rank.png"));
   EXPECT_NE(svg.find("alignment_drift_error [meru]"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace insmc::testing
+
+namespace insmc::testing {
+namespace {
+
+// A sweep says what it ran (quantity, points, samples, seed), every report
+// time, and the files it wrote; its labels and CSV carry the unit typed
+// beside SI; each system its own colour in the figure.
+TEST(Plots, ASweepSaysWhatItRanAndWroteInTheUnitTyped) {
+  TempDir out;
+  const ProgramResult r =
+      run_insmc("run --samples 500 --bound gyro_drift=1meru,3meru --scheme 5.2 --out " + out.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "insmc run: sweep of gyro_drift.bound over 2 points, 500 samples each, seed 1")) << r.out;
+  for (const char* column : {"RMS [m] 42 min", "RMS [m] 63 min", "RMS [m] 84 min"}) EXPECT_TRUE(has(r.out, column)) << r.out;
+  EXPECT_TRUE(has(r.out, "| gyro_drift.bound=1meru |")) << r.out;
+  EXPECT_TRUE(has(r.out, "Files written in " + out.str() + ": sweep.csv")) << r.out;
+  const std::string csv = read_file(out.path() / "sweep.csv");
+  EXPECT_EQ(csv.substr(0, csv.find(",scheme")), "gyro_drift.bound_radps,gyro_drift.bound_meru");
+  EXPECT_TRUE(has(csv, "\n7.292115e-08,1,5.2,1,")) << csv.substr(0, 300);
+  const std::string svg = read_file(out.path() / "sweep.svg");
+  EXPECT_TRUE(has(svg, "rgb(  0, 114, 178)") && has(svg, "rgb(213,  94,   0)")) << "one colour per system";
+  EXPECT_TRUE(has(svg, "gyro_drift.bound [meru]"));
+}
+
+// compensate draws the limit it was given, in the unit asked for.
+TEST(Plots, CompensateDrawsItsLimitInTheUnitsAsked) {
+  TempDir dir;
+  const std::string records = dir.str() + "/units.csv";
+  ASSERT_EQ(run_insmc("simulate --runs 2 --scheme 5.3 --out " + records).exit_code, 0);
+  const ProgramResult r = run_insmc("compensate --records " + records + " --scheme 5.3 --limit horizontal@84min=2nmi "
+                                    "--units nmi --out " + dir.str() + "/c");
+  ASSERT_LE(r.exit_code, 1) << r.err;  // go or no-go
+  const std::string svg = read_file(dir.path() / "c" / "compensate.svg");
+  EXPECT_TRUE(has(svg, "limit 2nmi at 84 min")) << "the limit in the legend";
+  EXPECT_TRUE(has(svg, "horizontal RMS [nmi]"));
+  // The limit's dashed line across the panel at 2 (n.mi.), inside the frame.
+  EXPECT_GE(plotted_points_inside(svg, "compensate"), 4u);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // frames and each plotted element's coordinates, from the SVG. Plain string
 // scanning (std::regex trips GCC 12's -Wmaybe-uninitialized in the
 // sanitizer build).
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -123,6 +125,31 @@ inline std::vector<Group> groups_of(const std::string& svg) {
     out.push_back(std::move(g));
   }
   return out;
+}
+
+/// Checks that every plotted element lies inside a panel's frame but its
+/// legend sample (a small subpath, of at most 5 points, wholly outside every
+/// frame); returns the number of points strictly inside a frame.
+inline std::size_t plotted_points_inside(const std::string& svg, const std::string& figure) {
+  const std::vector<Frame> frames = frames_of(svg);
+  EXPECT_FALSE(frames.empty()) << figure;
+  const auto inside = [&](double x, double y, double margin) {
+    for (const Frame& f : frames)
+      if (x >= f.x0 - margin && x <= f.x1 + margin && y >= f.y0 - margin && y <= f.y1 + margin) return true;
+    return false;
+  };
+  std::size_t strictly = 0;
+  for (const Group& g : groups_of(svg))
+    for (const auto& path : g.paths) {
+      std::size_t within = 0;
+      for (const auto& [x, y] : path) {
+        within += inside(x, y, 0.5);
+        strictly += inside(x, y, -0.5);
+      }
+      if (within == 0 && path.size() <= 5) continue;  // the legend's sample
+      EXPECT_EQ(within, path.size()) << figure << ": " << g.id << " has points outside the frames";
+    }
+  return strictly;
 }
 
 }  // namespace insmc::testing

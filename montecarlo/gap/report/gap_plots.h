@@ -1,15 +1,18 @@
 #pragma once
-/// The diagnosis' two plots (docs/gap.md §3): the groups' ln ratios by name
-/// with the null band, and the Allan deviation of the f residuals on log–log
-/// axes with the null band. Axis ranges come from the values drawn; every
-/// mark is clipped to the frame.
-#include <string>
-
+/// The diagnosis' two figures (docs/gap.md §3), drawn by gnuplot
+/// (montecarlo/write/plot/): the groups' ln ratios by name against the null
+/// files' band, and the Allan deviation of the f residuals on log–log axes
+/// against the null runs' band, in µg.
 #include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/write/plot/gnuplot.h"
 
 namespace insmc::mc {
 
-std::string groups_svg(const Diagnosis& d);
-std::string allan_svg(const Diagnosis& d);
+/// `gap_groups`: one slot per group, the null files' band as a grey box,
+/// the observed ln ratio as a stem coloured by where it lies (legend).
+RenderedFigure render_groups_figure(const Diagnosis& d);
+/// `gap_allan`: per axis, the data (solid, points) and the null runs
+/// (dashed, shaded 5–95 % band).
+RenderedFigure render_allan_figure(const Diagnosis& d);
 
 }  // namespace insmc::mc

@@ -308,7 +308,7 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
   Table tf({"axis", "function", "share"});
   for (const TimeFunctionShares& s : d.time_functions)
     for (const Share& e : s.shares) tf.add_row({std::string(1, "xyz"[s.axis]), e.name, pct(e.share)});
-  md += render_markdown(tf) + "\n![group ln ratios](gap_groups.svg)\n\n![Allan deviation](gap_allan.svg)\n\n";
+  md += render_markdown(tf) + "\n![group ln ratios](gap_groups.png)\n\n![Allan deviation](gap_allan.png)\n\n";
   md += "## 3. Which effect\n\n";
   if (!d.ranked) {
     md += "Not ranked (see the statements above).\n\n";
@@ -348,11 +348,17 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                  fmt::format("{:.3g}", d.greedy[i].heldout_gap), fmt::format("{:.3g}", d.greedy[i].p_value)});
     md += fmt::format("From held-out G = {:.3g}:\n\n", d.heldout_gap_before) + render_markdown(g);
   }
-  return {{"gap.md", md},
-          {"gap_groups.svg", groups_svg(d)},
-          {"gap_allan.svg", allan_svg(d)}};
+  return {{"gap.md", md}};
 }
 
-std::vector<std::string> diagnosis_file_names() { return {"gap.md", "gap_groups.svg", "gap_allan.svg", "gap.json"}; }
+std::vector<std::pair<std::string, std::string>> diagnosis_figures(const Diagnosis& d) {
+  std::vector<std::pair<std::string, std::string>> files = figure_files("gap_groups", render_groups_figure(d));
+  for (auto& f : figure_files("gap_allan", render_allan_figure(d))) files.push_back(std::move(f));
+  return files;
+}
+
+std::vector<std::string> diagnosis_figure_stems() { return {"gap_groups", "gap_allan"}; }
+
+std::vector<std::string> diagnosis_file_names() { return {"gap.md", "gap.json"}; }
 
 }  // namespace insmc::mc

@@ -16,11 +16,17 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
 /// (gap.json's and compensate.json's "site").
 Json site_values_json(const std::vector<SiteValue>& values);
 
-/// (file name, contents): gap.md and its plots.
-/// The names of the files diagnosis_report returns, and gap.json beside them
-/// (the output folder is checked for them before the work).
+/// The names of the files besides the figures: gap.md (diagnosis_report)
+/// and gap.json (the output folder is checked for them before the work).
 std::vector<std::string> diagnosis_file_names();
+/// The figures' stems (gnuplot: `.gp`, `.svg`, `.png` each).
+std::vector<std::string> diagnosis_figure_stems();
 
+/// gnuplot's renderings of the figures (diagnosis_figure_stems), as
+/// (file name, contents).
+std::vector<std::pair<std::string, std::string>> diagnosis_figures(const Diagnosis& d);
+
+/// (file name, contents): gap.md (which shows the figures' PNGs).
 std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosis& d,
                                                                   const std::vector<std::string>& record_files);
 

@@ -32,14 +32,66 @@ std::string data_blocks(const PanelFigure& f) {
   return out;
 }
 
+/// When every band of the figure is too narrow to see (under 3 % of its
+/// panel's y span, about 10 px), the sentence that says so and how narrow
+/// they are; empty otherwise.
+std::string invisible_band_note(const PanelFigure& f) {
+  if (f.band_name.empty() || f.log_y) return "";
+  double widest_share = 0, widest_relative = 0;
+  bool any = false;
+  for (const PlotPanel& panel : f.panels) {
+    double top = 0, bottom = 0, widest = 0;
+    for (const PlotLine& line : panel.lines) {
+      const bool band = line.lo.size() == line.y.size() && line.hi.size() == line.y.size();
+      for (std::size_t i = 0; i < line.y.size(); ++i) {
+        if (!std::isfinite(line.y[i])) continue;
+        top = std::max(top, band ? std::max(line.hi[i], line.y[i]) : line.y[i]);
+        bottom = std::min(bottom, band ? std::min(line.lo[i], line.y[i]) : line.y[i]);
+        if (!band || !std::isfinite(line.hi[i] - line.lo[i])) continue;
+        any = true;
+        widest = std::max(widest, line.hi[i] - line.lo[i]);
+        if (std::abs(line.y[i]) > 0)
+          widest_relative = std::max(widest_relative, 0.5 * (line.hi[i] - line.lo[i]) / std::abs(line.y[i]));
+      }
+    }
+    if (top > bottom) widest_share = std::max(widest_share, widest / (top - bottom));
+  }
+  if (!any || widest_share >= 0.03) return "";
+  return fmt::format("the {} is narrower than the lines (at most ±{:.2g} % of the value)", f.band_name,
+                     100 * widest_relative);
+}
+
+/// `text` broken at spaces into lines of at most `width` characters.
+std::string wrapped(const std::string& text, std::size_t width) {
+  std::string out, line;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t end = std::min(text.find(' ', at), text.size());
+    const std::string word = text.substr(at, end - at);
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      out += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    at = end + 1;
+  }
+  return out + line;
+}
+
 /// The multiplot itself, for whichever terminal is set.
-std::string panels(const PanelFigure& f, int columns, int rows) {
+std::string panels(const PanelFigure& f, const std::string& title, int columns, int rows) {
   std::string out = fmt::format("set multiplot layout {},{} title {} font \",14\"\n", rows, columns,
-                                gnuplot_quote(f.title));
+                                gnuplot_quote(title));
   for (std::size_t p = 0; p < f.panels.size(); ++p) {
     const PlotPanel& panel = f.panels[p];
     out += fmt::format("set title {}\n", gnuplot_quote(panel.title));
-    out += "unset arrow\nunset label\n";
+    out += fmt::format("set xlabel {}\nset ylabel {}\n", gnuplot_quote(panel.x_label.empty() ? f.x_label : panel.x_label),
+                       gnuplot_quote(panel.y_label.empty() ? f.y_label : panel.y_label));
+    out += "unset arrow\nunset label\nunset object 1\n";
+    if (panel.shade_x1 > panel.shade_x0)
+      out += fmt::format("set object 1 rect from {}, graph 0 to {}, graph 1 behind fillcolor \"#e8e8e8\" "
+                         "fillstyle solid 1.0 noborder\n",
+                         plot_number(panel.shade_x0), plot_number(panel.shade_x1));
     for (const double m : f.marked_x) {
       out += fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dashtype 3 linecolor \"#777777\"\n",
                          plot_number(m));
@@ -51,13 +103,16 @@ std::string panels(const PanelFigure& f, int columns, int rows) {
       const PlotLine& line = panel.lines[l];
       const std::string block = block_name(p, l), c = palette_colour(line.colour);
       if (l > 0) plot += ", \\\n     ";
-      plot += fmt::format("{0} using 1:3:4 with filledcurves fillcolor \"{1}\" fillstyle transparent solid 0.22 "
+      plot += fmt::format("{0} using 1:3:4 with filledcurves fillcolor \"{1}\" fillstyle transparent solid 0.3 "
                           "noborder notitle, \\\n     "
                           "{0} using 1:2 with lines linecolor \"{1}\" linewidth {4} dashtype {2} title {3}, \\\n     "
                           "{0}_marks using 1:2:3:4 with yerrorbars pointtype 7 pointsize 0.6 linecolor \"{1}\" "
                           "notitle",
                           block, c, line.thin ? 3 : line.dashed ? 2 : 1, gnuplot_quote(line.name), line.thin ? 1 : 2);
     }
+    for (std::size_t i = 0; i < panel.limits.size() && !panel.lines.empty(); ++i)
+      plot += fmt::format(", \\\n     {} with lines dashtype {} linewidth 2 linecolor \"#CC0000\" title {}",
+                          plot_number(panel.limits[i].y), 2 + i % 3, gnuplot_quote(panel.limits[i].name));
     out += panel.lines.empty() ? empty_panel_plot("nothing to draw") : plot + "\n";
   }
   return out + "unset multiplot\n";
@@ -68,20 +123,27 @@ std::string panels(const PanelFigure& f, int columns, int rows) {
 std::string panel_figure_script(const PanelFigure& f) {
   const int n = std::max<int>(1, static_cast<int>(f.panels.size()));
   const int columns = std::clamp(f.columns, 1, n), rows = (n + columns - 1) / columns;
-  FigureScript script{f.stem, f.title, data_blocks(f), panels(f, columns, rows), std::max(900, 560 * columns),
-                      90 + 340 * rows};
+  const int width = std::max(900, 560 * columns);
+  // The title in lines that fit the canvas (14 pt sans: about 10 px a character, with room).
+  const std::string note = invisible_band_note(f);
+  const std::string title = wrapped(note.empty() ? f.title : f.title + "; " + note, static_cast<std::size_t>(width / 11));
+  const int title_lines = 1 + static_cast<int>(std::count(title.begin(), title.end(), '\n'));
+  FigureScript script{f.stem, f.title, data_blocks(f), panels(f, title, columns, rows), width,
+                      90 + 340 * rows + 22 * (title_lines - 1)};
   std::string& settings = script.data_and_settings;
-  settings += fmt::format("set xlabel {}\nset ylabel {}\n", gnuplot_quote(f.x_label), gnuplot_quote(f.y_label));
   std::size_t most_lines = 0;
-  for (const PlotPanel& p : f.panels) most_lines = std::max(most_lines, p.lines.size());
+  for (const PlotPanel& p : f.panels) most_lines = std::max(most_lines, p.lines.size() + p.limits.size());
   script.height += rows * 14 * static_cast<int>((most_lines + 1) / 2);  // the keys' rows
   settings += "set grid xtics ytics mytics linecolor \"#dddddd\"\n";
   // Under the axes, where it hides no data: two entries a row.
   settings += "set key outside below horizontal maxcols 2 font \",9\" height 1\n";
+  // The x axis ends where the data end (a log axis would run on to the next decade).
+  settings += "set autoscale xfix\n";
   if (f.log_x) settings += "set logscale x\n";
   // A log y axis from the data; a linear one from 0 with room above the top.
-  settings += f.log_y ? "set logscale y\nset format y \"%.0e\"\n"
-                      : "set yrange [0:*]\nset offsets graph 0, graph 0, graph 0.08, 0\n";
+  settings += f.log_y      ? "set logscale y\nset format y \"%.0e\"\n"
+              : f.signed_y ? "set offsets graph 0, graph 0, graph 0.08, graph 0.08\n"
+                           : "set yrange [0:*]\nset offsets graph 0, graph 0, graph 0.08, 0\n";
   return figure_script(script);
 }
 

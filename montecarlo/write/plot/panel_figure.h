@@ -29,6 +29,18 @@ struct PlotLine {
 struct PlotPanel {
   std::string title;
   std::vector<PlotLine> lines;
+  /// This panel's axis labels, when they differ from the figure's (empty:
+  /// the figure's).
+  std::string x_label, y_label;
+  /// An x interval shaded behind the lines (e.g. a part of a recording the
+  /// analysis leaves out); none when shade_x1 <= shade_x0.
+  double shade_x0 = 0, shade_x1 = 0;
+  /// Limits drawn across the panel (red, dashed), each with its legend entry.
+  struct Limit {
+    double y;
+    std::string name;
+  };
+  std::vector<Limit> limits;
 };
 
 struct PanelFigure {
@@ -38,7 +50,11 @@ struct PanelFigure {
   std::vector<PlotPanel> panels;
   std::vector<double> marked_x;    ///< dotted verticals, labelled with their value
   bool log_x = false;
-  bool log_y = false;              ///< else linear from 0
+  bool log_y = false;              ///< else linear, from 0 unless signed_y
+  bool signed_y = false;           ///< a linear y axis around the data (values of either sign)
+  /// What the shaded bands are (e.g. "95 % interval"): when every band is
+  /// narrower than the lines can show, the title says so and how narrow.
+  std::string band_name;
   int columns = 2;                 ///< panels per row (fewer when there are fewer panels)
 };
 
