@@ -133,6 +133,17 @@ TEST(Outputs, PathsThatCannotBeWrittenExitTwoBeforeTheWork) {
   EXPECT_TRUE(fs::is_empty(dir.path() / "existing_dir"));
 }
 
+// A folder on a file system nothing can be created in: the message is of
+// the output the user named, not of the lock file beside it.
+TEST(Outputs, AnOutputInProcSaysTheFolderCannotBeCreated) {
+  const ProgramResult r = run_insmc("run --samples 100 --out /proc/x");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(has(r.err, "--out = /proc/x")) << r.err;
+  EXPECT_TRUE(has(r.err, "cannot create the output in /proc")) << r.err;
+  EXPECT_TRUE(has(r.err, "choose a folder you can write to")) << r.err;
+  EXPECT_FALSE(has(r.err, ".lock")) << r.err;
+}
+
 TEST(Outputs, AResumeWithABadOutIsRefusedBeforeTheCheckpointIsTouched) {
   TempDir dir;
   const std::string ck = dir.str() + "/x.ck";

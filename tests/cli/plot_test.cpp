@@ -184,6 +184,24 @@ TEST(Plots, ASweepSaysWhatItRanAndWroteInTheUnitTyped) {
   EXPECT_TRUE(has(svg, "gyro_drift.bound [meru]"));
 }
 
+// A logarithmic sweep's axis ends where its data end (not at the next
+// decade): the last point on the frame's right edge.
+TEST(Plots, ALogarithmicSweepsAxisEndsAtItsData) {
+  TempDir out;
+  const ProgramResult r = run_insmc("run --samples 300 --scheme 5.2 --system 1 "
+                                    "--bound gyro_drift=1meru,2meru,5meru,10meru,20meru --quiet --out " + out.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = read_file(out.path() / "sweep.svg");
+  const std::vector<Frame> frames = frames_of(svg);
+  ASSERT_EQ(frames.size(), 1u);
+  double rightmost = 0;
+  for (const Group& g : groups_of(svg))
+    for (const auto& path : g.paths)
+      for (const auto& [x, y] : path)
+        if (y >= frames[0].y0 && y <= frames[0].y1) rightmost = std::max(rightmost, x);
+  EXPECT_NEAR(rightmost, frames[0].x1, 1.0);
+}
+
 // compensate draws the limit it was given, in the unit asked for.
 TEST(Plots, CompensateDrawsItsLimitInTheUnitsAsked) {
   TempDir dir;
