@@ -48,7 +48,6 @@ std::string_view axis_name(mc::Axis a) {
   return "?";
 }
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 /// One whitespace-separated token and its 1-based column.
 struct Token {

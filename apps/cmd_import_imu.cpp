@@ -15,6 +15,7 @@
 #include "apps/output_paths.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
+#include "lib/records/import_keys.h"
 #include "lib/imu/imu_samples.h"
 #include "lib/imu/strapdown.h"
 #include "lib/imu/strapdown_records.h"
@@ -52,10 +53,10 @@ void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& he
       if (s.size() < 300) throw InputError("--input", s.source, "fewer than 300 samples");
     a = noise::analyse_noise(noise::make_recording(samples));
   } catch (const std::exception& e) {
-    header.set("imu.noise", one_line_value(std::string("skipped: ") + e.what()));
+    header.set(import_keys::kNoise, one_line_value(std::string("skipped: ") + e.what()));
     return;
   }
-  header.set("imu.noise", std::string("on"));
+  header.set(import_keys::kNoise, std::string("on"));
   // A value the fit could not give (not finite) is left out, as an absent
   // term: the record reader refuses a raw-stage key that is not a
   // non-negative number.
@@ -63,15 +64,15 @@ void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& he
     if (std::isfinite(v) && v >= 0) header.set(key, v);
   };
   for (const noise::ChannelNoise& ch : a.channels) {
-    const std::string key = "imu.noise." + ch.name + ".";
+    const auto key = [&ch](std::string_view what) { return import_keys::noise_key(ch.name, what); };
     for (const noise::TermFit& t : ch.fit.terms) {
       const std::string term(noise::term_name(t.term, ch.kind));
-      put(key + term + "_si", t.value_si);
-      put(key + term + "_lower_si", t.lower_si);
-      put(key + term + "_upper_si", t.upper_si);
+      put(key(term + "_si"), t.value_si);
+      put(key(term + "_lower_si"), t.lower_si);
+      put(key(term + "_upper_si"), t.upper_si);
     }
-    if (ch.fit.model[noise::NoiseTerm::kGaussMarkov] > 0) put(key + "correlation_time_s", ch.fit.model.correlation_time_s);
-    put(key + "equivalent_si", noise::equivalent_constant(ch.fit.model));
+    if (ch.fit.model[noise::NoiseTerm::kGaussMarkov] > 0) put(key("correlation_time_s"), ch.fit.model.correlation_time_s);
+    put(key("equivalent_si"), noise::equivalent_constant(ch.fit.model));
     // What the Allan deviation allows each term at most, selected or not
     // (σ(τ)² ≥ each term's own σ²(τ) at every τ; upper interval ends):
     // white N ≤ min σ⁺√τ (after 1 h: × √3600 s), wander ≤ the larger of
@@ -85,14 +86,14 @@ void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& he
       walk = std::min(walk, r.upper * std::sqrt(3 / r.tau_s));
     }
     if (std::isfinite(white)) {
-      put(key + "white_1h_bound_si", white * std::sqrt(kHourToS));
-      put(key + "wander_bound_si", std::max(flat, walk * std::sqrt(kHourToS)));
-      put(key + "quantization_bound_si", quant);
+      put(key("white_1h_bound_si"), white * std::sqrt(kHourToS));
+      put(key("wander_bound_si"), std::max(flat, walk * std::sqrt(kHourToS)));
+      put(key("quantization_bound_si"), quant);
     }
-    header.set(key + "warm_up_excluded", ch.first_part_excluded ? 1.0 : 0.0);
+    header.set(key("warm_up_excluded"), ch.first_part_excluded ? 1.0 : 0.0);
   }
-  put("imu.noise.masked_s", static_cast<double>(a.mask.masked_samples) * a.dt_s);
-  put("imu.noise.sample_interval_s", a.dt_s);
+  put(std::string(import_keys::kNoiseMaskedS), static_cast<double>(a.mask.masked_samples) * a.dt_s);
+  put(std::string(import_keys::kNoiseSampleIntervalS), a.dt_s);
 }
 
 }  // namespace
@@ -166,21 +167,21 @@ int run_import_imu(const Args& args) {
   file.header.set(kKeyPositionResolutionM, 0.0);
   file.header.set("filter_interval_s", nav.output_interval_s);
   // Informational (imu.*): how the records were made.
-  file.header.set("imu.gyro_unit", std::string(to_string(csv.gyro_unit)));
-  file.header.set("imu.accel_unit", std::string(to_string(csv.accel_unit)));
-  file.header.set("imu.gyro_columns", join_columns(csv.gyro_columns));
-  file.header.set("imu.accel_columns", join_columns(csv.accel_columns));
+  file.header.set(import_keys::kGyroUnit, std::string(to_string(csv.gyro_unit)));
+  file.header.set(import_keys::kAccelUnit, std::string(to_string(csv.accel_unit)));
+  file.header.set(import_keys::kGyroColumns, join_columns(csv.gyro_columns));
+  file.header.set(import_keys::kAccelColumns, join_columns(csv.accel_columns));
   if (csv.time_column.empty())
-    file.header.set("imu.rate_hz", csv.rate_hz);
+    file.header.set(import_keys::kRateHz, csv.rate_hz);
   else
-    file.header.set("imu.time_column", csv.time_column);
-  file.header.set("imu.altitude_m", nav.altitude_m);
-  file.header.set("imu.azimuth_deg", nav.azimuth_rad / kDegToRad);
-  file.header.set("imu.align_duration_s", nav.align_duration_s);
-  file.header.set("imu.nav_duration_s", nav.nav_duration_s);
-  file.header.set("imu.gyro_bias", std::string(to_string(nav.gyro_bias)));
-  file.header.set("imu.runs_from", std::string(runs_from == RunsFrom::kFile ? "file" : "split"));
-  file.header.set("imu.site_gravity_mps2", stationary_site(nav).gravity_mps2);
+    file.header.set(import_keys::kTimeColumn, csv.time_column);
+  file.header.set(import_keys::kAltitudeM, nav.altitude_m);
+  file.header.set(import_keys::kAzimuthDeg, nav.azimuth_rad / kDegToRad);
+  file.header.set(import_keys::kAlignDurationS, nav.align_duration_s);
+  file.header.set(import_keys::kNavDurationS, nav.nav_duration_s);
+  file.header.set(import_keys::kGyroBias, std::string(to_string(nav.gyro_bias)));
+  file.header.set(import_keys::kRunsFrom, std::string(runs_from == RunsFrom::kFile ? "file" : "split"));
+  file.header.set(import_keys::kSiteGravityMps2, stationary_site(nav).gravity_mps2);
 
   const std::string noise_mode = (*vm)["noise"].as<std::string>();
   if (noise_mode != "on" && noise_mode != "off") throw InputError("--noise", echo_input(noise_mode), "must be on or off");
@@ -209,15 +210,15 @@ int run_import_imu(const Args& args) {
     const int runs = runs_from == RunsFrom::kFile ? 1 : std::max(1, runs_available(samples, nav));
     for (int j = 0; j < runs; ++j, ++run_id) {
       const StrapdownRun r = run_strapdown(samples, j * nav.run_duration_s(), nav);
-      const std::string key = fmt::format("imu.run{}.", run_id);
-      file.header.set(key + "source", one_line_value(input));  // escaped: a path may hold any byte
-      file.header.set(key + "switch_time_s", r.switch_time_s);
+      const auto key = [run_id](std::string_view what) { return import_keys::run_key(run_id, what); };
+      file.header.set(key("source"), one_line_value(input));  // escaped: a path may hold any byte
+      file.header.set(key("switch_time_s"), r.switch_time_s);
       const StrapdownAlignment& a = r.alignment;
       for (int k = 0; k < 3; ++k)
-        file.header.set(fmt::format("{}gyro_bias_{}_radps", key, "xyz"[k]), a.gyro_bias_b_radps[k]);
-      file.header.set(key + "accel_magnitude_mps2", a.mean_accel_b_mps2.norm());
-      file.header.set(key + "roll_deg", a.roll_rad / kDegToRad);
-      file.header.set(key + "pitch_deg", a.pitch_rad / kDegToRad);
+        file.header.set(key(fmt::format("gyro_bias_{}_radps", "xyz"[k])), a.gyro_bias_b_radps[k]);
+      file.header.set(key("accel_magnitude_mps2"), a.mean_accel_b_mps2.norm());
+      file.header.set(key(import_keys::kRunRollDeg), a.roll_rad / kDegToRad);
+      file.header.set(key(import_keys::kRunPitchDeg), a.pitch_rad / kDegToRad);
       file.runs.push_back(record_run_of(r, T, run_id));
     }
   }

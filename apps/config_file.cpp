@@ -15,13 +15,7 @@ namespace {
 
 namespace po = boost::program_options;
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
-  return s;
-}
 
 std::string quote(std::string_view text) { return fmt::format("'{}'", echo_input(text)); }
 

@@ -1,6 +1,7 @@
 #pragma once
-/// What every reader shares: echoing a piece of the input in a one-line
-/// message, and reading a whole file with a cap on its size.
+/// What every reader shares: blanks and trimming, echoing a piece of the
+/// input in a one-line message, and reading a whole file with a cap on its
+/// size.
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -12,6 +13,20 @@
 #include "lib/common/input_error.h"
 
 namespace insmc {
+
+/// A blank inside a line of text, for every reader: space, tab, CR, VT, FF
+/// (a line break ends the line before it is looked at).
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+inline std::string_view trim_left(std::string_view s) {
+  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
+  return s;
+}
+inline std::string_view trim_right(std::string_view s) {
+  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+/// `s` without the blanks at its ends.
+inline std::string_view trim(std::string_view s) { return trim_right(trim_left(s)); }
 
 /// How much of an input value a message shows: enough to recognise it,
 /// little enough that a megabyte-long value keeps the message on one line.

@@ -25,13 +25,7 @@ using records_detail::parse_double;
 constexpr std::string_view kGyroAllowed = "must be one of: deg/s, rad/s, deg/h";
 constexpr std::string_view kAccelAllowed = "must be one of: g, m/s2";
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
-  return s;
-}
 
 /// One field of a CSV line: its text without surrounding blanks and the
 /// 1-based column of its first byte in the line.

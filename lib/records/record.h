@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "lib/records/import_keys.h"
 #include "lib/common/optional_value.h"
 #include "lib/common/system.h"
 #include "lib/compensation/scheme.h"
@@ -43,7 +44,7 @@ inline constexpr std::string_view kKeyPositionResolutionM = "position_resolution
 inline constexpr std::string_view kKeyNavStartS = "nav_start_s";
 inline constexpr std::string_view kKeyFilterIntervalS = "filter_interval_s";
 /// Prefix of the raw-sensor stage's numeric keys (import-imu; "imu.noise" alone is its status).
-inline constexpr std::string_view kRawStagePrefix = "imu.noise.";
+inline constexpr std::string_view kRawStagePrefix = import_keys::kNoisePrefix;
 inline constexpr std::string_view kTruthKeyPrefix = "truth.";
 
 /// Required keys, in the order the writer's factory puts them.

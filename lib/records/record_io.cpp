@@ -39,18 +39,6 @@ constexpr std::string_view kRequiredColumnsText = "run,t_s,phase,f_x,f_y,f_z,r_x
 /// File names in messages: shown whole up to this length (escaped).
 constexpr std::size_t kMaxShownPathBytes = 256;
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-std::string_view trim_left(std::string_view s) {
-  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
-  return s;
-}
-std::string_view trim_right(std::string_view s) {
-  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
-  return s;
-}
-std::string_view trim(std::string_view s) { return trim_right(trim_left(s)); }
-
 /// A field's text, cut to a readable length with control bytes escaped, so
 /// that every message stays on one line.
 std::string quote(std::string_view text) { return fmt::format("'{}'", echo_input(text)); }

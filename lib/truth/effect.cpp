@@ -43,11 +43,6 @@ std::string parameter_names(const EffectInfo& e) {
   return out.empty() ? "none" : out;
 }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
-  while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
-  return s;
-}
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "lib/common/assert.h"
+#include "lib/records/import_keys.h"
 #include "lib/imu/imu_samples.h"
 #include "lib/imu/strapdown_records.h"
 #include "lib/noise/noise_synthesis.h"
@@ -29,7 +30,7 @@ constexpr double kMinSynthesisIntervalS = 0.1;
 /// bounded whatever the header says.
 constexpr double kMaxSynthesizedSamples = 2e5;
 
-std::optional<double> number(const RecordHeader& h, const std::string& key) {
+std::optional<double> number(const RecordHeader& h, std::string_view key) {
   const std::string* v = h.find(key);
   if (!v) return std::nullopt;
   char* end = nullptr;
@@ -67,22 +68,22 @@ std::optional<ImportNull> import_null_for(const RecordFile& file, std::vector<st
   if (!raw) return std::nullopt;
   ImportNull in;
   StrapdownOptions& nav = in.nav;
-  const auto need = [&](const char* key) {
+  const auto need = [&](std::string_view key) {
     const std::optional<double> v = number(header, key);
     if (!v) statements.push_back(fmt::format("the null does not go through the import: the header has no usable {}", key));
     return v;
   };
-  const auto align = need("imu.align_duration_s"), nav_s = need("imu.nav_duration_s"),
-             interval = need("filter_interval_s");
+  const auto align = need(import_keys::kAlignDurationS), nav_s = need(import_keys::kNavDurationS),
+             interval = need(kKeyFilterIntervalS);
   if (!align || !nav_s || !interval) return std::nullopt;
   nav.latitude_rad = header.latitude_deg() * kDegToRad;
-  nav.altitude_m = number(header, "imu.altitude_m").value_or(0.0);
-  nav.azimuth_rad = number(header, "imu.azimuth_deg").value_or(0.0) * kDegToRad;
+  nav.altitude_m = number(header, import_keys::kAltitudeM).value_or(0.0);
+  nav.azimuth_rad = number(header, import_keys::kAzimuthDeg).value_or(0.0) * kDegToRad;
   nav.align_duration_s = *align;
   nav.test_duration_s = header.test_duration_s();
   nav.nav_duration_s = *nav_s;
   nav.output_interval_s = *interval;
-  const std::string* mode = header.find("imu.gyro_bias");
+  const std::string* mode = header.find(import_keys::kGyroBias);
   nav.gyro_bias = mode && *mode == "keep" ? GyroBiasMode::kKeep : GyroBiasMode::kRemove;
   if (const std::optional<InputError> e = validate(nav);
       e || nav.run_duration_s() > kMaxRunDurationS + nav.align_duration_s) {
@@ -92,8 +93,8 @@ std::optional<ImportNull> import_null_for(const RecordFile& file, std::vector<st
   }
   // The raw sample interval, coarsened to what the navigation resolves, and
   // a whole fraction of the output interval so the rows fall on samples.
-  const double raw_dt = number(header, "imu.noise.sample_interval_s")
-                            .value_or(1.0 / number(header, "imu.rate_hz").value_or(1.0 / kMinSynthesisIntervalS));
+  const double raw_dt = number(header, import_keys::kNoiseSampleIntervalS)
+                            .value_or(1.0 / number(header, import_keys::kRateHz).value_or(1.0 / kMinSynthesisIntervalS));
   const double shortest = std::max(kMinSynthesisIntervalS, nav.run_duration_s() / kMaxSynthesizedSamples);
   const double per_interval = std::floor(nav.output_interval_s / std::max(raw_dt, shortest));
   in.sample_interval_s = nav.output_interval_s / std::max(1.0, per_interval);
@@ -127,9 +128,9 @@ std::optional<ImportNull> import_null_for(const RecordFile& file, std::vector<st
 
 void add_import_noise(RecordRun& null_run, const RecordHeader& header, std::int64_t pattern_id,
                       const ImportNull& import, std::uint64_t seed, std::uint64_t run) {
-  const std::string key = fmt::format("imu.run{}.", pattern_id);
-  const double roll = number(header, key + "roll_deg").value_or(0.0) * kDegToRad;
-  const double pitch = number(header, key + "pitch_deg").value_or(0.0) * kDegToRad;
+  const double roll = number(header, import_keys::run_key(pattern_id, import_keys::kRunRollDeg)).value_or(0.0) * kDegToRad;
+  const double pitch =
+      number(header, import_keys::run_key(pattern_id, import_keys::kRunPitchDeg)).value_or(0.0) * kDegToRad;
   // The exact outputs of a sensor fixed to the model earth, turned as the run's was.
   const StationarySite site = stationary_site(import.nav);
   const Mat3 C_b_n = C_n_b_from_euler(roll, pitch, import.nav.azimuth_rad).transpose();

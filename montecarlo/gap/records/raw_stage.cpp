@@ -6,29 +6,30 @@
 #include <fmt/format.h>
 
 #include "lib/noise/noise_budget.h"
+#include "lib/records/import_keys.h"
 #include "lib/noise/recording.h"
 #include "lib/units/units.h"
 
 namespace insmc::mc {
 
 std::optional<RawStage> raw_stage_from_header(const RecordHeader& header) {
-  const std::string* on = header.find("imu.noise");
+  const std::string* on = header.find(import_keys::kNoise);
   if (!on || *on != "on") return std::nullopt;
   RawStage raw;
   for (std::size_t c = 0; c < noise::kChannels; ++c) {
     const std::string name = noise::channel_name(c);
-    const std::string* eq = header.find("imu.noise." + name + ".equivalent_si");
+    const std::string* eq = header.find(import_keys::noise_key(name, "equivalent_si"));
     if (!eq) continue;
     RawChannel ch;
     ch.channel = name;
     ch.equivalent_si = std::strtod(eq->c_str(), nullptr);
     if (!(ch.equivalent_si >= 0)) continue;
     ch.ratio_to_bound = ch.equivalent_si / noise::table31_bound_si(noise::channel_kind(c));
-    const std::string* warm = header.find("imu.noise." + name + ".warm_up_excluded");
+    const std::string* warm = header.find(import_keys::noise_key(name, "warm_up_excluded"));
     ch.warm_up_excluded = warm && *warm == "1";
     const noise::SensorKind kind = noise::channel_kind(c);
     auto number = [&](const std::string& suffix) {
-      const std::string* v = header.find("imu.noise." + name + "." + suffix);
+      const std::string* v = header.find(import_keys::noise_key(name, suffix));
       const double x = v ? std::strtod(v->c_str(), nullptr) : -1.0;
       return std::isfinite(x) ? x : -1.0;
     };
