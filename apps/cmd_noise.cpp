@@ -7,14 +7,23 @@
 #include "apps/cli_common.h"
 #include "apps/imu_csv_options.h"
 #include "apps/output_paths.h"
-#include "apps/noise_report.h"
 #include "apps/progress.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 #include "lib/noise/noise_analysis.h"
 #include "lib/units/quantity.h"
+#include "montecarlo/noise/noise_report.h"
 
 namespace insmc::app {
+
+using mc::Datasheet;
+using mc::noise_figure_stems;
+using mc::noise_figures;
+using mc::noise_file_names;
+using mc::noise_json;
+using mc::noise_report;
+using mc::parse_datasheet_entry;
+using mc::RecordingCalibration;
 
 /// Fewest samples per recording: the Allan variance needs a few octaves of
 /// cluster times, and the masking a few dozen blocks.
@@ -83,7 +92,7 @@ int run_noise(const Args& args) {
   }
   // The sample grid is checked first (a refusal costs no fit); then each
   // recording's still attitudes, and its multi-position calibration when it
-  // holds enough of them (apps/calibration_report.h).
+  // holds enough of them (montecarlo/noise/calibration_report.h).
   const noise::SensorRecording rec = noise::make_recording(recordings);
   std::vector<RecordingCalibration> calibrations;
   for (const ImuSamples& r : recordings)

@@ -1,4 +1,4 @@
-#include "apps/calibration_report.h"
+#include "montecarlo/noise/calibration_report.h"
 
 #include <cmath>
 #include <utility>
@@ -8,7 +8,7 @@
 #include "lib/units/units.h"
 #include "montecarlo/write/csv.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 namespace {
 
 using calibration::CalibratedParameter;
@@ -154,4 +154,4 @@ mc::Json calibration_json(const std::vector<RecordingCalibration>& calibrations)
   return out;
 }
 
-}  // namespace insmc::app
+}  // namespace insmc::mc

@@ -1,4 +1,4 @@
-#include "montecarlo/write/noise_figures.h"
+#include "montecarlo/noise/noise_figures.h"
 
 #include <algorithm>
 #include <cmath>

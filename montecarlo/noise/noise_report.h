@@ -8,11 +8,11 @@
 #include <utility>
 #include <vector>
 
-#include "apps/calibration_report.h"
+#include "montecarlo/noise/calibration_report.h"
 #include "lib/noise/noise_analysis.h"
 #include "montecarlo/write/json.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 
 /// A sensor's data-sheet values (`insmc noise --datasheet KEY=VALUE`), SI;
 /// absent when not given. Drawn on the allan figure (the white noise as its
@@ -41,12 +41,12 @@ std::pair<double, std::string> spec_value(noise::NoiseTerm term, noise::SensorKi
 std::vector<std::string> noise_file_names();
 /// The figures' stems (gnuplot: `.gp`, `.svg`, `.png` each).
 std::vector<std::string> noise_figure_stems();
-/// The figures (montecarlo/write/noise_figures.h), as (file name, contents).
+/// The figures (montecarlo/noise/noise_figures.h), as (file name, contents).
 std::vector<std::pair<std::string, std::string>> noise_figures(const noise::SensorRecording& rec,
                                                                const noise::NoiseAnalysis& a, const Datasheet& sheet);
 
 /// The files of the report: noise.md first, then allan.csv, noise_terms.csv,
-/// calibration.csv (the multi-position calibrations, apps/calibration_report.h).
+/// calibration.csv (the multi-position calibrations, montecarlo/noise/calibration_report.h).
 
 std::vector<std::pair<std::string, std::string>> noise_report(
     const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence, const Datasheet& sheet = {},
@@ -54,4 +54,4 @@ std::vector<std::pair<std::string, std::string>> noise_report(
 mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
                     const Datasheet& sheet = {}, const std::vector<RecordingCalibration>& calibrations = {});
 
-}  // namespace insmc::app
+}  // namespace insmc::mc

@@ -1,4 +1,4 @@
-#include "apps/noise_report.h"
+#include "montecarlo/noise/noise_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,9 +12,9 @@
 #include "lib/units/physical_range.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
-#include "montecarlo/write/noise_figures.h"
+#include "montecarlo/noise/noise_figures.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 namespace {
 
 using noise::NoiseTerm;
@@ -439,4 +439,4 @@ std::vector<std::pair<std::string, std::string>> noise_figures(const noise::Sens
   return files;
 }
 
-}  // namespace insmc::app
+}  // namespace insmc::mc
