@@ -266,7 +266,7 @@ int run_command(const Args& args, Ranks& ranks) {
   // From 10 ms (each checkpoint is written atomically; tests use 0.1 s) to a day.
   require_in_range("--checkpoint-every", checkpoint_every_s, Dimension::kTime, {0.01, 24 * 3600.0});
   const std::vector<SweepAxis> sweeps = find_sweeps(*vm);
-  check_sweep_points(config, sweeps);  // every value of every list, before any work
+  mc::check_sweep_points(config, sweeps);  // every value of every list, before any work
   // Every output path is checked and locked now, before any work: a path
   // the user can fix costs no computing (docs/outputs.md).
   std::optional<OutputFolderOption> out;
@@ -292,8 +292,8 @@ int run_command(const Args& args, Ranks& ranks) {
     for (const SweepAxis& a : sweeps) points_total *= a.texts.size();
     std::optional<Progress> points_progress;
     if (ranks.root()) points_progress.emplace(points_total, "points");
-    const SweepFiles files =
-        run_sweep(config, sweeps, unit, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
+    const mc::SweepFiles files =
+        mc::run_sweep(config, sweeps, unit, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
           RunPlan plan;
           plan.result_everywhere = true;
           mc::StudyAccumulator state =
@@ -320,7 +320,7 @@ int run_command(const Args& args, Ranks& ranks) {
     std::vector<std::string> swept;
     std::size_t points = 1;
     for (const SweepAxis& a : sweeps) {
-      swept.push_back(quantity_name(a.column));
+      swept.push_back(mc::quantity_name(a.column));
       points *= a.texts.size();
     }
     fmt::print("insmc run: sweep of {} over {} points, {} samples each, seed {}, fidelity {}, {:.2f} s\n\n"

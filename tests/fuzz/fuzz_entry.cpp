@@ -139,7 +139,7 @@ Outcome options(std::string_view data) {
       const auto vm = app::parse_args(args, "run", "", opts, app::Lists::kSweeps);
       if (!vm) return;
       const mc::StudyConfig config = app::read_study_config(*vm, true);
-      app::check_sweep_points(config, app::find_sweeps(*vm));
+      mc::check_sweep_points(config, app::find_sweeps(*vm));
     } catch (const po::error& e) {
       throw InputError(app::parse_error_message(e));  // main's one line, exit 2
     }

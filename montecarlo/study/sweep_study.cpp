@@ -1,0 +1,292 @@
+#include "montecarlo/study/sweep_study.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <fmt/format.h>
+
+#include "lib/common/input_error.h"
+#include "montecarlo/engine/engine.h"
+#include "montecarlo/write/accuracy_cells.h"
+#include "montecarlo/write/csv.h"
+#include "montecarlo/write/interval_format.h"
+#include "montecarlo/write/markdown.h"
+#include "montecarlo/write/study_writer.h"
+
+namespace insmc::mc {
+namespace {
+
+/// Every point is a full study: 100 values per quantity and 1000 points in
+/// all (minutes each at the default samples) bound a sweep's run time.
+constexpr std::size_t kMaxSweepValues = 100, kMaxSweepPoints = 1000;
+
+/// The study of point `p` (row-major over the axes); `idx` gets each axis's value index.
+mc::StudyConfig point_config(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, std::size_t p,
+                             std::vector<std::size_t>& idx) {
+  mc::StudyConfig c = base;
+  c.with_grid = false;
+  if (c.test.fit_u4 == FitU4::kYes) c.test.fit_u4 = FitU4::kAuto;  // each point fits what it can resolve
+  idx.assign(axes.size(), 0);
+  std::size_t rest = p;
+  for (std::size_t i = axes.size(); i-- > 0;) {
+    idx[i] = rest % axes[i].texts.size();
+    rest /= axes[i].texts.size();
+    axes[i].apply(c, idx[i]);
+  }
+  mc::validate(c);
+  return c;
+}
+
+/// The first swept quantity as the user gave it: when every value carries
+/// the same unit (5min,10min,15min; 1meru,10meru), the numbers in that unit;
+/// otherwise SI. Logarithmic when it spans a factor of 20 or more.
+struct AxisInUserUnits {
+  std::vector<double> x;
+  std::string label;
+  std::string unit;  ///< the unit typed, empty when SI
+  bool logarithmic = false;
+};
+
+AxisInUserUnits in_user_units(const SweepAxis& a) {
+  AxisInUserUnits out{a.values_si, a.column, "", false};
+  std::string common;
+  std::vector<double> given;
+  for (std::size_t i = 0; i < a.texts.size(); ++i) {
+    const std::string& text = a.texts[i];
+    const std::size_t eq = text.rfind('=');
+    const std::string value = eq == std::string::npos ? text : text.substr(eq + 1);
+    char* end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    const std::string unit = end ? std::string(end) : std::string();
+    if (end == value.c_str() || unit.empty() || (i > 0 && unit != common)) {
+      given.clear();
+      break;
+    }
+    common = unit;
+    given.push_back(v);
+  }
+  if (!given.empty()) {
+    out.x = given;
+    out.unit = common;
+    out.label = fmt::format("{} [{}]", quantity_name(a.column), common);
+  }
+  const auto [lo, hi] = std::minmax_element(out.x.begin(), out.x.end());
+  out.logarithmic = lo != out.x.end() && *lo > 0 && *hi / *lo >= 20;
+  return out;
+}
+
+/// The CSV column of a swept quantity in the unit typed (beside its SI
+/// column): gyro_drift.bound in meru → gyro_drift.bound_meru, in deg/h →
+/// gyro_drift.bound_deg_per_h.
+std::string user_unit_column(const SweepAxis& a, const std::string& unit) {
+  std::string suffix;
+  for (const char ch : unit) {
+    if (ch == '/') suffix += "_per_";
+    else if (std::isalnum(static_cast<unsigned char>(ch))) suffix += ch;
+    else if (!suffix.empty() && suffix.back() != '_') suffix += '_';
+  }
+  while (!suffix.empty() && suffix.back() == '_') suffix.pop_back();
+  return quantity_name(a.column) + "_" + (suffix.empty() ? "user" : suffix);
+}
+
+/// One line of the terminal's summary: a point's scheme and system with the
+/// horizontal RMS at each report time.
+struct SummaryRow {
+  std::string scheme, system;
+  std::vector<std::string> rms;  ///< per report time
+  std::string accuracy, fitted;
+};
+}  // namespace
+
+void check_sweep_size(const std::vector<SweepAxis>& axes) {
+  std::size_t points = 1;
+  for (const auto& a : axes) {
+    if (a.texts.size() > kMaxSweepValues)
+      throw InputError(fmt::format("sweep {}", a.column), fmt::format("{} values", a.texts.size()),
+                       fmt::format("at most {} values per swept quantity", kMaxSweepValues));
+    points *= a.texts.size();
+    if (points > kMaxSweepPoints)
+      throw InputError("sweep", fmt::format("more than {} points", kMaxSweepPoints),
+                       fmt::format("at most {} points in the product of the swept quantities", kMaxSweepPoints));
+  }
+}
+
+std::string quantity_name(std::string_view column) {
+  for (const std::string_view si : {"_s", "_m", "_mps", "_mps2", "_rad", "_radps", "_si"})
+    if (column.size() > si.size() && column.ends_with(si)) {
+      column.remove_suffix(si.size());
+      break;
+    }
+  return std::string(column);
+}
+
+
+void check_sweep_points(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes) {
+  std::size_t points = 1;
+  for (const auto& a : axes) points *= a.texts.size();
+  std::vector<std::size_t> idx;
+  for (std::size_t p = 0; p < points; ++p) point_config(base, axes, p, idx);
+}
+
+SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes, mc::LengthUnit unit,
+                     const StudyRunner& run) {
+  const double k = mc::length_factor(unit);
+  const std::string u = mc::length_suffix(unit);
+  std::vector<AxisInUserUnits> typed;
+  for (const SweepAxis& a : axes) typed.push_back(in_user_units(a));
+  std::vector<std::string> header;
+  for (std::size_t i = 0; i < axes.size(); ++i) {
+    header.push_back(axes[i].column);
+    if (!typed[i].unit.empty()) header.push_back(user_unit_column(axes[i], typed[i].unit));
+  }
+  for (const char* c : {"scheme", "system", "clock", "axis", "t_min", "n"}) header.emplace_back(c);
+  for (const char* q : {"rms", "rms_lo", "rms_hi", "mean", "std", "min", "max", "p95"})
+    header.push_back(fmt::format("{}_{}", q, u));
+  header.emplace_back("ready_time_min");
+  header.emplace_back("fitted_terms");
+  for (std::string& column : mc::accuracy_header(unit)) header.push_back(std::move(column));
+  mc::Table table(header);
+  std::vector<std::string> summary_header{"point", "scheme", "system"};
+  for (const double t : base.report_times_s)
+    summary_header.push_back(fmt::format("RMS [{}] {} min", u, mc::format_number(t / 60)));
+  summary_header.push_back(mc::readable_accuracy_header(unit).front());
+  summary_header.emplace_back("fitted");
+  mc::Table summary(summary_header);
+  mc::PanelFigure plot;
+  check_sweep_size(axes);
+  const AxisInUserUnits& x_axis = typed[0];
+  std::size_t points = 1;
+  for (const auto& a : axes) points *= a.texts.size();
+  mc::Json point_list = mc::Json::array();
+  std::vector<std::size_t> idx;
+  // Every point is checked before the first is run: a value out of range
+  // late in the list must not cost the points before it.
+  for (std::size_t p = 0; p < points; ++p) point_config(base, axes, p, idx);
+  for (std::size_t p = 0; p < points; ++p) {
+    const mc::StudyConfig c = point_config(base, axes, p, idx);
+    const mc::StudyLayout layout = mc::make_layout(c);
+    const mc::StudyMap map(c, layout);
+    const mc::StudyAccumulator acc = run ? run(c, map) : mc::run_blocks(c, map, 0, mc::block_count(c.samples));
+    std::string point_name;
+    mc::Json point = mc::Json::object(), values = mc::Json::object(), rows = mc::Json::array();
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+      point_name += fmt::format("{}{}={}", i ? " " : "", quantity_name(axes[i].column), axes[i].texts[idx[i]]);
+      values[axes[i].column] = axes[i].values_si[idx[i]];
+    }
+    std::vector<SummaryRow> point_rows;
+    for (std::size_t o = 0; o < layout.outputs.size(); ++o) {
+      const auto& spec = layout.outputs[o];
+      if (!layout.is_report_time[spec.time_index]) continue;
+      const mc::OutputSummary s = acc.outputs()[o].summarize(c.confidence);
+      const std::optional<mc::HorizontalAccuracy> accuracy = acc.accuracy(layout, o, s, c.confidence);
+      int scheme_i = 0;
+      while (c.schemes[static_cast<std::size_t>(scheme_i)] != spec.scheme) ++scheme_i;
+      std::vector<std::string> row;
+      for (std::size_t i = 0; i < axes.size(); ++i) {
+        row.push_back(mc::format_number(axes[i].values_si[idx[i]]));
+        if (!typed[i].unit.empty()) row.push_back(mc::format_number(typed[i].x[idx[i]]));
+      }
+      const std::size_t swept_columns = row.size();
+      const double t = layout.times_s[spec.time_index];
+      const std::string& fitted = map.fitted_terms(map.system_index(o));
+      for (const std::string& cell :
+           {std::string(to_string(spec.scheme)), std::to_string(system_number(spec.system)),
+            std::string(clock_of(spec.scheme)), std::string(to_string(spec.axis)), mc::format_number(t / 60),
+            std::to_string(s.n), mc::format_number(k * s.rms), mc::format_number(k * s.rms_lo),
+            mc::format_number(k * s.rms_hi), mc::format_number(k * s.mean), mc::format_number(k * s.std),
+            mc::format_number(k * s.min), mc::format_number(k * s.max), mc::format_number(k * s.p95_abs),
+            mc::format_number(map.ready_time_s(scheme_i) / 60), fitted})
+        row.push_back(cell);
+      for (std::string& cell : mc::accuracy_cells(accuracy, unit)) row.push_back(std::move(cell));
+      table.add_row(row);
+      mc::Json r = mc::output_row_json(spec, t, s, map.ready_time_s(scheme_i));
+      r["fitted_terms"] = fitted;
+      mc::add_accuracy_json(r, accuracy);
+      rows.push_back(r);
+      if (spec.axis == mc::Axis::kHorizontal) {
+        SummaryRow* line = nullptr;
+        for (SummaryRow& r : point_rows)
+          if (r.scheme == row[swept_columns] && r.system == row[swept_columns + 1]) line = &r;
+        if (!line) {
+          point_rows.push_back({row[swept_columns], row[swept_columns + 1],
+                                std::vector<std::string>(c.report_times_s.size(), "—"), "—", fitted});
+          line = &point_rows.back();
+        }
+        for (std::size_t q = 0; q < c.report_times_s.size() && q < line->rms.size(); ++q)
+          if (std::abs(t - c.report_times_s[q]) < 1e-6)
+            line->rms[q] = mc::format_with_interval(k * s.rms, k * (s.rms_hi - s.rms_lo) / 2);
+      }
+      if (spec.axis == mc::Axis::kHorizontal && std::abs(t - c.report_times_s.back()) < 1e-6) {
+        for (SummaryRow& r : point_rows)
+          if (r.scheme == row[swept_columns] && r.system == row[swept_columns + 1])
+            r.accuracy = mc::readable_accuracy_cells(accuracy, unit).front();
+        // One panel per scheme; one line per system and combination of the
+        // other swept quantities (every line of a product sweep).
+        if (plot.panels.size() <= static_cast<std::size_t>(scheme_i)) plot.panels.resize(static_cast<std::size_t>(scheme_i) + 1);
+        mc::PlotPanel& panel = plot.panels[static_cast<std::size_t>(scheme_i)];
+        panel.title = std::string(to_string(spec.scheme));
+        std::string name = fmt::format("system {}", system_number(spec.system));
+        std::size_t others = 0;
+        for (std::size_t i = 1; i < axes.size(); ++i) {
+          name += fmt::format(", {} {}", quantity_name(axes[i].column), axes[i].texts[idx[i]]);
+          others = others * axes[i].texts.size() + idx[i];
+        }
+        mc::PlotLine* line = nullptr;
+        for (mc::PlotLine& l : panel.lines)
+          if (l.name == name) line = &l;
+        if (!line) {
+          // A colour per system and combination of the other quantities;
+          // system 2 dashed as well (told apart in grey print).
+          const int system_i = spec.system == System::kGyrocompass ? 1 : 0;
+          panel.lines.push_back({name, {}, {}, {}, {}, {}, static_cast<int>(2 * others) + system_i, system_i == 1});
+          line = &panel.lines.back();
+        }
+        line->x.push_back(x_axis.x[idx[0]]);
+        line->y.push_back(k * s.rms);
+        line->lo.push_back(k * s.rms_lo);
+        line->hi.push_back(k * s.rms_hi);
+        line->marks.push_back({x_axis.x[idx[0]], k * s.rms, k * s.rms_lo, k * s.rms_hi});  // the studied points
+      }
+    }
+    for (const SummaryRow& r : point_rows) {
+      std::vector<std::string> cells{point_name, r.scheme, r.system};
+      cells.insert(cells.end(), r.rms.begin(), r.rms.end());
+      cells.push_back(r.accuracy);
+      cells.push_back(r.fitted);
+      summary.add_row(cells);
+    }
+    point["values_si"] = values;
+    point["rows"] = rows;
+    point_list.push_back(point);
+  }
+  SweepFiles f;
+  mc::Json swept = mc::Json::array();
+  for (const SweepAxis& a : axes) {
+    mc::Json axis = mc::Json::object(), texts = mc::Json::array(), values = mc::Json::array();
+    for (std::size_t i = 0; i < a.texts.size(); ++i) {
+      texts.push_back(a.texts[i]);
+      values.push_back(a.values_si[i]);
+    }
+    axis["column"] = a.column;
+    axis["texts"] = texts;
+    axis["values_si"] = values;
+    swept.push_back(axis);
+  }
+  f.json["axes"] = swept;
+  f.json["points"] = point_list;
+  f.sweep_csv = mc::render_csv(table);
+  f.summary_md = mc::render_markdown(summary);
+  plot.stem = "sweep";
+  plot.title = fmt::format("Horizontal RMS at {} min against {} (shaded: {}% confidence interval)",
+                           mc::format_number(base.report_times_s.back() / 60), x_axis.label,
+                           mc::format_number(100 * base.confidence));
+  plot.band_name = fmt::format("{}% interval", mc::format_number(100 * base.confidence));
+  plot.x_label = x_axis.label;
+  plot.y_label = fmt::format("RMS horizontal error [{}]", u);
+  plot.log_x = x_axis.logarithmic;
+  std::erase_if(plot.panels, [](const mc::PlotPanel& p) { return p.lines.empty(); });
+  f.plot = plot;
+  return f;
+}
+
+}  // namespace insmc::mc
