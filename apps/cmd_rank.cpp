@@ -54,8 +54,11 @@ int run_rank(const Args& args) {
   std::vector<mc::SchemeOrder> orders;
   {
     Progress progress(0, "");
-    progress.update("Monte Carlo study", 0, 1, "study");
-    const mc::StudyAccumulator state = mc::run_blocks(config, map, 0, mc::block_count(config.samples));
+    progress.update("Monte Carlo study", 0, config.samples, "samples");
+    const mc::StudyAccumulator state =
+        mc::run_blocks(config, map, 0, mc::block_count(config.samples), [&progress, &config](std::uint64_t done) {
+          progress.update("Monte Carlo study", done, config.samples, "samples");
+        });
     orders = mc::order_schemes(config, layout, state);
     even = mc::break_even(config, 40 * 60.0,
                           [&progress](std::string_view stage, std::uint64_t done, std::uint64_t total) {

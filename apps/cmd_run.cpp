@@ -291,7 +291,10 @@ int run_command(const Args& args, Ranks& ranks) {
     std::uint64_t points_total = 1, points_done = 0;
     for (const SweepAxis& a : sweeps) points_total *= a.texts.size();
     std::optional<Progress> points_progress;
-    if (ranks.root()) points_progress.emplace(points_total, "points");
+    if (ranks.root()) {
+      points_progress.emplace(points_total, "points");
+      points_progress->update("sweep", 0, points_total, "points");
+    }
     const mc::SweepFiles files =
         mc::run_sweep(config, sweeps, unit, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
           RunPlan plan;

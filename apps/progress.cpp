@@ -24,7 +24,8 @@ Progress::Progress(std::uint64_t total, std::string unit)
       terminal_(isatty(STDERR_FILENO) != 0),
       start_(std::chrono::steady_clock::now()),
       stage_start_(start_),
-      last_(start_) {
+      last_(start_),
+      heard_(start_) {
   enabled_ = progress_setting() != "never" && (always_ || terminal_);
 }
 
@@ -38,7 +39,7 @@ void Progress::update(std::string_view stage, std::uint64_t done, std::uint64_t 
     std::lock_guard<std::mutex> lock(mutex_);
     if (stage != stage_) {
       stage_ = stage;
-      stage_start_ = std::chrono::steady_clock::now();
+      stage_start_ = heard_;
     }
     total_ = total;
     unit_ = unit;
@@ -50,6 +51,7 @@ void Progress::update(std::uint64_t done) {
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
   std::lock_guard<std::mutex> lock(mutex_);
+  heard_ = now;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   if (!always_ && (elapsed < 1.0 || std::chrono::duration<double>(now - last_).count() < 0.25)) return;
   if (always_ && printed_ && done < total_ && std::chrono::duration<double>(now - last_).count() < 0.25) return;

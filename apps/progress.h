@@ -26,7 +26,9 @@ class Progress {
   std::uint64_t total_;
   std::string unit_, stage_;
   bool enabled_, always_, terminal_;
-  std::chrono::steady_clock::time_point start_, stage_start_, last_;
+  /// last_: the last line printed; heard_: the last update of any stage
+  /// (a new stage's work began then, not at its first report).
+  std::chrono::steady_clock::time_point start_, stage_start_, last_, heard_;
   std::mutex mutex_;
   bool printed_ = false;
 };

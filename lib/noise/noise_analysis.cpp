@@ -81,6 +81,7 @@ NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& opti
     ch.fit = fit_noise(levels, fit_options);
     ch.allan = allan_rows(levels, ch.fit, options.confidence);
   }
+  tell("Allan deviation and fit per channel", kChannels);
   return out;
 }
 

@@ -342,8 +342,9 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
       // one axis is not a horizontal RMS).
       for (const PositionLimit& l : options.limits)
         if (l.component == PositionLimit::Component::kHorizontal)
-          panel.limits.push_back({per_m * l.limit_m, fmt::format("limit {} at {:g} min", l.text.substr(l.text.find('=') + 1),
-                                                                 l.t_s / 60)});
+          panel.limits.push_back({per_m * l.limit_m,
+                                  fmt::format("limit {} at {:g} min", l.text.substr(l.text.find('=') + 1), l.t_s / 60),
+                                  l.t_s / 60});
       for (std::size_t k = 0; k < result.units.size() && k < kMaxPlottedUnits; ++k) {
         PlotLine line;
         line.name = fmt::format("unit (run {})", result.units[k].run);

@@ -260,9 +260,9 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
                              "of them moves, left out; points: where the first place changes hands)",
                              t_min_text(config.report_times_s[last_k]), fidelity);
   f.plot.y_label = fmt::format("horizontal RMS [{}]", u);
-  // Two panels a row whatever the systems: one column of six assumptions
-  // runs past an A4 page's height.
-  f.plot.columns = 2;
+  // Two panels a row (three beyond eight panels, both systems): one column
+  // of six assumptions, or two of twelve, runs past an A4 page's height.
+  f.plot.columns = config.systems.size() > 1 ? 3 : 2;
   for (const AssumptionCurve& c : even.curves) {
     const DisplayUnit d = display_unit(c.assumption);
     for (std::size_t j = 0; j < config.systems.size(); ++j) {

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cstdlib>
 #include <fmt/format.h>
+#include <string_view>
+#include <utility>
 
 #include "lib/common/input_error.h"
 #include "montecarlo/engine/engine.h"
@@ -79,14 +81,37 @@ AxisInUserUnits in_user_units(const SweepAxis& a) {
 /// column): gyro_drift.bound in meru → gyro_drift.bound_meru, in deg/h →
 /// gyro_drift.bound_deg_per_h.
 std::string user_unit_column(const SweepAxis& a, const std::string& unit) {
+  // Letters and digits kept; /, °, µ (micro sign or Greek mu) spelled out.
+  static const std::pair<std::string_view, std::string_view> kSpelled[] = {
+      {"/", "_per_"}, {"\u00b0", "deg"}, {"\u00b5", "u"}, {"\u03bc", "u"}, {"\u221a", "sqrt"}};
   std::string suffix;
-  for (const char ch : unit) {
-    if (ch == '/') suffix += "_per_";
-    else if (std::isalnum(static_cast<unsigned char>(ch))) suffix += ch;
+  for (std::size_t i = 0; i < unit.size();) {
+    bool spelled = false;
+    for (const auto& [text, word] : kSpelled)
+      if (unit.compare(i, text.size(), text) == 0) {
+        suffix += word;
+        i += text.size();
+        spelled = true;
+        break;
+      }
+    if (spelled) continue;
+    const unsigned char ch = static_cast<unsigned char>(unit[i++]);
+    if (std::isalnum(ch)) suffix += static_cast<char>(ch);
     else if (!suffix.empty() && suffix.back() != '_') suffix += '_';
   }
-  while (!suffix.empty() && suffix.back() == '_') suffix.pop_back();
-  return quantity_name(a.column) + "_" + (suffix.empty() ? "user" : suffix);
+  std::string clean;  // no doubled or trailing underscores
+  for (const char ch : suffix)
+    if (ch != '_' || (!clean.empty() && clean.back() != '_')) clean += ch;
+  while (!clean.empty() && clean.back() == '_') clean.pop_back();
+  return quantity_name(a.column) + "_" + (clean.empty() ? "user" : clean);
+}
+
+/// The unit-typed column of an axis, or empty when there is none (SI given,
+/// or a name that would repeat the SI column's, e.g. 300s,600s).
+std::string typed_column(const SweepAxis& a, const std::string& unit) {
+  if (unit.empty()) return "";
+  const std::string name = user_unit_column(a, unit);
+  return name == a.column ? "" : name;
 }
 
 /// One line of the terminal's summary: a point's scheme and system with the
@@ -135,9 +160,11 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
   std::vector<AxisInUserUnits> typed;
   for (const SweepAxis& a : axes) typed.push_back(in_user_units(a));
   std::vector<std::string> header;
+  std::vector<std::string> typed_columns;
   for (std::size_t i = 0; i < axes.size(); ++i) {
     header.push_back(axes[i].column);
-    if (!typed[i].unit.empty()) header.push_back(user_unit_column(axes[i], typed[i].unit));
+    typed_columns.push_back(typed_column(axes[i], typed[i].unit));
+    if (!typed_columns.back().empty()) header.push_back(typed_columns.back());
   }
   for (const char* c : {"scheme", "system", "clock", "axis", "t_min", "n"}) header.emplace_back(c);
   for (const char* q : {"rms", "rms_lo", "rms_hi", "mean", "std", "min", "max", "p95"})
@@ -184,7 +211,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
       std::vector<std::string> row;
       for (std::size_t i = 0; i < axes.size(); ++i) {
         row.push_back(mc::format_number(axes[i].values_si[idx[i]]));
-        if (!typed[i].unit.empty()) row.push_back(mc::format_number(typed[i].x[idx[i]]));
+        if (!typed_columns[i].empty()) row.push_back(mc::format_number(typed[i].x[idx[i]]));
       }
       const std::size_t swept_columns = row.size();
       const double t = layout.times_s[spec.time_index];

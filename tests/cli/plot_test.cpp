@@ -182,6 +182,14 @@ TEST(Plots, ASweepSaysWhatItRanAndWroteInTheUnitTyped) {
   const std::string svg = read_file(out.path() / "sweep.svg");
   EXPECT_TRUE(has(svg, "rgb(  0, 114, 178)") && has(svg, "rgb(213,  94,   0)")) << "one colour per system";
   EXPECT_TRUE(has(svg, "gyro_drift.bound [meru]"));
+  // Values typed in the SI unit: no second column of the same name; °/h spelled out.
+  const ProgramResult si = run_insmc("run --samples 300 --scheme 5.2 --system 1 --test-duration 300s,600s --format csv");
+  ASSERT_EQ(si.exit_code, 0) << si.err;
+  EXPECT_EQ(si.out.substr(0, si.out.find(",scheme")), "test_duration_s");
+  const ProgramResult degrees =
+      run_insmc("run --samples 300 --scheme 5.2 --system 1 --bound gyro_drift=0.01°/h,0.02°/h --format csv");
+  ASSERT_EQ(degrees.exit_code, 0) << degrees.err;
+  EXPECT_EQ(degrees.out.substr(0, degrees.out.find(",scheme")), "gyro_drift.bound_radps,gyro_drift.bound_deg_per_h");
 }
 
 // A logarithmic sweep's axis ends where its data end (not at the next
@@ -213,7 +221,7 @@ TEST(Plots, CompensateDrawsItsLimitInTheUnitsAsked) {
   const std::string svg = read_file(dir.path() / "c" / "compensate.svg");
   EXPECT_TRUE(has(svg, "limit 2nmi at 84 min")) << "the limit in the legend";
   EXPECT_TRUE(has(svg, "horizontal RMS [nmi]"));
-  // The limit's dashed line across the panel at 2 (n.mi.), inside the frame.
+  // The limit's marker at 84 min and 2 (n.mi.), inside the frame.
   EXPECT_GE(plotted_points_inside(svg, "compensate"), 4u);
 }
 

@@ -29,6 +29,11 @@ std::string data_blocks(const PanelFigure& f) {
         out += fmt::format("{} {} {} {}\n", plot_number(m.x), plot_number(m.y), plot_number(m.lo), plot_number(m.hi));
       out += "EOD\n";
     }
+  for (std::size_t p = 0; p < f.panels.size(); ++p)
+    for (std::size_t i = 0; i < f.panels[p].limits.size(); ++i)
+      if (std::isfinite(f.panels[p].limits[i].x))
+        out += fmt::format("{}_limit{} << EOD\n{} {}\nEOD\n", block_name(p, 0), i, plot_number(f.panels[p].limits[i].x),
+                           plot_number(f.panels[p].limits[i].y));
   return out;
 }
 
@@ -61,19 +66,20 @@ std::string invisible_band_note(const PanelFigure& f) {
                      100 * widest_relative);
 }
 
-/// `text` broken at spaces into lines of at most `width` characters.
+/// `text` broken at spaces into lines of at most `width` characters (a
+/// longer word, e.g. a file's path, broken inside it).
 std::string wrapped(const std::string& text, std::size_t width) {
   std::string out, line;
   std::size_t at = 0;
   while (at < text.size()) {
-    const std::size_t end = std::min(text.find(' ', at), text.size());
+    const std::size_t end = std::min({text.find(' ', at), text.size(), at + width});
     const std::string word = text.substr(at, end - at);
     if (!line.empty() && line.size() + 1 + word.size() > width) {
       out += line + "\n";
       line.clear();
     }
     line += (line.empty() ? "" : " ") + word;
-    at = end + 1;
+    at = end < text.size() && text[end] == ' ' ? end + 1 : end;
   }
   return out + line;
 }
@@ -110,9 +116,16 @@ std::string panels(const PanelFigure& f, const std::string& title, int columns, 
                           "notitle",
                           block, c, line.thin ? 3 : line.dashed ? 2 : 1, gnuplot_quote(line.name), line.thin ? 1 : 2);
     }
-    for (std::size_t i = 0; i < panel.limits.size() && !panel.lines.empty(); ++i)
-      plot += fmt::format(", \\\n     {} with lines dashtype {} linewidth 2 linecolor \"#CC0000\" title {}",
-                          plot_number(panel.limits[i].y), 2 + i % 3, gnuplot_quote(panel.limits[i].name));
+    for (std::size_t i = 0; i < panel.limits.size() && !panel.lines.empty(); ++i) {
+      const PlotPanel::Limit& limit = panel.limits[i];
+      if (std::isfinite(limit.x))  // a limit at one time: a marker (a bar with a downward triangle) there
+        plot += fmt::format(", \\\n     {}_limit{} using 1:2 with points pointtype {} pointsize 2.2 linewidth 2 "
+                            "linecolor \"#CC0000\" title {}",
+                            block_name(p, 0), i, 11 - 2 * static_cast<int>(i % 2), gnuplot_quote(limit.name));
+      else
+        plot += fmt::format(", \\\n     {} with lines dashtype {} linewidth 2 linecolor \"#CC0000\" title {}",
+                            plot_number(limit.y), 2 + i % 3, gnuplot_quote(limit.name));
+    }
     out += panel.lines.empty() ? empty_panel_plot("nothing to draw") : plot + "\n";
   }
   return out + "unset multiplot\n";
@@ -137,9 +150,9 @@ std::string panel_figure_script(const PanelFigure& f) {
   settings += "set grid xtics ytics mytics linecolor \"#dddddd\"\n";
   // Under the axes, where it hides no data: two entries a row.
   settings += "set key outside below horizontal maxcols 2 font \",9\" height 1\n";
-  // The x axis ends where the data end (a log axis would run on to the next decade).
-  settings += "set autoscale xfix\n";
-  if (f.log_x) settings += "set logscale x\n";
+  // A log x axis ends where the data end (it would run on to the next
+  // decade); a linear one keeps gnuplot's round ends (room for the marks).
+  if (f.log_x) settings += "set logscale x\nset autoscale xfix\n";
   // A log y axis from the data; a linear one from 0 with room above the top.
   settings += f.log_y      ? "set logscale y\nset format y \"%.0e\"\n"
               : f.signed_y ? "set offsets graph 0, graph 0, graph 0.08, graph 0.08\n"

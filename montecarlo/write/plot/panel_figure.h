@@ -4,6 +4,7 @@
 /// (points with error bars), and marked x values (the report times
 /// 42/63/84 min) as labelled dotted verticals. The script holds its data inline and writes
 /// `<stem>.svg` and `<stem>.png` in the folder it runs in (plot/gnuplot.h).
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -35,10 +36,12 @@ struct PlotPanel {
   /// An x interval shaded behind the lines (e.g. a part of a recording the
   /// analysis leaves out); none when shade_x1 <= shade_x0.
   double shade_x0 = 0, shade_x1 = 0;
-  /// Limits drawn across the panel (red, dashed), each with its legend entry.
+  /// Limits, each with its legend entry: at a time (x finite), a red
+  /// marker there; otherwise a red dashed level across the panel.
   struct Limit {
     double y;
     std::string name;
+    double x = std::numeric_limits<double>::quiet_NaN();
   };
   std::vector<Limit> limits;
 };

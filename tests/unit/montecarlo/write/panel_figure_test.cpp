@@ -85,6 +85,26 @@ TEST(PanelFigure, APanelHasItsOwnLabelsLimitsAndShade) {
   EXPECT_NE(script.find("150 with lines dashtype 2 linewidth 2 linecolor \"#CC0000\" title \"limit 2nmi at 84 min\""),
             std::string::npos);
   EXPECT_NE(script.find("set object 1 rect from 0, graph 0 to 2, graph 1 behind"), std::string::npos);
+  // A limit at one time: a marker there, its point in a data block of its own.
+  PlotPanel::Limit at_42;
+  at_42.y = 120;
+  at_42.name = "limit 1nmi at 42 min";
+  at_42.x = 42;
+  f.panels[0].limits = {at_42};
+  const std::string marked = panel_figure_script(f);
+  EXPECT_NE(marked.find("$p0_l0_limit0 << EOD\n42 120\nEOD\n"), std::string::npos) << marked;
+  EXPECT_NE(marked.find("$p0_l0_limit0 using 1:2 with points"), std::string::npos);
+  EXPECT_EQ(marked.find("120 with lines"), std::string::npos) << "not a level across the panel";
+}
+
+TEST(PanelFigure, AWordLongerThanALineIsBrokenInside) {
+  PanelFigure f = figure_with_band(10);
+  f.title = std::string(200, 'p');
+  const std::string title = multiplot_title(panel_figure_script(f));
+  // 900 px wide: 81 characters a line.
+  std::string expected = std::string(81, 'p');
+  expected.append("\\n").append(std::string(81, 'p')).append("\\n").append(std::string(38, 'p'));
+  EXPECT_EQ(title, expected);
 }
 
 }  // namespace
