@@ -4,12 +4,19 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "lib/uncertainty/catalogue.h"
 #include "lib/units/units.h"
 
 namespace insmc::noise {
 
 double schuler_period_s() { return 2 * std::numbers::pi / schuler_frequency_radps(); }
+
+std::string table31_bound_text(SensorKind kind) {
+  return kind == SensorKind::kGyro ? fmt::format("{:g} meru", table31_bound_si(kind) / kMeruToRadps)
+                                   : fmt::format("{:g} mg", table31_bound_si(kind) / kMgToMps2);
+}
 
 double table31_bound_si(SensorKind kind) {
   if (kind == SensorKind::kGyro) return find_uncertainty("gyro_drift_x")->default_bound_si;

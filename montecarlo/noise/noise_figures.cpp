@@ -88,8 +88,7 @@ RenderedFigure render_noise_allan_figure(const noise::NoiseAnalysis& a, const st
       // near the Schuler period means the bias wanders more than Table 3.1
       // lets a bias be (docs/noise.md §4).
       const double bound = noise::table31_bound_si(kind) / rate.si;
-      panel.lines.push_back(reference(fmt::format("Table 3.1 bias bound ({})", kind == SensorKind::kGyro ? "10 meru"
-                                                                                                            : "0.1 mg"),
+      panel.lines.push_back(reference(fmt::format("Table 3.1 bias bound ({})", noise::table31_bound_text(kind)),
                                       tau0, tau1, bound, bound, 6, true));
       const SheetLevels& s = sheet[static_cast<std::size_t>(panel_index)];
       // The data sheet: its white noise as σ = N/√τ, its bias instability

@@ -37,10 +37,6 @@ std::optional<double> white_noise_effective(const noise::ChannelNoise& ch) {
   return std::sqrt(m[NoiseTerm::kWhiteRate] + 2 * m[NoiseTerm::kGaussMarkov] * m.correlation_time_s);
 }
 
-std::string bound_text(SensorKind kind) {
-  return kind == SensorKind::kGyro ? fmt::format("{:g} meru", table31_bound_si(kind) / kMeruToRadps)
-                                   : fmt::format("{:g} mg", table31_bound_si(kind) / kMgToMps2);
-}
 
 struct Orientation {
   std::size_t run;
@@ -171,7 +167,7 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
   md += fmt::format("## Against Table 3.1\n\nEach term as a constant error over one Schuler period ({:.1f} min), "
                     "root-sum-square over the terms, against Table 3.1's bound (gyros: drift ω_do < {}; "
                     "accelerometers: bias change ∂f < {}).\n\n",
-                    schuler_period_s() / 60, bound_text(SensorKind::kGyro), bound_text(SensorKind::kAccelerometer));
+                    schuler_period_s() / 60, noise::table31_bound_text(SensorKind::kGyro), noise::table31_bound_text(SensorKind::kAccelerometer));
   md += "| channel | equivalent | bound | ratio | largest term |\n|---|---:|---:|---:|---|\n";
   for (const noise::ChannelNoise& ch : a.channels) {
     double rss = 0, biggest = 0;
@@ -184,7 +180,7 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
     const double bound = table31_bound_si(ch.kind);
     const bool gyro = ch.kind == SensorKind::kGyro;
     md += fmt::format("| {} | {} {} | {} | {} | {} |\n", ch.name,
-                      g3(std::sqrt(rss) / (gyro ? kMeruToRadps : kMgToMps2)), gyro ? "meru" : "mg", bound_text(ch.kind),
+                      g3(std::sqrt(rss) / (gyro ? kMeruToRadps : kMgToMps2)), gyro ? "meru" : "mg", noise::table31_bound_text(ch.kind),
                       std::sqrt(rss) > bound ? fmt::format("**{:.3g}× above**", std::sqrt(rss) / bound)
                                              : fmt::format("{:.2g} (within)", std::sqrt(rss) / bound),
                       name);
