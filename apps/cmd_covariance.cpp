@@ -9,6 +9,7 @@
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
 #include "montecarlo/study/study_map.h"
+#include "montecarlo/write/sensitivity_table.h"
 
 namespace insmc::app {
 namespace {
@@ -31,7 +32,9 @@ int run_covariance(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("out", po::value<std::string>(), "folder for covariance.csv, covariance_grid.csv, budget.csv, "
                                                       "budget.gp/.svg/.png (the error budget as bars, drawn by "
-                                                      "gnuplot) and covariance.md (created if needed)")(
+                                                      "gnuplot), sensitivity.csv (the map of every output linear "
+                                                      "in the uncertainties alone) and covariance.md (created if "
+                                                      "needed)")(
       "format", po::value<std::string>()->default_value("markdown"),
       "stdout: markdown (horizontal RMS per scheme and system), csv (covariance.csv alone) or json");
   add_stdout_switches(opts, "covariance.md (the RMS of every axis at every report time)");
@@ -43,7 +46,8 @@ int run_covariance(const Args& args) {
   const StdoutChoice shown = read_stdout_choice(*vm);
   const mc::LengthUnit unit = read_length_unit(*vm);
   std::optional<OutputFolderOption> out = prepare_figure_folder(
-      *vm, "covariance", {"covariance.csv", "covariance_grid.csv", "budget.csv", "covariance.md"}, {"budget"});
+      *vm, "covariance", {"covariance.csv", "covariance_grid.csv", "budget.csv", "sensitivity.csv", "covariance.md"},
+      {"budget"});
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
   const mc::CovarianceFiles files = mc::render_covariance(config, layout, map, unit);
@@ -54,6 +58,7 @@ int run_covariance(const Args& args) {
     OutputFiles written{{"covariance.csv", files.covariance_csv},
                         {"covariance_grid.csv", files.covariance_grid_csv},
                         {"budget.csv", files.budget_csv},
+                        {"sensitivity.csv", mc::render_sensitivity_csv(layout, map)},
                         {"covariance.md", files.covariance_md}};
     for (auto& f : mc::figure_files("budget", mc::render_bar_figure(files.budget_plot))) written.push_back(std::move(f));
     out->write(written);

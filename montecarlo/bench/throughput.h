@@ -4,6 +4,7 @@
 /// framework around it) and the engine on the real study, measured in the
 /// same run so that their ratio is meaningful on a noisy machine.
 #include <cstdint>
+#include <string>
 
 #include "montecarlo/study/study_config.h"
 
@@ -21,6 +22,17 @@ struct ThroughputResult {
 
 /// The uncompensated paper-level study at the report times (no grid),
 /// systems 1 and 2: 33 uncertainties → 30 map rows → 24 outputs.
+/// What the numbers were measured on: the CPU's model name
+/// (/proc/cpuinfo, "unknown" elsewhere), its hardware threads, and the
+/// kernels the generator and the block product chose at run time.
+struct MachineDescription {
+  std::string cpu;
+  int hardware_threads;
+  std::string generator_kernel;
+  std::string product_kernel;
+};
+MachineDescription describe_machine();
+
 StudyConfig benchmark_study(std::uint64_t samples, int threads, Fidelity fidelity = Fidelity::kPaper);
 
 ThroughputResult measure_throughput(const StudyConfig& config);

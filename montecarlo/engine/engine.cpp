@@ -15,6 +15,7 @@
 #include "lib/common/assert.h"
 #include "lib/propagation/position_maps.h"
 #include "lib/compensation/truth_compensation.h"
+#include "montecarlo/kernels/map_product.h"
 #include "montecarlo/random/philox.h"
 #include "montecarlo/sampler/sampler.h"
 #include "montecarlo/sampler/truth_sample.h"
@@ -25,15 +26,32 @@ namespace {
 /// Per-thread buffers, sized once: nothing is allocated per sample.
 struct Workspace {
   Workspace(const StudyMap& map, int n_systems)
-      : uniforms(kBlockSize * ux::kDim), x(ux::kDim, kBlockSize), z(ez::kDim, kBlockSize), h(kBlockSize) {
+      : uniforms(kBlockSize * ux::kDim),
+        x_by_draw(kBlockSize * ux::kDim),
+        x(ux::kDim, kBlockSize),
+        z(ez::kDim, kBlockSize),
+        z_by_draw(kBlockSize, ez::kDim),
+        h(kBlockSize) {
     for (int j = 0; j < n_systems; ++j) y.emplace_back(kBlockSize, map.transposed(j).cols());
   }
-  std::vector<double> uniforms;
-  Eigen::MatrixXd x;               // kDim × block, one column per sample
+  std::vector<double> uniforms;    // kDim × n, draw-major
+  std::vector<double> x_by_draw;   // kDim × n, draw-major: x[j * n + s]
+  Eigen::MatrixXd x;               // kDim × block, one column per sample (the pipelines' and truth's input)
   Eigen::MatrixXd z;               // ez::kDim × block
+  Eigen::MatrixXd z_by_draw;       // block × ez::kDim
   std::vector<Eigen::MatrixXd> y;  // per system: block × rows
   std::vector<double> h;
 };
+
+/// y = vᵀ · (the first `depth` rows of system j's map) for n samples of v
+/// held draw-major with stride ldv: the vectorised kernel (map_product.h),
+/// the same bits as Eigen's product of the same operands.
+void map_rows(const StudyMap& map, int j, int depth, const double* v, std::size_t ldv, std::size_t n,
+              Eigen::MatrixXd& y) {
+  const Eigen::MatrixXd& m = map.transposed(j);
+  map_product({n, depth, static_cast<int>(m.cols())}, v, ldv, m.data(), static_cast<std::size_t>(m.rows()), y.data(),
+              static_cast<std::size_t>(y.rows()));
+}
 
 /// The truth level's per-system setup (the same estimators as the system's
 /// pipeline), built once per run.
@@ -91,10 +109,17 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
                KeptSamples& kept, const std::function<void()>& truth_sample_done) {
   const std::uint64_t first = block * kBlockSize;
   const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kBlockSize, c.samples - first));
-  fill_uniform01(c.seed, Stream::Uncertainties, first, ux::kDim, n,
-                 std::span<double>(ws.uniforms.data(), n * ux::kDim));
-  sampler.transform(ws.uniforms.data(), n, ws.x.data());
+  // The block's draws with the samples of each uncertainty contiguous, as
+  // the vectorised product takes them.
+  fill_uniform01_draw_major(c.seed, Stream::Uncertainties, first, ux::kDim, n,
+                            std::span<double>(ws.uniforms.data(), n * ux::kDim));
+  sampler.transform_draw_major(ws.uniforms.data(), n, ws.x_by_draw.data());
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
+  bool sample_major_x = false;  // one column per sample, for the pipelines and the truth simulator
+  for (std::size_t j = 0; j < ws.y.size(); ++j)
+    sample_major_x |= c.fidelity == Fidelity::kTruth || !map.depends_on_x_only(static_cast<int>(j));
+  if (sample_major_x)
+    ws.x.leftCols(ni) = Eigen::Map<const Eigen::MatrixXd>(ws.x_by_draw.data(), ni, ux::kDim).transpose();
   for (std::size_t j = 0; j < ws.y.size(); ++j) {
     const int sj = static_cast<int>(j);
     if (c.fidelity == Fidelity::kTruth) {  // the nonlinear simulator, sample by sample
@@ -102,11 +127,12 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
       continue;
     }
     if (map.depends_on_x_only(sj)) {  // z = [x; 0]: the same product on the rows that matter
-      ws.y[j].topRows(ni).noalias() = ws.x.leftCols(ni).transpose() * map.transposed(sj).topRows<ux::kDim>();
+      map_rows(map, sj, ux::kDim, ws.x_by_draw.data(), n, n, ws.y[j]);
       continue;
     }
     map.pipeline(sj).extended_vectors(first, n, ws.x, ws.z);
-    ws.y[j].topRows(ni).noalias() = ws.z.leftCols(ni).transpose() * map.transposed(sj);
+    ws.z_by_draw.topRows(ni) = ws.z.leftCols(ni).transpose();
+    map_rows(map, sj, ez::kDim, ws.z_by_draw.data(), static_cast<std::size_t>(ws.z_by_draw.rows()), n, ws.y[j]);
   }
   auto& outs = acc.outputs();
   const std::vector<int>& kept_slot = map.layout().kept_slot;

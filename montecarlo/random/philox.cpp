@@ -128,6 +128,9 @@ struct BulkRequest {
   std::size_t count;    ///< uniforms per sample
   std::size_t samples;  ///< n_samples
   double* out;          ///< count * samples doubles
+  bool draw_major;      ///< out[j * samples + i] (else out[i * count + j])
+  /// Where uniform j of sample i (counted from first_index) goes.
+  std::size_t at(std::size_t i, std::size_t j) const { return draw_major ? j * samples + i : i * count + j; }
 };
 
 // ------------------------------------------------------------- generic kernel
@@ -164,22 +167,25 @@ void fill_generic(const BulkRequest& r) {
   const std::size_t blocks_per_sample = (r.count + 1) / 2;
   const bool odd = r.count % 2 != 0;
   const std::size_t total_blocks = blocks_per_sample * r.samples;
-  std::uint64_t index = r.first_index;
+  std::size_t sample = 0;  // counted from first_index
   std::size_t block = 0;
-  double* dst = r.out;
   LaneBlock b;
   bool single[kGenericLanes];  // lane yields one uniform (last block, odd count)
+  std::size_t lane_sample[kGenericLanes], lane_block[kGenericLanes];
   for (std::size_t start = 0; start < total_blocks; start += kGenericLanes) {
     const std::size_t lanes = std::min(kGenericLanes, total_blocks - start);
     for (std::size_t l = 0; l < lanes; ++l) {
+      const std::uint64_t index = r.first_index + sample;
       b.w0[l] = static_cast<std::uint32_t>(index);
       b.w1[l] = static_cast<std::uint32_t>(index >> 32);
       b.w2[l] = r.purpose;
       b.w3[l] = static_cast<std::uint32_t>(block);
       single[l] = odd && block + 1 == blocks_per_sample;
+      lane_sample[l] = sample;
+      lane_block[l] = block;
       if (++block == blocks_per_sample) {
         block = 0;
-        ++index;
+        ++sample;
       }
     }
     for (std::size_t l = lanes; l < kGenericLanes; ++l) {  // unused tail lanes
@@ -187,8 +193,8 @@ void fill_generic(const BulkRequest& r) {
     }
     philox_lanes_generic(b, r.key);
     for (std::size_t l = 0; l < lanes; ++l) {
-      *dst++ = uniform01_from_words(b.w0[l], b.w1[l]);
-      if (!single[l]) *dst++ = uniform01_from_words(b.w2[l], b.w3[l]);
+      r.out[r.at(lane_sample[l], 2 * lane_block[l])] = uniform01_from_words(b.w0[l], b.w1[l]);
+      if (!single[l]) r.out[r.at(lane_sample[l], 2 * lane_block[l] + 1)] = uniform01_from_words(b.w2[l], b.w3[l]);
     }
   }
 }
@@ -366,6 +372,19 @@ INSMC_AVX2 void store_pair(double* row, std::size_t stride, __m256d e, __m256d o
   }
 }
 
+// Writes the 4 samples' values of one draw to run[0..3] (draw-major
+// layout), or the first `rows` of them (tile tail).
+template <bool kFull>
+INSMC_AVX2 void store_run(double* run, __m256d v, int rows) {
+  if constexpr (kFull) {
+    _mm256_storeu_pd(run, v);
+  } else {
+    alignas(32) double values[4];
+    _mm256_storeu_pd(values, v);
+    for (int s = 0; s < rows; ++s) run[s] = values[s];
+  }
+}
+
 // One tile: samples first .. first + rows - 1 (rows <= kTileSamples; the
 // lanes beyond `rows` are computed and dropped), written to dst (row 0).
 template <bool kFull>
@@ -382,8 +401,13 @@ template <bool kFull>
     run_block(k, g, c1_key, bv, w);
     for (int q = 0; q < kGroups; ++q) {
       if (!kFull && rows <= 4 * q) break;
-      store_pair<kFull>(dst + 4 * q * stride + 2 * b, stride, to_uniform(w[q].c0, w[q].c1),
-                        to_uniform(w[q].c2, w[q].c3), true, std::min(4, rows - 4 * q));
+      const __m256d e = to_uniform(w[q].c0, w[q].c1), o = to_uniform(w[q].c2, w[q].c3);
+      if (r.draw_major) {
+        store_run<kFull>(dst + 2 * b * r.samples + 4 * q, e, std::min(4, rows - 4 * q));
+        store_run<kFull>(dst + (2 * b + 1) * r.samples + 4 * q, o, std::min(4, rows - 4 * q));
+      } else {
+        store_pair<kFull>(dst + 4 * q * stride + 2 * b, stride, e, o, true, std::min(4, rows - 4 * q));
+      }
     }
   }
   if (r.count % 2 != 0) {  // last block: one uniform (words 0, 1)
@@ -393,8 +417,10 @@ template <bool kFull>
     for (int q = 0; q < kGroups; ++q) {
       if (!kFull && rows <= 4 * q) break;
       const __m256d e = to_uniform(w[q].c0, w[q].c1);
-      store_pair<kFull>(dst + 4 * q * stride + 2 * b, stride, e, e, false,
-                        std::min(4, rows - 4 * q));
+      if (r.draw_major)
+        store_run<kFull>(dst + 2 * b * r.samples + 4 * q, e, std::min(4, rows - 4 * q));
+      else
+        store_pair<kFull>(dst + 4 * q * stride + 2 * b, stride, e, e, false, std::min(4, rows - 4 * q));
     }
   }
 }
@@ -419,10 +445,9 @@ template <bool kFull>
 
   std::size_t i = 0;
   for (; i + kTileSamples <= r.samples; i += kTileSamples)
-    fill_tile<true>(k, c1_key, r, r.first_index + i, r.out + i * r.count, 4 * kGroups);
+    fill_tile<true>(k, c1_key, r, r.first_index + i, r.out + r.at(i, 0), 4 * kGroups);
   if (i < r.samples)
-    fill_tile<false>(k, c1_key, r, r.first_index + i, r.out + i * r.count,
-                     static_cast<int>(r.samples - i));
+    fill_tile<false>(k, c1_key, r, r.first_index + i, r.out + r.at(i, 0), static_cast<int>(r.samples - i));
 }
 
 #undef INSMC_AVX2
@@ -456,7 +481,7 @@ PhiloxKernel best_kernel() {
 
 void fill_uniform01_with(PhiloxKernel kernel, std::uint64_t seed, Stream purpose,
                          std::uint64_t first_index, std::size_t count_per_sample,
-                         std::size_t n_samples, std::span<double> out) {
+                         std::size_t n_samples, std::span<double> out, UniformLayout layout) {
   INSMC_ASSERT(out.size() == count_per_sample * n_samples,
                "fill_uniform01: out.size() = {}, expected {} x {}", out.size(), count_per_sample,
                n_samples);
@@ -466,7 +491,7 @@ void fill_uniform01_with(PhiloxKernel kernel, std::uint64_t seed, Stream purpose
   INSMC_ASSERT(kernel_available(kernel), "Philox kernel {} not available",
                static_cast<int>(kernel));
   const BulkRequest request{philox_key(seed), static_cast<std::uint32_t>(purpose), first_index,
-                            count_per_sample, n_samples, out.data()};
+                            count_per_sample, n_samples, out.data(), layout == UniformLayout::DrawMajor};
   switch (kernel) {
     case PhiloxKernel::Generic:
       fill_generic(request);
@@ -484,7 +509,13 @@ void fill_uniform01_with(PhiloxKernel kernel, std::uint64_t seed, Stream purpose
 void fill_uniform01(std::uint64_t seed, Stream purpose, std::uint64_t first_index,
                     std::size_t count_per_sample, std::size_t n_samples, std::span<double> out) {
   detail::fill_uniform01_with(detail::best_kernel(), seed, purpose, first_index, count_per_sample,
-                              n_samples, out);
+                              n_samples, out, UniformLayout::SampleMajor);
+}
+
+void fill_uniform01_draw_major(std::uint64_t seed, Stream purpose, std::uint64_t first_index,
+                               std::size_t count_per_sample, std::size_t n_samples, std::span<double> out) {
+  detail::fill_uniform01_with(detail::best_kernel(), seed, purpose, first_index, count_per_sample,
+                              n_samples, out, UniformLayout::DrawMajor);
 }
 
 }  // namespace insmc::mc

@@ -205,6 +205,16 @@ class CounterStream {
 void fill_uniform01(std::uint64_t seed, Stream purpose, std::uint64_t first_index,
                     std::size_t count_per_sample, std::size_t n_samples, std::span<double> out);
 
+/// The same uniforms in draw-major order: out[j * n_samples + i] = the j-th
+/// uniform01() of CounterStream(seed, purpose, first_index + i). The
+/// samples of one draw are contiguous, as the vectorised block products
+/// take them (montecarlo/kernels/map_product.h).
+void fill_uniform01_draw_major(std::uint64_t seed, Stream purpose, std::uint64_t first_index,
+                               std::size_t count_per_sample, std::size_t n_samples, std::span<double> out);
+
+/// The order of a bulk fill's output.
+enum class UniformLayout { SampleMajor, DrawMajor };
+
 namespace detail {
 /// Bulk kernels, exposed so tests can check every available one.
 enum class PhiloxKernel { Generic, Avx2 };
@@ -213,7 +223,8 @@ bool kernel_available(PhiloxKernel kernel);
 PhiloxKernel best_kernel();
 void fill_uniform01_with(PhiloxKernel kernel, std::uint64_t seed, Stream purpose,
                          std::uint64_t first_index, std::size_t count_per_sample,
-                         std::size_t n_samples, std::span<double> out);
+                         std::size_t n_samples, std::span<double> out,
+                         UniformLayout layout = UniformLayout::SampleMajor);
 }  // namespace detail
 
 }  // namespace insmc::mc

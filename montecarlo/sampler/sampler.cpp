@@ -98,6 +98,19 @@ void Sampler::transform(const double* uniforms, std::size_t n, double* x) const 
   }
 }
 
+void Sampler::transform_draw_major(const double* uniforms, std::size_t n, double* x) const {
+  for (int j = 0; j < ux::kDim; ++j) {
+    const double* u = uniforms + static_cast<std::size_t>(j) * n;
+    double* xj = x + static_cast<std::size_t>(j) * n;
+    if (kind_[j] == DistributionKind::kUniform) {
+      const double b = bound_[j];
+      for (std::size_t s = 0; s < n; ++s) xj[s] = (2.0 * u[s] - 1.0) * b;  // transform_one's three roundings
+    } else {
+      for (std::size_t s = 0; s < n; ++s) xj[s] = transform_one(j, u[s]);
+    }
+  }
+}
+
 UncertaintyVector Sampler::draw(std::uint64_t seed, std::uint64_t index) const {
   std::vector<double> u(ux::kDim);
   fill_uniform01(seed, Stream::Uncertainties, index, ux::kDim, 1, u);

@@ -25,6 +25,11 @@ class Sampler {
   /// uniforms and x must not overlap.
   void transform(const double* uniforms, std::size_t n, double* x) const;
 
+  /// The same draws in draw-major order (fill_uniform01_draw_major's
+  /// layout): x[j * n + s] == transform_one(j, uniforms[j * n + s]), bit for
+  /// bit. uniforms and x must not overlap.
+  void transform_draw_major(const double* uniforms, std::size_t n, double* x) const;
+
   /// The uncertainty vector of sample `index` alone (for --replay).
   UncertaintyVector draw(std::uint64_t seed, std::uint64_t index) const;
 

@@ -188,21 +188,24 @@ TEST(FillUniform01, EqualsScalarStreamBitForBit) {
   for (const PhiloxKernel kernel : {PhiloxKernel::Generic, PhiloxKernel::Avx2}) {
     if (!detail::kernel_available(kernel)) continue;
     ++kernels_tested;
-    for (const Case& c : cases) {
-      std::vector<double> bulk(c.count_per_sample * c.n_samples, -1.0);
-      detail::fill_uniform01_with(kernel, c.seed, c.purpose, c.first_index, c.count_per_sample,
-                                  c.n_samples, bulk);
-      for (std::size_t i = 0; i < c.n_samples; ++i) {
-        CounterStream s(c.seed, c.purpose, c.first_index + i);
-        for (std::size_t j = 0; j < c.count_per_sample; ++j) {
-          const double scalar = s.uniform01();
-          ASSERT_EQ(std::bit_cast<std::uint64_t>(bulk[i * c.count_per_sample + j]),
-                    std::bit_cast<std::uint64_t>(scalar))
-              << "kernel " << static_cast<int>(kernel) << " seed " << c.seed << " purpose "
-              << static_cast<std::uint32_t>(c.purpose) << " sample " << i << " draw " << j;
+    for (const UniformLayout layout : {UniformLayout::SampleMajor, UniformLayout::DrawMajor})
+      for (const Case& c : cases) {
+        std::vector<double> bulk(c.count_per_sample * c.n_samples, -1.0);
+        detail::fill_uniform01_with(kernel, c.seed, c.purpose, c.first_index, c.count_per_sample,
+                                    c.n_samples, bulk, layout);
+        for (std::size_t i = 0; i < c.n_samples; ++i) {
+          CounterStream s(c.seed, c.purpose, c.first_index + i);
+          for (std::size_t j = 0; j < c.count_per_sample; ++j) {
+            const double scalar = s.uniform01();
+            const std::size_t at =
+                layout == UniformLayout::DrawMajor ? j * c.n_samples + i : i * c.count_per_sample + j;
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(bulk[at]), std::bit_cast<std::uint64_t>(scalar))
+                << "kernel " << static_cast<int>(kernel) << " layout " << static_cast<int>(layout)
+                << " seed " << c.seed << " purpose " << static_cast<std::uint32_t>(c.purpose)
+                << " sample " << i << " draw " << j;
+          }
         }
       }
-    }
   }
   EXPECT_GE(kernels_tested, 1);
   if (!detail::kernel_available(PhiloxKernel::Avx2)) {
@@ -216,10 +219,11 @@ TEST(FillUniform01, WritesExactlyItsSpan) {
   for (const PhiloxKernel kernel : {PhiloxKernel::Generic, PhiloxKernel::Avx2}) {
     if (!detail::kernel_available(kernel)) continue;
     for (const std::size_t count : {std::size_t{1}, std::size_t{2}, std::size_t{33}}) {
-      for (std::size_t n = 1; n <= 17; ++n) {
+      for (std::size_t n = 1; n <= 17; ++n)
+        for (const UniformLayout layout : {UniformLayout::SampleMajor, UniformLayout::DrawMajor}) {
         std::vector<double> buf(count * n + 2 * count + 2, -7.0);
         detail::fill_uniform01_with(kernel, 3, Stream::Sway, 40, count, n,
-                                    std::span<double>(buf).subspan(count + 1, count * n));
+                                    std::span<double>(buf).subspan(count + 1, count * n), layout);
         for (std::size_t i = 0; i < buf.size(); ++i) {
           const bool inside = i >= count + 1 && i < count + 1 + count * n;
           if (inside) {
@@ -241,6 +245,15 @@ TEST(FillUniform01, PublicEntryPointUsesBestKernel) {
   detail::fill_uniform01_with(detail::PhiloxKernel::Generic, 8, Stream::Measurement, 1000, 7, 19,
                               b);
   EXPECT_EQ(a, b);
+}
+
+TEST(FillUniform01, DrawMajorIsTheTransposeOfSampleMajor) {
+  const std::size_t count = 33, n = 1024 + 5;
+  std::vector<double> by_sample(count * n), by_draw(count * n);
+  fill_uniform01(4, Stream::Uncertainties, 3 * 1024, count, n, by_sample);
+  fill_uniform01_draw_major(4, Stream::Uncertainties, 3 * 1024, count, n, by_draw);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < count; ++j) ASSERT_EQ(by_draw[j * n + i], by_sample[i * count + j]) << i << " " << j;
 }
 
 TEST(FillUniform01, EmptyRequestWritesNothing) {

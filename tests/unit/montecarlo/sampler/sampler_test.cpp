@@ -127,12 +127,18 @@ TEST(Sampler, TransformEqualsTransformOneBitForBit) {
       const double extremes[] = {0.0, 0.5, 1.0 - 0x1p-53};
       for (std::size_t i = 0; i < u.size(); i += 5) u[i] = extremes[(i / 5) % 3];
       sampler.transform(u.data(), n, x.data());
+      std::vector<double> x_by_draw(n * ux::kDim, -99.0);  // the same uniforms read draw-major
+      sampler.transform_draw_major(u.data(), n, x_by_draw.data());
       for (std::size_t s = 0; s < n; ++s) {
         for (int j = 0; j < ux::kDim; ++j) {
           const std::size_t i = s * ux::kDim + static_cast<std::size_t>(j);
           ASSERT_EQ(std::bit_cast<std::uint64_t>(x[i]),
                     std::bit_cast<std::uint64_t>(sampler.transform_one(j, u[i])))
               << "n " << n << " sample " << s << " j " << j << " u " << u[i];
+          const std::size_t d = static_cast<std::size_t>(j) * n + s;
+          ASSERT_EQ(std::bit_cast<std::uint64_t>(x_by_draw[d]),
+                    std::bit_cast<std::uint64_t>(sampler.transform_one(j, u[d])))
+              << "draw-major: n " << n << " sample " << s << " j " << j << " u " << u[d];
         }
       }
     }
