@@ -116,6 +116,14 @@ struct TestRunEstimators {
 /// column of the data (an axis, or a column of a linear map of the data).
 enum EstimateRow { kU2Row, kU3Row, kU3AccelRow, kDfAtTestEndRow, kEstimateRows };
 
+/// (5.10): the filtered Δf̂(T) = g(Â1 + Û3 ω_ie T + Û4 ω_ie² T²/2) from the
+/// accelerometer fit's Â1, Û3, Û4 (the one statement of it: apply_estimators
+/// and the Monte Carlo's block path both call it).
+inline double filtered_df_at_test_end(const ModelOptions& m, double test_duration_s, double a1, double u3, double u4) {
+  const double g = m.gravity_mps2, w = m.earth_rate_radps, T = test_duration_s;
+  return g * ((a1 + w * T * u3) + w * w * T * T / 2 * u4);
+}
+
 /// The one application of the estimators: from K rows of position data Δr_k
 /// and of interval-averaged accelerometer data Δf_k (any number of columns),
 /// Û2, Û3 (4.8b, c), Û3 from the accelerometer data (the slope of (4.4),
@@ -127,12 +135,12 @@ Eigen::Matrix<double, kEstimateRows, Cols> apply_estimators(const TestRunEstimat
                                                             const Accel& accel) {
   const Eigen::Matrix<double, 4, Cols> u_pos = est.position * position;  // (4.8): Û1..Û4
   const Eigen::Matrix<double, 3, Cols> u_acc = est.accel * accel;        // (4.4): Â1, Û3, Û4
-  const double g = m.gravity_mps2, w = m.earth_rate_radps, T = test_duration_s;
   Eigen::Matrix<double, kEstimateRows, Cols> out(static_cast<Eigen::Index>(kEstimateRows), position.cols());
   out.row(kU2Row) = u_pos.row(1);
   out.row(kU3Row) = u_pos.row(2);
   out.row(kU3AccelRow) = u_acc.row(1);
-  out.row(kDfAtTestEndRow) = g * (u_acc.row(0) + w * T * u_acc.row(1) + w * w * T * T / 2 * u_acc.row(2));  // (5.10)
+  for (Eigen::Index c = 0; c < position.cols(); ++c)
+    out(kDfAtTestEndRow, c) = filtered_df_at_test_end(m, test_duration_s, u_acc(0, c), u_acc(1, c), u_acc(2, c));
   return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include "montecarlo/bench/timing.h"
 #include "montecarlo/engine/engine.h"
+#include "montecarlo/kernels/map_product.h"
 #include "montecarlo/random/philox.h"
 
 namespace insmc::mc {
@@ -16,54 +17,71 @@ namespace {
 // (ΔV at switch-over, torquer, alignment ΔV: 9) and the realignment (8).
 constexpr int kExtraDraws = 9 + static_cast<int>(std::size(kRealignedSlots));
 
-/// One system's matrices of the floor: the pipeline's shapes.
+/// One system's matrices of the floor: the pipeline's shapes, as the block
+/// product takes them (the columns of each map: m[r·ldm + k]).
 struct SystemProducts {
-  Eigen::MatrixXd observe;       // (6K + 3 + 6) × 33: ΔV and Δr per k and axis, r(0), alignment data
-  Eigen::MatrixXd accel_fit;     // 3 × K (4.4)
-  Eigen::MatrixXd position_fit;  // 4 × K (4.7)
+  Eigen::MatrixXd observe;       // 33 × (6K + 3 + 6): ΔV and Δr per k and axis, r(0), alignment data
+  Eigen::MatrixXd accel_fit;     // K × 3 (4.4)
+  Eigen::MatrixXd position_fit;  // K × 4 (4.7)
   const Eigen::MatrixXd* map_t;  // ez::kDim × output rows
 };
 
-/// Seconds of the floor over blocks [first_block, end_block).
+/// Seconds of the floor over blocks [first_block, end_block): the
+/// generator, the observation maps, the fits on each axis' K data and the
+/// output map, all as vectorised block products (kernels/map_product.h) on
+/// draw-major blocks, and lane sums of the outputs.
 double time_floor(const StudyConfig& c, const StudyMap& map, std::uint64_t first_block, std::uint64_t end_block) {
   const int k = c.test.intervals();
+  const int observed_rows = 6 * k + 9;
   std::vector<SystemProducts> systems;
   for (std::size_t j = 0; j < c.systems.size(); ++j) {
     const SystemPipeline& p = map.pipeline(static_cast<int>(j));
-    // The observation maps are private to the pipeline; a GEMM's time does
-    // not depend on the values, so random ones of the same shape stand in.
-    systems.push_back({Eigen::MatrixXd::Random(6 * k + 9, ux::kDim), p.estimators().accel,
-                       p.estimators().position, &map.transposed(static_cast<int>(j))});
+    // The observation maps are private to the pipeline; a product's time
+    // does not depend on the values, so random ones of the same shape stand in.
+    systems.push_back({Eigen::MatrixXd::Random(ux::kDim, observed_rows), p.estimators().accel.transpose(),
+                       p.estimators().position.transpose(), &map.transposed(static_cast<int>(j))});
   }
   UncertaintyVector bounds;
   for (int j = 0; j < ux::kDim; ++j) bounds[j] = c.uncertainties.at(j).bound_si;
   const auto t0 = std::chrono::steady_clock::now();
   tbb::parallel_for(first_block, end_block, [&](std::uint64_t b) {
-    const Eigen::Index n = static_cast<Eigen::Index>(kBlockSize);
-    thread_local std::vector<double> u(kBlockSize * ux::kDim), extra(kBlockSize * kExtraDraws);
-    thread_local Eigen::MatrixXd x(ux::kDim, n), observed(6 * k + 9, n), z = Eigen::MatrixXd::Zero(ez::kDim, n),
-                                 accel(3, n), position(4, n), y;
-    fill_uniform01(c.seed, Stream::Uncertainties, b * kBlockSize, ux::kDim, kBlockSize, u);
-    fill_uniform01(c.seed, Stream::PulsePhase, b * kBlockSize, kExtraDraws, kBlockSize, extra);
-    for (Eigen::Index s = 0; s < n; ++s)
-      for (int j = 0; j < ux::kDim; ++j) x(j, s) = (2 * u[static_cast<std::size_t>(s * ux::kDim + j)] - 1) * bounds[j];
-    const Eigen::Map<const Eigen::MatrixXd> draws(extra.data(), kExtraDraws, n);
+    constexpr std::size_t n = kBlockSize;
+    const Eigen::Index ni = static_cast<Eigen::Index>(n);
+    thread_local std::vector<double> u(n * ux::kDim), extra(n * kExtraDraws);
+    thread_local Eigen::MatrixXd x(ni, ux::kDim), observed(ni, observed_rows), z = Eigen::MatrixXd::Zero(ni, ez::kDim),
+                                 accel(ni, 3), position(ni, 4), y;
+    fill_uniform01_draw_major(c.seed, Stream::Uncertainties, b * n, ux::kDim, n, u);
+    fill_uniform01_draw_major(c.seed, Stream::PulsePhase, b * n, kExtraDraws, n, extra);
+    for (int j = 0; j < ux::kDim; ++j)
+      for (std::size_t s = 0; s < n; ++s) x(static_cast<Eigen::Index>(s), j) = (2 * u[j * n + s] - 1) * bounds[j];
+    const Eigen::Map<const Eigen::MatrixXd> draws(extra.data(), ni, kExtraDraws);
     double sums = 0.0;
     for (const SystemProducts& sp : systems) {
-      observed.noalias() = sp.observe * x;
-      z.topRows<ux::kDim>() = x;
-      z.middleRows(ez::kRealignZeta, kExtraDraws - 9) = draws.bottomRows(kExtraDraws - 9);
+      y.resize(ni, sp.map_t->cols());
+      map_product({n, ux::kDim, observed_rows}, x.data(), n, sp.observe.data(), ux::kDim, observed.data(), n);
+      z.leftCols<ux::kDim>() = x;
+      z.middleCols(ez::kRealignZeta, kExtraDraws - 9) = draws.rightCols(kExtraDraws - 9);
       for (int a = 0; a < 3; ++a) {  // the fits on each axis' K data, every sample at once
-        accel.noalias() = sp.accel_fit * observed.middleRows(a * k, k);
-        position.noalias() = sp.position_fit * observed.middleRows(3 * k + a * k, k);
-        z.row(ez::kU2 + a) = position.row(1);
-        z.row(ez::kU3 + a) = position.row(2);
-        z.row(ez::kU3Accel + a) = accel.row(1);
-        z.row(ez::kDfT + a) = accel.row(0);
+        map_product({n, k, 3}, observed.col(a * k).data(), n, sp.accel_fit.data(), static_cast<std::size_t>(k),
+                    accel.data(), n);
+        map_product({n, k, 4}, observed.col(3 * k + a * k).data(), n, sp.position_fit.data(),
+                    static_cast<std::size_t>(k), position.data(), n);
+        z.col(ez::kU2 + a) = position.col(1);
+        z.col(ez::kU3 + a) = position.col(2);
+        z.col(ez::kU3Accel + a) = accel.col(1);
+        z.col(ez::kDfT + a) = accel.col(0);
       }
-      z.middleRows<6>(ez::kTorquerCommands) = observed.bottomRows<6>();
-      y.noalias() = z.transpose() * *sp.map_t;
-      sums += y.sum() + y.squaredNorm();
+      z.middleCols<6>(ez::kTorquerCommands) = observed.rightCols<6>();
+      map_product({n, ez::kDim, static_cast<int>(y.cols())}, z.data(), n, sp.map_t->data(),
+                  static_cast<std::size_t>(sp.map_t->rows()), y.data(), n);
+      constexpr std::size_t kLanes = 8;
+      double s1[kLanes] = {}, s2[kLanes] = {};
+      for (Eigen::Index col = 0; col < y.cols(); ++col) {
+        const double* v = y.col(col).data();
+        for (std::size_t s = 0; s < n; s += kLanes)
+          for (std::size_t l = 0; l < kLanes; ++l) s1[l] += v[s + l], s2[l] += v[s + l] * v[s + l];
+      }
+      for (std::size_t l = 0; l < kLanes; ++l) sums += s1[l] + s2[l];
     }
     bench::keep(sums);
   });

@@ -265,10 +265,11 @@ std::vector<double> evaluate_sample(const StudyConfig& c, const StudyMap& map, c
                                     std::uint64_t index, const UncertaintyVector& x) {
   Eigen::MatrixXd xm = x;
   Eigen::MatrixXd z(ez::kDim, 1);
-  std::vector<Eigen::VectorXd> rows;
+  std::vector<Eigen::MatrixXd> rows;
   for (std::size_t j = 0; j < c.systems.size(); ++j) {
     map.pipeline(static_cast<int>(j)).extended_vectors(index, 1, xm, z);
-    rows.push_back(map.transposed(static_cast<int>(j)).transpose() * z.col(0));
+    rows.emplace_back(1, map.transposed(static_cast<int>(j)).cols());
+    map_rows(map, static_cast<int>(j), ez::kDim, z.data(), 1, 1, rows.back());  // the block's kernel: its bits
   }
   std::vector<double> out;
   for (size_t o = 0; o < layout.outputs.size(); ++o)

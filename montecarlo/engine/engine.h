@@ -69,9 +69,8 @@ StudyAccumulator run_blocks(const StudyConfig& config, const StudyMap& map, std:
 inline std::uint64_t block_count(std::uint64_t samples) { return (samples + kBlockSize - 1) / kBlockSize; }
 
 /// The outputs of sample `index` with uncertainties x, layout order (for
-/// --replay and tests): the engine's maps and pipeline for one sample (a
-/// matrix–vector instead of a matrix–matrix product, so values may differ
-/// from the aggregated ones in the last bits).
+/// --replay and tests): the engine's maps, pipeline and product kernel for
+/// one sample, so the same bits as the sample's values in a run.
 std::vector<double> evaluate_sample(const StudyConfig& config, const StudyMap& map, const StudyLayout& layout,
                                     std::uint64_t index, const UncertaintyVector& x);
 

@@ -7,10 +7,13 @@
 ///   y[r·ldy + s] = ((0 + x[0·ldx + s]·m[r·ldm + 0]) + x[1·ldx + s]·m[r·ldm + 1]) + …
 /// (k ascending, a rounded product then a rounded sum, never a fused
 /// multiply–add: the project builds with -ffp-contract=off), so the result
-/// is the same bits on every CPU. It is also the order of Eigen 3.4's
-/// product xᵀ·M, which the engine used before (checked bit for bit in
-/// tests/unit/montecarlo/kernels/map_product_test.cpp), so studies keep
-/// their bits.
+/// is the same bits on every CPU, and each sample's values depend on that
+/// sample alone (not on its place in the block or on the block's size).
+/// It is also the order in which Eigen 3.4 forms xᵀ·M, which the engine
+/// used before, for every sample of a whole block (checked bit for bit in
+/// tests/unit/montecarlo/kernels/map_product_test.cpp); Eigen summed the
+/// last sample of an odd-sized block in another order (two interleaved
+/// partial sums), so such a block's last sample may differ in the last bit.
 ///
 /// Layouts: x is draw-major (x[k·ldx + s]: value k of sample s, the samples
 /// of one value contiguous); m holds the map's columns (m[r·ldm + k]: row k

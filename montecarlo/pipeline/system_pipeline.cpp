@@ -8,6 +8,8 @@
 #include "lib/preflight/instruments.h"
 #include "lib/preflight/observables.h"
 #include "lib/propagation/paper_model.h"
+#include "montecarlo/kernels/counter_kernels.h"
+#include "montecarlo/kernels/map_product.h"
 #include "montecarlo/random/philox.h"
 
 namespace insmc::mc {
@@ -52,9 +54,14 @@ SystemPipeline::SystemPipeline(const StudyConfig& c, System system)
                                                      : LinearErrorModel(system, m).initial_position();
   const Resolvability r = resolvable_terms(system, m, test_, c.uncertainties);
   est_ = make_estimators(test_, m, r.u3, r.u4);
+  position_fit_columns_ = est_.position.transpose();
+  accel_fit_columns_ = est_.accel.transpose();
   const Sensitivity3 steady = steady_state(system, c.map_fidelity(), m);
   torquer_map_ = torquer_commands(steady, m);
   align_accel_map_ = alignment_accelerometer_outputs(steady, m);
+  observation_columns_.resize(ux::kDim, alignment_column() + 6);
+  observation_columns_ << velocity_map_.transpose(), position_map_.transpose(), initial_position_.transpose(),
+      torquer_map_.transpose(), align_accel_map_.transpose();
   const double w = m.earth_rate_radps;
   earth_rate_command_ = Vec3(w * std::cos(m.latitude_rad), 0.0, -w * std::sin(m.latitude_rad));  // (2.6)
   build_covariance_map(c, maps);
@@ -63,82 +70,126 @@ SystemPipeline::SystemPipeline(const StudyConfig& c, System system)
 void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const Eigen::MatrixXd& x,
                                       Eigen::MatrixXd& z) const {
   const StudyConfig& c = *config_;
-  const ModelOptions& m = c.model;
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
   z.leftCols(ni).setZero();
   z.topLeftCorner(ux::kDim, ni) = x.leftCols(ni);
+  // The block's buffers, kept per thread across calls: with fresh temporaries
+  // half of a paper run's time went to page faults and zeroing of new memory
+  // (perf, docs/performance.md). Every block is draw-major: value i of
+  // sample s at [i·n + s], so each step below runs over the samples of the
+  // block as one vectorised loop or block product, and each sample's values
+  // depend on that sample alone (the same bits in any block: map_product.h).
+  thread_local std::vector<double> draws;
   if (needs_realignment_) {
-    double u[kRealignDraws];
-    for (std::size_t s = 0; s < n; ++s) {
-      fill_uniform01(c.seed, Stream::Realignment, first + s, kRealignDraws, 1, u);
-      for (int i = 0; i < kRealignDraws; ++i)
-        z(kRealignedSlots[i].z_index, static_cast<Eigen::Index>(s)) = sampler_.transform_one(kRealignedSlots[i].x_index, u[i]);
-    }
+    draws.resize(n * kRealignDraws);
+    fill_uniform01_draw_major(c.seed, Stream::Realignment, first, kRealignDraws, n, draws);
+    for (int i = 0; i < kRealignDraws; ++i)
+      for (std::size_t s = 0; s < n; ++s)
+        z(kRealignedSlots[i].z_index, static_cast<Eigen::Index>(s)) =
+            sampler_.transform_one(kRealignedSlots[i].x_index, draws[static_cast<std::size_t>(i) * n + s]);
   }
   if (!needs_test_ && !needs_alignment_data_) return;
-  const double g = m.gravity_mps2, T = test_.duration_s, tau = test_.filter_interval_s;
-  const double dv = test_.dv_pulse_mps, q = test_.position_resolution_m;
-  double phases[kPhaseDraws];
-  // The observations of the block, in per-thread buffers kept across calls:
-  // with a fresh 2 MB temporary per product, half of a paper run's time went
-  // to page faults and zeroing of the new memory (perf, docs/performance.md).
-  thread_local Eigen::MatrixXd vel_buffer, pos_buffer, r0_buffer;
-  const auto product = [&](Eigen::MatrixXd& buffer, const auto& map) {
-    if (buffer.rows() != map.rows() || buffer.cols() < ni)
-      buffer.resize(map.rows(), std::max<Eigen::Index>(ni, static_cast<Eigen::Index>(kBlockSize)));
-    buffer.leftCols(ni).noalias() = map * x.leftCols(ni);
-    return buffer.leftCols(ni);
-  };
-  const auto vel = product(vel_buffer, velocity_map_);     // 3K × n
-  const auto pos = product(pos_buffer, position_map_);     // 3K × n
-  const auto r0 = product(r0_buffer, initial_position_);  // 3 × n
-  Eigen::MatrixXd accel_data(k_, 3), pos_data(k_, 3), sway(k_ + 1, 3);
-  const double sway_a = std::exp(-tau / test_.sway.correlation_time_s);
-  for (std::size_t s = 0; s < n; ++s) {
-    const Eigen::Index si = static_cast<Eigen::Index>(s);
-    fill_uniform01(c.seed, Stream::PulsePhase, first + s, kPhaseDraws, 1, phases);
-    if (needs_test_) {
-      sway.setZero();
-      if (test_.sway.enabled()) {  // first-order Gauss–Markov velocity wiggle per axis
-        CounterStream normals(c.seed, Stream::Sway, first + s);
-        const double sigma = test_.sway.velocity_rms_mps, b = sigma * std::sqrt(1 - sway_a * sway_a);
-        for (int a = 0; a < 3; ++a) {
-          sway(0, a) = sigma * normals.standard_normal();
-          for (int k = 1; k <= k_; ++k) sway(k, a) = sway_a * sway(k - 1, a) + b * normals.standard_normal();
-        }
-      }
-      for (int a = 0; a < 3; ++a) {
-        // The counter sees nominal + error + sway velocity, with the
-        // remainder at switch-over as its starting phase.
-        DeltaVCounter counter(dv, phases[a] * dv);
-        const PositionReadout readout(q, true_position_(a, 0), true_position_(a, 0) + r0(a, si));
-        for (int k = 1; k <= k_; ++k) {
-          const double v = nominal_velocity_(a, k) + vel(3 * (k - 1) + a, si) + sway(k, a) - sway(0, a);
-          accel_data(k - 1, a) =
-              counter.interval_error_mps2(v, nominal_velocity_(a, k) - nominal_velocity_(a, k - 1), tau);
-          const double truth = true_position_(a, k);
-          pos_data(k - 1, a) = readout.change_m(truth, truth + r0(a, si) + pos(3 * (k - 1) + a, si));
-        }
-      }
-      const Eigen::Matrix<double, kEstimateRows, 3> u = apply_estimators<3>(est_, m, T, pos_data, accel_data);
-      for (int a = 0; a < 3; ++a) {
-        z(ez::kU2 + a, si) = u(kU2Row, a);
-        z(ez::kU3 + a, si) = u(kU3Row, a);
-        z(ez::kU3Accel + a, si) = u(kU3AccelRow, a);
-        z(ez::kDfT + a, si) = u(kDfAtTestEndRow, a);
-        z(ez::kWiggleAtT + a, si) = -sway(k_, a);  // computed − true velocity after the reset
+  // The observations: ΔV and Δr per interval and axis, r(0), the alignment's
+  // torquer commands and accelerometer outputs (only these without the test run).
+  thread_local std::vector<double> x_by_draw, observed, phases;
+  x_by_draw.resize(n * ux::kDim);
+  Eigen::Map<Eigen::MatrixXd>(x_by_draw.data(), ni, ux::kDim) = x.leftCols(ni).transpose();
+  const int first_column = needs_test_ ? 0 : alignment_column();
+  const int columns = static_cast<int>(observation_columns_.cols()) - first_column;
+  observed.resize(n * static_cast<std::size_t>(observation_columns_.cols()));
+  map_product({n, ux::kDim, columns}, x_by_draw.data(), n, observation_columns_.col(first_column).data(), ux::kDim,
+              observed.data() + static_cast<std::size_t>(first_column) * n, n);
+  phases.resize(n * kPhaseDraws);
+  fill_uniform01_draw_major(c.seed, Stream::PulsePhase, first, kPhaseDraws, n, phases);
+  if (needs_test_) test_run_estimates(first, n, observed, phases, z);
+  if (needs_alignment_data_) {
+    const ModelOptions& m = c.model;
+    const double ta = test_.alignment_average_s, dtheta = test_.torquer_pulse_rad, dv = test_.dv_pulse_mps;
+    const std::size_t base = static_cast<std::size_t>(alignment_column());
+    for (int a = 0; a < 3; ++a) {
+      const auto ua = static_cast<std::size_t>(a);
+      const double* wc = observed.data() + (base + ua) * n;
+      const double* df = observed.data() + (base + 3 + ua) * n;
+      const double* torquer_phase = phases.data() + (3 + ua) * n;
+      const double* accel_phase = phases.data() + (6 + ua) * n;
+      for (std::size_t s = 0; s < n; ++s) {
+        const Eigen::Index si = static_cast<Eigen::Index>(s);
+        // Torquer commands (5.14) counted in angle pulses over ta, less the known earth-rate command.
+        z(ez::kTorquerCommands + a, si) = counted_mean(wc[s], earth_rate_command_[a], ta, dtheta, torquer_phase[s]);
+        // Accelerometer outputs (5.18) counted in ΔV pulses over ta, less the expected −g on z.
+        z(ez::kAlignAccel + a, si) = counted_mean(df[s], a == 2 ? -m.gravity_mps2 : 0.0, ta, dv, accel_phase[s]);
       }
     }
-    if (needs_alignment_data_) {
-      const double ta = test_.alignment_average_s, dtheta = test_.torquer_pulse_rad;
-      const Vec3 wc = torquer_map_ * x.col(si);
-      const Vec3 df = align_accel_map_ * x.col(si);
-      for (int a = 0; a < 3; ++a) {
-        // Torquer commands (5.14) counted in angle pulses over ta, less the known earth-rate command.
-        z(ez::kTorquerCommands + a, si) = counted_mean(wc[a], earth_rate_command_[a], ta, dtheta, phases[3 + a]);
-        // Accelerometer outputs (5.18) counted in ΔV pulses over ta, less the expected −g on z.
-        z(ez::kAlignAccel + a, si) = counted_mean(df[a], a == 2 ? -g : 0.0, ta, dv, phases[6 + a]);
+  }
+}
+
+void SystemPipeline::test_run_estimates(std::uint64_t first, std::size_t n, const std::vector<double>& observed,
+                                        const std::vector<double>& phases, Eigen::MatrixXd& z) const {
+  const StudyConfig& c = *config_;
+  const ModelOptions& m = c.model;
+  const double T = test_.duration_s, tau = test_.filter_interval_s;
+  const double dv = test_.dv_pulse_mps, q = test_.position_resolution_m;
+  const std::size_t K = static_cast<std::size_t>(k_), rows_3k = 3 * K;
+  const auto column = [&](std::size_t i) { return observed.data() + i * n; };
+  // Sway: a first-order Gauss–Markov velocity wiggle per axis, sample by
+  // sample from its own stream, held as sway[(3k + a)·n + s], k = 0..K.
+  thread_local std::vector<double> sway;
+  const bool swaying = test_.sway.enabled();
+  if (swaying) {
+    sway.resize(3 * (K + 1) * n);
+    const double a_gm = std::exp(-tau / test_.sway.correlation_time_s);
+    const double sigma = test_.sway.velocity_rms_mps, b = sigma * std::sqrt(1 - a_gm * a_gm);
+    for (std::size_t s = 0; s < n; ++s) {
+      CounterStream normals(c.seed, Stream::Sway, first + s);
+      for (std::size_t a = 0; a < 3; ++a) {
+        sway[a * n + s] = sigma * normals.standard_normal();
+        for (std::size_t k = 1; k <= K; ++k)
+          sway[(3 * k + a) * n + s] = a_gm * sway[(3 * (k - 1) + a) * n + s] + b * normals.standard_normal();
       }
+    }
+  }
+  thread_local std::vector<double> accel_data, pos_data, counted, first_reading, u_pos, u_acc;
+  accel_data.resize(K * n), pos_data.resize(K * n), counted.resize(n), first_reading.resize(n);
+  u_pos.resize(4 * n), u_acc.resize(3 * n);
+  for (std::size_t a = 0; a < 3; ++a) {
+    const int ia = static_cast<int>(a);
+    // The ΔV counter sees nominal + error + sway velocity, with the remainder
+    // at switch-over (phase) as its starting point; each interval's datum is
+    // the counted increment less the nominal one, over τ (DeltaVCounter).
+    const ProductKernel kernel = best_product_kernel();
+    std::fill(counted.begin(), counted.end(), 0.0);
+    for (std::size_t k = 1; k <= K; ++k) {
+      PulseInterval interval;
+      interval.error = column(3 * (k - 1) + a);
+      interval.sway_now = swaying ? sway.data() + (3 * k + a) * n : nullptr;
+      interval.sway_start = swaying ? sway.data() + a * n : nullptr;
+      interval.phase01 = phases.data() + a * n;
+      interval.nominal_mps = nominal_velocity_(ia, static_cast<Eigen::Index>(k));
+      interval.increment_mps = interval.nominal_mps - nominal_velocity_(ia, static_cast<Eigen::Index>(k - 1));
+      interval.pulse_mps = dv;
+      interval.interval_s = tau;
+      count_pulses(kernel, interval, n, counted.data(), accel_data.data() + (k - 1) * n);
+    }
+    // The position computer's readings, each as a change from the first (PositionReadout).
+    PositionReadings readings{column(2 * rows_3k + a), nullptr, nullptr, true_position_(ia, 0), q};
+    read_positions(kernel, readings, n, first_reading.data());
+    readings.first = first_reading.data();
+    for (std::size_t k = 1; k <= K; ++k) {
+      readings.error = column(rows_3k + 3 * (k - 1) + a);
+      readings.truth_m = true_position_(ia, static_cast<Eigen::Index>(k));
+      read_positions(kernel, readings, n, pos_data.data() + (k - 1) * n);
+    }
+    // The least-squares fits (4.8), (4.4) on every sample's K data at once.
+    map_product({n, k_, 4}, pos_data.data(), n, position_fit_columns_.data(), K, u_pos.data(), n);
+    map_product({n, k_, 3}, accel_data.data(), n, accel_fit_columns_.data(), K, u_acc.data(), n);
+    for (std::size_t s = 0; s < n; ++s) {
+      const Eigen::Index si = static_cast<Eigen::Index>(s);
+      z(ez::kU2 + ia, si) = u_pos[n + s];
+      z(ez::kU3 + ia, si) = u_pos[2 * n + s];
+      z(ez::kU3Accel + ia, si) = u_acc[n + s];
+      z(ez::kDfT + ia, si) = filtered_df_at_test_end(m, T, u_acc[s], u_acc[n + s], u_acc[2 * n + s]);
+      // Computed − true velocity after the reset.
+      z(ez::kWiggleAtT + ia, si) = swaying ? -sway[(3 * K + a) * n + s] : -0.0;
     }
   }
 }

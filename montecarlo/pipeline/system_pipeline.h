@@ -44,6 +44,10 @@ class SystemPipeline {
 
  private:
   void build_covariance_map(const StudyConfig& c, const TestRunMaps& maps);
+  /// The test run's data of n samples and the fits' estimates into z, from
+  /// the block's observations and counter phases (draw-major, extended_vectors).
+  void test_run_estimates(std::uint64_t first, std::size_t n, const std::vector<double>& observed,
+                          const std::vector<double>& phases, Eigen::MatrixXd& z) const;
 
   const StudyConfig* config_;
   System system_;
@@ -52,6 +56,13 @@ class SystemPipeline {
   bool needs_test_ = false, needs_alignment_data_ = false, needs_realignment_ = false;
   int k_ = 0;  // filter intervals
   Eigen::MatrixXd velocity_map_, position_map_;  // 3K × kDim (k = 1..K, axis-minor)
+  /// The observation maps' columns as the block product takes them
+  /// (kernels/map_product.h): kDim × (3K velocity | 3K position | 3 r(0) |
+  /// 3 torquer commands | 3 alignment accelerometer outputs).
+  Eigen::MatrixXd observation_columns_;
+  int alignment_column() const { return 6 * k_ + 3; }  // the first of the alignment's six
+  /// The estimators' rows as columns: K × 4 (4.8) and K × 3 (4.4).
+  Eigen::MatrixXd position_fit_columns_, accel_fit_columns_;
   Eigen::MatrixXd nominal_velocity_, true_position_;  // 3 × (K+1)
   Sensitivity3 initial_position_;
   TestRunEstimators est_;

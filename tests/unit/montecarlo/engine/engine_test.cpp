@@ -214,6 +214,36 @@ TEST(EngineReplay, OneSampleBlockMatchesEvaluateSample) {
   }
 }
 
+TEST(EngineReplay, EverySampleOfABlockHasTheReplayedBitsInEveryScheme) {
+  // The block products are a pure function of each sample (map_product.h):
+  // the observations of the test run, hence the pulse counts, and the
+  // outputs are the same bits in a block of 1024 or of one, for every
+  // scheme. So a full block's min and max are exactly the replayed extremes,
+  // and so is an odd-sized block's (whose last sample Eigen once summed in
+  // another order).
+  for (const std::uint64_t samples : {5 * kBlockSize, 4 * kBlockSize + 7}) {
+    StudyConfig c = full_path_study();
+    c.samples = samples;
+    Study study(c);
+    const Sampler sampler(study.c.uncertainties);
+    constexpr std::uint64_t kBlockIndex = 4;
+    const StudyAccumulator acc = study.run(kBlockIndex, kBlockIndex + 1);
+    const std::size_t n_out = study.layout.outputs.size();
+    std::vector<double> lo(n_out, std::numeric_limits<double>::infinity());
+    std::vector<double> hi(n_out, -std::numeric_limits<double>::infinity());
+    for (std::uint64_t i = kBlockIndex * kBlockSize; i < samples; ++i) {
+      const std::vector<double> r = evaluate_sample(study.c, study.map, study.layout, i, sampler.draw(study.c.seed, i));
+      for (std::size_t o = 0; o < n_out; ++o) lo[o] = std::min(lo[o], r[o]), hi[o] = std::max(hi[o], r[o]);
+    }
+    for (std::size_t o = 0; o < n_out; ++o) {
+      const OutputSummary s = acc.outputs()[o].summarize(study.c.confidence);
+      ASSERT_EQ(s.n, samples - kBlockIndex * kBlockSize);
+      EXPECT_EQ(s.min, lo[o]) << samples << " samples, output " << o;
+      EXPECT_EQ(s.max, hi[o]) << samples << " samples, output " << o;
+    }
+  }
+}
+
 TEST(EngineReplay, FullBlockMinMaxAndSumOfSquaresMatchEvaluateSample) {
   // Schemes none and 5.4 only: their z is built sample by sample, so it is
   // the same bits in a block as alone. The test-run schemes compute the
