@@ -5,13 +5,18 @@
 #   scripts/install-deps.sh --test   also GoogleTest, Random123 (test oracle),
 #                                    Open MPI (the MPI build's tests), clang,
 #                                    libFuzzer and ccache (scripts/fuzz.sh)
+#   scripts/install-deps.sh --numpy  also NumPy with OpenBLAS (the reference
+#                                    study of scripts/bench-numpy.sh)
 set -euo pipefail
 
 packages=(g++ cmake make libeigen3-dev libtbb-dev libboost-program-options-dev libboost-dev libfmt-dev nlohmann-json3-dev)
 # gnuplot renders the plots of `insmc run` (envelope, sweep) to SVG and PNG
 # from the script insmc writes beside them (montecarlo/write/plot/gnuplot.h).
 packages+=(gnuplot-nox)
-if [[ "${1:-}" == "--test" ]]; then
+if [[ " $* " == *" --numpy "* ]]; then
+  packages+=(python3 python3-numpy libopenblas0-pthread)
+fi
+if [[ " $* " == *" --test "* ]]; then
   # openssh-client: Open MPI's mpirun refuses to start without an rsh/ssh agent,
   # even on one machine (Debian only recommends it).
   packages+=(libgtest-dev librandom123-dev openmpi-bin libopenmpi-dev openssh-client)

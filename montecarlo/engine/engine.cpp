@@ -29,16 +29,14 @@ struct Workspace {
       : uniforms(kBlockSize * ux::kDim),
         x_by_draw(kBlockSize * ux::kDim),
         x(ux::kDim, kBlockSize),
-        z(ez::kDim, kBlockSize),
         z_by_draw(kBlockSize, ez::kDim),
         h(kBlockSize) {
     for (int j = 0; j < n_systems; ++j) y.emplace_back(kBlockSize, map.transposed(j).cols());
   }
   std::vector<double> uniforms;    // kDim × n, draw-major
   std::vector<double> x_by_draw;   // kDim × n, draw-major: x[j * n + s]
-  Eigen::MatrixXd x;               // kDim × block, one column per sample (the pipelines' and truth's input)
-  Eigen::MatrixXd z;               // ez::kDim × block
-  Eigen::MatrixXd z_by_draw;       // block × ez::kDim
+  Eigen::MatrixXd x;               // kDim × block, one column per sample (the truth simulator's input)
+  Eigen::MatrixXd z_by_draw;       // block × ez::kDim: row s = sample s's extended vector
   std::vector<Eigen::MatrixXd> y;  // per system: block × rows
   std::vector<double> h;
 };
@@ -115,10 +113,7 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
                             std::span<double>(ws.uniforms.data(), n * ux::kDim));
   sampler.transform_draw_major(ws.uniforms.data(), n, ws.x_by_draw.data());
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
-  bool sample_major_x = false;  // one column per sample, for the pipelines and the truth simulator
-  for (std::size_t j = 0; j < ws.y.size(); ++j)
-    sample_major_x |= c.fidelity == Fidelity::kTruth || !map.depends_on_x_only(static_cast<int>(j));
-  if (sample_major_x)
+  if (c.fidelity == Fidelity::kTruth)  // one column per sample, for the truth simulator
     ws.x.leftCols(ni) = Eigen::Map<const Eigen::MatrixXd>(ws.x_by_draw.data(), ni, ux::kDim).transpose();
   for (std::size_t j = 0; j < ws.y.size(); ++j) {
     const int sj = static_cast<int>(j);
@@ -130,8 +125,7 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
       map_rows(map, sj, ux::kDim, ws.x_by_draw.data(), n, n, ws.y[j]);
       continue;
     }
-    map.pipeline(sj).extended_vectors(first, n, ws.x, ws.z);
-    ws.z_by_draw.topRows(ni) = ws.z.leftCols(ni).transpose();
+    map.pipeline(sj).extended_vectors_by_draw(first, n, ws.x_by_draw.data(), ws.z_by_draw);
     map_rows(map, sj, ez::kDim, ws.z_by_draw.data(), static_cast<std::size_t>(ws.z_by_draw.rows()), n, ws.y[j]);
   }
   auto& outs = acc.outputs();

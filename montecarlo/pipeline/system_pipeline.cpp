@@ -69,10 +69,22 @@ SystemPipeline::SystemPipeline(const StudyConfig& c, System system)
 
 void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const Eigen::MatrixXd& x,
                                       Eigen::MatrixXd& z) const {
+  const Eigen::Index ni = static_cast<Eigen::Index>(n);
+  thread_local std::vector<double> x_by_draw;
+  thread_local Eigen::MatrixXd z_by_draw;
+  x_by_draw.resize(n * ux::kDim);
+  if (z_by_draw.rows() < ni) z_by_draw.resize(ni, ez::kDim);
+  Eigen::Map<Eigen::MatrixXd>(x_by_draw.data(), ni, ux::kDim) = x.leftCols(ni).transpose();
+  extended_vectors_by_draw(first, n, x_by_draw.data(), z_by_draw);
+  z.leftCols(ni) = z_by_draw.topRows(ni).transpose();
+}
+
+void SystemPipeline::extended_vectors_by_draw(std::uint64_t first, std::size_t n, const double* x_by_draw,
+                                              Eigen::MatrixXd& z) const {
   const StudyConfig& c = *config_;
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
-  z.leftCols(ni).setZero();
-  z.topLeftCorner(ux::kDim, ni) = x.leftCols(ni);
+  z.topRows(ni).setZero();
+  z.topLeftCorner(ni, ux::kDim) = Eigen::Map<const Eigen::MatrixXd>(x_by_draw, ni, ux::kDim);
   // The block's buffers, kept per thread across calls: with fresh temporaries
   // half of a paper run's time went to page faults and zeroing of new memory
   // (perf, docs/performance.md). Every block is draw-major: value i of
@@ -85,19 +97,17 @@ void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const 
     fill_uniform01_draw_major(c.seed, Stream::Realignment, first, kRealignDraws, n, draws);
     for (int i = 0; i < kRealignDraws; ++i)
       for (std::size_t s = 0; s < n; ++s)
-        z(kRealignedSlots[i].z_index, static_cast<Eigen::Index>(s)) =
+        z(static_cast<Eigen::Index>(s), kRealignedSlots[i].z_index) =
             sampler_.transform_one(kRealignedSlots[i].x_index, draws[static_cast<std::size_t>(i) * n + s]);
   }
   if (!needs_test_ && !needs_alignment_data_) return;
   // The observations: ΔV and Δr per interval and axis, r(0), the alignment's
   // torquer commands and accelerometer outputs (only these without the test run).
-  thread_local std::vector<double> x_by_draw, observed, phases;
-  x_by_draw.resize(n * ux::kDim);
-  Eigen::Map<Eigen::MatrixXd>(x_by_draw.data(), ni, ux::kDim) = x.leftCols(ni).transpose();
+  thread_local std::vector<double> observed, phases;
   const int first_column = needs_test_ ? 0 : alignment_column();
   const int columns = static_cast<int>(observation_columns_.cols()) - first_column;
   observed.resize(n * static_cast<std::size_t>(observation_columns_.cols()));
-  map_product({n, ux::kDim, columns}, x_by_draw.data(), n, observation_columns_.col(first_column).data(), ux::kDim,
+  map_product({n, ux::kDim, columns}, x_by_draw, n, observation_columns_.col(first_column).data(), ux::kDim,
               observed.data() + static_cast<std::size_t>(first_column) * n, n);
   phases.resize(n * kPhaseDraws);
   fill_uniform01_draw_major(c.seed, Stream::PulsePhase, first, kPhaseDraws, n, phases);
@@ -115,9 +125,9 @@ void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const 
       for (std::size_t s = 0; s < n; ++s) {
         const Eigen::Index si = static_cast<Eigen::Index>(s);
         // Torquer commands (5.14) counted in angle pulses over ta, less the known earth-rate command.
-        z(ez::kTorquerCommands + a, si) = counted_mean(wc[s], earth_rate_command_[a], ta, dtheta, torquer_phase[s]);
+        z(si, ez::kTorquerCommands + a) = counted_mean(wc[s], earth_rate_command_[a], ta, dtheta, torquer_phase[s]);
         // Accelerometer outputs (5.18) counted in ΔV pulses over ta, less the expected −g on z.
-        z(ez::kAlignAccel + a, si) = counted_mean(df[s], a == 2 ? -m.gravity_mps2 : 0.0, ta, dv, accel_phase[s]);
+        z(si, ez::kAlignAccel + a) = counted_mean(df[s], a == 2 ? -m.gravity_mps2 : 0.0, ta, dv, accel_phase[s]);
       }
     }
   }
@@ -184,12 +194,12 @@ void SystemPipeline::test_run_estimates(std::uint64_t first, std::size_t n, cons
     map_product({n, k_, 3}, accel_data.data(), n, accel_fit_columns_.data(), K, u_acc.data(), n);
     for (std::size_t s = 0; s < n; ++s) {
       const Eigen::Index si = static_cast<Eigen::Index>(s);
-      z(ez::kU2 + ia, si) = u_pos[n + s];
-      z(ez::kU3 + ia, si) = u_pos[2 * n + s];
-      z(ez::kU3Accel + ia, si) = u_acc[n + s];
-      z(ez::kDfT + ia, si) = filtered_df_at_test_end(m, T, u_acc[s], u_acc[n + s], u_acc[2 * n + s]);
+      z(si, ez::kU2 + ia) = u_pos[n + s];
+      z(si, ez::kU3 + ia) = u_pos[2 * n + s];
+      z(si, ez::kU3Accel + ia) = u_acc[n + s];
+      z(si, ez::kDfT + ia) = filtered_df_at_test_end(m, T, u_acc[s], u_acc[n + s], u_acc[2 * n + s]);
       // Computed − true velocity after the reset.
-      z(ez::kWiggleAtT + ia, si) = swaying ? -sway[(3 * K + a) * n + s] : -0.0;
+      z(si, ez::kWiggleAtT + ia) = swaying ? -sway[(3 * K + a) * n + s] : -0.0;
     }
   }
 }

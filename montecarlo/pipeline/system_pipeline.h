@@ -32,8 +32,15 @@ class SystemPipeline {
   const TestRunEstimators& estimators() const { return est_; }
 
   /// Fills z (kDim × n, one column per sample) for samples first..first+n−1
-  /// whose uncertainties are the columns of x (ux::kDim × n).
+  /// whose uncertainties are the columns of x (ux::kDim × n); for --replay
+  /// and tests, through extended_vectors_by_draw (the same bits).
   void extended_vectors(std::uint64_t first, std::size_t n, const Eigen::MatrixXd& x, Eigen::MatrixXd& z) const;
+
+  /// The engine's form: rows 0..n−1 of z (at least n rows, ez::kDim
+  /// columns) for samples first..first+n−1, whose uncertainties are
+  /// x_by_draw[j·n + s] (draw-major, as the block product takes them).
+  void extended_vectors_by_draw(std::uint64_t first, std::size_t n, const double* x_by_draw,
+                                Eigen::MatrixXd& z) const;
 
   /// z = G w + m for the additive-noise model: G (ez::kDim × W) and each
   /// input's mean, variance and fourth central moment.
@@ -44,8 +51,9 @@ class SystemPipeline {
 
  private:
   void build_covariance_map(const StudyConfig& c, const TestRunMaps& maps);
-  /// The test run's data of n samples and the fits' estimates into z, from
-  /// the block's observations and counter phases (draw-major, extended_vectors).
+  /// The test run's data of n samples and the fits' estimates into z (row s
+  /// = sample s), from the block's observations and counter phases
+  /// (draw-major, extended_vectors_by_draw).
   void test_run_estimates(std::uint64_t first, std::size_t n, const std::vector<double>& observed,
                           const std::vector<double>& phases, Eigen::MatrixXd& z) const;
 
