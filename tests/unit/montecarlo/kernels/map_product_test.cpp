@@ -3,6 +3,9 @@
 // Eigen's xᵀ·M, which the engine used before.
 #include "montecarlo/kernels/map_product.h"
 
+#include "lib/compensation/extended_vector.h"
+#include "lib/uncertainty/uncertainty_vector.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -50,7 +53,7 @@ TEST(MapProduct, EveryKernelGivesTheDefinitionsBitsForEveryShape) {
     if (!product_kernel_available(kernel)) continue;
     ++kernels_run;
     for (std::size_t n : {0, 1, 3, 4, 7, 8, 15, 16, 17, 33, 1024})
-      for (int depth : {0, 1, 2, 33, 62})
+      for (int depth : {0, 1, 2, 33, ux::kDim, ez::kDim})
         for (int columns : {1, 2, 3, 4, 5, 6, 7, 11, 13, 15, 30, 105}) {
           const std::size_t ldx = n + 3, ldm = static_cast<std::size_t>(depth) + 1, ldy = n + 5;
           std::vector<double> x(ldx * static_cast<std::size_t>(depth)), m(ldm * static_cast<std::size_t>(columns));
@@ -91,12 +94,13 @@ TEST(MapProduct, InfinitiesAndSignedZerosFollowTheDefinition) {
 }
 
 // The engine's blocks before this kernel: Eigen's y = xᵀ·M on the same
-// shapes (33 uncertainties → 15 rows of a system at three times, 62
-// extended-vector values → 105 rows of seven schemes) gave these bits, so
-// the studies' outputs did not change when the kernel replaced it.
+// shapes (the uncertainties → 15 rows of a system at three times, the
+// extended vector → 105 rows of seven schemes) gave these bits for a whole
+// block, so the studies' outputs did not change when the kernel replaced it.
 TEST(MapProduct, TheEnginesShapesGiveEigensProductBitForBit) {
   std::mt19937_64 g(7);
-  for (const auto& [depth, columns] : {std::pair{33, 15}, std::pair{33, 30}, std::pair{62, 105}, std::pair{62, 210}}) {
+  for (const auto& [depth, columns] : {std::pair{ux::kDim, 15}, std::pair{ux::kDim, 30}, std::pair{ez::kDim, 105},
+                                       std::pair{ez::kDim, 210}}) {
     const Eigen::Index n = 1024;
     Eigen::MatrixXd x(depth, n), m(depth, columns);  // x sample-major, as Eigen's product took it
     for (Eigen::Index i = 0; i < x.size(); ++i) x.data()[i] = spread_value(g);
