@@ -32,7 +32,11 @@ MachineDescription describe_machine() {
       break;
     }
   m.hardware_threads = static_cast<int>(std::thread::hardware_concurrency());
-  m.generator_kernel = detail::best_kernel() == detail::PhiloxKernel::Avx2 ? "AVX2" : "generic";
+  switch (detail::best_kernel()) {
+    case detail::PhiloxKernel::Generic: m.generator_kernel = "generic"; break;
+    case detail::PhiloxKernel::Avx2: m.generator_kernel = "AVX2"; break;
+    case detail::PhiloxKernel::Avx512: m.generator_kernel = "AVX-512 (draw-major), AVX2 (sample-major)"; break;
+  }
   m.product_kernel = std::string(product_kernel_name(best_product_kernel()));
   return m;
 }

@@ -453,6 +453,162 @@ template <bool kFull>
 #undef INSMC_AVX2
 
 }  // namespace avx2
+
+// -------------------------------------------------------------- AVX-512 kernel
+
+// The AVX2 kernel's rounds on 8 samples a lane group (one Philox counter
+// per 64-bit lane of a __m512i), for the draw-major layout only: block b of
+// a group yields draws 2b and 2b+1 of 8 consecutive samples, each one
+// contiguous 64-byte store. The same integer arithmetic and the same exact
+// double formation as the AVX2 kernel (see there), so the same bits. The
+// sample-major layout, which needs a transpose per store, stays on AVX2.
+#define INSMC_PHILOX_HAVE_AVX512_KERNEL 1
+// GCC 12's AVX-512 intrinsics start their masked forms from an undefined
+// vector and then report it as maybe uninitialized (GCC bug 105593).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+namespace avx512 {
+
+constexpr int kGroups = 2;
+constexpr std::size_t kTileSamples = 8 * kGroups;
+
+#define INSMC_AVX512 [[gnu::target("avx512f"), gnu::always_inline]] inline
+
+INSMC_AVX512 __m512i xor_(__m512i a, __m512i b) { return _mm512_xor_si512(a, b); }
+INSMC_AVX512 __m512i high(__m512i p) { return _mm512_shuffle_epi32(p, static_cast<_MM_PERM_ENUM>(0xB1)); }
+
+struct Keys {
+  __m512i m0, m1;
+  __m512i k0[kPhiloxRounds];
+  __m512i k1[kPhiloxRounds];
+};
+
+struct Group {
+  __m512i h0, a2, d2, q1, e2, f2;  // as avx2::Group
+};
+
+// avx2::make_group for samples index .. index + 7.
+INSMC_AVX512 Group make_group(const Keys& k, std::uint64_t index, std::uint32_t purpose) {
+  const __m512i idx = _mm512_add_epi64(_mm512_set1_epi64(static_cast<long long>(index)),
+                                       _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0));
+  const __m512i idx_hi = _mm512_srli_epi64(idx, 32);
+  const std::uint64_t p1 = std::uint64_t{kPhiloxM1} * purpose;
+  const __m512i p1_hi = _mm512_set1_epi32(static_cast<int>(static_cast<std::uint32_t>(p1 >> 32)));
+  Group g;
+  const __m512i p0 = _mm512_mul_epu32(idx, k.m0);
+  const __m512i a1 = xor_(xor_(p1_hi, idx_hi), k.k0[0]);
+  g.h0 = xor_(high(p0), k.k1[0]);
+  const __m512i q0 = _mm512_mul_epu32(a1, k.m0);
+  g.a2 = xor_(xor_(high(q0), p0), k.k1[1]);
+  g.d2 = q0;
+  g.q1 = _mm512_mul_epu32(g.a2, k.m1);
+  g.e2 = xor_(high(g.q1), k.k0[2]);
+  g.f2 = xor_(g.d2, k.k1[2]);
+  return g;
+}
+
+struct Words {
+  __m512i c0, c1, c2, c3;
+};
+
+// avx2::run_block on 8-sample groups.
+INSMC_AVX512 void run_block(const Keys& k, const Group (&g)[kGroups], __m512i c1_key, __m512i bv,
+                            Words (&w)[kGroups]) {
+#pragma GCC unroll 8
+  for (int q = 0; q < kGroups; ++q) {
+    const __m512i p = _mm512_mul_epu32(xor_(g[q].h0, bv), k.m1);
+    w[q].c1 = p;
+    w[q].c0 = xor_(high(p), c1_key);
+  }
+#pragma GCC unroll 8
+  for (int q = 0; q < kGroups; ++q) {
+    const __m512i r = _mm512_mul_epu32(w[q].c0, k.m0);
+    w[q].c0 = xor_(w[q].c1, g[q].e2);
+    w[q].c1 = g[q].q1;
+    w[q].c2 = xor_(high(r), g[q].f2);
+    w[q].c3 = r;
+  }
+#pragma GCC unroll 8
+  for (int round = 3; round < kPhiloxRounds; ++round) {
+#pragma GCC unroll 8
+    for (int q = 0; q < kGroups; ++q) {
+      const __m512i p0 = _mm512_mul_epu32(w[q].c0, k.m0);
+      const __m512i p1 = _mm512_mul_epu32(w[q].c2, k.m1);
+      w[q].c0 = xor_(high(p1), xor_(w[q].c1, k.k0[round]));
+      w[q].c1 = p1;
+      w[q].c2 = xor_(high(p0), xor_(w[q].c3, k.k1[round]));
+      w[q].c3 = p0;
+    }
+  }
+}
+
+// avx2::to_uniform on 8 lanes.
+INSMC_AVX512 __m512d to_uniform(__m512i hi, __m512i lo) {
+  const __m512i two20 = _mm512_set1_epi64(0x4130000000000000);
+  const __m512i half = _mm512_set1_epi64(0x3FE0000000000000);
+  const __m512d t = _mm512_sub_pd(_mm512_castsi512_pd(_mm512_mask_blend_epi32(0xAAAA, hi, two20)),
+                                  _mm512_set1_pd(0x1p20 + 0.5));
+  const __m512d u = _mm512_castsi512_pd(_mm512_mask_blend_epi32(0xAAAA, _mm512_srli_epi32(lo, 11), half));
+  return _mm512_add_pd(t, u);
+}
+
+// The 8 samples' values of one draw at run[0..7], or the first `rows`.
+template <bool kFull>
+INSMC_AVX512 void store_run(double* run, __m512d v, int rows) {
+  if constexpr (kFull) {
+    _mm512_storeu_pd(run, v);
+  } else {
+    _mm512_mask_storeu_pd(run, static_cast<__mmask8>((1u << rows) - 1), v);
+  }
+}
+
+template <bool kFull>
+[[gnu::target("avx512f")]] void fill_tile(const Keys& k, __m512i c1_key, const BulkRequest& r, std::uint64_t first,
+                                          double* dst, int rows) {
+  Group g[kGroups];
+  for (int q = 0; q < kGroups; ++q) g[q] = make_group(k, first + 8 * q, r.purpose);
+  const std::size_t blocks = (r.count + 1) / 2;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const __m512i bv = _mm512_set1_epi32(static_cast<int>(static_cast<std::uint32_t>(b)));
+    Words w[kGroups];
+    run_block(k, g, c1_key, bv, w);
+    const bool second = 2 * b + 1 < r.count;  // an odd count's last block yields one uniform
+    for (int q = 0; q < kGroups; ++q) {
+      if (!kFull && rows <= 8 * q) break;
+      const int group_rows = std::min(8, rows - 8 * q);
+      store_run<kFull>(dst + 2 * b * r.samples + 8 * q, to_uniform(w[q].c0, w[q].c1), group_rows);
+      if (second) store_run<kFull>(dst + (2 * b + 1) * r.samples + 8 * q, to_uniform(w[q].c2, w[q].c3), group_rows);
+    }
+  }
+}
+
+[[gnu::target("avx512f")]] void fill(const BulkRequest& r) {
+  Keys k;
+  k.m0 = _mm512_set1_epi64(kPhiloxM0);
+  k.m1 = _mm512_set1_epi64(kPhiloxM1);
+  PhiloxKey key = r.key;
+  for (int round = 0; round < kPhiloxRounds; ++round) {
+    if (round > 0) {
+      key.k0 += kPhiloxW0;
+      key.k1 += kPhiloxW1;
+    }
+    k.k0[round] = _mm512_set1_epi32(static_cast<int>(key.k0));
+    k.k1[round] = _mm512_set1_epi32(static_cast<int>(key.k1));
+  }
+  const std::uint64_t p1 = std::uint64_t{kPhiloxM1} * r.purpose;
+  const __m512i c1_key = _mm512_set1_epi32(
+      static_cast<int>(static_cast<std::uint32_t>(p1) ^ (r.key.k0 + kPhiloxW0)));
+  std::size_t i = 0;
+  for (; i + kTileSamples <= r.samples; i += kTileSamples)
+    fill_tile<true>(k, c1_key, r, r.first_index + i, r.out + r.at(i, 0), 8 * kGroups);
+  if (i < r.samples)
+    fill_tile<false>(k, c1_key, r, r.first_index + i, r.out + r.at(i, 0), static_cast<int>(r.samples - i));
+}
+
+#undef INSMC_AVX512
+
+}  // namespace avx512
+#pragma GCC diagnostic pop
 #endif
 
 }  // namespace
@@ -469,13 +625,21 @@ bool kernel_available(PhiloxKernel kernel) {
 #else
       return false;
 #endif
+    case PhiloxKernel::Avx512:
+#ifdef INSMC_PHILOX_HAVE_AVX512_KERNEL
+      // Its sample-major layout is the AVX2 kernel's.
+      return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx2");
+#else
+      return false;
+#endif
   }
   return false;
 }
 
 PhiloxKernel best_kernel() {
-  static const PhiloxKernel best =
-      kernel_available(PhiloxKernel::Avx2) ? PhiloxKernel::Avx2 : PhiloxKernel::Generic;
+  static const PhiloxKernel best = kernel_available(PhiloxKernel::Avx512) ? PhiloxKernel::Avx512
+                                   : kernel_available(PhiloxKernel::Avx2)   ? PhiloxKernel::Avx2
+                                                                            : PhiloxKernel::Generic;
   return best;
 }
 
@@ -499,6 +663,14 @@ void fill_uniform01_with(PhiloxKernel kernel, std::uint64_t seed, Stream purpose
     case PhiloxKernel::Avx2:
 #ifdef INSMC_PHILOX_HAVE_AVX2_KERNEL
       avx2::fill(request);
+#endif
+      return;
+    case PhiloxKernel::Avx512:
+#ifdef INSMC_PHILOX_HAVE_AVX512_KERNEL
+      if (request.draw_major)
+        avx512::fill(request);
+      else
+        avx2::fill(request);
 #endif
       return;
   }

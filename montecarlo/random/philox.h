@@ -217,9 +217,11 @@ enum class UniformLayout { SampleMajor, DrawMajor };
 
 namespace detail {
 /// Bulk kernels, exposed so tests can check every available one.
-enum class PhiloxKernel { Generic, Avx2 };
+enum class PhiloxKernel { Generic, Avx2, Avx512 };
 bool kernel_available(PhiloxKernel kernel);
-/// The kernel fill_uniform01 uses (AVX2 if available, else Generic).
+/// The kernel fill_uniform01 uses (AVX-512 if available, else AVX2, else
+/// Generic). The AVX-512 kernel writes the draw-major layout itself and
+/// hands the sample-major one to the AVX2 kernel.
 PhiloxKernel best_kernel();
 void fill_uniform01_with(PhiloxKernel kernel, std::uint64_t seed, Stream purpose,
                          std::uint64_t first_index, std::size_t count_per_sample,

@@ -185,7 +185,7 @@ TEST(FillUniform01, EqualsScalarStreamBitForBit) {
   }};
   using detail::PhiloxKernel;
   int kernels_tested = 0;
-  for (const PhiloxKernel kernel : {PhiloxKernel::Generic, PhiloxKernel::Avx2}) {
+  for (const PhiloxKernel kernel : {PhiloxKernel::Generic, PhiloxKernel::Avx2, PhiloxKernel::Avx512}) {
     if (!detail::kernel_available(kernel)) continue;
     ++kernels_tested;
     for (const UniformLayout layout : {UniformLayout::SampleMajor, UniformLayout::DrawMajor})
@@ -213,10 +213,36 @@ TEST(FillUniform01, EqualsScalarStreamBitForBit) {
   }
 }
 
+TEST(FillUniform01, EveryBulkKernelAndLayoutMatchesRandom123) {
+  // Uniform j of sample i is uniform01_from_words of words 2(j mod 2)..+1 of
+  // Random123's Philox4x32-10 at counter {i lo, i hi, purpose, j / 2}.
+  using detail::PhiloxKernel;
+  const std::uint64_t seed = 0x9e3779b97f4a7c15ull, first = (1ull << 32) - 9;
+  const std::size_t count = 43, n = 37;
+  for (const PhiloxKernel kernel : {PhiloxKernel::Generic, PhiloxKernel::Avx2, PhiloxKernel::Avx512}) {
+    if (!detail::kernel_available(kernel)) continue;
+    for (const UniformLayout layout : {UniformLayout::SampleMajor, UniformLayout::DrawMajor}) {
+      std::vector<double> bulk(count * n);
+      detail::fill_uniform01_with(kernel, seed, Stream::Uncertainties, first, count, n, bulk, layout);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < count; ++j) {
+          const std::uint64_t index = first + i;
+          const PhiloxBlock w = random123_philox(
+              {static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(index >> 32), 0u,
+               static_cast<std::uint32_t>(j / 2)},
+              philox_key(seed));
+          const double want = j % 2 == 0 ? uniform01_from_words(w[0], w[1]) : uniform01_from_words(w[2], w[3]);
+          const std::size_t at = layout == UniformLayout::DrawMajor ? j * n + i : i * count + j;
+          ASSERT_EQ(bulk[at], want) << "kernel " << static_cast<int>(kernel) << " sample " << i << " draw " << j;
+        }
+    }
+  }
+}
+
 TEST(FillUniform01, WritesExactlyItsSpan) {
   // Partial tiles must not write outside out: guard values on both sides.
   using detail::PhiloxKernel;
-  for (const PhiloxKernel kernel : {PhiloxKernel::Generic, PhiloxKernel::Avx2}) {
+  for (const PhiloxKernel kernel : {PhiloxKernel::Generic, PhiloxKernel::Avx2, PhiloxKernel::Avx512}) {
     if (!detail::kernel_available(kernel)) continue;
     for (const std::size_t count : {std::size_t{1}, std::size_t{2}, std::size_t{33}}) {
       for (std::size_t n = 1; n <= 17; ++n)
