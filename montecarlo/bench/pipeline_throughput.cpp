@@ -74,14 +74,7 @@ double time_floor(const StudyConfig& c, const StudyMap& map, std::uint64_t first
       z.middleCols<6>(ez::kTorquerCommands) = observed.rightCols<6>();
       map_product({n, ez::kDim, static_cast<int>(y.cols())}, z.data(), n, sp.map_t->data(),
                   static_cast<std::size_t>(sp.map_t->rows()), y.data(), n);
-      constexpr std::size_t kLanes = 8;
-      double s1[kLanes] = {}, s2[kLanes] = {};
-      for (Eigen::Index col = 0; col < y.cols(); ++col) {
-        const double* v = y.col(col).data();
-        for (std::size_t s = 0; s < n; s += kLanes)
-          for (std::size_t l = 0; l < kLanes; ++l) s1[l] += v[s + l], s2[l] += v[s + l] * v[s + l];
-      }
-      for (std::size_t l = 0; l < kLanes; ++l) sums += s1[l] + s2[l];
+      sums += bench::lane_sums(y.data(), n, static_cast<std::size_t>(y.cols()), n);
     }
     bench::keep(sums);
   };

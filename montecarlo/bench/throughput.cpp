@@ -99,16 +99,7 @@ ThroughputResult measure_throughput(const StudyConfig& c) {
           x[j * kBlockSize + s] = (2 * u[j * kBlockSize + s] - 1) * bounds[j];
       map_product({kBlockSize, ux::kDim, static_cast<int>(mt.cols())}, x.data(), kBlockSize, mt.data(), ux::kDim,
                   y.data(), kBlockSize);
-      constexpr std::size_t kLanes = 8;
-      double s1[kLanes] = {}, s2[kLanes] = {};
-      for (Eigen::Index col = 0; col < y.cols(); ++col) {
-        const double* v = y.col(col).data();
-        for (std::size_t s = 0; s < kBlockSize; s += kLanes)
-          for (std::size_t l = 0; l < kLanes; ++l) s1[l] += v[s + l], s2[l] += v[s + l] * v[s + l];
-      }
-      double total = 0;
-      for (std::size_t l = 0; l < kLanes; ++l) total += s1[l] + s2[l];
-      keep(total);
+      keep(bench::lane_sums(y.data(), kBlockSize, static_cast<std::size_t>(y.cols()), kBlockSize));
     };
     // Untimed first, so that no worker's first touch of its buffers is timed.
     tbb::parallel_for(std::uint64_t{0}, std::uint64_t{4} * tbb::this_task_arena::max_concurrency(), one_block);
