@@ -1,5 +1,7 @@
 #include "montecarlo/kernels/map_product.h"
 
+#include <algorithm>
+
 #include "lib/common/assert.h"
 #include "montecarlo/kernels/map_product_kernels.h"
 #include "montecarlo/kernels/map_product_tiles.h"
@@ -58,6 +60,12 @@ void map_product_with(ProductKernel kernel, ProductShape shape, const double* x,
                    ldm >= static_cast<std::size_t>(shape.depth),
                "map_product: leading dimensions {}, {}, {} too small for {} samples of depth {}", ldx, ldm, ldy,
                shape.samples, shape.depth);
+  if (shape.samples == 0 || shape.columns == 0) return;
+  if (shape.depth == 0) {  // an empty sum: +0 (x and m may then be empty, even null)
+    for (int c = 0; c < shape.columns; ++c)
+      std::fill_n(y + static_cast<std::size_t>(c) * ldy, shape.samples, 0.0);
+    return;
+  }
   switch (kernel) {
     case ProductKernel::Generic: return map_product_generic(shape, x, ldx, m, ldm, y, ldy);
     case ProductKernel::Avx2:
