@@ -43,7 +43,7 @@ struct Workspace {
 
 /// y = vᵀ · (the first `depth` rows of system j's map) for n samples of v
 /// held draw-major with stride ldv: the vectorised kernel (map_product.h),
-/// the same bits as Eigen's product of the same operands.
+/// each sample's values a function of that sample alone.
 void map_rows(const StudyMap& map, int j, int depth, const double* v, std::size_t ldv, std::size_t n,
               Eigen::MatrixXd& y) {
   const Eigen::MatrixXd& m = map.transposed(j);

@@ -115,7 +115,7 @@ UncertaintyVector Sampler::draw(std::uint64_t seed, std::uint64_t index) const {
   std::vector<double> u(ux::kDim);
   fill_uniform01(seed, Stream::Uncertainties, index, ux::kDim, 1, u);
   UncertaintyVector x;
-  transform(u.data(), 1, x.data());
+  transform_draw_major(u.data(), 1, x.data());  // one sample: both layouts are the same memory
   return x;
 }
 

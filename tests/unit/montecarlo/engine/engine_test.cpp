@@ -163,12 +163,14 @@ TEST(Engine, SerializeRoundTrip) {
 
 // ---------------------------------------------------------------- replay
 
-// How far evaluate_sample may differ from the engine's value for the same
-// extended vector z: each output row r = s·z is a sum of ez::kDim products,
-// computed as one matrix-vector product here and as part of a block matrix
-// product in the engine (summed in another order), so both are within
-// gamma_kDim sum_i |s_i z_i| of the exact value (Higham 3.1); the horizontal
-// output adds the two rows' bounds and a rounding of the sqrt.
+// A bound on how far evaluate_sample could differ from the engine's value
+// for the same extended vector z if the two summed in different orders: each
+// output row r = s·z is a sum of ez::kDim products, within gamma_kDim
+// sum_i |s_i z_i| of the exact value (Higham 3.1); the horizontal output
+// adds the two rows' bounds and a rounding of the sqrt. Since the block
+// kernel (map_product.h) sums every sample alike the values are in fact the
+// same bits (EverySampleOfABlockHasTheReplayedBitsInEveryScheme); these
+// tests keep the bound, which would hold for any summation order.
 std::vector<double> replay_tolerances(const Study& study, std::uint64_t index, const UncertaintyVector& x) {
   constexpr double kGamma = ez::kDim * kEps / (1 - ez::kDim * kEps);
   const Eigen::MatrixXd xm = x;
@@ -245,11 +247,10 @@ TEST(EngineReplay, EverySampleOfABlockHasTheReplayedBitsInEveryScheme) {
 }
 
 TEST(EngineReplay, FullBlockMinMaxAndSumOfSquaresMatchEvaluateSample) {
-  // Schemes none and 5.4 only: their z is built sample by sample, so it is
-  // the same bits in a block as alone. The test-run schemes compute the
-  // pulse counters' input for the whole block as one matrix product; a
-  // rounding difference there can (rarely) move a floor() by a whole pulse,
-  // which no rounding tolerance covers.
+  // Schemes none and 5.4 only, within the rounding bound above. (The
+  // test-run schemes' pulse counters could move by a whole pulse under a
+  // different summation order, which no rounding bound covers; with the
+  // block kernel they are the same bits: EverySampleOfABlock... above.)
   StudyConfig c = full_path_study();
   c.schemes = {Scheme::kNone, Scheme::k5_4};
   Study study(c);
