@@ -12,6 +12,7 @@
 #include "lib/records/record_io.h"
 #include "montecarlo/gap/diagnosis.h"
 #include "montecarlo/gap/report/report.h"
+#include "montecarlo/runs/records/merge_records.h"
 
 namespace insmc::app {
 
@@ -39,7 +40,7 @@ int run_gap(const Args& args) {
   if (!vm->count("records")) throw InputError("--records", "(missing)", "give at least one record file");
   const OutputFormat format = parse_output_format((*vm)["format"].as<std::string>());
   if (format == OutputFormat::kCsv) throw InputError("--format", "csv", "gap prints markdown or json");
-  mc::DiagnosisOptions options;
+  gap::DiagnosisOptions options;
   options.alpha = (*vm)["alpha"].as<double>();
   if (!(options.alpha > 0 && options.alpha < 0.5))
     throw InputError("--alpha", fmt::format("{}", options.alpha), "must lie in (0, 0.5)");
@@ -61,12 +62,12 @@ int run_gap(const Args& args) {
     throw InputError("--likelihood-pairs", std::to_string(options.likelihood_pair_candidates),
                      "must lie in [0, 5] and not exceed --likelihood");
   const std::string rank = (*vm)["rank"].as<std::string>();
-  if (rank == "always") options.rank = mc::RankWhen::kAlways;
-  else if (rank == "significant") options.rank = mc::RankWhen::kIfSignificant;
-  else if (rank == "never") options.rank = mc::RankWhen::kNever;
+  if (rank == "always") options.rank = gap::RankWhen::kAlways;
+  else if (rank == "significant") options.rank = gap::RankWhen::kIfSignificant;
+  else if (rank == "never") options.rank = gap::RankWhen::kNever;
   else throw InputError("--rank", echo_input(rank), "always, significant or never");
   options.prior = read_uncertainty_model(*vm);
-  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "gap", mc::diagnosis_file_names(), mc::diagnosis_figure_stems());
+  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "gap", gap::diagnosis_file_names(), gap::diagnosis_figure_stems());
 
   const std::vector<std::string> names = (*vm)["records"].as<std::vector<std::string>>();
   std::vector<RecordFile> files;
@@ -75,26 +76,26 @@ int run_gap(const Args& args) {
     files.push_back(without_truth(read_input("--records", name, [&] { return read_record_file(name); })));
     runs += files.back().runs.size();
     for (const RecordRun& run : files.back().runs) rows += run.rows.size();
-    if (runs > mc::kMaxDiagnosedRuns || rows > kMaxRecordRows)
+    if (runs > gap::kMaxDiagnosedRuns || rows > kMaxRecordRows)
       throw InputError("--records", echo_input(name, 256),
                        fmt::format("{} runs and {} rows up to this file: the files of one diagnosis may hold at most "
                                    "{} runs and {} rows in all",
-                                   runs, rows, mc::kMaxDiagnosedRuns, kMaxRecordRows));
+                                   runs, rows, gap::kMaxDiagnosedRuns, kMaxRecordRows));
   }
-  const RecordFile merged = mc::merge_record_files(files, names);
-  mc::Diagnosis d;
+  const RecordFile merged = runs::merge_record_files(files, names);
+  gap::Diagnosis d;
   {
     Progress progress(0, "");
     options.progress = [&progress](std::string_view stage, std::uint64_t done, std::uint64_t total,
                                    std::string_view unit) { progress.update(stage, done, total, unit); };
-    d = mc::diagnose(merged, options);
+    d = gap::diagnose(merged, options);
   }
 
-  const std::string json = mc::diagnosis_json(d, names).dump(2) + "\n";
-  std::vector<std::pair<std::string, std::string>> report = mc::diagnosis_report(d, names);
+  const std::string json = gap::diagnosis_json(d, names).dump(2) + "\n";
+  std::vector<std::pair<std::string, std::string>> report = gap::diagnosis_report(d, names);
   if (out) {
     OutputFiles files_out(report.begin(), report.end());
-    for (auto& f : mc::diagnosis_figures(d)) files_out.push_back(std::move(f));
+    for (auto& f : gap::diagnosis_figures(d)) files_out.push_back(std::move(f));
     files_out.emplace_back("gap.json", json);
     out->write(files_out);
   }

@@ -29,7 +29,7 @@ int run_gap_validate(const Args& args) {
       "f and r on grids of their own, runs of unequal length, no pulse-weight key; docs/gap.md section 5)");
   const auto vm = parse_args(args, "gap-validate", "[--quick] [--out DIR]", opts);
   if (!vm) return 0;
-  mc::ValidationOptions options = vm->count("quick") ? mc::ValidationOptions::quick_subset() : mc::ValidationOptions{};
+  gap::ValidationOptions options = vm->count("quick") ? gap::ValidationOptions::quick_subset() : gap::ValidationOptions{};
   options.seed = read_count(*vm, "seed");
   if (vm->count("null-files")) {
     options.null_files = (*vm)["null-files"].as<int>();
@@ -58,18 +58,18 @@ int run_gap_validate(const Args& args) {
       options.magnitudes.push_back(m);
     }
   }
-  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "gap-validate", mc::validation_file_names(), {"confusion"});
-  mc::ValidationResult r;
+  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "gap-validate", gap::validation_file_names(), {"confusion"});
+  gap::ValidationResult r;
   {
     Progress progress(0, "files");
     options.progress = [&progress](std::string_view stage, std::uint64_t done, std::uint64_t total,
                                    std::string_view unit) { progress.update(stage, done, total, unit); };
-    r = mc::validate_diagnosis(options);
+    r = gap::validate_diagnosis(options);
   }
-  const auto files = mc::validation_report(r, options);
+  const auto files = gap::validation_report(r, options);
   if (out) {
     OutputFiles written(files.begin(), files.end());
-    const mc::Confusion m = mc::confusion_of(r);
+    const gap::Confusion m = gap::confusion_of(r);
     const mc::RenderedFigure figure = mc::render_matrix_figure(
         {"confusion", fmt::format("gap-validate: the top candidate of each file against the effect it holds ({} files)",
                                   r.cases.size()),

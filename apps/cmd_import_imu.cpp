@@ -195,11 +195,11 @@ int run_import_imu(const Args& args) {
   std::size_t total_runs = 0;
   for (const ImuSamples& samples : all_samples)
     total_runs += runs_from == RunsFrom::kFile ? 1 : static_cast<std::size_t>(std::max(1, runs_available(samples, nav)));
-  if (total_runs > mc::kMaxDiagnosedRuns)
+  if (total_runs > gap::kMaxDiagnosedRuns)
     throw InputError("--runs-from", runs_from == RunsFrom::kFile ? "file" : "split",
                      fmt::format("the inputs make {} runs: a record file for insmc gap holds at most {} (lengthen "
                                  "--nav-duration or --test-duration, or import fewer inputs)",
-                                 total_runs, mc::kMaxDiagnosedRuns));
+                                 total_runs, gap::kMaxDiagnosedRuns));
   if (noise_mode == "on") write_noise_header(all_samples, file.header);
 
   const double T = nav.test_duration_s;

@@ -15,7 +15,7 @@
 #include "lib/truth/simulator.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
-#include "montecarlo/gap/null/record_simulation.h"
+#include "montecarlo/runs/simulation/record_simulation.h"
 #include "montecarlo/gap/validation/foreign_layout.h"
 #include "montecarlo/sampler/sampler.h"
 
@@ -73,13 +73,13 @@ int run_simulate(const Args& args) {
   if (foreign) {
     const bool quantization = std::any_of(truth.effects.begin(), truth.effects.end(),
                                           [](const EffectSpec& e) { return e.kind == EffectKind::kQuantization; });
-    mc::ForeignRuns spec;
+    gap::ForeignRuns spec;
     spec.test_duration_s = test.duration_s;
     spec.nav_duration_s = nav_s;
     spec.position_resolution_m = test.position_resolution_m;
     spec.runs = runs;
     out.write(write_record_file(
-        mc::simulate_foreign_file(truth, mc::Sampler(uncertainties), seed, spec, mc::foreign_layout_of(seed, quantization))));
+        gap::simulate_foreign_file(truth, mc::Sampler(uncertainties), seed, spec, gap::foreign_layout_of(seed, quantization))));
     return 0;
   }
   // The scheme's estimators: the same resolvable terms as `insmc run` fits.
@@ -102,9 +102,9 @@ int run_simulate(const Args& args) {
   for (std::size_t i = 0; i < truth.effects.size(); ++i)
     file.header.set(fmt::format("truth.effect.{}", i), format_effect(truth.effects[i]));
   const mc::Sampler sampler(uncertainties);
-  const mc::RecordRunSpec spec{T, test.position_resolution_m, scheme, &setup, nav_start_s};
+  const runs::RecordRunSpec spec{T, test.position_resolution_m, scheme, &setup, nav_start_s};
   for (int run = 0; run < runs; ++run)
-    file.runs.push_back(mc::simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(run), times, spec));
+    file.runs.push_back(runs::simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(run), times, spec));
   out.write(write_record_file(file));
   return 0;
 }

@@ -4,7 +4,7 @@
 #include <fmt/format.h>
 
 #include "lib/units/units.h"
-#include "montecarlo/gap/report/report.h"
+#include "montecarlo/runs/records/site_values.h"
 #include "montecarlo/write/csv.h"
 #include "montecarlo/write/markdown.h"
 
@@ -27,7 +27,7 @@ Json vec_json(const Vec3& v) {
 Json site_json(const UnitRecords& r) {
   Json j = Json::object();
   j["system"] = system_number(r.site.system);
-  j["values"] = site_values_json(r.site_values);
+  j["values"] = runs::site_values_json(r.site_values);
   j["filter_interval_used_s"] = r.site.filter_interval_s;
   j["fitted_terms"] = r.site.estimators->fitted_terms;
   return j;
@@ -90,7 +90,7 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
   md += rollup_markdown(result, options);
   {
     Table site({"key", "value", "source", "reason"});
-    for (const SiteValue& v : rec.site_values) site.add_row({v.key, format_number(v.value), v.source, v.reason});
+    for (const runs::SiteValue& v : rec.site_values) site.add_row({v.key, format_number(v.value), v.source, v.reason});
     md += "## The site and its test run\n\n" + render_markdown(site) + "\n";
     for (const std::string& s : rec.statements) md += "- " + s + "\n";
     if (!rec.statements.empty()) md += "\n";

@@ -12,15 +12,15 @@
 #include "lib/propagation/paper_model.h"
 #include "lib/propagation/position_maps.h"
 #include "lib/uncertainty/catalogue.h"
-#include "montecarlo/gap/model/gaussian_model.h"
-#include "montecarlo/gap/model/scheme_rows.h"
+#include "montecarlo/runs/model/gaussian_model.h"
+#include "montecarlo/runs/model/scheme_rows.h"
 
 namespace insmc::mc {
 namespace {
 
 /// The causes' prior mean: x's from the uncertainty model, a realignment's
 /// fresh draw that of its x slot, everything else 0.
-Eigen::VectorXd cause_prior_mean(const gap::BaseModel& base, const gap::GaussianModel& model,
+Eigen::VectorXd cause_prior_mean(const runs::BaseModel& base, const runs::GaussianModel& model,
                                  const UncertaintyVector& x_mean) {
   Eigen::VectorXd mu = Eigen::VectorXd::Zero(model.H.cols());
   mu.head(ux::kDim) = x_mean;
@@ -37,14 +37,14 @@ Eigen::VectorXd cause_prior_mean(const gap::BaseModel& base, const gap::Gaussian
 /// for k ≥ 1 has the same differences), so neighbouring windows are
 /// anti-correlated and a sum over windows telescopes, which the fits of
 /// (4.4), (5.10) rely on. The gap's model
-/// takes the windows independent (w²/(6τ²) each; gap/model/pulse_counting.h),
+/// takes the windows independent (w²/(6τ²) each; runs/model/pulse_counting.h),
 /// which would overstate the spread of Δf̂(T) (5.3 at 84 min: 5,632 m for
 /// the population instead of 5,136 m, `insmc run` 5,111 m). Appends the
 /// remainders as causes and takes their share off the rows' noise.
-void count_f_remainders(gap::GaussianModel& model, const gap::Layout& layout, double pulse_mps, double tau_s) {
+void count_f_remainders(runs::GaussianModel& model, const runs::Layout& layout, double pulse_mps, double tau_s) {
   if (!(pulse_mps > 0)) return;
   int K = 0;
-  for (const gap::ObservationRow& row : layout.rows) K = std::max(K, static_cast<int>(std::lround(row.t_s / tau_s)));
+  for (const runs::ObservationRow& row : layout.rows) K = std::max(K, static_cast<int>(std::lround(row.t_s / tau_s)));
   const Eigen::Index first = model.H.cols(), added = 3 * (K + 1);  // e_0..e_K
   model.H.conservativeResize(Eigen::NoChange, first + added);
   model.H.rightCols(added).setZero();
@@ -52,8 +52,8 @@ void count_f_remainders(gap::GaussianModel& model, const gap::Layout& layout, do
   model.prior_var.tail(added).setConstant(pulse_mps * pulse_mps / 12.0);
   const double window_var = pulse_mps * pulse_mps / (6.0 * tau_s * tau_s);
   for (std::size_t i = 0; i < layout.rows.size(); ++i) {
-    const gap::ObservationRow& row = layout.rows[i];
-    if (row.quantity != gap::Quantity::kF) continue;
+    const runs::ObservationRow& row = layout.rows[i];
+    if (row.quantity != runs::Quantity::kF) continue;
     const auto r = static_cast<Eigen::Index>(i);
     const Eigen::Index k = std::lround(row.t_s / tau_s);
     model.H(r, first + 3 * k + row.axis) = 1.0 / tau_s;
@@ -70,7 +70,7 @@ struct LinearGain {
   Eigen::MatrixXd G, error_covariance;
   Eigen::LLT<Eigen::MatrixXd> S;  ///< of the rows' covariance H P Hᵀ + W
 };
-LinearGain linear_gain(const gap::GaussianModel& model) {
+LinearGain linear_gain(const runs::GaussianModel& model) {
   const Eigen::MatrixXd& H = model.H;
   const Eigen::VectorXd& p = model.prior_var;
   const Eigen::MatrixXd PHt = p.asDiagonal() * H.transpose();
@@ -86,8 +86,8 @@ LinearGain linear_gain(const gap::GaussianModel& model) {
   return g;
 }
 
-gap::RecordSite site_for(const UnitRecords& records, Scheme scheme, double realignment_duration_s) {
-  gap::RecordSite site = records.site;
+runs::RecordSite site_for(const UnitRecords& records, Scheme scheme, double realignment_duration_s) {
+  runs::RecordSite site = records.site;
   site.scheme = scheme;
   const double T = site.test_duration_s;
   site.nav_start_s = realigns(scheme) ? T + realignment_duration_s : resets_at_test_end(scheme) ? T : 0.0;
@@ -95,8 +95,8 @@ gap::RecordSite site_for(const UnitRecords& records, Scheme scheme, double reali
 }
 
 /// SchemeEstimates order (scheme_rows.h).
-gap::SchemeEstimates estimate_vector(const TestRunEstimates& e) {
-  gap::SchemeEstimates u;
+runs::SchemeEstimates estimate_vector(const TestRunEstimates& e) {
+  runs::SchemeEstimates u;
   u << e.u2, e.u3, e.u3_accel, e.df_at_test_end_mps2;
   return u;
 }
@@ -129,20 +129,20 @@ double UnitPositionError::population_horizontal_rms_m() const {
   return std::sqrt((horizontal * population_m2 * horizontal.transpose()).trace());
 }
 
-Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const gap::Layout& layout) {
-  const gap::RecordSite& site = records.site;
+Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const runs::Layout& layout) {
+  const runs::RecordSite& site = records.site;
   const double tau = site.filter_interval_s, T = site.test_duration_s;
   const auto K = static_cast<Eigen::Index>(std::lround(T / tau));
   const auto n = static_cast<Eigen::Index>(layout.rows.size());
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(gap::kEstimateCount, n);
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(runs::kEstimateCount, n);
   for (int a = 0; a < 3; ++a) {
     Eigen::MatrixXd position = Eigen::MatrixXd::Zero(K, n), accel = Eigen::MatrixXd::Zero(K, n);
     for (Eigen::Index i = 0; i < n; ++i) {
-      const gap::ObservationRow& row = layout.rows[static_cast<std::size_t>(i)];
+      const runs::ObservationRow& row = layout.rows[static_cast<std::size_t>(i)];
       if (row.axis != a) continue;
       const Eigen::Index k = std::lround(row.t_s / tau);
       INSMC_ASSERT(k >= 1 && k <= K, "test row at {} s off the filter grid", row.t_s);
-      (row.quantity == gap::Quantity::kF ? accel : position)(k - 1, i) = 1.0;
+      (row.quantity == runs::Quantity::kF ? accel : position)(k - 1, i) = 1.0;
     }
     const Eigen::MatrixXd e = apply_estimators(*site.estimators, site.model, T, position, accel);
     B.row(a) = e.row(kU2Row);
@@ -178,13 +178,13 @@ std::vector<Identifiability> identifiability(const UnitRecords& records, const U
   // windows each (τ scaled: the fits hardly depend on it, the model's size
   // stays that of the records').
   for (const double factor : {1.0, 2.0, 4.0}) {
-    gap::RecordSite site = site_for(records, Scheme::kNone, 0.0);
+    runs::RecordSite site = site_for(records, Scheme::kNone, 0.0);
     site.test_duration_s *= factor;
     site.filter_interval_s *= factor;
     const int K = static_cast<int>(std::lround(site.test_duration_s / site.filter_interval_s));
-    const gap::Layout layout = test_run_layout(K, site.filter_interval_s);
-    const gap::BaseModel base = gap::make_base_model(layout, site, x_var);
-    gap::GaussianModel model = gap::combine(base, {});
+    const runs::Layout layout = test_run_layout(K, site.filter_interval_s);
+    const runs::BaseModel base = runs::make_base_model(layout, site, x_var);
+    runs::GaussianModel model = runs::combine(base, {});
     count_f_remainders(model, layout, site.dv_pulse_mps, site.filter_interval_s);
     const Eigen::MatrixXd error = linear_gain(model).error_covariance.topLeftCorner(ux::kDim, ux::kDim);
     for (std::size_t i = 0; i < out.size(); ++i) {
@@ -196,12 +196,12 @@ std::vector<Identifiability> identifiability(const UnitRecords& records, const U
   return out;
 }
 
-UnitConditioning unit_conditioning(const UnitRecords& records, const gap::Layout& layout, const UncertaintyModel& prior) {
-  const gap::RecordSite site = site_for(records, Scheme::kNone, 0.0);
-  const gap::BaseModel base = gap::make_base_model(layout, site, prior.variance());
+UnitConditioning unit_conditioning(const UnitRecords& records, const runs::Layout& layout, const UncertaintyModel& prior) {
+  const runs::RecordSite site = site_for(records, Scheme::kNone, 0.0);
+  const runs::BaseModel base = runs::make_base_model(layout, site, prior.variance());
   UnitConditioning u;
   u.layout = layout;
-  u.model = gap::combine(base, {});
+  u.model = runs::combine(base, {});
   count_f_remainders(u.model, layout, site.dv_pulse_mps, site.filter_interval_s);
   LinearGain gain = linear_gain(u.model);
   u.gain = std::move(gain.G);
@@ -218,7 +218,7 @@ UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run,
 
 UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run, const UnitConditioning& shared) {
   INSMC_ASSERT(run.layout == shared.layout, "run {} conditioned on another layout", run.id);
-  const gap::RecordSite site = site_for(records, Scheme::kNone, 0.0);
+  const runs::RecordSite site = site_for(records, Scheme::kNone, 0.0);
   UnitPosterior c;
   c.model = shared.model;
   c.cause_mean = shared.cause_mean;
@@ -241,7 +241,7 @@ UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run,
 
 std::vector<UnitEstimate> estimate_unit(const UnitRecords& records, const UnitPosterior& c,
                                         const UncertaintyModel& prior) {
-  const gap::RecordSite& site = records.site;
+  const runs::RecordSite& site = records.site;
   // What each estimate is of, per unit of x: the report's U2..U4 (3.29b–d)
   // and the accelerometer output error at T (4.2), the forcing of (3.24).
   const ShortRunMatrices paper = paper_short_run_matrices(site.system, site.model);
@@ -286,22 +286,22 @@ SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& r
 SchemeModel scheme_model(const UnitRecords& records, const UnitPosterior& posterior, Scheme scheme,
                          const UncertaintyModel& prior, const std::vector<double>& clock_s,
                          double realignment_duration_s) {
-  const gap::RecordSite site = site_for(records, scheme, realignment_duration_s);
+  const runs::RecordSite site = site_for(records, scheme, realignment_duration_s);
   const double T = site.test_duration_s;
   // The navigation after the scheme alone, on the record's clock.
-  gap::Layout layout;
-  layout.nav = gap::nav_segment_of(scheme);
+  runs::Layout layout;
+  layout.nav = runs::nav_segment_of(scheme);
   layout.nav_start_s = site.nav_start_s;
   const double zero = clock_start_s(scheme, T, site.nav_start_s);
   for (double t : clock_s) {
     INSMC_ASSERT(t > 0, "clock time {} s", t);
     // The report window of the time since T (the gap's groups; not used here).
-    const int window = gap::nav_window(layout.nav == gap::NavSegment::kRestart ? t + T : std::max(t + zero, T), T);
+    const int window = runs::nav_window(layout.nav == runs::NavSegment::kRestart ? t + T : std::max(t + zero, T), T);
     for (int a = 0; a < 3; ++a)
-      layout.rows.push_back({t + zero, gap::Quantity::kR, a, gap::group_of(gap::Stage::kNav, gap::Quantity::kR, a, window)});
+      layout.rows.push_back({t + zero, runs::Quantity::kR, a, runs::group_of(runs::Stage::kNav, runs::Quantity::kR, a, window)});
   }
-  const gap::BaseModel base = gap::make_base_model(layout, site, prior.variance());
-  const gap::GaussianModel model = gap::combine(base, {});
+  const runs::BaseModel base = runs::make_base_model(layout, site, prior.variance());
+  const runs::GaussianModel model = runs::combine(base, {});
   const Eigen::VectorXd mu = cause_prior_mean(base, model, prior.mean());
   const Eigen::Index others = model.H.cols() - ux::kDim;
   const Eigen::MatrixXd A_x = model.H.leftCols(ux::kDim), A_o = model.H.rightCols(others);
@@ -323,7 +323,7 @@ SchemeModel scheme_model(const UnitRecords& records, const UnitPosterior& poster
   unit_cov.diagonal() += nav_noise;
   // The population: the estimates are the estimators applied to random
   // test rows y = H_t c_t + e.
-  const gap::GaussianModel& test = posterior.model;
+  const runs::GaussianModel& test = posterior.model;
   const Eigen::MatrixXd EB = E * posterior.estimates_map;
   Eigen::MatrixXd via_test = EB * test.H;  // per unit of the test model's causes
   via_test.leftCols(ux::kDim) += A_x;

@@ -5,7 +5,7 @@
 /// estimates, and the position error after each scheme, this unit's and the
 /// population's.
 ///
-/// The run model is the gap diagnosis' (gap/model/gaussian_model.h: linear
+/// The run model is the gap diagnosis' (runs/model/gaussian_model.h: linear
 /// level, pulse counting, position resolution, the schemes' maps of
 /// scheme_rows.h): test rows y = H_t c + e and the position error after a
 /// scheme p = A c + E û, c the causes (x of Table 3.1, counting, a
@@ -27,7 +27,7 @@
 #include "lib/compensation/scheme.h"
 #include "lib/frames/frames.h"
 #include "montecarlo/compensate/unit_records.h"
-#include "montecarlo/gap/model/gaussian_model.h"
+#include "montecarlo/runs/model/gaussian_model.h"
 
 namespace insmc::mc {
 
@@ -86,7 +86,7 @@ struct SchemePrediction {
 /// recorded before any scheme acts) conditioned on its data. Its causes are
 /// x and the test rows' pulse counting.
 struct UnitPosterior {
-  gap::GaussianModel model;          ///< of the test rows
+  runs::GaussianModel model;          ///< of the test rows
   Eigen::VectorXd cause_mean;        ///< μ, the prior mean of the causes
   Eigen::VectorXd cause_estimate;    ///< ĉ
   Eigen::MatrixXd error_covariance;  ///< of ĉ − c
@@ -110,15 +110,15 @@ UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run,
 /// layout (all the units of a file, as a rule): the model of the test rows,
 /// its gain and the estimators' map, built once and used for each unit.
 struct UnitConditioning {
-  gap::Layout layout;
-  gap::GaussianModel model;
+  runs::Layout layout;
+  runs::GaussianModel model;
   Eigen::VectorXd cause_mean;
   Eigen::MatrixXd estimates_map;
   Eigen::MatrixXd gain;              ///< G = P Hᵀ S⁻¹
   Eigen::MatrixXd error_covariance;  ///< of the linear estimate
   Eigen::LLT<Eigen::MatrixXd> row_covariance;  ///< S = H P Hᵀ + W
 };
-UnitConditioning unit_conditioning(const UnitRecords& records, const gap::Layout& layout, const UncertaintyModel& prior);
+UnitConditioning unit_conditioning(const UnitRecords& records, const runs::Layout& layout, const UncertaintyModel& prior);
 /// condition_unit with the shared part built before (run.layout == shared.layout).
 UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run, const UnitConditioning& shared);
 
@@ -172,6 +172,6 @@ SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& r
 
 /// B: the report's estimates (SchemeEstimates order: Û2, Û3, Û3 from f,
 /// Δf̂(T), per axis) as a linear map of a unit's test rows.
-Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const gap::Layout& test_layout);
+Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const runs::Layout& test_layout);
 
 }  // namespace insmc::mc

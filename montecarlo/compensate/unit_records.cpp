@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include "lib/common/input_error.h"
-#include "montecarlo/gap/model/scheme_rows.h"
-#include "montecarlo/gap/records/diagnosis_records.h"
+#include "montecarlo/runs/model/scheme_rows.h"
+#include "montecarlo/runs/prepared_runs.h"
 
 namespace insmc::mc {
 namespace {
@@ -51,7 +51,7 @@ double median_r_spacing(const RecordFile& file) {
   return spacings[spacings.size() / 2];
 }
 
-UnitTestRun unit_test_run(const RecordRun& run, const gap::RecordSite& site) {
+UnitTestRun unit_test_run(const RecordRun& run, const runs::RecordSite& site) {
   const double tau = site.filter_interval_s;
   const int K = static_cast<int>(std::lround(site.test_duration_s / tau));
   UnitTestRun out;
@@ -62,7 +62,7 @@ UnitTestRun unit_test_run(const RecordRun& run, const gap::RecordSite& site) {
   for (int k = 1; k <= K; ++k) {
     const double t = k * tau;
     const RecordRow* row =
-        test_row_at(run, t, tau, gap::nav_segment_of(site.scheme) == gap::NavSegment::kContinue);
+        test_row_at(run, t, tau, runs::nav_segment_of(site.scheme) == runs::NavSegment::kContinue);
     const auto missing = [&](const char* what) {
       return InputError(fmt::format("records run {} test rows", run.id), fmt::format("(no {} at t_s = {:g})", what, t),
                         fmt::format("compensate needs f and r (all three axes) at every filter interval t_k = k*{:g} s "
@@ -93,12 +93,12 @@ UnitTestRun unit_test_run(const RecordRun& run, const gap::RecordSite& site) {
 
 }  // namespace
 
-gap::Layout test_run_layout(int K, double tau_s) {
-  gap::Layout layout;
-  layout.nav = gap::NavSegment::kContinue;
+runs::Layout test_run_layout(int K, double tau_s) {
+  runs::Layout layout;
+  layout.nav = runs::NavSegment::kContinue;
   for (int k = 1; k <= K; ++k)
-    for (const gap::Quantity q : {gap::Quantity::kF, gap::Quantity::kR})
-      for (int a = 0; a < 3; ++a) layout.rows.push_back({k * tau_s, q, a, gap::group_of(gap::Stage::kTest, q, a, 0)});
+    for (const runs::Quantity q : {runs::Quantity::kF, runs::Quantity::kR})
+      for (int a = 0; a < 3; ++a) layout.rows.push_back({k * tau_s, q, a, runs::group_of(runs::Stage::kTest, q, a, 0)});
   layout.test_rows = static_cast<int>(layout.rows.size());
   return layout;
 }
@@ -123,7 +123,7 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
                      "the test run)");
   for (RecordRun& r : tests.runs) std::erase_if(r.rows, [](const RecordRow& row) { return row.phase != Phase::kTest; });
   tests.header.set(std::string(kKeyScheme), std::string(to_string(Scheme::kNone)));
-  DiagnosisOptions options;
+  runs::RecordReading options;
   options.prior = prior;
   const double T = tests.header.test_duration_s();
   // The estimators fit r at the ends of the filter windows: windows at least
@@ -131,7 +131,7 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
   options.min_filter_interval_s =
       std::max({kUnitFilterIntervalS, T / kMaxUnitIntervals, median_r_spacing(tests) * (1 - 2 * kGridJitter)});
   UnitRecords out;
-  const Records records = records_for_diagnosis(tests, options, out.statements, out.site_values);
+  const runs::Records records = runs::read_records(tests, options, out.statements, out.site_values);
   out.site = records.site;
   if (site_gravity_mps2) out.site.model.gravity_mps2 = *site_gravity_mps2;
   if (out.site.test_duration_s / out.site.filter_interval_s > kMaxUnitIntervals + 1e-9)

@@ -12,8 +12,8 @@
 
 #include "lib/preflight/test_run_estimates.h"
 #include "lib/records/record.h"
-#include "montecarlo/gap/diagnosis.h"
-#include "montecarlo/gap/records/layout.h"
+#include "montecarlo/runs/records/site_values.h"
+#include "montecarlo/runs/records/layout.h"
 
 namespace insmc::mc {
 
@@ -21,18 +21,18 @@ namespace insmc::mc {
 /// the estimators use), and what the estimators made of them.
 struct UnitTestRun {
   std::int64_t id = 0;
-  gap::Layout layout;       ///< the test rows only (f then r per t_k, axes x, y, z)
+  runs::Layout layout;       ///< the test rows only (f then r per t_k, axes x, y, z)
   Eigen::VectorXd values;   ///< in layout order [m/s², m]
   TestRunEstimates estimates;
 };
 
 /// The rows of a test run of K filter intervals τ: at each t_k = kτ the f
 /// rows of x, y, z, then the r rows.
-gap::Layout test_run_layout(int K, double tau_s);
+runs::Layout test_run_layout(int K, double tau_s);
 
 struct UnitRecords {
-  gap::RecordSite site;  ///< completed; its estimators set
-  std::vector<SiteValue> site_values;
+  runs::RecordSite site;  ///< completed; its estimators set
+  std::vector<runs::SiteValue> site_values;
   std::vector<std::string> statements;  ///< what was inferred or changed, and why
   std::vector<UnitTestRun> runs;
 };

@@ -1,6 +1,6 @@
 #include "montecarlo/gap/diagnosis.h"
 
-#include "montecarlo/gap/records/raw_stage.h"
+#include "montecarlo/gap/candidates/raw_limits.h"
 // The orchestrator: one call per stage, in the order of README.md.
 
 #include <algorithm>
@@ -17,22 +17,21 @@
 #include "montecarlo/gap/ranking/finding_check.h"
 #include "montecarlo/gap/ranking/greedy.h"
 #include "montecarlo/gap/ranking/statements.h"
-#include "montecarlo/gap/records/diagnosis_records.h"
+#include "montecarlo/runs/prepared_runs.h"
 #include "montecarlo/gap/where/locate.h"
 #include "montecarlo/gap/where/prior_scale.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
-using Prepared = PreparedRuns;
 
 /// Every run under base + extensions (built per layout by `build`).
 template <class Build>
-Evaluated evaluate_under(const Prepared& p, const Build& build, std::vector<std::optional<gap::RunAnalyser>>& analysers) {
+EvaluatedRuns evaluate_under(const runs::PreparedRuns& p, const Build& build, std::vector<std::optional<runs::RunAnalyser>>& analysers) {
   analysers.assign(p.layouts.size(), std::nullopt);
-  std::vector<const gap::RunAnalyser*> pointers(p.layouts.size(), nullptr);
+  std::vector<const runs::RunAnalyser*> pointers(p.layouts.size(), nullptr);
   for (std::size_t L = 0; L < p.layouts.size(); ++L) {
-    analysers[L].emplace(p.layouts[L], gap::combine(p.bases[L], build(static_cast<int>(L))));
+    analysers[L].emplace(p.layouts[L], runs::combine(p.bases[L], build(static_cast<int>(L))));
     pointers[L] = &*analysers[L];
   }
   return evaluate_runs(p.runs, p.layout_of, pointers, p.keys);
@@ -43,7 +42,7 @@ Evaluated evaluate_under(const Prepared& p, const Build& build, std::vector<std:
 namespace {
 /// The raw-sensor stage's verdict, when import-imu left one in the header.
 void add_raw_stage(Diagnosis& d, const RecordFile& file) {
-  if (const auto raw = raw_stage_from_header(file.header)) {
+  if (const auto raw = runs::raw_stage_from_header(file.header)) {
     for (std::string& s : raw_stage_statements(*raw, d.top)) d.statements.push_back(std::move(s));
     d.raw_gyro_ratio = raw->gyro_ratio;
     d.raw_accel_ratio = raw->accel_ratio;
@@ -54,18 +53,18 @@ void add_raw_stage(Diagnosis& d, const RecordFile& file) {
 Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   DiagnosisOptions options = given;
   Diagnosis d;
-  if (const auto raw = raw_stage_from_header(file.header); raw && !options.candidates)
-    options.candidates = std::make_shared<const std::vector<gap::Candidate>>(
-        limit_candidates(gap::candidate_registry(), *raw, d.statements));
+  if (const auto raw = runs::raw_stage_from_header(file.header); raw && !options.candidates)
+    options.candidates = std::make_shared<const std::vector<Candidate>>(
+        limit_candidates(candidate_registry(), *raw, d.statements));
   if (const auto err = truth_latitude_error(file.header.latitude_deg() * kDegToRad, "header latitude_deg"))
     throw InputError(err->field(), err->value(), "the diagnosis's null is simulated at the site, and " + err->allowed());
-  const Records records = records_for_diagnosis(file, options, d.statements, d.site);
-  Prepared p = prepare(records, options);
+  const runs::Records records = runs::read_records(file, options, d.statements, d.site);
+  runs::PreparedRuns p = prepare(records, options);
   d.alpha = options.alpha;
   d.runs = static_cast<int>(p.runs.size());
   const int n = d.runs;
   int with_test = 0, with_nav = 0;
-  for (const gap::RunData& r : p.runs) {
+  for (const runs::RunData& r : p.runs) {
     with_test += r.layout.test_rows > 0;
     with_nav += static_cast<int>(r.layout.rows.size()) > r.layout.test_rows;
   }
@@ -82,18 +81,18 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   std::vector<int> null_layout;
   const int ncal = options.calibration_runs > 0 ? options.calibration_runs : std::max(200, 10 * n);
   d.calibration_runs = ncal;
-  const Null null = calibrate(p, records.file, options, ncal, null_z, null_layout);
-  std::vector<std::optional<gap::RunAnalyser>> analysers;
-  const Evaluated base = evaluate_under(p, [](int) { return std::vector<const gap::Extension*>{}; }, analysers);
-  const gap::Pooled observed = gap::pool(base.set(p.keys), all_runs(p.runs.size()));
-  const gap::LogRatios observed_ratios =
-      gap::log_ratios(observed, null.calibration, gap::CoherentReference::kAtLeastModelScatter);
-  d.gap = gap::gap_value(observed_ratios);
+  const ModelNull null = calibrate(p, records.file, options, ncal, null_z, null_layout);
+  std::vector<std::optional<runs::RunAnalyser>> analysers;
+  const EvaluatedRuns base = evaluate_under(p, [](int) { return std::vector<const runs::Extension*>{}; }, analysers);
+  const Pooled observed = pool(base.set(p.keys), all_runs(p.runs.size()));
+  const LogRatios observed_ratios =
+      log_ratios(observed, null.calibration, CoherentReference::kAtLeastModelScatter);
+  d.gap = gap_value(observed_ratios);
   // The baseline of the candidates' held-out shrink, read as they are.
-  d.heldout_gap_before = gap::gap_value(gap::log_ratios(observed, null.calibration));
+  d.heldout_gap_before = gap_value(log_ratios(observed, null.calibration));
   // One-sided: an unmodelled effect shows as more scatter or more in common
   // than the model; less is the model being pessimistic, a finding of its own.
-  const gap::SignedGap signed_gap = gap::signed_gap(observed_ratios);
+  const SignedGap signed_gap = gap::signed_gap(observed_ratios);
   d.unmodelled_gap = signed_gap.unmodelled;
   d.unmodelled_critical = quantile(null.unmodelled, 1.0 - options.alpha);
   d.p_value = p_value_of(d.unmodelled_gap, null.unmodelled);
@@ -114,10 +113,10 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
                        d.null_gap_critical};
     std::vector<Eigen::VectorXd> through_z;
     std::vector<int> through_layout;
-    const Null through = calibrate(p, records.file, options, ncal, through_z, through_layout, &*import);
-    const gap::LogRatios through_ratios =
-        gap::log_ratios(observed, through.calibration, gap::CoherentReference::kAtLeastModelScatter);
-    d.gap = gap::gap_value(through_ratios);
+    const ModelNull through = calibrate(p, records.file, options, ncal, through_z, through_layout, &*import);
+    const LogRatios through_ratios =
+        log_ratios(observed, through.calibration, CoherentReference::kAtLeastModelScatter);
+    d.gap = gap_value(through_ratios);
     d.null_gap_median = quantile(through.gaps, 0.5);
     d.null_gap_critical = quantile(through.gaps, 1.0 - options.alpha);
     d.unmodelled_gap = gap::signed_gap(through_ratios).unmodelled;
@@ -164,4 +163,4 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   return d;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

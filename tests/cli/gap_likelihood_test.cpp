@@ -18,15 +18,15 @@
 namespace insmc::testing {
 namespace {
 
-mc::Diagnosis diagnosed(const TempDir& dir, const std::string& name, const std::string& options, int pairs) {
+gap::Diagnosis diagnosed(const TempDir& dir, const std::string& name, const std::string& options, int pairs) {
   const std::string path = (dir.path() / name).string();
   const auto r = run_insmc("simulate --runs 20 --out " + path + " " + options);
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  mc::DiagnosisOptions o;
+  gap::DiagnosisOptions o;
   o.max_selected = 1;
   o.likelihood_candidates = 5;
   o.likelihood_pair_candidates = pairs;
-  return mc::diagnose(without_truth(read_record_file(path)), o);
+  return gap::diagnose(without_truth(read_record_file(path)), o);
 }
 
 /// The (1 − p) quantile of χ² with 2k degrees of freedom.
@@ -39,16 +39,16 @@ TEST(GapLikelihood, AWithheldVelocityRandomWalkIsFittedNearItsValueAndGainsAbove
   const double truth = 0.3;  // m/s after 1 h: the effect's default (insmc effects)
   // Without pairs: a pair of two random processes costs more than the rest
   // of the likelihood side (the null records' test below fits pairs).
-  const mc::Diagnosis d =
+  const gap::Diagnosis d =
       diagnosed(dir, "vrw.csv", "--seed 21 --effect velocity_random_walk:velocity_1h=0.3mps", 0);
   ASSERT_TRUE(d.significant);
-  const mc::CandidateResult* vrw = nullptr;
-  for (const mc::CandidateResult& c : d.ranking)
+  const gap::CandidateResult* vrw = nullptr;
+  for (const gap::CandidateResult& c : d.ranking)
     if (c.effect == "velocity_random_walk") vrw = &c;
   ASSERT_NE(vrw, nullptr);
   ASSERT_TRUE(vrw->likelihood.fitted) << "among the candidates fitted by maximum likelihood";
   ASSERT_EQ(vrw->likelihood.parameters.size(), 1u);
-  const mc::MlParameter& v = vrw->likelihood.parameters[0];
+  const gap::MlParameter& v = vrw->likelihood.parameters[0];
   std::printf("velocity_1h %.4g m/s (95 %%: %.4g..%.4g), true %.3g; held-out gain %.1f, null reference %.3g\n",
               v.value, v.ci95.low, v.ci95.high, truth, vrw->likelihood.heldout_gain, vrw->likelihood.null_gain);
   // The 95 % interval is statistical only (20 runs of ~2000 rows each make
@@ -63,9 +63,9 @@ TEST(GapLikelihood, AWithheldVelocityRandomWalkIsFittedNearItsValueAndGainsAbove
 
 TEST(GapLikelihood, OnRecordsOfTheModelItselfNoCandidateGainsMoreThanFittingNoise) {
   TempDir dir;
-  const mc::Diagnosis d = diagnosed(dir, "null.csv", "--seed 22", 3);
+  const gap::Diagnosis d = diagnosed(dir, "null.csv", "--seed 22", 3);
   int fitted = 0;
-  for (const mc::CandidateResult& c : d.ranking) {
+  for (const gap::CandidateResult& c : d.ranking) {
     if (!c.likelihood.fitted) continue;
     ++fitted;
     // Each fold's held-out gain is at most the held-out half's own

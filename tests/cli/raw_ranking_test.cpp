@@ -13,7 +13,7 @@
 #include <numbers>
 #include <random>
 
-#include "montecarlo/gap/records/raw_stage.h"
+#include "montecarlo/gap/candidates/raw_limits.h"
 #include "tests/cli/run_program.h"
 
 namespace insmc::testing {
@@ -79,9 +79,9 @@ void run_case(Noisy noisy, const std::string& expected_sensor) {
     const ProgramResult gap = run_insmc(fmt::format("gap --records {} --format json --seed {}", records, f + 1));
     ASSERT_EQ(gap.exit_code, 0) << gap.err;
     const std::string top = top_effect(gap.out);
-    right += mc::sensor_of_effect(top) == expected_sensor;
+    right += insmc::gap::sensor_of_effect(top) == expected_sensor;
     if (files == 1) {
-      EXPECT_EQ(mc::sensor_of_effect(top), expected_sensor) << top;
+      EXPECT_EQ(insmc::gap::sensor_of_effect(top), expected_sensor) << top;
     }
   }
   std::printf("%s-only noise: the top effect is of that sensor in %d of %d files\n", expected_sensor.c_str(), right, files);

@@ -40,7 +40,7 @@
 #include "lib/propagation/linear_model.h"
 #include "lib/propagation/paper_model.h"
 #include "montecarlo/compensate/compensate.h"
-#include "montecarlo/gap/null/record_simulation.h"
+#include "montecarlo/runs/simulation/record_simulation.h"
 #include "montecarlo/sampler/sampler.h"
 
 namespace insmc::mc {
@@ -82,11 +82,11 @@ Study simulate_units(Scheme scheme, const UncertaintyModel& prior, const TestRun
   s.file.header.set("filter_interval_s", test.filter_interval_s);
   if (realigns(scheme)) s.file.header.set("nav_start_s", s.nav_start_s);
   const Sampler sampler(prior);
-  const RecordRunSpec spec{T, test.position_resolution_m, scheme, &setup, s.nav_start_s};
+  const runs::RecordRunSpec spec{T, test.position_resolution_m, scheme, &setup, s.nav_start_s};
   // 5.4 acts from the switch-over: its unit's test rows would be
   // compensated. The test rows are those of the same unit (same x, same
   // alignment) flown uncompensated; the navigation rows its flight with 5.4.
-  RecordRunSpec test_spec = spec;
+  runs::RecordRunSpec test_spec = spec;
   if (uses_alignment_data(scheme)) test_spec.scheme = Scheme::kNone;
   for (int run = 0; run < kUnits; ++run) {
     const auto r = static_cast<std::uint64_t>(run);

@@ -61,7 +61,7 @@ TEST(FindingIntervalCoverage, TheFirstRankedRangeCoversTheSimulatedValueAtItsNom
     EffectSpec spec;
     double truth_si = 0;
     bool checked = false;
-    ParameterEstimate estimate;
+    gap::ParameterEstimate estimate;
   };
   std::vector<File> files(kFiles);
   std::mt19937_64 draws(kSeed);  // the engine's sequence is fixed by the standard
@@ -75,16 +75,16 @@ TEST(FindingIntervalCoverage, TheFirstRankedRangeCoversTheSimulatedValueAtItsNom
   }
   tbb::parallel_for(0, kFiles, [&](int f) {
     File& file = files[static_cast<std::size_t>(f)];
-    DiagnosisOptions options;
+    gap::DiagnosisOptions options;
     options.seed = kSeed + 1000 + static_cast<std::uint64_t>(f);
     options.max_selected = 1;
     options.null_shrink_files = 0;
     options.calibration_runs = 100;  // the null only decides which files are significant
     options.bootstrap = 500;
     options.candidates = std::make_shared<const std::vector<gap::Candidate>>(only(file.drawn->effect));
-    const Diagnosis g = diagnose(own_layout_file({file.spec}, kSeed + static_cast<std::uint64_t>(f), 20), options);
+    const gap::Diagnosis g = gap::diagnose(gap::own_layout_file({file.spec}, kSeed + static_cast<std::uint64_t>(f), 20), options);
     if (!g.significant || g.ranking.empty()) return;
-    for (const ParameterEstimate& e : g.ranking[0].parameters)
+    for (const gap::ParameterEstimate& e : g.ranking[0].parameters)
       if (e.name == file.drawn->parameter) {
         file.checked = true;
         file.estimate = e;
@@ -94,7 +94,7 @@ TEST(FindingIntervalCoverage, TheFirstRankedRangeCoversTheSimulatedValueAtItsNom
   int family_checked[kFamilies] = {}, family_covered[kFamilies] = {};
   for (const File& file : files) {
     if (!file.checked) continue;
-    const ParameterEstimate& e = file.estimate;
+    const gap::ParameterEstimate& e = file.estimate;
     ASSERT_TRUE(e.check.measured) << file.drawn->effect;
     ++checked;
     const double t = file.truth_si;

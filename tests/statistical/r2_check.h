@@ -18,7 +18,7 @@ struct R2Check {
   bool pass() const { return std::fabs(deviation) <= bound; }
 };
 
-inline R2Check r2_check(const OutputStats& s, const StudyMap& exact, std::size_t o, double z) {
+inline R2Check r2_check(const mc::OutputStats& s, const mc::StudyMap& exact, std::size_t o, double z) {
   const double n = static_cast<double>(s.count());
   const double e_r2 = exact.predicted_rms()[o] * exact.predicted_rms()[o];
   return {s.sum_squares() / n - e_r2, z * std::sqrt(exact.predicted_var_r2()[o] / n)};
@@ -32,8 +32,8 @@ inline double two_sided_power(double shift, double sd_null, double sd_alt, doubl
          boost::math::cdf(boost::math::complement(nd, (z * sd_null - shift) / sd_alt));
 }
 
-inline std::string describe(const StudyLayout& l, std::size_t o) {
-  const OutputSpec& s = l.outputs[o];
+inline std::string describe(const mc::StudyLayout& l, std::size_t o) {
+  const mc::OutputSpec& s = l.outputs[o];
   return fmt::format("scheme {}, system {}, t = {} min, {}", to_string(s.scheme), system_number(s.system),
                      std::lround(l.times_s[static_cast<std::size_t>(s.time_index)] / 60), to_string(s.axis));
 }

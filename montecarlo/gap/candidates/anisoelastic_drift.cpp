@@ -46,8 +46,8 @@ Candidate anisoelastic_drift() {
                   return Eigen::Vector3d(f.y() * f.z(), f.z() * f.x(), f.x() * f.y()) / g2;
                 },
                 layout_end(*ctx.layout) + 60.0);
-            Extension e;
-            e.mean = p[0] * signature_columns(ctx, "anisoelastic", 1, [&](double t, Columns3& a, Columns3& th) {
+            runs::Extension e;
+            e.mean = p[0] * signature_columns(ctx, "anisoelastic", 1, [&](double t, runs::Columns3& a, runs::Columns3& th) {
                               a.setZero();
                               th.col(0) = theta.at(t);
                             }).col(0);

@@ -10,7 +10,7 @@ Candidate bounds() {
           {searched("scale", Dimension::kDimensionless, {1.5, 2, 3, 5, 10, 30, 100, 300, 1000}, 0.01, 100.0,
                     "priors 100 times narrower than Table 3.1 (below 1: pessimistic priors) to 100 times wider")},
           [](const LayoutContext&, std::span<const double> p) {
-            Extension e;
+            runs::Extension e;
             e.x_var_scale = UncertaintyVector::Constant(p[0] * p[0]);
             return e;
           },

@@ -16,15 +16,15 @@
 #include <vector>
 
 #include "lib/units/quantity.h"
-#include "montecarlo/gap/model/gaussian_model.h"
+#include "montecarlo/runs/model/gaussian_model.h"
 
 namespace insmc::gap {
 
 /// What a candidate may use when it builds its extension for a layout.
 struct LayoutContext {
-  const Layout* layout = nullptr;
-  const RecordSite* site = nullptr;
-  const BaseModel* base = nullptr;
+  const runs::Layout* layout = nullptr;
+  const runs::RecordSite* site = nullptr;
+  const runs::BaseModel* base = nullptr;
   /// Unit responses already computed for this layout, by key.
   mutable std::map<std::string, Eigen::MatrixXd> cache;
 };
@@ -52,11 +52,11 @@ struct Candidate {
   std::string description;  ///< one line
   std::vector<CandidateParameter> parameters;
   /// The extension at one point of the parameter grid (values in parameter order).
-  std::function<Extension(const LayoutContext&, std::span<const double>)> build;
+  std::function<runs::Extension(const LayoutContext&, std::span<const double>)> build;
   /// The fitted values (parameter order) in the terms `insmc effects`
   /// defines the effect by, in place, where the candidate's own differ
   /// (a transient fitted at switch-over, defined at switch-on); empty: the same.
-  std::function<void(std::span<double>, const RecordSite&)> to_effect_terms = {};
+  std::function<void(std::span<double>, const runs::RecordSite&)> to_effect_terms = {};
   /// The test that shows this effect's own signature, where records of
   /// another may look alike: said when the ranking cannot tell it from its
   /// runner-up (ranking/statements.cpp).

@@ -32,17 +32,17 @@ CandidateParameter amplitude(std::string name, Dimension dimension, double large
   return {std::move(name), dimension, {largest_si}, true, -largest_si, largest_si, std::move(why)};
 }
 
-double layout_end(const Layout& layout) {
+double layout_end(const runs::Layout& layout) {
   double end = 0.0;
-  for (const ObservationRow& r : layout.rows) end = std::max(end, r.t_s);
+  for (const runs::ObservationRow& r : layout.rows) end = std::max(end, r.t_s);
   return end;
 }
 
 Eigen::VectorXd f_noise(const LayoutContext& ctx, const Eigen::Vector3d& var) {
   Eigen::VectorXd add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));
   for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
-    const ObservationRow& r = ctx.layout->rows[i];
-    if (r.quantity == Quantity::kF) add[static_cast<Eigen::Index>(i)] = var[r.axis];
+    const runs::ObservationRow& r = ctx.layout->rows[i];
+    if (r.quantity == runs::Quantity::kF) add[static_cast<Eigen::Index>(i)] = var[r.axis];
   }
   return add;
 }
@@ -50,8 +50,8 @@ Eigen::VectorXd f_noise(const LayoutContext& ctx, const Eigen::Vector3d& var) {
 Eigen::VectorXd tilt_f_noise(const LayoutContext& ctx, double angle_var_rad2, double growth_rad2ps) {
   Eigen::VectorXd add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));
   for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
-    const ObservationRow& r = ctx.layout->rows[i];
-    if (r.quantity != Quantity::kF) continue;
+    const runs::ObservationRow& r = ctx.layout->rows[i];
+    if (r.quantity != runs::Quantity::kF) continue;
     // δf = δθ × f: with the same variance about every axis, axis k sees the
     // other two components of f.
     const Eigen::Vector3d f = specific_force(r.t_s, ctx.site->model);
@@ -62,9 +62,9 @@ Eigen::VectorXd tilt_f_noise(const LayoutContext& ctx, double angle_var_rad2, do
 }
 
 Eigen::MatrixXd signature_columns(const LayoutContext& ctx, const std::string& key, int columns,
-                                  const std::function<void(double, Columns3&, Columns3&)>& at) {
+                                  const std::function<void(double, runs::Columns3&, runs::Columns3&)>& at) {
   if (auto it = ctx.cache.find(key); it != ctx.cache.end()) return it->second;
-  InputSignal in;
+  runs::InputSignal in;
   in.columns = columns;
   in.at = at;
   Eigen::MatrixXd r = input_response(*ctx.layout, *ctx.site, in);
@@ -72,6 +72,6 @@ Eigen::MatrixXd signature_columns(const LayoutContext& ctx, const std::string& k
   return r;
 }
 
-Eigen::Vector3d specific_force(double t, const ModelOptions& m) { return -gravity_in_ap(t, m); }
+Eigen::Vector3d specific_force(double t, const ModelOptions& m) { return -runs::gravity_in_ap(t, m); }
 
 }  // namespace insmc::gap::candidates

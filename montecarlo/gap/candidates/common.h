@@ -12,7 +12,7 @@
 #include "lib/units/physical_range.h"
 #include "lib/units/units.h"
 #include "montecarlo/gap/candidates/candidates.h"
-#include "montecarlo/gap/model/response.h"
+#include "montecarlo/runs/model/response.h"
 
 namespace insmc::gap::candidates {
 
@@ -34,7 +34,7 @@ CandidateParameter searched(std::string name, Dimension dimension, std::vector<d
 CandidateParameter amplitude(std::string name, Dimension dimension, double largest_si, std::string why);
 
 /// The time of the layout's last row [s].
-double layout_end(const Layout& layout);
+double layout_end(const runs::Layout& layout);
 
 /// Noise added to the f rows (per axis weight) [ (m/s²)² ].
 Eigen::VectorXd f_noise(const LayoutContext& ctx, const Eigen::Vector3d& var);
@@ -48,7 +48,7 @@ Eigen::VectorXd tilt_f_noise(const LayoutContext& ctx, double angle_var_rad2, do
 /// Columns of a deterministic signature with amplitude prior params (one
 /// column per axis unless `shared`).
 Eigen::MatrixXd signature_columns(const LayoutContext& ctx, const std::string& key, int columns,
-                                  const std::function<void(double, Columns3&, Columns3&)>& at);
+                                  const std::function<void(double, runs::Columns3&, runs::Columns3&)>& at);
 
 /// f^{a'}(t) = −C(t) g_e, the specific force at rest in a' (3.24).
 Eigen::Vector3d specific_force(double t, const ModelOptions& m);

@@ -13,7 +13,7 @@ Candidate deflection_of_vertical() {
           {amplitude("xi", Dimension::kAngle, 20 * kMradToRad, "200 times Table 3.1's 0.1 mrad deflection"),
            amplitude("eta", Dimension::kAngle, 20 * kMradToRad, "200 times Table 3.1's 0.1 mrad deflection")},
           [](const LayoutContext& ctx, std::span<const double> p) {
-            Extension e;
+            runs::Extension e;
             e.mean = p[0] * ctx.base->H_x.col(ux::kDeflection) + p[1] * ctx.base->H_x.col(ux::kDeflection + 1);
             return e;
           },

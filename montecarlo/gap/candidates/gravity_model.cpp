@@ -6,7 +6,7 @@
 #include "lib/units/units.h"
 #include "montecarlo/gap/candidates/common.h"
 #include "montecarlo/gap/candidates/definitions.h"
-#include "montecarlo/gap/model/response.h"
+#include "montecarlo/runs/model/response.h"
 
 namespace insmc::gap::candidates {
 
@@ -21,23 +21,23 @@ Candidate gravity_model() {
                      "the 100 mg the linearized model describes")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             const ModelOptions m = ctx.site->model;
-            InputSignal in;
+            runs::InputSignal in;
             in.columns = 1;
             in.f_responds = false;
             // (3.24): the computer lacks δg_D, fixed to the earth: u = C(t) (0, 0, δg_D);
             // f is measured against the leveled plumb line, so only r sees it.
-            in.at = [m](double t, Columns3& a, Columns3& th) {
+            in.at = [m](double t, runs::Columns3& a, runs::Columns3& th) {
               th.setZero();
               a.col(0) = C_ap_n(m.latitude_rad, m.earth_rate_radps * t).col(2);
             };
             const auto key = std::string("vertical_anomaly");
             if (!ctx.cache.count(key)) ctx.cache[key] = input_response(*ctx.layout, *ctx.site, in);
-            Extension e;
+            runs::Extension e;
             e.mean = p[2] * ctx.cache[key].col(0);
             // The site offset: a position error fixed to the earth, r(t) = C(t) (d_N, 0, d_D) in a'.
             for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i) {
-              const ObservationRow& row = ctx.layout->rows[i];
-              if (row.quantity != Quantity::kR) continue;
+              const runs::ObservationRow& row = ctx.layout->rows[i];
+              if (row.quantity != runs::Quantity::kR) continue;
               const Eigen::Matrix3d C = C_ap_n(m.latitude_rad, m.earth_rate_radps * row.t_s);
               e.mean[static_cast<Eigen::Index>(i)] += p[0] * C(row.axis, 0) + p[1] * C(row.axis, 2);
             }

@@ -16,10 +16,10 @@ Candidate nonlinearity() {
                     "1e-4 (second-order terms of Table 3.1's 1e-4 scale factors) to the whole predicted error, "
                     "where the linear level no longer holds")},
           [](const LayoutContext& ctx, std::span<const double> p) {
-            Extension e;
+            runs::Extension e;
             e.noise_var_add = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(ctx.layout->rows.size()));
             for (std::size_t i = 0; i < ctx.layout->rows.size(); ++i)
-              if (ctx.layout->rows[i].quantity == Quantity::kR)
+              if (ctx.layout->rows[i].quantity == runs::Quantity::kR)
                 e.noise_var_add[static_cast<Eigen::Index>(i)] = std::pow(p[0] * ctx.base->prior_std[static_cast<Eigen::Index>(i)], 2);
             return e;
           },

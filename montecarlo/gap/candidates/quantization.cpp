@@ -12,7 +12,7 @@ Candidate quantization() {
           {searched("dv_pulse", Dimension::kVelocity, log_grid(0.02, 5, 1.0), 1e-6, 1.0,
                     "1e-6 to 1 m/s, the pulse weights `insmc simulate --dv-pulse` allows (lib/preflight/test_run.h)")},
           [](const LayoutContext& ctx, std::span<const double> p) {
-            Extension e;
+            runs::Extension e;
             e.counting = pulse_counting(*ctx.layout, *ctx.site, p[0], ctx.base->x_var, ctx.base->noise_var.cwiseSqrt());
             return e;
           },

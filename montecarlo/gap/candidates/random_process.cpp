@@ -13,7 +13,7 @@ namespace {
 
 /// Knots t_j = j Δ, j = 1..K, covering the run (the value at 0 is the
 /// alignment's: processes enter as changes since switch-over).
-std::vector<double> knots(const Layout& layout, double spacing_s) {
+std::vector<double> knots(const runs::Layout& layout, double spacing_s) {
   std::vector<double> k;
   const double end = layout_end(layout);
   for (double t = spacing_s; t < end + spacing_s; t += spacing_s) k.push_back(t);
@@ -24,7 +24,7 @@ std::vector<double> knots(const Layout& layout, double spacing_s) {
 /// Gauss–Markov process is resolved by knots a correlation time apart (the
 /// bridge modes below carry what lies between), within bounds that keep the
 /// model small.
-double knot_spacing(double tau, const Layout& layout) {
+double knot_spacing(double tau, const runs::Layout& layout) {
   const double spacing = tau > 0 ? std::clamp(tau, kMinKnotSpacingS, kKnotSpacingS) : kMinKnotSpacingS;
   return std::max(spacing, layout_end(layout) / kMaxKnots);
 }
@@ -72,11 +72,11 @@ double bridge_rest_share(int modes) {
 Eigen::MatrixXd process_columns(const LayoutContext& ctx, Drive drive, double tau) {
   const std::string key = "process" + std::to_string(static_cast<int>(drive)) + ":" + std::to_string(tau);
   if (auto it = ctx.cache.find(key); it != ctx.cache.end()) return it->second;
-  const Layout& layout = *ctx.layout;
-  if (layout.nav == NavSegment::kRestart && layout.test_rows < static_cast<int>(layout.rows.size())) {
+  const runs::Layout& layout = *ctx.layout;
+  if (layout.nav == runs::NavSegment::kRestart && layout.test_rows < static_cast<int>(layout.rows.size())) {
     // After a realignment the process is taken from the new switch-over,
     // independent of what the test run saw: columns of its own.
-    const Layout test = layout.test_part(), nav = layout.restarted_part();
+    const runs::Layout test = layout.test_part(), nav = layout.restarted_part();
     const Eigen::MatrixXd a = process_columns({&test, ctx.site, ctx.base, {}}, drive, tau);
     const Eigen::MatrixXd b = process_columns({&nav, ctx.site, ctx.base, {}}, drive, tau);
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(layout.rows.size()), a.cols() + b.cols());
@@ -95,12 +95,12 @@ Eigen::MatrixXd process_columns(const LayoutContext& ctx, Drive drive, double ta
   const Eigen::MatrixXd L = cov.llt().matrixL();
   const double pi = std::numbers::pi;
   const double unit_std = std::sqrt(2.0 * unit_diffusion(tau) * d) / pi;  // of mode 1
-  InputSignal in;
+  runs::InputSignal in;
   in.columns = 3 * K * (1 + M);
-  in.at = [&, drive, K, M, d](double t, Columns3& accel, Columns3& angle) {
+  in.at = [&, drive, K, M, d](double t, runs::Columns3& accel, runs::Columns3& angle) {
     accel.setZero();
     angle.setZero();
-    Columns3& out = drive == Drive::kAccel || drive == Drive::kVelocity ? accel : angle;
+    runs::Columns3& out = drive == Drive::kAccel || drive == Drive::kVelocity ? accel : angle;
     for (int j = 0; j < K; ++j) {
       const double u = t - (tk[j] - d);  // time into interval j
       double knot = 0.0;
@@ -139,8 +139,8 @@ Eigen::MatrixXd process_columns(const LayoutContext& ctx, Drive drive, double ta
 
 }  // namespace
 
-Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma, double tau) {
-  Extension e;
+runs::Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma, double tau) {
+  runs::Extension e;
   // A Gauss–Markov process has its stationary σ already at switch-over: the
   // alignment takes that value for δf or ω_do, beyond Table 3.1's.
   if (tau > 0 && drive == Drive::kAccel) e.x_var_add.segment<3>(ux::kAccelBias).setConstant(sigma * sigma);
@@ -152,8 +152,8 @@ Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma,
   // specific force of the row's time).
   // The f rows' knots: after a realignment those of the test part, the only
   // part with modelled f rows (process_columns spaces each part's own).
-  const Layout& layout = *ctx.layout;
-  const bool restarted = layout.nav == NavSegment::kRestart && layout.test_rows < static_cast<int>(layout.rows.size());
+  const runs::Layout& layout = *ctx.layout;
+  const bool restarted = layout.nav == runs::NavSegment::kRestart && layout.test_rows < static_cast<int>(layout.rows.size());
   const double spacing = knot_spacing(tau, restarted ? layout.test_part() : layout);
   const double rest = bridge_rest_share(kBridgeModes) * sigma * sigma * unit_diffusion(tau) * spacing;
   if (drive == Drive::kAccel) e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(rest));

@@ -26,6 +26,6 @@ inline constexpr int kMaxKnots = 48;
 enum class Drive { kAccel, kAngle, kRate, kVelocity };
 
 /// A random process on the knots with σ = params[0], τ = params[1].
-Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma, double tau);
+runs::Extension process_extension(const LayoutContext& ctx, Drive drive, double sigma, double tau);
 
 }  // namespace insmc::gap::candidates

@@ -32,7 +32,7 @@ Candidate sway() {
             const double inv_w4 = (std::pow(p2, 4) - std::pow(p1, 4)) / (4 * std::log(p2 / p1)) / std::pow(two_pi, 4);
             const double a2 = p[0] * p[0];
             const Eigen::Vector3d axes(1, 1, vertical * vertical);
-            Extension e;
+            runs::Extension e;
             e.noise_var_add = f_noise(ctx, a2 * gain * axes);
             e.x_var_add.segment<3>(ux::kInitialVelocity) = a2 * inv_w2 * axes;
             // The displacement at switch-over is an initial position error the
@@ -40,19 +40,19 @@ Candidate sway() {
             // one north (δL0) and down (δh), none east.
             // After a reset the computer takes its stationary position again;
             // after a realignment a new displacement is its own cause.
-            const Layout& l = *ctx.layout;
-            const bool restart = l.nav == NavSegment::kRestart;
+            const runs::Layout& l = *ctx.layout;
+            const bool restart = l.nav == runs::NavSegment::kRestart;
             e.columns = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(l.rows.size()), restart ? 6 : 3);
             const double ws = ctx.site->model.schuler_radps();
             for (std::size_t i = 0; i < l.rows.size(); ++i) {
-              const ObservationRow& row = l.rows[i];
+              const runs::ObservationRow& row = l.rows[i];
               const bool nav = static_cast<int>(i) >= l.test_rows;
-              if (row.quantity != Quantity::kR || (nav && l.nav == NavSegment::kReset)) continue;
+              if (row.quantity != runs::Quantity::kR || (nav && l.nav == runs::NavSegment::kReset)) continue;
               e.columns(static_cast<Eigen::Index>(i), row.axis + (l.restarted(i) ? 3 : 0)) = std::cos(ws * l.clock_s(i));
             }
             e.column_var = (a2 * inv_w4 * axes).replicate(restart ? 2 : 1, 1);
             // The counters count the sway too (pulse_counting.h).
-            CountedMotion motion;
+            runs::CountedMotion motion;
             motion.velocity_rms_mps = p[0] * std::sqrt(inv_w2) * axes.cwiseSqrt();
             e.counting = pulse_counting(*ctx.layout, *ctx.site, ctx.site->dv_pulse_mps, ctx.base->x_var,
                                         ctx.base->noise_var.cwiseSqrt(), motion);

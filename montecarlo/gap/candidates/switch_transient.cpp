@@ -15,7 +15,7 @@ Candidate switch_transient() {
                     1e-6 * kMgToMps2, magnitude_limit(Dimension::kAcceleration),
                     "a floor of 1e-6 of Table 3.1's 1 mg for 0 (none) up to the 100 mg the linearized model describes")},
           [](const LayoutContext&, std::span<const double> p) {
-            Extension e;
+            runs::Extension e;
             e.x_var_add.segment<3>(ux::kMisalignAlign).setConstant(p[0] * p[0]);
             e.x_var_add.segment<2>(ux::kBiasChangeAlign).setConstant(p[1] * p[1]);
             e.x_var_add[ux::kAccelBias + 2] = p[1] * p[1];

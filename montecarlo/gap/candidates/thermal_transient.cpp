@@ -19,7 +19,7 @@ Candidate thermal_transient() {
           [](const LayoutContext& ctx, std::span<const double> p) {
             const double tau = p[2];
             const Eigen::MatrixXd cols = signature_columns(ctx, "thermal:" + std::to_string(tau), 2,
-                                                           [tau](double t, Columns3& a, Columns3& th) {
+                                                           [tau](double t, runs::Columns3& a, runs::Columns3& th) {
                                                              const double decay = std::exp(-t / tau);
                                                              a.setZero();
                                                              th.setZero();
@@ -32,14 +32,14 @@ Candidate thermal_transient() {
             const Eigen::MatrixXd& H = ctx.base->H_x;
             const Eigen::VectorXd fixed_bias = H.middleCols<3>(ux::kAccelBias).rowwise().sum();
             const Eigen::VectorXd fixed_drift = H.middleCols<3>(ux::kGyroDrift).rowwise().sum();
-            Extension e;
+            runs::Extension e;
             e.mean = p[0] * (cols.col(0) + fixed_bias) + p[1] * (cols.col(1) + fixed_drift);
             return e;
           },
           // b and d are fitted at switch-over; the effect is defined at
           // switch-on, a warm-up earlier: b_on = b e^{warmup/tau} (each
           // resampled fit with its own tau, so tau's spread carries through).
-          [](std::span<double> p, const RecordSite& site) {
+          [](std::span<double> p, const runs::RecordSite& site) {
             const double grown = std::exp(site.warmup_s / p[2]);
             p[0] *= grown;
             p[1] *= grown;

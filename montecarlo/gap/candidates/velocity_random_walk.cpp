@@ -15,7 +15,7 @@ Candidate velocity_random_walk() {
           [](const LayoutContext& ctx, std::span<const double> p) {
             // The walk's increments over τ that the knots and bridge modes
             // do not carry are white in f: q/τ.
-            Extension e = process_extension(ctx, Drive::kVelocity, p[0], 0.0);
+            runs::Extension e = process_extension(ctx, Drive::kVelocity, p[0], 0.0);
             const double q = p[0] * p[0] / 3600.0;
             e.noise_var_add = f_noise(ctx, Eigen::Vector3d::Constant(q / ctx.site->filter_interval_s));
             return e;

@@ -7,65 +7,24 @@
 #include <map>
 #include <utility>
 
-namespace insmc::mc {
-
-int PreparedRuns::layout_index(const gap::Layout& layout) {
-  for (std::size_t i = 0; i < layouts.size(); ++i)
-    if (layouts[i] == layout) return static_cast<int>(i);
-  layouts.push_back(layout);
-  bases.push_back(gap::make_base_model(layout, site, x_var));
-  keys.add_layout(layout);
-  return static_cast<int>(layouts.size() - 1);
-}
-
-int PreparedRuns::place(gap::RunData& run) {
-  for (std::size_t i = 0; i < layouts.size(); ++i)
-    if (layouts[i] == run.layout) return static_cast<int>(i);
-  for (std::size_t i = 0; i < layouts.size(); ++i) {
-    const std::size_t n = gap::rows_begun(run.layout, layouts[i]);
-    if (n == 0) continue;
-    run.layout.rows.resize(n);
-    run.values.resize(n);
-    return static_cast<int>(i);
-  }
-  return layout_index(run.layout);
-}
-
-Eigen::VectorXd run_values(const gap::RunData& run) {
-  return Eigen::Map<const Eigen::VectorXd>(run.values.data(), static_cast<Eigen::Index>(run.values.size()));
-}
-
-Evaluated evaluate_runs(const std::vector<gap::RunData>& runs, const std::vector<int>& layout_of,
-                        const std::vector<const gap::RunAnalyser*>& analysers, const gap::KeySpace& keys) {
-  Evaluated e;
-  e.sums.resize(runs.size());
-  e.keyed.resize(keys.size(), static_cast<Eigen::Index>(runs.size()));
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    const int L = layout_of[r];
-    const gap::RunAnalyser& a = *analysers[static_cast<std::size_t>(L)];
-    const Eigen::VectorXd v = a.normalized(run_values(runs[r]));
-    e.sums[r] = a.sums_of(v);
-    e.keyed.col(static_cast<Eigen::Index>(r)) = gap::keyed_values(v, a, L, keys);
-  }
-  return e;
-}
+namespace insmc::gap {
 
 namespace {
 
-std::vector<const gap::Extension*> pointers(const std::vector<gap::Extension>& selected, const gap::Extension* added) {
-  std::vector<const gap::Extension*> e;
-  for (const gap::Extension& s : selected) e.push_back(&s);
+std::vector<const runs::Extension*> pointers(const std::vector<runs::Extension>& selected, const runs::Extension* added) {
+  std::vector<const runs::Extension*> e;
+  for (const runs::Extension& s : selected) e.push_back(&s);
   if (added) e.push_back(added);
   return e;
 }
 
-bool used(const PreparedRuns& p, std::size_t L) {
+bool used(const runs::PreparedRuns& p, std::size_t L) {
   return std::find(p.layout_of.begin(), p.layout_of.end(), static_cast<int>(L)) != p.layout_of.end();
 }
 
-CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
-                               const std::vector<std::vector<gap::Extension>>& selected,
-                               std::vector<gap::LayoutContext>& ctx, const gap::NullCalibration& m0,
+CandidateSums evaluate_on_grid(const runs::PreparedRuns& p, const Candidate& c,
+                               const std::vector<std::vector<runs::Extension>>& selected,
+                               std::vector<LayoutContext>& ctx, const NullCalibration& m0,
                                std::vector<std::vector<int>> groups) {
   CandidateSums out;
   out.keys = &p.keys;
@@ -82,7 +41,7 @@ CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
     std::sort(ks.begin(), ks.end());
     ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
     std::erase_if(ks, [&](int k) { return out.evaluated[static_cast<std::size_t>(k)]; });
-    std::vector<std::vector<std::optional<gap::Extension>>> extensions(ks.size());
+    std::vector<std::vector<std::optional<runs::Extension>>> extensions(ks.size());
     for (std::size_t b = 0; b < ks.size(); ++b) {
       const std::vector<double> theta = c.grid_point(ks[b]);
       extensions[b].resize(p.layouts.size());
@@ -90,11 +49,11 @@ CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
         if (used(p, L)) extensions[b][L].emplace(c.build(ctx[L], theta));
     }
     tbb::parallel_for(std::size_t{0}, ks.size(), [&](std::size_t b) {
-      std::vector<std::optional<gap::RunAnalyser>> analysers(p.layouts.size());
-      std::vector<const gap::RunAnalyser*> pointers_to(p.layouts.size(), nullptr);
+      std::vector<std::optional<runs::RunAnalyser>> analysers(p.layouts.size());
+      std::vector<const runs::RunAnalyser*> pointers_to(p.layouts.size(), nullptr);
       for (std::size_t L = 0; L < p.layouts.size(); ++L) {
         if (!extensions[b][L]) continue;
-        analysers[L].emplace(p.layouts[L], gap::combine(p.bases[L], pointers(selected[L], &*extensions[b][L])));
+        analysers[L].emplace(p.layouts[L], runs::combine(p.bases[L], pointers(selected[L], &*extensions[b][L])));
         pointers_to[L] = &*analysers[L];
       }
       const auto k = static_cast<std::size_t>(ks[b]);
@@ -118,7 +77,7 @@ CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
       int best = -1;
       double best_gap = std::numeric_limits<double>::infinity();
       for (int i = 0; i < first; i += 2) {
-        const double g = gap::gap_value(out.sets[static_cast<std::size_t>(i * rest + j)], runs, m0);
+        const double g = gap_value(out.sets[static_cast<std::size_t>(i * rest + j)], runs, m0);
         if (g < best_gap) best_gap = g, best = i;
       }
       for (int i : {best - 1, best + 1})
@@ -129,16 +88,16 @@ CandidateSums evaluate_on_grid(const PreparedRuns& p, const gap::Candidate& c,
   return out;
 }
 
-CandidateSums evaluate_amplitudes(const PreparedRuns& p, const gap::Candidate& c,
-                                  const std::vector<std::vector<gap::Extension>>& selected,
-                                  std::vector<gap::LayoutContext>& ctx) {
+CandidateSums evaluate_amplitudes(const runs::PreparedRuns& p, const Candidate& c,
+                                  const std::vector<std::vector<runs::Extension>>& selected,
+                                  std::vector<LayoutContext>& ctx) {
   CandidateSums out;
   out.amplitudes = true;
   out.keys = &p.keys;
   out.layout_of = p.layout_of;
   out.fit.resize(p.layouts.size());
   for (std::size_t L = 0; L < p.layouts.size(); ++L)
-    if (used(p, L)) out.fit[L].emplace(p.layouts[L], gap::combine(p.bases[L], pointers(selected[L], nullptr)));
+    if (used(p, L)) out.fit[L].emplace(p.layouts[L], runs::combine(p.bases[L], pointers(selected[L], nullptr)));
   for (std::size_t r = 0; r < p.runs.size(); ++r)
     out.normalized.push_back(out.fit[static_cast<std::size_t>(p.layout_of[r])]->normalized(run_values(p.runs[r])));
   const std::vector<int> amp = c.amplitude_indices();
@@ -155,7 +114,7 @@ CandidateSums evaluate_amplitudes(const PreparedRuns& p, const gap::Candidate& c
         // The signature of amplitude j alone, at unit size (SI).
         std::vector<double> theta = c.grid_point(k);
         theta[static_cast<std::size_t>(amp[j])] = 1.0;
-        const gap::Extension e = c.build(ctx[L], theta);
+        const runs::Extension e = c.build(ctx[L], theta);
         const Eigen::VectorXd z = out.fit[L]->normalized_linear(e.mean);
         if (Z.size() == 0) Z.resize(z.size(), static_cast<Eigen::Index>(amp.size()));
         Z.col(static_cast<Eigen::Index>(j)) = z;
@@ -200,35 +159,35 @@ Eigen::VectorXd least_squares_amplitudes(const CandidateSums& s, int k, const st
 
 }  // namespace
 
-CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
-                                 const std::vector<std::vector<gap::Extension>>& selected,
-                                 const gap::NullCalibration& m0, const std::vector<std::vector<int>>& groups) {
-  std::vector<gap::LayoutContext> ctx(p.layouts.size());
+CandidateSums evaluate_candidate(const runs::PreparedRuns& p, const Candidate& c,
+                                 const std::vector<std::vector<runs::Extension>>& selected,
+                                 const NullCalibration& m0, const std::vector<std::vector<int>>& groups) {
+  std::vector<LayoutContext> ctx(p.layouts.size());
   for (std::size_t L = 0; L < p.layouts.size(); ++L) ctx[L] = {&p.layouts[L], &p.site, &p.bases[L], {}};
   return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, ctx, m0, groups)
                                        : evaluate_amplitudes(p, c, selected, ctx);
 }
 
-gap::RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices) {
-  std::vector<gap::GroupSums> sums(runs.size());
+RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices) {
+  std::vector<runs::GroupSums> sums(runs.size());
   Eigen::MatrixXd keyed(s.keys->size(), static_cast<Eigen::Index>(runs.size()));
   for (std::size_t j = 0; j < runs.size(); ++j) {
     const auto r = static_cast<std::size_t>(runs[j]);
     const Choice& choice = choices[j];
     if (!s.amplitudes) {
-      const Evaluated& e = s.at[static_cast<std::size_t>(choice.grid)];
+      const EvaluatedRuns& e = s.at[static_cast<std::size_t>(choice.grid)];
       sums[j] = e.sums[r];
       keyed.col(static_cast<Eigen::Index>(j)) = e.keyed.col(static_cast<Eigen::Index>(r));
       continue;
     }
     const int L = s.layout_of[r];
-    const gap::RunAnalyser& a = *s.fit[static_cast<std::size_t>(L)];
+    const runs::RunAnalyser& a = *s.fit[static_cast<std::size_t>(L)];
     Eigen::MatrixXd scratch;
     const Eigen::VectorXd v = s.normalized[r] - signature_of(s, choice.grid, runs[j], scratch) * choice.amplitude;
     sums[j] = a.sums_of(v);
-    keyed.col(static_cast<Eigen::Index>(j)) = gap::keyed_values(v, a, L, *s.keys);
+    keyed.col(static_cast<Eigen::Index>(j)) = runs::keyed_values(v, a, L, *s.keys);
   }
-  return gap::make_run_set(std::move(sums), keyed, *s.keys);
+  return make_run_set(std::move(sums), keyed, *s.keys);
 }
 
 RunsUnderChoice::RunsUnderChoice(const CandidateSums& sums, std::vector<int> runs_in) : s(&sums), runs(std::move(runs_in)) {
@@ -241,27 +200,27 @@ RunsUnderChoice::RunsUnderChoice(const CandidateSums& sums, std::vector<int> run
   }
 }
 
-double RunsUnderChoice::gap_at(int k, const gap::NullCalibration& m0, Choice* choice) const {
+double RunsUnderChoice::gap_at(int k, const NullCalibration& m0, Choice* choice) const {
   Choice here{k, {}};
   double g = 0;
   if (s->amplitudes) {
     // Amplitudes by least squares on the multiset; G over its distinct runs
     // each counted as often as it is drawn.
     here.amplitude = least_squares_amplitudes(*s, k, runs);
-    g = gap::gap_value(run_set_under(*s, distinct, std::vector<Choice>(distinct.size(), here)), at, m0);
+    g = gap_value(run_set_under(*s, distinct, std::vector<Choice>(distinct.size(), here)), at, m0);
   } else {
     if (!s->evaluated[static_cast<std::size_t>(k)]) return std::numeric_limits<double>::infinity();
-    g = gap::gap_value(s->sets[static_cast<std::size_t>(k)], runs, m0);
+    g = gap_value(s->sets[static_cast<std::size_t>(k)], runs, m0);
   }
   if (choice) *choice = std::move(here);
   return g;
 }
 
-Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0) {
+Choice choose(const CandidateSums& s, const std::vector<int>& runs, const NullCalibration& m0) {
   return choose(RunsUnderChoice(s, runs), m0);
 }
 
-Choice choose(const RunsUnderChoice& under, const gap::NullCalibration& m0) {
+Choice choose(const RunsUnderChoice& under, const NullCalibration& m0) {
   Choice best, here;
   double best_gap = std::numeric_limits<double>::infinity();
   for (int k = 0; k < under.grid_size(); ++k) {
@@ -271,11 +230,11 @@ Choice choose(const RunsUnderChoice& under, const gap::NullCalibration& m0) {
   return best;
 }
 
-std::vector<double> parameter_values(const gap::Candidate& c, const Choice& choice) {
+std::vector<double> parameter_values(const Candidate& c, const Choice& choice) {
   std::vector<double> v = c.grid_point(choice.grid);
   const std::vector<int> amp = c.amplitude_indices();
   for (std::size_t j = 0; j < amp.size(); ++j) v[static_cast<std::size_t>(amp[j])] = choice.amplitude[static_cast<Eigen::Index>(j)];
   return v;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -14,61 +14,30 @@
 #include "montecarlo/gap/candidates/candidates.h"
 #include "montecarlo/gap/metric/gap_metric.h"
 #include "montecarlo/gap/metric/run_set.h"
-#include "montecarlo/gap/model/gaussian_model.h"
-#include "montecarlo/gap/model/run_analysis.h"
-#include "montecarlo/gap/records/layout.h"
+#include "montecarlo/runs/prepared_runs.h"
+#include "montecarlo/runs/model/gaussian_model.h"
+#include "montecarlo/runs/model/run_analysis.h"
+#include "montecarlo/runs/records/layout.h"
 
-namespace insmc::mc {
-
-/// The runs, their layouts and the base model of each layout.
-struct PreparedRuns {
-  gap::RecordSite site;
-  std::vector<gap::RunData> runs;
-  std::vector<gap::Layout> layouts;
-  std::vector<int> layout_of;  // per run
-  std::vector<gap::BaseModel> bases;
-  UncertaintyVector x_var;
-  gap::KeySpace keys;          // over every layout
-
-  /// Index of `layout`, added (with its base model and keys) when new.
-  int layout_index(const gap::Layout& layout);
-  /// Index of the layout `run` is analysed under: its own, or a known
-  /// layout it is the beginning of (gap::rows_begun; the run then loses
-  /// the last r row that layout lacks), else its own, added.
-  int place(gap::RunData& run);
-};
-
-Eigen::VectorXd run_values(const gap::RunData& run);
-
-/// Runs under one model: each run's group sums and its normalized values in
-/// the key space (columns).
-struct Evaluated {
-  std::vector<gap::GroupSums> sums;
-  Eigen::MatrixXd keyed;  ///< keys × runs
-  gap::RunSet set(const gap::KeySpace& keys) const { return gap::make_run_set(sums, keyed, keys); }
-};
-
-/// `runs` (with their layouts) under the analysers of each layout.
-Evaluated evaluate_runs(const std::vector<gap::RunData>& runs, const std::vector<int>& layout_of,
-                        const std::vector<const gap::RunAnalyser*>& analysers, const gap::KeySpace& keys);
+namespace insmc::gap {
 
 /// One candidate evaluated on every run, before any choice of parameters.
 struct CandidateSums {
   bool amplitudes = false;
   /// Without amplitudes: every run at each grid point evaluated, and its
   /// run set (empty where the coarse-to-fine search skipped the point).
-  std::vector<Evaluated> at;
-  std::vector<gap::RunSet> sets;
+  std::vector<EvaluatedRuns> at;
+  std::vector<RunSet> sets;
   std::vector<bool> evaluated;
   /// With amplitudes: the fit without the candidate per layout, the runs'
   /// normalized values under it, and the normalized signature columns
   /// [grid][layout] (rows × amplitudes).
-  std::vector<std::optional<gap::RunAnalyser>> fit;
+  std::vector<std::optional<runs::RunAnalyser>> fit;
   std::vector<Eigen::VectorXd> normalized;
   std::vector<std::vector<Eigen::MatrixXd>> signature;
   std::vector<int> layout_of;
   Eigen::VectorXd amplitude_limit;  ///< the largest magnitude covered, per amplitude
-  const gap::KeySpace* keys = nullptr;
+  const runs::KeySpace* keys = nullptr;
   int grid_size() const { return amplitudes ? static_cast<int>(signature.size()) : static_cast<int>(at.size()); }
 };
 
@@ -85,13 +54,13 @@ struct Choice {
 /// are searched each on its own (files of null runs evaluated together: a
 /// point is evaluated once on every run, each group adds the values next to
 /// its own best); empty: all runs, one group.
-CandidateSums evaluate_candidate(const PreparedRuns& p, const gap::Candidate& c,
-                                 const std::vector<std::vector<gap::Extension>>& selected,
-                                 const gap::NullCalibration& m0, const std::vector<std::vector<int>>& groups = {});
+CandidateSums evaluate_candidate(const runs::PreparedRuns& p, const Candidate& c,
+                                 const std::vector<std::vector<runs::Extension>>& selected,
+                                 const NullCalibration& m0, const std::vector<std::vector<int>>& groups = {});
 
 /// Each run of `runs` under its own choice (e.g. the held-out runs of two
 /// folds, each under the other fold's fit), as a run set in that order.
-gap::RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices);
+RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices);
 
 /// A multiset of runs (indices into the candidate's runs, repeats allowed:
 /// a resample) and G on it at any grid point.
@@ -100,7 +69,7 @@ class RunsUnderChoice {
   RunsUnderChoice(const CandidateSums& s, std::vector<int> runs);
   /// G at grid point k (amplitudes by least squares on the multiset, into
   /// *choice when given); +inf at a point the search did not evaluate.
-  double gap_at(int k, const gap::NullCalibration& m0, Choice* choice = nullptr) const;
+  double gap_at(int k, const NullCalibration& m0, Choice* choice = nullptr) const;
   int grid_size() const { return s->grid_size(); }
 
  private:
@@ -110,10 +79,10 @@ class RunsUnderChoice {
 };
 
 /// The choice of least G on the multiset `runs` (m0: the null's calibration).
-Choice choose(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0);
-Choice choose(const RunsUnderChoice& under, const gap::NullCalibration& m0);
+Choice choose(const CandidateSums& s, const std::vector<int>& runs, const NullCalibration& m0);
+Choice choose(const RunsUnderChoice& under, const NullCalibration& m0);
 
 /// The candidate's parameter values of a choice (grid values and amplitudes).
-std::vector<double> parameter_values(const gap::Candidate& c, const Choice& choice);
+std::vector<double> parameter_values(const Candidate& c, const Choice& choice);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -7,9 +7,9 @@
 #include <utility>
 
 #include "lib/common/assert.h"
-#include "montecarlo/gap/model/likelihood.h"
+#include "montecarlo/runs/model/likelihood.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 namespace {
 
@@ -17,22 +17,22 @@ namespace {
 /// extensions added for layout L, none for the null). Each layout's
 /// model is built and factorized once, and only for layouts some run uses.
 template <class ExtensionOf>
-std::vector<double> per_run(const PreparedRuns& p, const std::vector<std::vector<gap::Extension>>& selected,
+std::vector<double> per_run(const runs::PreparedRuns& p, const std::vector<std::vector<runs::Extension>>& selected,
                             const ExtensionOf& extension) {
   // Keyed by layout and the run's rows: a run that stops early has the
   // marginal likelihood of the layout's first rows.
-  std::map<std::pair<std::size_t, std::size_t>, gap::RunLikelihood> models;
+  std::map<std::pair<std::size_t, std::size_t>, runs::RunLikelihood> models;
   std::vector<double> out(p.runs.size());
   for (std::size_t r = 0; r < p.runs.size(); ++r) {
     const auto L = static_cast<std::size_t>(p.layout_of[r]);
     const std::pair<std::size_t, std::size_t> key{L, p.runs[r].values.size()};
     auto it = models.find(key);
     if (it == models.end()) {
-      std::vector<const gap::Extension*> extensions;
-      for (const gap::Extension& e : selected[L]) extensions.push_back(&e);
-      const std::vector<gap::Extension> added = extension(L);
-      for (const gap::Extension& e : added) extensions.push_back(&e);
-      it = models.emplace(key, gap::first_rows(gap::combine(p.bases[L], extensions), key.second)).first;
+      std::vector<const runs::Extension*> extensions;
+      for (const runs::Extension& e : selected[L]) extensions.push_back(&e);
+      const std::vector<runs::Extension> added = extension(L);
+      for (const runs::Extension& e : added) extensions.push_back(&e);
+      it = models.emplace(key, runs::first_rows(runs::combine(p.bases[L], extensions), key.second)).first;
     }
     out[r] = it->second.log_likelihood(run_values(p.runs[r]));
   }
@@ -41,20 +41,20 @@ std::vector<double> per_run(const PreparedRuns& p, const std::vector<std::vector
 
 }  // namespace
 
-std::vector<int> likelihood_parameters(const gap::Candidate& c) {
+std::vector<int> likelihood_parameters(const Candidate& c) {
   std::vector<int> searched;
   for (std::size_t j = 0; j < c.parameters.size(); ++j)
     if (!c.parameters[j].amplitude) searched.push_back(static_cast<int>(j));
   return searched;
 }
 
-RunLogLikelihoods joint_evaluation(const PreparedRuns& p, std::vector<HeldCandidate> candidates,
-                                   const std::vector<std::vector<gap::Extension>>& selected) {
+RunLogLikelihoods joint_evaluation(const runs::PreparedRuns& p, std::vector<HeldCandidate> candidates,
+                                   const std::vector<std::vector<runs::Extension>>& selected) {
   INSMC_ASSERT(selected.size() == p.layouts.size(), "selected effects for {} layouts, expected {}", selected.size(),
                p.layouts.size());
   // Each candidate's layout contexts live as long as the function: candidates
   // cache unit responses in them, which every later evaluation reuses.
-  auto contexts = std::make_shared<std::vector<std::vector<gap::LayoutContext>>>();
+  auto contexts = std::make_shared<std::vector<std::vector<LayoutContext>>>();
   std::size_t searched = 0;
   for (const HeldCandidate& h : candidates) {
     auto& ctx = contexts->emplace_back(p.layouts.size());
@@ -67,7 +67,7 @@ RunLogLikelihoods joint_evaluation(const PreparedRuns& p, std::vector<HeldCandid
     std::vector<std::vector<double>> theta;
     std::size_t next = 0;
     for (const HeldCandidate& h : candidates) {
-      const gap::Candidate& c = *h.candidate;
+      const Candidate& c = *h.candidate;
       std::vector<double>& t = theta.emplace_back(c.parameters.size(), 0.0);
       for (int j : likelihood_parameters(c)) t[static_cast<std::size_t>(j)] = values[next++];
       const std::vector<int> amp = c.amplitude_indices();
@@ -75,7 +75,7 @@ RunLogLikelihoods joint_evaluation(const PreparedRuns& p, std::vector<HeldCandid
         t[static_cast<std::size_t>(amp[j])] = h.amplitudes[j];
     }
     return per_run(p, selected, [&](std::size_t L) {
-      std::vector<gap::Extension> added;
+      std::vector<runs::Extension> added;
       for (std::size_t i = 0; i < candidates.size(); ++i)
         added.push_back(candidates[i].candidate->build((*contexts)[i][L], theta[i]));
       return added;
@@ -83,14 +83,14 @@ RunLogLikelihoods joint_evaluation(const PreparedRuns& p, std::vector<HeldCandid
   };
 }
 
-RunLogLikelihoods candidate_evaluation(const PreparedRuns& p, const gap::Candidate& c,
-                                       const std::vector<std::vector<gap::Extension>>& selected) {
+RunLogLikelihoods candidate_evaluation(const runs::PreparedRuns& p, const Candidate& c,
+                                       const std::vector<std::vector<runs::Extension>>& selected) {
   return joint_evaluation(p, {{&c, {}}}, selected);
 }
 
-std::vector<double> null_log_likelihoods(const PreparedRuns& p,
-                                         const std::vector<std::vector<gap::Extension>>& selected) {
-  return per_run(p, selected, [](std::size_t) { return std::vector<gap::Extension>(); });
+std::vector<double> null_log_likelihoods(const runs::PreparedRuns& p,
+                                         const std::vector<std::vector<runs::Extension>>& selected) {
+  return per_run(p, selected, [](std::size_t) { return std::vector<runs::Extension>(); });
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -14,22 +14,22 @@
 #include "montecarlo/gap/fit/candidate_fit.h"
 #include "montecarlo/gap/fit/likelihood_lattice.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// Indices (in c.parameters) of the parameters a likelihood fit searches:
 /// the non-amplitude ones, in order. The evaluation takes values in this order.
-std::vector<int> likelihood_parameters(const gap::Candidate& c);
+std::vector<int> likelihood_parameters(const Candidate& c);
 
 /// The per-run log-likelihoods of `p`'s runs under `c` at the values of
 /// likelihood_parameters(c), on top of `selected` (per layout). `p`, `c` and
 /// `selected` must outlive the returned function.
-RunLogLikelihoods candidate_evaluation(const PreparedRuns& p, const gap::Candidate& c,
-                                       const std::vector<std::vector<gap::Extension>>& selected);
+RunLogLikelihoods candidate_evaluation(const runs::PreparedRuns& p, const Candidate& c,
+                                       const std::vector<std::vector<runs::Extension>>& selected);
 
 /// A candidate in a joint evaluation: its amplitudes (amplitude_indices()
 /// order; empty: all 0) held at these values.
 struct HeldCandidate {
-  const gap::Candidate* candidate = nullptr;
+  const Candidate* candidate = nullptr;
   std::vector<double> amplitudes;
 };
 
@@ -37,12 +37,12 @@ struct HeldCandidate {
 /// `candidates` added on top of `selected`, at the values of each one's
 /// likelihood_parameters() in turn. `p`, the candidates and `selected` must
 /// outlive the returned function.
-RunLogLikelihoods joint_evaluation(const PreparedRuns& p, std::vector<HeldCandidate> candidates,
-                                   const std::vector<std::vector<gap::Extension>>& selected);
+RunLogLikelihoods joint_evaluation(const runs::PreparedRuns& p, std::vector<HeldCandidate> candidates,
+                                   const std::vector<std::vector<runs::Extension>>& selected);
 
 /// The per-run log-likelihoods under the selected effects alone (the null of
 /// the cross-validation gain).
-std::vector<double> null_log_likelihoods(const PreparedRuns& p,
-                                         const std::vector<std::vector<gap::Extension>>& selected);
+std::vector<double> null_log_likelihoods(const runs::PreparedRuns& p,
+                                         const std::vector<std::vector<runs::Extension>>& selected);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

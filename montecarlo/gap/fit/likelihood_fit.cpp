@@ -9,7 +9,7 @@
 
 #include "lib/common/assert.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 bool LikelihoodFit::at_limit() const {
   return std::any_of(parameters.begin(), parameters.end(),
@@ -281,4 +281,4 @@ CrossValidation cross_validate(std::array<LikelihoodLattice*, 2> folds, std::spa
   return cv;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -24,7 +24,7 @@
 
 #include "montecarlo/gap/fit/likelihood_lattice.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// Where the profile log-likelihood stays within a drop of its maximum. An
 /// end that reaches a physical limit is open there (the data do not close it).
@@ -92,4 +92,4 @@ CrossValidation cross_validate(LikelihoodLattice& lattice, std::span<const doubl
 CrossValidation cross_validate(std::array<LikelihoodLattice*, 2> folds, std::span<const double> null_per_run,
                                Search search = Search::kCoarse, std::span<const int> start = {});
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

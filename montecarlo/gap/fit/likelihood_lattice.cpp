@@ -6,7 +6,7 @@
 
 #include "lib/common/assert.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 LikelihoodLattice::LikelihoodLattice(std::vector<FitParameter> parameters, RunLogLikelihoods evaluate, int runs,
                                      double step)
@@ -67,4 +67,4 @@ double LikelihoodLattice::sum(std::span<const int> index, std::span<const int> r
   return s;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// A parameter searched on a log scale between physical limits (SI, 0 < lower ≤ upper).
 struct FitParameter {
@@ -66,4 +66,4 @@ class LikelihoodLattice {
   std::map<std::vector<int>, std::vector<double>> cache_;
 };
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

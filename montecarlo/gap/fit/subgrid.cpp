@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 double parabola_vertex(const double (&x)[3], const double (&y)[3]) {
   const double a = (x[1] - x[0]) * (y[1] - y[2]), b = (x[1] - x[2]) * (y[1] - y[0]);
@@ -15,13 +15,13 @@ double parabola_vertex(const double (&x)[3], const double (&y)[3]) {
   return std::isfinite(v) ? v : x[1];
 }
 
-std::vector<double> subgrid_values(const gap::Candidate& c, const RunsUnderChoice& under,
-                                   const Choice& best, const gap::NullCalibration& m0) {
+std::vector<double> subgrid_values(const Candidate& c, const RunsUnderChoice& under,
+                                   const Choice& best, const NullCalibration& m0) {
   std::vector<double> values = parameter_values(c, best);
   // Grid index = Σ index_i × stride_i, the last searched parameter fastest (Candidate::grid_point).
   int stride = 1;
   for (std::size_t i = c.parameters.size(); i-- > 0;) {
-    const gap::CandidateParameter& par = c.parameters[i];
+    const CandidateParameter& par = c.parameters[i];
     if (par.amplitude) continue;
     const int n = static_cast<int>(par.grid.size());
     const int at = (best.grid / stride) % n;
@@ -53,4 +53,4 @@ std::vector<double> subgrid_values(const gap::Candidate& c, const RunsUnderChoic
   return values;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

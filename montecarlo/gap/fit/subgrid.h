@@ -12,17 +12,17 @@
 
 #include "montecarlo/gap/fit/candidate_fit.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// The parameter values of `best` (a choice of least G on `under`'s runs)
 /// with every searched parameter off the grid's ends moved to its vertex
 /// (amplitudes as fitted). A parameter at a grid end, next to a grid's 0,
 /// or whose parabola is not convex, keeps its grid value.
-std::vector<double> subgrid_values(const gap::Candidate& c, const RunsUnderChoice& under,
-                                   const Choice& best, const gap::NullCalibration& m0);
+std::vector<double> subgrid_values(const Candidate& c, const RunsUnderChoice& under,
+                                   const Choice& best, const NullCalibration& m0);
 
 /// The vertex of the parabola through (x[i], y[i]), i = 0..2, x ascending,
 /// y[1] the least; x[1] when the parabola is not convex.
 double parabola_vertex(const double (&x)[3], const double (&y)[3]);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

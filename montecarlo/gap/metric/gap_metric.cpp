@@ -14,12 +14,12 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 template <class F>
 double over_members(int c, const F& f) {
   double sum = 0.0;
-  for (int g = 0; g < kGroupCount; ++g)
-    if (coherent_group_of(g) == c) sum += f(g);
+  for (int g = 0; g < runs::kGroupCount; ++g)
+    if (runs::coherent_group_of(g) == c) sum += f(g);
   return sum;
 }
 
-double expected_sum(const GroupSums& s, const NullCalibration& cal, int g) {
+double expected_sum(const runs::GroupSums& s, const NullCalibration& cal, int g) {
   return s.expected[g] + cal.floor_share[g] * s.floor[g];
 }
 
@@ -30,11 +30,11 @@ NullCalibration NullCalibration::from_null(const RunSet& null) {
   std::vector<int> all(static_cast<std::size_t>(null.size()));
   std::iota(all.begin(), all.end(), 0);
   const Pooled p = pool(null, all);
-  const GroupSums& s = p.power;
-  for (int g = 0; g < kGroupCount; ++g)
+  const runs::GroupSums& s = p.power;
+  for (int g = 0; g < runs::kGroupCount; ++g)
     cal.floor_share[g] = s.floor[g] > 1e-9 * s.count[g] ? std::max(0.0, (s.z2[g] - s.expected[g]) / s.floor[g]) : 1.0;
   const double n = null.size();
-  for (int c = 0; c < kCoherentCount; ++c) {
+  for (int c = 0; c < runs::kCoherentCount; ++c) {
     // The mean inner product of two different null runs, over the floor one
     // run contributes: the share of the floor that all runs have in common.
     const Eigen::MatrixXd& g = null.gram[static_cast<std::size_t>(c)];
@@ -45,21 +45,21 @@ NullCalibration NullCalibration::from_null(const RunSet& null) {
   return cal;
 }
 
-GroupValues group_power(const GroupSums& sums) {
+GroupValues group_power(const runs::GroupSums& sums) {
   GroupValues p;
-  for (int g = 0; g < kGroupCount; ++g) p[g] = sums.count[g] > 0 ? sums.z2[g] / sums.count[g] : kNaN;
+  for (int g = 0; g < runs::kGroupCount; ++g) p[g] = sums.count[g] > 0 ? sums.z2[g] / sums.count[g] : kNaN;
   return p;
 }
 
-GroupValues expected_power(const GroupSums& sums, const NullCalibration& cal) {
+GroupValues expected_power(const runs::GroupSums& sums, const NullCalibration& cal) {
   GroupValues p;
-  for (int g = 0; g < kGroupCount; ++g) p[g] = sums.count[g] > 0 ? expected_sum(sums, cal, g) / sums.count[g] : kNaN;
+  for (int g = 0; g < runs::kGroupCount; ++g) p[g] = sums.count[g] > 0 ? expected_sum(sums, cal, g) / sums.count[g] : kNaN;
   return p;
 }
 
 CoherentValues coherent_power(const Pooled& p) {
   CoherentValues out;
-  for (int c = 0; c < kCoherentCount; ++c) {
+  for (int c = 0; c < runs::kCoherentCount; ++c) {
     const double count = over_members(c, [&](int g) { return p.power.count[g]; });
     out[static_cast<std::size_t>(c)] = count > 0 ? p.coherent[static_cast<std::size_t>(c)] / count : kNaN;
   }
@@ -69,7 +69,7 @@ CoherentValues coherent_power(const Pooled& p) {
 CoherentValues expected_coherent_power(const Pooled& p, const NullCalibration& cal, CoherentReference reference) {
   CoherentValues out;
   const double m = p.runs;
-  for (int c = 0; c < kCoherentCount; ++c) {
+  for (int c = 0; c < runs::kCoherentCount; ++c) {
     const double count = over_members(c, [&](int g) { return p.power.count[g]; });
     // The runs' own scatter as observed: only what they share beyond
     // independence is compared, so a random effect, which raises every
@@ -94,7 +94,7 @@ CoherentValues expected_coherent_power(const Pooled& p, const NullCalibration& c
 
 LogRatios log_ratios(const Pooled& p, const NullCalibration& cal, CoherentReference reference) {
   LogRatios l;
-  for (int g = 0; g < kGroupCount; ++g) {
+  for (int g = 0; g < runs::kGroupCount; ++g) {
     // The model expects between the linear level's own scatter (no model
     // error) and that plus the floor's share the null shows (the truth
     // level's second-order terms): data anywhere in that band agree with it.
@@ -112,7 +112,7 @@ LogRatios log_ratios(const Pooled& p, const NullCalibration& cal, CoherentRefere
     }
   }
   const CoherentValues observed = coherent_power(p), expected = expected_coherent_power(p, cal, reference);
-  for (int c = 0; c < kCoherentCount; ++c) {
+  for (int c = 0; c < runs::kCoherentCount; ++c) {
     const auto k = static_cast<std::size_t>(c);
     l.coherent[k] = std::isfinite(observed[k]) && expected[k] > 0 ? std::log(std::max(observed[k], expected[k]) / expected[k])
                                                                   : kNaN;

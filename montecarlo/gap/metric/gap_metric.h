@@ -44,7 +44,7 @@
 
 namespace insmc::gap {
 
-using GroupValues = std::array<double, kGroupCount>;
+using GroupValues = std::array<double, runs::kGroupCount>;
 
 struct NullCalibration {
   GroupValues floor_share{};    ///< κ_g ≥ 0 (1 where the floor adds nothing)
@@ -73,9 +73,9 @@ enum class CoherentReference {
 };
 
 /// Mean z² per scatter group (NaN where a group has no terms).
-GroupValues group_power(const GroupSums& sums);
+GroupValues group_power(const runs::GroupSums& sums);
 /// The calibrated expected mean z² per scatter group.
-GroupValues expected_power(const GroupSums& sums, const NullCalibration& calibration);
+GroupValues expected_power(const runs::GroupSums& sums, const NullCalibration& calibration);
 /// C_c / m and its calibrated expectation / m per coherent group.
 CoherentValues coherent_power(const Pooled& pooled);
 CoherentValues expected_coherent_power(const Pooled& pooled, const NullCalibration& calibration,

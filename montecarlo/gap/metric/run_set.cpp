@@ -4,51 +4,18 @@
 #include <cmath>
 
 #include "lib/common/assert.h"
+#include "montecarlo/runs/prepared_runs.h"
 
 namespace insmc::gap {
 
-void KeySpace::add_layout(const Layout& layout) {
-  std::vector<int> keys(layout.rows.size());
-  for (std::size_t i = 0; i < layout.rows.size(); ++i) {
-    const ObservationRow& row = layout.rows[i];
-    const std::tuple<long long, int, int> id{std::llround(row.t_s * 1e6), static_cast<int>(row.quantity), row.axis};
-    const auto it = std::lower_bound(order_.begin(), order_.end(), id,
-                                     [&](int k, const auto& v) { return ids_[static_cast<std::size_t>(k)] < v; });
-    if (it != order_.end() && ids_[static_cast<std::size_t>(*it)] == id) {
-      keys[i] = *it;
-      continue;
-    }
-    const int key = static_cast<int>(groups_.size());
-    groups_.push_back(row.group);
-    ids_.push_back(id);
-    order_.insert(it, key);
-    keys[i] = key;
-  }
-  row_keys_.push_back(std::move(keys));
-}
-
-int KeySpace::coherent_group(int key) const {
-  return key < row_key_count() ? coherent_group_of(groups_[static_cast<std::size_t>(key)])
-                               : coherent_group_of(kEstimatesGroup);
-}
-
-Eigen::VectorXd keyed_values(const Eigen::VectorXd& v, const RunAnalyser& a, int layout, const KeySpace& keys) {
-  Eigen::VectorXd out = Eigen::VectorXd::Zero(keys.size());
-  const std::size_t rows = v.size() - a.estimate_x_columns().size();
-  for (std::size_t i = 0; i < rows; ++i) out[keys.row_key(layout, i)] = v[static_cast<Eigen::Index>(i)];
-  for (std::size_t k = 0; k < a.estimate_x_columns().size(); ++k)
-    out[keys.estimate_key(a.estimate_x_columns()[k])] = v[static_cast<Eigen::Index>(rows + k)];
-  return out;
-}
-
-RunSet make_run_set(std::vector<GroupSums> sums, const Eigen::MatrixXd& keyed, const KeySpace& keys) {
+RunSet make_run_set(std::vector<runs::GroupSums> sums, const Eigen::MatrixXd& keyed, const runs::KeySpace& keys) {
   INSMC_ASSERT(keyed.cols() == static_cast<Eigen::Index>(sums.size()) && keyed.rows() == keys.size(),
                "keyed values {}x{} for {} runs, {} keys", keyed.rows(), keyed.cols(), sums.size(), keys.size());
   RunSet set;
   set.sums = std::move(sums);
-  std::array<std::vector<Eigen::Index>, kCoherentCount> members;
+  std::array<std::vector<Eigen::Index>, runs::kCoherentCount> members;
   for (int k = 0; k < keys.size(); ++k) members[static_cast<std::size_t>(keys.coherent_group(k))].push_back(k);
-  for (int c = 0; c < kCoherentCount; ++c) {
+  for (int c = 0; c < runs::kCoherentCount; ++c) {
     const Eigen::MatrixXd z = keyed(members[static_cast<std::size_t>(c)], Eigen::all);
     set.gram[static_cast<std::size_t>(c)] = z.transpose() * z;
   }
@@ -60,7 +27,7 @@ Pooled pool(const RunSet& set, std::span<const int> runs) {
   p.runs = static_cast<int>(runs.size());
   for (int r : runs) p.power += set.sums[static_cast<std::size_t>(r)];
   if (runs.empty()) return p;
-  for (int c = 0; c < kCoherentCount; ++c) {
+  for (int c = 0; c < runs::kCoherentCount; ++c) {
     const Eigen::MatrixXd& g = set.gram[static_cast<std::size_t>(c)];
     double sum = 0.0;
     for (int a : runs)
@@ -68,6 +35,21 @@ Pooled pool(const RunSet& set, std::span<const int> runs) {
     p.coherent[static_cast<std::size_t>(c)] = sum / static_cast<double>(runs.size());
   }
   return p;
+}
+
+EvaluatedRuns evaluate_runs(const std::vector<runs::RunData>& runs, const std::vector<int>& layout_of,
+                        const std::vector<const runs::RunAnalyser*>& analysers, const runs::KeySpace& keys) {
+  EvaluatedRuns e;
+  e.sums.resize(runs.size());
+  e.keyed.resize(keys.size(), static_cast<Eigen::Index>(runs.size()));
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const int L = layout_of[r];
+    const runs::RunAnalyser& a = *analysers[static_cast<std::size_t>(L)];
+    const Eigen::VectorXd v = a.normalized(run_values(runs[r]));
+    e.sums[r] = a.sums_of(v);
+    e.keyed.col(static_cast<Eigen::Index>(r)) = runs::keyed_values(v, a, L, keys);
+  }
+  return e;
 }
 
 }  // namespace insmc::gap

@@ -11,54 +11,40 @@
 #include <tuple>
 #include <vector>
 
-#include "montecarlo/gap/model/run_analysis.h"
+#include "montecarlo/runs/model/key_space.h"
+#include "montecarlo/runs/model/run_analysis.h"
+#include "montecarlo/runs/records/layout.h"
 
 namespace insmc::gap {
 
-/// Observations of different runs that are the same (quantity, axis, time),
-/// numbered across layouts; the estimates follow, keyed by their x column.
-class KeySpace {
- public:
-  /// Numbers the rows of a layout (layouts are given once each, in order).
-  void add_layout(const Layout& layout);
-  int layouts() const { return static_cast<int>(row_keys_.size()); }
-  /// Key of row i of layout L.
-  int row_key(int layout, std::size_t row) const { return row_keys_[static_cast<std::size_t>(layout)][row]; }
-  int row_key_count() const { return static_cast<int>(groups_.size()); }
-  /// Key of the estimate of x column j.
-  int estimate_key(int x_column) const { return row_key_count() + x_column; }
-  int size() const { return row_key_count() + ux::kDim; }
-  /// Coherent group of a key.
-  int coherent_group(int key) const;
-
- private:
-  std::vector<std::vector<int>> row_keys_;
-  std::vector<int> groups_;                      // report group per row key
-  std::vector<std::tuple<long long, int, int>> ids_;  // (t in µs, quantity, axis) per row key, sorted lookup below
-  std::vector<int> order_;                       // row keys sorted by id
-};
-
-/// A run's normalized values (rows, then estimates: RunAnalyser::normalized)
-/// placed in the key space (zero where the run has no such observation).
-Eigen::VectorXd keyed_values(const Eigen::VectorXd& normalized, const RunAnalyser& analyser, int layout,
-                             const KeySpace& keys);
-
-using CoherentValues = std::array<double, kCoherentCount>;
+using CoherentValues = std::array<double, runs::kCoherentCount>;
 
 struct RunSet {
-  std::vector<GroupSums> sums;                       ///< per run
-  std::array<Eigen::MatrixXd, kCoherentCount> gram;  ///< runs × runs per coherent group
+  std::vector<runs::GroupSums> sums;                       ///< per run
+  std::array<Eigen::MatrixXd, runs::kCoherentCount> gram;  ///< runs × runs per coherent group
   int size() const { return static_cast<int>(sums.size()); }
 };
 
 /// The set of runs whose keyed values are the columns of `keyed` (keys × runs).
-RunSet make_run_set(std::vector<GroupSums> sums, const Eigen::MatrixXd& keyed, const KeySpace& keys);
+RunSet make_run_set(std::vector<runs::GroupSums> sums, const Eigen::MatrixXd& keyed, const runs::KeySpace& keys);
+
+/// Runs under one model: each run's group sums and its normalized values in
+/// the key space (columns).
+struct EvaluatedRuns {
+  std::vector<runs::GroupSums> sums;
+  Eigen::MatrixXd keyed;  ///< keys × runs
+  RunSet set(const runs::KeySpace& keys) const { return make_run_set(sums, keyed, keys); }
+};
+
+/// `runs` (with their layouts) under the analysers of each layout.
+EvaluatedRuns evaluate_runs(const std::vector<runs::RunData>& runs, const std::vector<int>& layout_of,
+                        const std::vector<const runs::RunAnalyser*>& analysers, const runs::KeySpace& keys);
 
 /// A multiset of the runs pooled: the group sums added, and per coherent
 /// group (1/m) Σ over pairs (a, b) of the multiset of the inner products,
 /// i.e. m |mean of the runs' values|² over the group.
 struct Pooled {
-  GroupSums power;
+  runs::GroupSums power;
   CoherentValues coherent{};
   int runs = 0;
 };

@@ -4,7 +4,7 @@
 
 #include "montecarlo/random/philox.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 std::vector<int> all_runs(std::size_t n) {
   std::vector<int> v(n);
@@ -13,7 +13,7 @@ std::vector<int> all_runs(std::size_t n) {
 }
 
 std::vector<int> resample(std::uint64_t seed, std::uint64_t b, int n, int pool) {
-  CounterStream s(seed, Stream::Bootstrap, b);
+  mc::CounterStream s(seed, mc::Stream::Bootstrap, b);
   std::vector<int> idx(static_cast<std::size_t>(n));
   for (int& i : idx) i = std::min(pool - 1, static_cast<int>(s.uniform01() * pool));
   return idx;
@@ -33,4 +33,4 @@ double p_value_of(double observed, const std::vector<double>& null) {
   return (1.0 + static_cast<double>(above)) / (1.0 + static_cast<double>(null.size()));
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

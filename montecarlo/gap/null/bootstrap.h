@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// 0, 1, ..., n − 1: every run once.
 std::vector<int> all_runs(std::size_t n);
@@ -21,4 +21,4 @@ double quantile(std::vector<double> v, double q);
 /// among them (never 0).
 double p_value_of(double observed, const std::vector<double>& null);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

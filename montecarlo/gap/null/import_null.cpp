@@ -11,10 +11,10 @@
 #include "lib/noise/noise_synthesis.h"
 #include "lib/noise/recording.h"
 #include "lib/units/units.h"
-#include "montecarlo/gap/null/record_simulation.h"
-#include "montecarlo/gap/records/raw_stage.h"
+#include "montecarlo/runs/simulation/record_simulation.h"
+#include "montecarlo/runs/records/raw_stage.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 /// The NormalSource streams of the synthesized noise: above every stream the
@@ -64,7 +64,7 @@ bool on_output_grid(double t_s, const StrapdownOptions& nav) {
 
 std::optional<ImportNull> import_null_for(const RecordFile& file, std::vector<std::string>& statements) {
   const RecordHeader& header = file.header;
-  const std::optional<RawStage> raw = raw_stage_from_header(header);
+  const std::optional<runs::RawStage> raw = runs::raw_stage_from_header(header);
   if (!raw) return std::nullopt;
   ImportNull in;
   StrapdownOptions& nav = in.nav;
@@ -98,7 +98,7 @@ std::optional<ImportNull> import_null_for(const RecordFile& file, std::vector<st
   const double shortest = std::max(kMinSynthesisIntervalS, nav.run_duration_s() / kMaxSynthesizedSamples);
   const double per_interval = std::floor(nav.output_interval_s / std::max(raw_dt, shortest));
   in.sample_interval_s = nav.output_interval_s / std::max(1.0, per_interval);
-  for (const RawChannel& ch : raw->channels) {
+  for (const runs::RawChannel& ch : raw->channels) {
     std::size_t c = 0;
     while (c < noise::kChannels && noise::channel_name(c) != ch.channel) ++c;
     INSMC_ASSERT(c < noise::kChannels, "raw channel {}", ch.channel);
@@ -138,7 +138,7 @@ void add_import_noise(RecordRun& null_run, const RecordHeader& header, std::int6
 
   const double dt = import.sample_interval_s;
   const auto n = static_cast<std::size_t>(std::ceil(import.nav.run_duration_s() / dt)) + 2;
-  const NormalSource normals = philox_normals(seed, run);
+  const NormalSource normals = runs::philox_normals(seed, run);
   std::vector<noise::NoiseSynthesizer> channels;
   channels.reserve(noise::kChannels);
   for (std::size_t c = 0; c < noise::kChannels; ++c)
@@ -171,4 +171,4 @@ void add_import_noise(RecordRun& null_run, const RecordHeader& header, std::int6
   }
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -21,7 +21,7 @@
 #include "lib/noise/noise_fit.h"
 #include "lib/records/record.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 struct ImportNull {
   StrapdownOptions nav;                      ///< the importer's settings (imu.* keys)
@@ -44,4 +44,4 @@ std::optional<ImportNull> import_null_for(const RecordFile& file, std::vector<st
 void add_import_noise(RecordRun& null_run, const RecordHeader& header, std::int64_t pattern_id,
                       const ImportNull& import, std::uint64_t seed, std::uint64_t run);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

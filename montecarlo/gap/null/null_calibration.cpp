@@ -7,12 +7,12 @@
 
 #include "lib/common/assert.h"
 #include "montecarlo/gap/null/bootstrap.h"
-#include "montecarlo/gap/null/record_simulation.h"
-#include "montecarlo/gap/records/diagnosis_records.h"
+#include "montecarlo/runs/simulation/record_simulation.h"
+#include "montecarlo/runs/prepared_runs.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
-std::vector<gap::RunData> simulate_like_records(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options,
+std::vector<runs::RunData> simulate_like_records(runs::PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options,
                                                 int runs, std::uint64_t first_run, const std::vector<EffectSpec>& effects,
                                                 std::vector<int>& layout_of, const ImportNull* import) {
   TruthOptions truth;
@@ -21,14 +21,14 @@ std::vector<gap::RunData> simulate_like_records(PreparedRuns& p, const RecordFil
   truth.dv_pulse_mps = p.site.dv_pulse_mps;
   truth.filter_interval_s = p.site.filter_interval_s;
   truth.effects = effects;
-  const Sampler sampler(options.prior);
+  const mc::Sampler sampler(options.prior);
   // The runs after the records' scheme, with the estimators the diagnosis uses.
-  const TestRunOptions test = gap::record_test_options(p.site);
+  const TestRunOptions test = runs::record_test_options(p.site);
   const TruthSchemeSetup setup(truth, test, p.site.estimators ? *p.site.estimators : TestRunEstimators{});
-  const RecordRunSpec spec{p.site.test_duration_s, p.site.position_resolution_m, p.site.scheme, &setup,
+  const runs::RecordRunSpec spec{p.site.test_duration_s, p.site.position_resolution_m, p.site.scheme, &setup,
                            p.site.nav_start_s};
-  std::vector<gap::RunData> sim(static_cast<std::size_t>(runs));
-  std::vector<gap::SchemeEstimates> estimates(static_cast<std::size_t>(runs));
+  std::vector<runs::RunData> sim(static_cast<std::size_t>(runs));
+  std::vector<runs::SchemeEstimates> estimates(static_cast<std::size_t>(runs));
   std::atomic<std::uint64_t> simulated{0};
   const auto total = static_cast<std::uint64_t>(runs);
   const char* stage = !effects.empty() ? "runs with the finding" : import ? "null through the import" : "null calibration";
@@ -40,9 +40,9 @@ std::vector<gap::RunData> simulate_like_records(PreparedRuns& p, const RecordFil
     one.header = file.header;
     one.runs.push_back(simulate_like(pattern, truth, sampler, options.seed, run, spec));
     if (import) add_import_noise(one.runs.front(), file.header, pattern.id, *import, options.seed, run);
-    sim[static_cast<std::size_t>(j)] = std::move(gap::extract_runs(one, p.site, options.extraction).front());
+    sim[static_cast<std::size_t>(j)] = std::move(runs::extract_runs(one, p.site, options.extraction).front());
     if (p.site.estimators) {
-      const std::optional<gap::SchemeEstimates> u = gap::record_estimates(one.runs.front(), p.site, *p.site.estimators);
+      const std::optional<runs::SchemeEstimates> u = runs::record_estimates(one.runs.front(), p.site, *p.site.estimators);
       INSMC_ASSERT(u.has_value(), "simulated run {} lacks its test grid", j);
       estimates[static_cast<std::size_t>(j)] = *u;
     }
@@ -56,23 +56,23 @@ std::vector<gap::RunData> simulate_like_records(PreparedRuns& p, const RecordFil
   return sim;
 }
 
-Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
+ModelNull calibrate(runs::PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
                std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of, const ImportNull* import) {
-  std::vector<gap::RunData> sim = simulate_like_records(p, file, options, runs, 0, {}, layout_of, import);
-  std::vector<gap::RunAnalyser> analysers;
-  std::vector<const gap::RunAnalyser*> pointers;
+  std::vector<runs::RunData> sim = simulate_like_records(p, file, options, runs, 0, {}, layout_of, import);
+  std::vector<runs::RunAnalyser> analysers;
+  std::vector<const runs::RunAnalyser*> pointers;
   analysers.reserve(p.layouts.size());
   for (std::size_t L = 0; L < p.layouts.size(); ++L) {
-    analysers.emplace_back(p.layouts[L], gap::combine(p.bases[L], {}));
+    analysers.emplace_back(p.layouts[L], runs::combine(p.bases[L], {}));
     pointers.push_back(&analysers.back());
   }
-  const gap::RunSet set = evaluate_runs(sim, layout_of, pointers, p.keys).set(p.keys);
+  const RunSet set = evaluate_runs(sim, layout_of, pointers, p.keys).set(p.keys);
   z.resize(sim.size());
   tbb::parallel_for(std::size_t{0}, sim.size(), [&](std::size_t j) {
     analysers[static_cast<std::size_t>(layout_of[j])].analyse(run_values(sim[j]), z[j]);
   });
-  Null null;
-  null.calibration = gap::NullCalibration::from_null(set);
+  ModelNull null;
+  null.calibration = NullCalibration::from_null(set);
   const int n = static_cast<int>(p.runs.size());
   const auto B = static_cast<std::size_t>(options.bootstrap);
   null.gaps.resize(B);
@@ -81,10 +81,10 @@ Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& 
   null.log_ratios.resize(B);
   tbb::parallel_for(0, options.bootstrap, [&](int b) {
     const auto i = static_cast<std::size_t>(b);
-    const gap::Pooled s = gap::pool(set, resample(options.seed, static_cast<std::uint64_t>(b), n, runs));
-    null.log_ratios[i] = gap::log_ratios(s, null.calibration, gap::CoherentReference::kAtLeastModelScatter);
-    null.gaps[i] = gap::gap_value(null.log_ratios[i]);
-    const gap::SignedGap signed_gap = gap::signed_gap(null.log_ratios[i]);
+    const Pooled s = pool(set, resample(options.seed, static_cast<std::uint64_t>(b), n, runs));
+    null.log_ratios[i] = log_ratios(s, null.calibration, CoherentReference::kAtLeastModelScatter);
+    null.gaps[i] = gap_value(null.log_ratios[i]);
+    const SignedGap signed_gap = gap::signed_gap(null.log_ratios[i]);
     null.unmodelled[i] = signed_gap.unmodelled;
     null.pessimistic[i] = signed_gap.pessimistic;
   });
@@ -94,4 +94,4 @@ Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& 
   return null;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

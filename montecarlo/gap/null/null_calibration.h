@@ -9,22 +9,23 @@
 
 #include "lib/records/record.h"
 #include "lib/truth/effect.h"
-#include "montecarlo/gap/diagnosis.h"
-#include "montecarlo/gap/fit/candidate_fit.h"
+#include "montecarlo/gap/diagnosis_options.h"
+#include "montecarlo/gap/metric/run_set.h"
+#include "montecarlo/runs/prepared_runs.h"
 #include "montecarlo/gap/metric/gap_metric.h"
 #include "montecarlo/gap/null/import_null.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// Everything the candidate search needs from the null calibration.
-struct Null {
-  gap::NullCalibration calibration;        // κ_g, λ_c
+struct ModelNull {
+  NullCalibration calibration;        // κ_g, λ_c
   std::vector<double> gaps;                // G of the null files
   std::vector<double> unmodelled;          // G₊ of the null files
   std::vector<double> pessimistic;         // G₋ of the null files
-  std::vector<gap::LogRatios> log_ratios;  // ℓ of the null files
-  gap::RunSet set;                         // the null runs under the base model
-  std::vector<gap::RunData> runs;          // the null runs (estimates taken off)
+  std::vector<LogRatios> log_ratios;  // ℓ of the null files
+  RunSet set;                         // the null runs under the base model
+  std::vector<runs::RunData> runs;          // the null runs (estimates taken off)
   std::vector<int> layout_of;              // their layouts
 };
 
@@ -34,7 +35,7 @@ struct Null {
 /// run first_run + j of options.seed's streams; `effects` are added to the
 /// model (none: the null); with `import`, the sensor's noise through the
 /// import is added to each.
-std::vector<gap::RunData> simulate_like_records(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options,
+std::vector<runs::RunData> simulate_like_records(runs::PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options,
                                                 int runs, std::uint64_t first_run, const std::vector<EffectSpec>& effects,
                                                 std::vector<int>& layout_of, const ImportNull* import = nullptr);
 
@@ -44,7 +45,7 @@ std::vector<gap::RunData> simulate_like_records(PreparedRuns& p, const RecordFil
 /// keep each null run's row values and layout (for the Allan curves).
 /// With `import`, every null run also carries the sensor's noise through
 /// the import (null/import_null.h).
-Null calibrate(PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
+ModelNull calibrate(runs::PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
                std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of, const ImportNull* import = nullptr);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

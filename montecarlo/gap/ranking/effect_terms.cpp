@@ -6,9 +6,9 @@
 #include "lib/truth/effect.h"
 #include "lib/units/quantity_display.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
-EffectArgument effect_argument(const CandidateResult& c, const gap::RecordSite& site) {
+EffectArgument effect_argument(const CandidateResult& c, const runs::RecordSite& site) {
   EffectArgument out;
   const EffectInfo* info = nullptr;
   for (const EffectInfo& e : effect_registry())
@@ -47,4 +47,4 @@ EffectArgument effect_argument(const CandidateResult& c, const gap::RecordSite& 
   return out;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "montecarlo/gap/diagnosis.h"
-#include "montecarlo/gap/records/layout.h"
+#include "montecarlo/gap/diagnosis_results.h"
+#include "montecarlo/runs/records/layout.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 struct EffectArgument {
   std::string text;               ///< NAME:p=v,...; empty when the candidate is not an effect's
@@ -18,6 +18,6 @@ struct EffectArgument {
 /// The effect of candidate `c` with its fitted values (already in the
 /// effect's terms, ranking.cpp) and, for parameters the records do not fit,
 /// the effect's defaults or the site's (a transient's warm-up).
-EffectArgument effect_argument(const CandidateResult& c, const gap::RecordSite& site);
+EffectArgument effect_argument(const CandidateResult& c, const runs::RecordSite& site);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

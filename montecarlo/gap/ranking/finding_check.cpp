@@ -8,14 +8,14 @@
 #include "montecarlo/gap/fit/subgrid.h"
 #include "montecarlo/gap/ranking/effect_terms.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 /// Run indices of the simulated runs start here, far past any null run's.
 constexpr std::uint64_t kFirstRun = std::uint64_t{1} << 40;
 
-const gap::Candidate* candidate_named(const DiagnosisOptions& options, const std::string& name) {
-  for (const gap::Candidate& c : candidates_of(options))
+const Candidate* candidate_named(const DiagnosisOptions& options, const std::string& name) {
+  for (const Candidate& c : candidates_of(options))
     if (c.name == name) return &c;
   return nullptr;
 }
@@ -61,11 +61,11 @@ ParameterEstimate corrected(const ParameterEstimate& e, const SimulatedCheck& ch
   return out;
 }
 
-void check_finding(Diagnosis& d, const PreparedRuns& p, const RecordFile& file, const Null& null,
+void check_finding(Diagnosis& d, const runs::PreparedRuns& p, const RecordFile& file, const ModelNull& null,
                    const DiagnosisOptions& options) {
   if (d.ranking.empty() || d.ranking[0].as_effect.empty()) return;
   CandidateResult& finding = d.ranking[0];
-  const gap::Candidate* c = candidate_named(options, finding.effect);
+  const Candidate* c = candidate_named(options, finding.effect);
   if (c == nullptr) return;
   const EffectSpec spec = parse_effect(finding.as_effect, "as_effect");
   // Only a parameter off its grid's edges and of the effect's own is corrected.
@@ -75,7 +75,7 @@ void check_finding(Diagnosis& d, const PreparedRuns& p, const RecordFile& file, 
   };
   if (std::none_of(finding.parameters.begin(), finding.parameters.end(), checkable)) return;
   const std::size_t n = p.runs.size();
-  PreparedRuns q = p;
+  runs::PreparedRuns q = p;
   std::vector<int> layout_of;
   q.runs = simulate_like_records(q, file, options, static_cast<int>(n) * kFindingCheckFiles, kFirstRun, {spec},
                                  layout_of);
@@ -85,8 +85,8 @@ void check_finding(Diagnosis& d, const PreparedRuns& p, const RecordFile& file, 
     files[f].resize(n);
     std::iota(files[f].begin(), files[f].end(), static_cast<int>(f * n));
   }
-  const gap::NullCalibration& m0 = null.calibration;
-  const CandidateSums sums = evaluate_candidate(q, *c, std::vector<std::vector<gap::Extension>>(q.layouts.size()), m0, files);
+  const NullCalibration& m0 = null.calibration;
+  const CandidateSums sums = evaluate_candidate(q, *c, std::vector<std::vector<runs::Extension>>(q.layouts.size()), m0, files);
   std::vector<std::vector<double>> fitted(c->parameters.size());
   for (const std::vector<int>& runs : files) {
     const RunsUnderChoice under(sums, runs);
@@ -106,4 +106,4 @@ void check_finding(Diagnosis& d, const PreparedRuns& p, const RecordFile& file, 
   if (!d.greedy.empty() && d.greedy[0].effect == finding.effect) d.greedy[0].parameters = finding.parameters;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -10,11 +10,12 @@
 /// spread over the square root of their number) widens the range.
 /// docs/gap.md section 3.
 #include "lib/records/record.h"
-#include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/gap/diagnosis_options.h"
+#include "montecarlo/gap/diagnosis_results.h"
 #include "montecarlo/gap/fit/candidate_fit.h"
 #include "montecarlo/gap/null/null_calibration.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// Files simulated with the finding, per parameter checked.
 inline constexpr int kFindingCheckFiles = 6;
@@ -22,7 +23,7 @@ inline constexpr int kFindingCheckFiles = 6;
 /// Corrects d.ranking[0]'s parameters (and the greedy search's first step,
 /// when it is the same effect) and its --effect form; nothing when it has
 /// no --effect form.
-void check_finding(Diagnosis& d, const PreparedRuns& p, const RecordFile& file, const Null& null,
+void check_finding(Diagnosis& d, const runs::PreparedRuns& p, const RecordFile& file, const ModelNull& null,
                    const DiagnosisOptions& options);
 
 /// A parameter's estimate corrected by its check: value and range shifted
@@ -30,4 +31,4 @@ void check_finding(Diagnosis& d, const PreparedRuns& p, const RecordFile& file, 
 /// by the bias' standard error in quadrature.
 ParameterEstimate corrected(const ParameterEstimate& e, const SimulatedCheck& check);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

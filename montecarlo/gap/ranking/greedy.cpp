@@ -10,7 +10,7 @@
 #include "montecarlo/gap/null/bootstrap.h"
 #include "montecarlo/gap/ranking/ranking.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 std::string fmt_params(const std::vector<ParameterEstimate>& ps) {
@@ -21,9 +21,9 @@ std::string fmt_params(const std::vector<ParameterEstimate>& ps) {
 
 }  // namespace
 
-void rank_and_select(Diagnosis& d, const PreparedRuns& p, const Null& null, const DiagnosisOptions& options) {
+void rank_and_select(Diagnosis& d, const runs::PreparedRuns& p, const ModelNull& null, const DiagnosisOptions& options) {
   const auto& registry = candidates_of(options);
-  std::vector<std::vector<gap::Extension>> selected(p.layouts.size());
+  std::vector<std::vector<runs::Extension>> selected(p.layouts.size());
   std::vector<std::string> taken;
   double before = d.heldout_gap_before;
   for (int step = 0; step < std::max(1, options.max_selected); ++step) {
@@ -33,10 +33,10 @@ void rank_and_select(Diagnosis& d, const PreparedRuns& p, const Null& null, cons
     if (step == 0) record_ranking(d, ranked, p, null, options, before);
     if (!d.model_gap_significant()) break;
     const Scored& best = ranked.front();
-    const gap::Candidate& c = registry[static_cast<std::size_t>(best.candidate)];
+    const Candidate& c = registry[static_cast<std::size_t>(best.candidate)];
     if (step > 0 && best.heldout_gap >= before) break;  // nothing left that helps on held-out runs
-    const double left = gap::signed_gap(gap::log_ratios(gap::pool(best.heldout, all_runs(p.runs.size())),
-                                                        null.calibration, gap::CoherentReference::kAtLeastModelScatter))
+    const double left = signed_gap(log_ratios(pool(best.heldout, all_runs(p.runs.size())),
+                                                        null.calibration, CoherentReference::kAtLeastModelScatter))
                             .unmodelled;
     GreedyStep g{c.name, best.parameters, best.heldout_gap, p_value_of(left, null.unmodelled)};
     d.greedy.push_back(g);
@@ -44,7 +44,7 @@ void rank_and_select(Diagnosis& d, const PreparedRuns& p, const Null& null, cons
     taken.push_back(c.name);
     const std::vector<double> theta = parameter_values(c, best.full_fit);
     for (std::size_t L = 0; L < p.layouts.size(); ++L) {
-      const gap::LayoutContext ctx{&p.layouts[L], &p.site, &p.bases[L], {}};
+      const LayoutContext ctx{&p.layouts[L], &p.site, &p.bases[L], {}};
       selected[L].push_back(c.build(ctx, theta));
     }
     before = best.heldout_gap;
@@ -55,4 +55,4 @@ void rank_and_select(Diagnosis& d, const PreparedRuns& p, const Null& null, cons
   }
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -15,17 +15,17 @@
 #include "montecarlo/gap/fit/likelihood_fit.h"
 #include "montecarlo/gap/null/bootstrap.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
-using Selected = std::vector<std::vector<gap::Extension>>;
+using Selected = std::vector<std::vector<runs::Extension>>;
 
 /// A candidate in a fitted model: its least-G fits on all runs and on each
 /// half (their amplitudes are held there: a deterministic signature keeps
 /// its least-squares size) and where the search of its other parameters
 /// starts (every parameter, SI, in the candidate's order).
 struct Member {
-  const gap::Candidate* candidate = nullptr;
+  const Candidate* candidate = nullptr;
   std::array<Choice, 3> fits;  ///< all runs, half 0, half 1
   std::vector<double> start;
 };
@@ -34,7 +34,7 @@ std::vector<double> amplitudes(const Choice& choice) {
   return {choice.amplitude.data(), choice.amplitude.data() + choice.amplitude.size()};
 }
 
-std::string qualified(const std::vector<Member>& members, const gap::Candidate& c, const std::string& name) {
+std::string qualified(const std::vector<Member>& members, const Candidate& c, const std::string& name) {
   return members.size() > 1 ? c.name + "." + name : name;
 }
 
@@ -44,7 +44,7 @@ std::vector<FitParameter> fit_parameters(const std::vector<Member>& members) {
   std::vector<FitParameter> out;
   for (const Member& m : members)
     for (int j : likelihood_parameters(*m.candidate)) {
-      const gap::CandidateParameter& par = m.candidate->parameters[static_cast<std::size_t>(j)];
+      const CandidateParameter& par = m.candidate->parameters[static_cast<std::size_t>(j)];
       out.push_back({qualified(members, *m.candidate, par.name), par.lower_si, par.upper_si,
                      std::clamp(m.start[static_cast<std::size_t>(j)], par.lower_si, par.upper_si)});
     }
@@ -65,7 +65,7 @@ struct Lattices {
   }
 };
 
-Lattices lattices(const PreparedRuns& p, const std::vector<Member>& members, const Selected& none) {
+Lattices lattices(const runs::PreparedRuns& p, const std::vector<Member>& members, const Selected& none) {
   bool held = false;
   for (const Member& m : members) held = held || !m.candidate->amplitude_indices().empty();
   Lattices out;
@@ -87,9 +87,9 @@ std::vector<MlParameter> ml_parameters(const std::vector<Member>& members, const
   std::vector<MlParameter> out;
   std::size_t next = 0;
   for (const Member& m : members) {
-    const gap::Candidate& c = *m.candidate;
+    const Candidate& c = *m.candidate;
     Eigen::Index amplitude = 0;
-    for (const gap::CandidateParameter& par : c.parameters) {
+    for (const CandidateParameter& par : c.parameters) {
       MlParameter q;
       q.name = qualified(members, c, par.name);
       q.dimension = par.dimension;
@@ -116,7 +116,7 @@ std::vector<MlParameter> ml_parameters(const std::vector<Member>& members, const
 /// search over each whole range; a pair, warm-started from its members' own
 /// fits, neither (a joint profile costs a search per point), and its folds
 /// start from its fit on all runs.
-LikelihoodResult fit_model(const PreparedRuns& p, const std::vector<Member>& members, const Selected& none,
+LikelihoodResult fit_model(const runs::PreparedRuns& p, const std::vector<Member>& members, const Selected& none,
                            const std::vector<double>& null_ll) {
   const bool single = members.size() == 1;
   const Search search = single ? Search::kCoarse : Search::kLocal;
@@ -133,8 +133,8 @@ LikelihoodResult fit_model(const PreparedRuns& p, const std::vector<Member>& mem
 
 /// The same candidate's held-out gain on a null file q: amplitudes refitted
 /// by least G on q's halves, as on the records.
-double null_gain(const PreparedRuns& q, std::vector<Member> members, const Selected& none,
-                 const std::vector<double>& null_ll, const gap::NullCalibration& m0) {
+double null_gain(const runs::PreparedRuns& q, std::vector<Member> members, const Selected& none,
+                 const std::vector<double>& null_ll, const NullCalibration& m0) {
   for (Member& m : members) {
     if (m.candidate->amplitude_indices().empty()) continue;
     const std::array<Choice, 2> half = half_fits(evaluate_candidate(q, *m.candidate, none, m0), q.runs.size(), m0);
@@ -146,7 +146,7 @@ double null_gain(const PreparedRuns& q, std::vector<Member> members, const Selec
 
 }  // namespace
 
-void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const PreparedRuns& p, const Null& null,
+void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const runs::PreparedRuns& p, const ModelNull& null,
                        const DiagnosisOptions& options) {
   const auto& registry = candidates_of(options);
   const std::size_t top = std::min(ranked.size(), static_cast<std::size_t>(std::max(0, options.likelihood_candidates)));
@@ -158,7 +158,7 @@ void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const Pr
   std::vector<std::vector<Member>> models;
   for (std::size_t i = 0; i < top; ++i) {
     const Scored& s = ranked[i];
-    const gap::Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
+    const Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
     models.push_back({{&c, {s.full_fit, s.half_fit[0], s.half_fit[1]}, parameter_values(c, s.full_fit)}});
   }
   const std::size_t paired = std::min(top, static_cast<std::size_t>(std::max(0, options.likelihood_pair_candidates)));
@@ -189,7 +189,7 @@ void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const Pr
   // the same held-out gain on null files of the records' size. A pair's
   // reference is not measured: it would cost more than all the other fits
   // together (docs/gap.md §4).
-  std::vector<PreparedRuns> file(static_cast<std::size_t>(files));
+  std::vector<runs::PreparedRuns> file(static_cast<std::size_t>(files));
   std::vector<std::vector<double>> file_null_ll(file.size());
   tbb::parallel_for(std::size_t{0}, file.size(), [&](std::size_t f) {
     file[f] = null_file(p, null, static_cast<int>(f));
@@ -212,4 +212,4 @@ void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const Pr
   });
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -8,17 +8,18 @@
 /// size; and the pairs of the best few, fitted jointly.
 #include <vector>
 
-#include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/gap/diagnosis_options.h"
+#include "montecarlo/gap/diagnosis_results.h"
 #include "montecarlo/gap/fit/candidate_fit.h"
 #include "montecarlo/gap/null/null_calibration.h"
 #include "montecarlo/gap/ranking/ranking.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// Fills d.ranking[i].likelihood for the first options.likelihood_candidates
 /// of `ranked` (d.ranking in the same order) and d.pairs for the pairs of the
 /// first options.likelihood_pair_candidates.
-void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const PreparedRuns& p, const Null& null,
+void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const runs::PreparedRuns& p, const ModelNull& null,
                        const DiagnosisOptions& options);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -13,12 +13,12 @@
 #include "montecarlo/gap/ranking/effect_terms.h"
 #include "montecarlo/gap/ranking/likelihood_ranking.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 /// Every run under the other half's fit (runs alternate between the halves
 /// in file order): 2-fold cross-validation.
-gap::RunSet heldout_set(const std::array<Choice, 2>& half, const CandidateSums& s, const std::vector<int>& runs) {
+RunSet heldout_set(const std::array<Choice, 2>& half, const CandidateSums& s, const std::vector<int>& runs) {
   std::vector<Choice> heldout_choice(runs.size());
   for (std::size_t r = 0; r < runs.size(); ++r) heldout_choice[r] = half[1 - r % 2];
   return run_set_under(s, runs, heldout_choice);
@@ -33,8 +33,8 @@ std::vector<int> run_range(std::size_t first, std::size_t n) {
 
 /// 2-fold cross-validation (runs alternate between the halves in file order),
 /// the full-data fit and its resampled 16–84 % range.
-Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0,
-             std::uint64_t seed, const gap::RecordSite& site) {
+Scored score(const Candidate& c, const CandidateSums& s, std::size_t n, const NullCalibration& m0,
+             std::uint64_t seed, const runs::RecordSite& site) {
   const auto in_effect_terms = [&](std::vector<double> theta) {
     if (c.to_effect_terms) c.to_effect_terms(theta, site);
     return theta;
@@ -42,7 +42,7 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
   Scored out;
   out.half_fit = half_fits(s, n, m0);
   out.heldout = heldout_set(out.half_fit, s, all_runs(n));
-  out.heldout_gap = gap::gap_value(out.heldout, all_runs(n), m0);
+  out.heldout_gap = gap_value(out.heldout, all_runs(n), m0);
   out.full_fit = choose(s, all_runs(n), m0);
   const std::vector<double> best = parameter_values(c, out.full_fit);
   // Reported between grid points (fit/subgrid.h), so that the resampled
@@ -58,7 +58,7 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
     for (std::size_t i = 0; i < theta.size(); ++i) draws[i].push_back(theta[i]);
   }
   for (std::size_t i = 0; i < c.parameters.size(); ++i) {
-    const gap::CandidateParameter& par = c.parameters[i];
+    const CandidateParameter& par = c.parameters[i];
     ParameterEstimate e{par.name, par.dimension, reported[i], quantile(draws[i], 0.16), quantile(draws[i], 0.84),
                         par.amplitude ? std::abs(best[i]) >= par.grid.front()
                                       : par.grid.size() > 1 && (best[i] == par.grid.front() || best[i] == par.grid.back()),
@@ -70,7 +70,7 @@ Scored score(const gap::Candidate& c, const CandidateSums& s, std::size_t n, con
 
 }  // namespace
 
-std::array<Choice, 2> half_fits(const CandidateSums& s, const std::vector<int>& runs, const gap::NullCalibration& m0) {
+std::array<Choice, 2> half_fits(const CandidateSums& s, const std::vector<int>& runs, const NullCalibration& m0) {
   std::array<Choice, 2> out;
   for (std::size_t h = 0; h < 2; ++h) {
     std::vector<int> train;
@@ -80,24 +80,24 @@ std::array<Choice, 2> half_fits(const CandidateSums& s, const std::vector<int>& 
   return out;
 }
 
-std::array<Choice, 2> half_fits(const CandidateSums& s, std::size_t n, const gap::NullCalibration& m0) {
+std::array<Choice, 2> half_fits(const CandidateSums& s, std::size_t n, const NullCalibration& m0) {
   return half_fits(s, all_runs(n), m0);
 }
 
-int null_file_count(const PreparedRuns& p, const Null& null, const DiagnosisOptions& options) {
+int null_file_count(const runs::PreparedRuns& p, const ModelNull& null, const DiagnosisOptions& options) {
   return std::min(options.null_shrink_files, static_cast<int>(null.runs.size() / std::max<std::size_t>(p.runs.size(), 1)));
 }
 
-PreparedRuns null_file(const PreparedRuns& p, const Null& null, int f) {
+runs::PreparedRuns null_file(const runs::PreparedRuns& p, const ModelNull& null, int f) {
   const auto n = static_cast<std::ptrdiff_t>(p.runs.size());
-  PreparedRuns q = p;
+  runs::PreparedRuns q = p;
   q.runs.assign(null.runs.begin() + f * n, null.runs.begin() + (f + 1) * n);
   q.layout_of.assign(null.layout_of.begin() + f * n, null.layout_of.begin() + (f + 1) * n);
   return q;
 }
 
-std::vector<Scored> rank_candidates(const PreparedRuns& p, const std::vector<std::vector<gap::Extension>>& selected,
-                                    const std::vector<std::string>& exclude, const gap::NullCalibration& m0,
+std::vector<Scored> rank_candidates(const runs::PreparedRuns& p, const std::vector<std::vector<runs::Extension>>& selected,
+                                    const std::vector<std::string>& exclude, const NullCalibration& m0,
                                     const DiagnosisOptions& options, std::string_view stage) {
   const auto& registry = candidates_of(options);
   std::vector<Scored> scored(registry.size());
@@ -118,7 +118,7 @@ std::vector<Scored> rank_candidates(const PreparedRuns& p, const std::vector<std
   return out;
 }
 
-std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, const gap::NullCalibration& m0,
+std::vector<double> null_shrinks(const runs::PreparedRuns& p, const ModelNull& null, const NullCalibration& m0,
                                  const DiagnosisOptions& options) {
   const auto& registry = candidates_of(options);
   const std::size_t n = p.runs.size();
@@ -128,25 +128,25 @@ std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, const 
   // The null files together: each candidate's models (one per grid point
   // and layout, the cost) are built once for all of them; each file keeps
   // its own search, fits and held-out sets.
-  PreparedRuns q = p;
+  runs::PreparedRuns q = p;
   q.runs.assign(null.runs.begin(), null.runs.begin() + static_cast<std::ptrdiff_t>(files * n));
   q.layout_of.assign(null.layout_of.begin(), null.layout_of.begin() + static_cast<std::ptrdiff_t>(files * n));
   std::vector<std::vector<int>> file_runs;
   std::vector<double> before;
   for (int f = 0; f < files; ++f) {
     file_runs.push_back(run_range(static_cast<std::size_t>(f) * n, n));
-    before.push_back(gap::gap_value(null.set, file_runs.back(), m0));
+    before.push_back(gap_value(null.set, file_runs.back(), m0));
   }
   std::atomic<std::uint64_t> done{0};
-  const std::vector<std::vector<gap::Extension>> none(p.layouts.size());
+  const std::vector<std::vector<runs::Extension>> none(p.layouts.size());
   tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
     const CandidateSums sums = evaluate_candidate(q, registry[c], none, m0, file_runs);
     std::vector<double> shrink;
     for (int f = 0; f < files; ++f) {
       const std::vector<int>& runs = file_runs[static_cast<std::size_t>(f)];
-      const gap::RunSet held = heldout_set(half_fits(sums, runs, m0), sums, runs);
+      const RunSet held = heldout_set(half_fits(sums, runs, m0), sums, runs);
       const double b = before[static_cast<std::size_t>(f)];
-      shrink.push_back(b > 0 ? 1.0 - gap::gap_value(held, all_runs(n), m0) / b : 0.0);
+      shrink.push_back(b > 0 ? 1.0 - gap_value(held, all_runs(n), m0) / b : 0.0);
     }
     out[c] = quantile(shrink, 0.5);
     report_progress(options, "candidates on null files", ++done, registry.size(), "candidates");
@@ -154,16 +154,16 @@ std::vector<double> null_shrinks(const PreparedRuns& p, const Null& null, const 
   return out;
 }
 
-void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const PreparedRuns& p, const Null& null,
+void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const runs::PreparedRuns& p, const ModelNull& null,
                     const DiagnosisOptions& options, double before) {
   const auto& registry = candidates_of(options);
   const int n = d.runs;
   d.ranked = true;
   for (const Scored& s : ranked) {
-    const gap::Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
+    const Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
     d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before,
                          std::numeric_limits<double>::quiet_NaN(),
-                         gap::log_ratios(gap::pool(s.heldout, all_runs(p.runs.size())), null.calibration),
+                         log_ratios(pool(s.heldout, all_runs(p.runs.size())), null.calibration),
                          {}, {}, {}});
     EffectArgument a = effect_argument(d.ranking.back(), p.site);
     d.ranking.back().as_effect = std::move(a.text);
@@ -182,8 +182,8 @@ void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const Prepa
     std::vector<double> margins;
     for (int b = 0; b < kResamples; ++b) {
       const std::vector<int> idx = resample(options.seed, 2'000'000 + static_cast<std::uint64_t>(b), n, n);
-      margins.push_back(gap::gap_value(ranked[1].heldout, idx, null.calibration) -
-                        gap::gap_value(ranked[0].heldout, idx, null.calibration));
+      margins.push_back(gap_value(ranked[1].heldout, idx, null.calibration) -
+                        gap_value(ranked[0].heldout, idx, null.calibration));
     }
     d.runner_up_margin = ranked[1].heldout_gap - ranked[0].heldout_gap;
     const double mean = std::accumulate(margins.begin(), margins.end(), 0.0) / kResamples;
@@ -197,4 +197,4 @@ void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const Prepa
   }
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -9,11 +9,11 @@
 #include "lib/units/quantity_display.h"
 #include "montecarlo/gap/candidates/candidates.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 std::string what_tells_apart(const std::string& a, const std::string& b) {
   const auto test_of = [](const std::string& name) {
-    for (const gap::Candidate& c : gap::candidate_registry())
+    for (const Candidate& c : candidate_registry())
       if (c.name == name) return c.told_apart_by;
     return std::string();
   };
@@ -60,4 +60,4 @@ void honest_statements(Diagnosis& d) {
                                        what_tells_apart(d.ranking[0].effect, d.ranking[1].effect)));
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -2,9 +2,9 @@
 /// After the ranking and greedy steps: their limits, in the report's words.
 #include <string>
 
-#include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/gap/diagnosis_results.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// What the ranking cannot support, said plainly (docs/gap.md: priors too narrow,
 /// effect not identifiable, disturbances masked).
@@ -14,4 +14,4 @@ void honest_statements(Diagnosis& d);
 /// told_apart_by (candidates/candidates.h), in one clause.
 std::string what_tells_apart(const std::string& a, const std::string& b);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

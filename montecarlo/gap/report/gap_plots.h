@@ -6,13 +6,13 @@
 #include "montecarlo/gap/diagnosis.h"
 #include "montecarlo/write/plot/gnuplot.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// `gap_groups`: one slot per group, the null files' band as a grey box,
 /// the observed ln ratio as a stem coloured by where it lies (legend).
-RenderedFigure render_groups_figure(const Diagnosis& d);
+mc::RenderedFigure render_groups_figure(const Diagnosis& d);
 /// `gap_allan`: per axis, the data (solid, points) and the null runs
 /// (dashed, shaded 5–95 % band).
-RenderedFigure render_allan_figure(const Diagnosis& d);
+mc::RenderedFigure render_allan_figure(const Diagnosis& d);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -6,11 +6,11 @@
 
 #include "lib/units/units.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 /// "the accelerometer pulses are 10 times the model's 0.1 ft/s (...)", or "".
-std::string far_site_value(const SiteValue& v, const char* what, double model, const char* model_text, double unit,
+std::string far_site_value(const runs::SiteValue& v, const char* what, double model, const char* model_text, double unit,
                            const char* unit_name) {
   if (!(v.value > 0) || !(model > 0)) return "";
   const double ratio = v.value / model;
@@ -23,7 +23,7 @@ std::string far_site_value(const SiteValue& v, const char* what, double model, c
 
 std::string leading_finding(const Diagnosis& d) {
   std::vector<std::string> far;
-  for (const SiteValue& v : d.site) {
+  for (const runs::SiteValue& v : d.site) {
     std::string s;
     if (v.key == "dv_pulse_mps") s = far_site_value(v, "accelerometer pulses of", 0.1 * kFtpsToMps, "0.1 ft/s", kFtpsToMps, "ft/s");
     if (v.key == "position_resolution_m") s = far_site_value(v, "a position resolution of", 3 * kFtToM, "3 ft", kFtToM, "ft");
@@ -60,4 +60,4 @@ std::string leading_finding(const Diagnosis& d) {
   return "The data agree with the model: no significant gap in either direction.";
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

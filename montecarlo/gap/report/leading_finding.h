@@ -10,11 +10,11 @@
 
 #include "montecarlo/gap/diagnosis.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// A factor beyond which a site value is "far from the model's".
 inline constexpr double kFarFromModel = 2.0;
 
 std::string leading_finding(const Diagnosis& d);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -9,26 +9,26 @@
 #include "lib/units/quantity_display.h"
 #include "montecarlo/write/markdown.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
-Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+mc::Json number(double v) { return std::isfinite(v) ? mc::Json(v) : mc::Json(nullptr); }
 
-Json parameters_json(const std::vector<MlParameter>& ps) {
-  Json out = Json::array();
+mc::Json parameters_json(const std::vector<MlParameter>& ps) {
+  mc::Json out = mc::Json::array();
   for (const MlParameter& p : ps) {
-    Json e = Json::object();
+    mc::Json e = mc::Json::object();
     e["name"] = p.name;
     e["value"] = p.value;
     e["unit"] = std::string(si_suffix(p.dimension));
     e["fit"] = p.least_squares ? "least squares" : "maximum likelihood";
-    const auto end = [&](double v) { return p.intervals ? Json(v) : Json(nullptr); };
+    const auto end = [&](double v) { return p.intervals ? mc::Json(v) : mc::Json(nullptr); };
     e["low68"] = end(p.ci68.low);
     e["high68"] = end(p.ci68.high);
     e["low95"] = end(p.ci95.low);
     e["high95"] = end(p.ci95.high);
     // An open end stays within the drop up to the physical limit it reports.
-    Json open = Json::array();
+    mc::Json open = mc::Json::array();
     if (p.intervals) {
       if (p.ci68.open_low) open.push_back("low68");
       if (p.ci68.open_high) open.push_back("high68");
@@ -64,7 +64,7 @@ std::string parameters_text(const std::vector<MlParameter>& ps) {
 
 }  // namespace
 
-void add_likelihood_json(Json& entry, const LikelihoodResult& r, int runs) {
+void add_likelihood_json(mc::Json& entry, const LikelihoodResult& r, int runs) {
   entry["ml_parameters"] = parameters_json(r.parameters);
   entry["heldout_loglik_gain"] = number(r.heldout_gain);
   entry["heldout_loglik_gain_per_run"] = number(r.heldout_gain / runs);
@@ -72,11 +72,11 @@ void add_likelihood_json(Json& entry, const LikelihoodResult& r, int runs) {
   entry["ml_evaluations"] = r.evaluations;
 }
 
-Json pairs_json(const Diagnosis& d) {
-  Json out = Json::array();
+mc::Json pairs_json(const Diagnosis& d) {
+  mc::Json out = mc::Json::array();
   for (const PairResult& p : d.pairs) {
-    Json e = Json::object();
-    Json effects = Json::array();
+    mc::Json e = mc::Json::object();
+    mc::Json effects = mc::Json::array();
     effects.push_back(p.first);
     effects.push_back(p.second);
     e["effects"] = effects;
@@ -98,22 +98,22 @@ std::string likelihood_markdown(const Diagnosis& d) {
       "null files, the same gain on null files of as many runs: a gain not above it is noise fitted. The ranking "
       "stays by held-out G.\n\n",
       fitted);
-  Table t({"rank", "effect", "held-out log-likelihood gain [nats]", "on null files", "parameters [68 %] [95 %]"});
+  mc::Table t({"rank", "effect", "held-out log-likelihood gain [nats]", "on null files", "parameters [68 %] [95 %]"});
   for (std::size_t i = 0; i < d.ranking.size(); ++i) {
     const LikelihoodResult& r = d.ranking[i].likelihood;
     if (!r.fitted) continue;
     t.add_row({std::to_string(i + 1), d.ranking[i].effect, gain_text(r.heldout_gain, d.runs),
                gain_text(r.null_gain, d.runs), parameters_text(r.parameters)});
   }
-  md += render_markdown(t) + "\n";
+  md += mc::render_markdown(t) + "\n";
   if (d.pairs.empty()) return md;
   md += "Pairs of the first candidates, both extensions together and their parameters fitted jointly (coordinate "
         "ascent, no intervals), by held-out log-likelihood gain:\n\n";
-  Table pt({"pair", "held-out log-likelihood gain [nats]", "on null files", "parameters"});
+  mc::Table pt({"pair", "held-out log-likelihood gain [nats]", "on null files", "parameters"});
   for (const PairResult& p : d.pairs)
     pt.add_row({p.first + " + " + p.second, gain_text(p.likelihood.heldout_gain, d.runs),
                 gain_text(p.likelihood.null_gain, d.runs), parameters_text(p.likelihood.parameters)});
-  return md + render_markdown(pt) + "\n";
+  return md + mc::render_markdown(pt) + "\n";
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -8,17 +8,17 @@
 #include "montecarlo/gap/diagnosis.h"
 #include "montecarlo/write/json.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// Adds ml_parameters, heldout_loglik_gain(_per_run), null_loglik_gain and
 /// ml_evaluations to a ranking entry (null gains and no parameters when the
 /// candidate was not fitted).
-void add_likelihood_json(Json& entry, const LikelihoodResult& r, int runs);
+void add_likelihood_json(mc::Json& entry, const LikelihoodResult& r, int runs);
 
 /// The top-level pairs[].
-Json pairs_json(const Diagnosis& d);
+mc::Json pairs_json(const Diagnosis& d);
 
 /// gap.md's "maximum likelihood" table and the pairs' table (empty when nothing was fitted).
 std::string likelihood_markdown(const Diagnosis& d);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

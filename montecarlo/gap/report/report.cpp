@@ -11,19 +11,19 @@
 #include "montecarlo/gap/report/likelihood_report.h"
 #include "montecarlo/write/markdown.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
-Json shares_json(const std::vector<Share>& shares) {
-  Json j = Json::object();
+mc::Json shares_json(const std::vector<Share>& shares) {
+  mc::Json j = mc::Json::object();
   for (const Share& s : shares) j[s.name] = s.share;
   return j;
 }
 
-Json parameters_json(const std::vector<ParameterEstimate>& ps) {
-  Json j = Json::object();
+mc::Json parameters_json(const std::vector<ParameterEstimate>& ps) {
+  mc::Json j = mc::Json::object();
   for (const ParameterEstimate& p : ps) {
-    Json e = Json::object();
+    mc::Json e = mc::Json::object();
     e["value"] = p.value;
     e["low_16"] = p.low;
     e["high_84"] = p.high;
@@ -31,7 +31,7 @@ Json parameters_json(const std::vector<ParameterEstimate>& ps) {
     e["at_grid_edge"] = p.at_grid_edge;
     if (p.check.measured) {
       // The fit on files simulated with the finding (ranking/finding_check.h).
-      Json c = Json::object();
+      mc::Json c = mc::Json::object();
       c["files"] = p.check.files;
       c["simulated"] = p.check.simulated;
       c["scale"] = p.check.logarithmic ? "log" : "linear";
@@ -96,27 +96,15 @@ std::string prior_scale_sentence(const PessimisticFinding& f) {
 
 }  // namespace
 
-Json site_values_json(const std::vector<SiteValue>& values) {
-  Json site = Json::object();
-  for (const SiteValue& v : values) {
-    Json e = Json::object();
-    e["value"] = v.value;
-    e["source"] = v.source;
-    e["reason"] = v.reason;
-    site[v.key] = e;
-  }
-  return site;
-}
-
-Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_files) {
-  Json j = Json::object();
-  Json files = Json::array();
+mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_files) {
+  mc::Json j = mc::Json::object();
+  mc::Json files = mc::Json::array();
   for (const std::string& f : record_files) files.push_back(f);
   j["records"] = files;
   j["runs"] = d.runs;
   j["scheme"] = d.scheme;
-  j["site"] = site_values_json(d.site);
-  Json g = Json::object();
+  j["site"] = runs::site_values_json(d.site);
+  mc::Json g = mc::Json::object();
   g["value"] = d.gap;
   g["significant"] = d.significant;
   g["alpha"] = d.alpha;
@@ -124,21 +112,21 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   g["null_median"] = d.null_gap_median;
   g["null_critical"] = d.null_gap_critical;
   g["calibration_runs"] = d.calibration_runs;
-  Json unmodelled = Json::object();
+  mc::Json unmodelled = mc::Json::object();
   unmodelled["value"] = d.unmodelled_gap;
   unmodelled["critical"] = d.unmodelled_critical;
   unmodelled["p_value"] = d.p_value;
   g["unmodelled"] = unmodelled;
-  Json pessimistic = Json::object();
+  mc::Json pessimistic = mc::Json::object();
   pessimistic["value"] = d.pessimistic.value;
   pessimistic["significant"] = d.pessimistic.significant;
   pessimistic["p_value"] = d.pessimistic.p_value;
   pessimistic["critical"] = d.pessimistic.critical;
-  Json where_less = Json::array();
+  mc::Json where_less = mc::Json::array();
   for (const std::string& w : d.pessimistic.where) where_less.push_back(w);
   pessimistic["where"] = where_less;
   if (const PriorScale& ps = d.pessimistic.prior_scale; ps.measured) {
-    Json scale = Json::object();
+    mc::Json scale = mc::Json::object();
     scale["value"] = ps.scale;
     scale["low"] = ps.low;
     scale["high"] = ps.high;
@@ -150,7 +138,7 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   g["pessimistic"] = pessimistic;
   g["null"] = d.null_kind;
   if (d.against_model.reported) {
-    Json m = Json::object();
+    mc::Json m = mc::Json::object();
     m["value"] = d.against_model.value;
     m["critical"] = d.against_model.critical;
     m["p_value"] = d.against_model.p_value;
@@ -164,14 +152,14 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   g["metric"] = "G = sqrt(mean over groups of ln(observed/expected)^2): scatter groups (mean normalized square per "
                 "run) and coherent groups (what all runs share, one-sided), expectations calibrated on the null";
   j["gap"] = g;
-  Json where = Json::object();
+  mc::Json where = mc::Json::object();
   where["by_kind"] = shares_json(d.by_kind);
   where["by_axis"] = shares_json(d.by_axis);
   where["by_stage"] = shares_json(d.by_stage);
   where["by_window"] = shares_json(d.by_window);
-  Json groups = Json::array();
+  mc::Json groups = mc::Json::array();
   for (const GroupResult& r : d.groups) {
-    Json e = Json::object();
+    mc::Json e = mc::Json::object();
     e["group"] = r.name();
     e["kind"] = r.coherent ? "coherent" : "scatter";
     e["terms"] = r.count;
@@ -183,14 +171,14 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
     groups.push_back(e);
   }
   where["groups"] = groups;
-  Json tf = Json::object();
+  mc::Json tf = mc::Json::object();
   for (const TimeFunctionShares& t : d.time_functions) tf[std::string(1, "xyz"[t.axis])] = shares_json(t.shares);
   where["time_functions_nav_r"] = tf;
-  Json allan = Json::object();
+  mc::Json allan = mc::Json::object();
   for (const AllanCurve& c : d.allan) {
-    Json a = Json::array();
+    mc::Json a = mc::Json::array();
     for (const AllanPoint& p : c.points) {
-      Json e = Json::object();
+      mc::Json e = mc::Json::object();
       e["cluster_s"] = p.cluster_s;
       e["observed_mps2"] = p.observed;
       e["null_mps2"] = p.null;
@@ -200,24 +188,24 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   }
   where["allan_f_residual"] = allan;
   j["where"] = where;
-  Json ranking = Json::array();
+  mc::Json ranking = mc::Json::array();
   for (const CandidateResult& c : d.ranking) {
-    Json e = Json::object();
+    mc::Json e = mc::Json::object();
     e["effect"] = c.effect;
     e["params"] = parameters_json(c.parameters);
     e["heldout_gap_after"] = c.heldout_gap_after;
     e["shrink"] = c.shrink;
-    e["null_shrink"] = std::isfinite(c.null_shrink) ? Json(c.null_shrink) : Json(nullptr);
-    e["as_effect"] = c.as_effect.empty() ? Json(nullptr) : Json(c.as_effect);
-    Json kept = Json::array();
+    e["null_shrink"] = std::isfinite(c.null_shrink) ? mc::Json(c.null_shrink) : mc::Json(nullptr);
+    e["as_effect"] = c.as_effect.empty() ? mc::Json(nullptr) : mc::Json(c.as_effect);
+    mc::Json kept = mc::Json::array();
     for (const std::string& k : c.as_effect_kept) kept.push_back(k);
     e["as_effect_kept"] = kept;
-    Json left = Json::object();
-    for (int g = 0; g < gap::kGroupCount; ++g)
-      if (std::isfinite(c.heldout_log_ratios.scatter[g])) left[gap::group_name(g)] = c.heldout_log_ratios.scatter[g];
-    for (int k = 0; k < gap::kCoherentCount; ++k)
+    mc::Json left = mc::Json::object();
+    for (int g = 0; g < runs::kGroupCount; ++g)
+      if (std::isfinite(c.heldout_log_ratios.scatter[g])) left[runs::group_name(g)] = c.heldout_log_ratios.scatter[g];
+    for (int k = 0; k < runs::kCoherentCount; ++k)
       if (std::isfinite(c.heldout_log_ratios.coherent[static_cast<std::size_t>(k)]))
-        left[gap::coherent_group_name(k)] = c.heldout_log_ratios.coherent[static_cast<std::size_t>(k)];
+        left[runs::coherent_group_name(k)] = c.heldout_log_ratios.coherent[static_cast<std::size_t>(k)];
     e["heldout_log_ratios"] = left;
     add_likelihood_json(e, c.likelihood, d.runs);
     ranking.push_back(e);
@@ -226,12 +214,12 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
   j["heldout_gap_before"] = d.heldout_gap_before;
   j["ranking"] = ranking;
   j["pairs"] = pairs_json(d);
-  j["top"] = d.top.empty() ? Json(nullptr) : Json(d.top);
+  j["top"] = d.top.empty() ? mc::Json(nullptr) : mc::Json(d.top);
   j["runner_up_margin"] = d.runner_up_margin;
   j["runner_up_margin_se"] = d.runner_up_margin_se;
-  Json greedy = Json::array();
+  mc::Json greedy = mc::Json::array();
   for (const GreedyStep& s : d.greedy) {
-    Json e = Json::object();
+    mc::Json e = mc::Json::object();
     e["effect"] = s.effect;
     e["params"] = parameters_json(s.parameters);
     e["heldout_gap"] = s.heldout_gap;
@@ -239,11 +227,11 @@ Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_f
     greedy.push_back(e);
   }
   j["greedy"] = greedy;
-  Json selected = Json::array();
+  mc::Json selected = mc::Json::array();
   for (const std::string& s : d.selected) selected.push_back(s);
   j["selected"] = selected;
   j["finding"] = leading_finding(d);
-  Json statements = Json::array();
+  mc::Json statements = mc::Json::array();
   for (const std::string& s : d.statements) statements.push_back(s);
   j["statements"] = statements;
   return j;
@@ -278,9 +266,9 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                               prior_scale_sentence(d.pessimistic)
                         : ": not beyond the null");
   md += "Site values (the null is simulated with them):\n\n";
-  Table site({"value", "used", "source", "why"});
-  for (const SiteValue& v : d.site) site.add_row({v.key, fmt::format("{:.6g}", v.value), v.source, v.reason});
-  md += render_markdown(site) + "\n";
+  mc::Table site({"value", "used", "source", "why"});
+  for (const runs::SiteValue& v : d.site) site.add_row({v.key, fmt::format("{:.6g}", v.value), v.source, v.reason});
+  md += mc::render_markdown(site) + "\n";
   md += "G is the RMS over report groups of ln(observed / expected): per run, how the data scatter about the "
         "model's prediction (scatter groups), and what all runs share (coherent groups: a design or site effect, "
         "one-sided); 0 when the data match the model, 1 for a factor e ≈ 2.7 in power (too much or too little). "
@@ -290,12 +278,12 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
   for (const std::string& s : d.statements) md += "- " + s + "\n";
   if (!d.statements.empty()) md += "\n";
   md += "## 2. Where it lies\n\n";
-  Table t({"group", "terms", "observed", "null", "ln ratio", "p", "share"});
+  mc::Table t({"group", "terms", "observed", "null", "ln ratio", "p", "share"});
   for (const GroupResult& r : d.groups)
     t.add_row({r.name(), fmt::format("{:.0f}", r.count), fmt::format("{:.3g}", r.power),
                fmt::format("{:.3g}", r.null_power), fmt::format("{:+.3f}", r.log_ratio), fmt::format("{:.3g}", r.p_value),
                pct(r.share)});
-  md += render_markdown(t) + "\n";
+  md += mc::render_markdown(t) + "\n";
   const auto share_line = [](const char* title, const std::vector<Share>& s) {
     std::string line = std::string("- ") + title + ": ";
     for (std::size_t i = 0; i < s.size(); ++i) line += (i ? ", " : "") + s[i].name + " " + pct(s[i].share);
@@ -305,17 +293,17 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
         share_line("by window", d.by_window);
   md += "\nPost-test position innovations on the error's time functions (share of the normalized energy, fitted in "
         "this order):\n\n";
-  Table tf({"axis", "function", "share"});
+  mc::Table tf({"axis", "function", "share"});
   for (const TimeFunctionShares& s : d.time_functions)
     for (const Share& e : s.shares) tf.add_row({std::string(1, "xyz"[s.axis]), e.name, pct(e.share)});
-  md += render_markdown(tf) + "\n![group ln ratios](gap_groups.png)\n\n![Allan deviation](gap_allan.png)\n\n";
+  md += mc::render_markdown(tf) + "\n![group ln ratios](gap_groups.png)\n\n![Allan deviation](gap_allan.png)\n\n";
   md += "## 3. Which effect\n\n";
   if (!d.ranked) {
     md += "Not ranked (see the statements above).\n\n";
   } else {
     md += fmt::format("Held-out G before: {:.3g}. Each candidate fitted on one half of the runs, scored on the "
                       "other (2-fold), ranked by held-out G after.\n\n", d.heldout_gap_before);
-    Table r({"rank", "effect", "held-out G after", "shrink", "shrink on null files", "parameters (16–84 % of resampled fits)"});
+    mc::Table r({"rank", "effect", "held-out G after", "shrink", "shrink on null files", "parameters (16–84 % of resampled fits)"});
     for (std::size_t i = 0; i < d.ranking.size(); ++i)
       r.add_row({std::to_string(i + 1), d.ranking[i].effect, fmt::format("{:.3g}", d.ranking[i].heldout_gap_after),
                  pct(d.ranking[i].shrink),
@@ -323,7 +311,7 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                  params_text(d.ranking[i].parameters)});
     md += "The shrink on null files is what the same candidate gains, split and fitted the same way, on null files "
           "of as many runs (runs of the null calibration): a shrink not above it is noise fitted, not an effect.\n\n";
-    md += render_markdown(r) + "\n";
+    md += mc::render_markdown(r) + "\n";
     md += fmt::format("Top: **{}**; runner-up margin {:.3g} ± {:.3g} (resampled runs){}.\n\n", d.top,
                       d.runner_up_margin, d.runner_up_margin_se,
                       d.top.find('|') != std::string::npos ? " — within two standard errors: reported as one class" : "");
@@ -342,17 +330,17 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
   if (d.greedy.empty()) {
     md += "No effect added.\n";
   } else {
-    Table g({"step", "effect added", "parameters", "held-out G", "p"});
+    mc::Table g({"step", "effect added", "parameters", "held-out G", "p"});
     for (std::size_t i = 0; i < d.greedy.size(); ++i)
       g.add_row({std::to_string(i + 1), d.greedy[i].effect, params_text(d.greedy[i].parameters),
                  fmt::format("{:.3g}", d.greedy[i].heldout_gap), fmt::format("{:.3g}", d.greedy[i].p_value)});
-    md += fmt::format("From held-out G = {:.3g}:\n\n", d.heldout_gap_before) + render_markdown(g);
+    md += fmt::format("From held-out G = {:.3g}:\n\n", d.heldout_gap_before) + mc::render_markdown(g);
   }
   return {{"gap.md", md}};
 }
 
 std::vector<std::pair<std::string, std::string>> diagnosis_figures(const Diagnosis& d) {
-  std::vector<std::pair<std::string, std::string>> files = figure_files("gap_groups", render_groups_figure(d));
+  std::vector<std::pair<std::string, std::string>> files = mc::figure_files("gap_groups", render_groups_figure(d));
   for (auto& f : figure_files("gap_allan", render_allan_figure(d))) files.push_back(std::move(f));
   return files;
 }
@@ -361,4 +349,4 @@ std::vector<std::string> diagnosis_figure_stems() { return {"gap_groups", "gap_a
 
 std::vector<std::string> diagnosis_file_names() { return {"gap.md", "gap.json"}; }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

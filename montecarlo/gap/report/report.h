@@ -8,13 +8,12 @@
 #include "montecarlo/gap/diagnosis.h"
 #include "montecarlo/write/json.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
-Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_files);
+mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_files);
 
 /// The site's values with their sources and reasons, keyed by header key
 /// (gap.json's and compensate.json's "site").
-Json site_values_json(const std::vector<SiteValue>& values);
 
 /// The names of the files besides the figures: gap.md (diagnosis_report)
 /// and gap.json (the output folder is checked for them before the work).
@@ -30,4 +29,4 @@ std::vector<std::pair<std::string, std::string>> diagnosis_figures(const Diagnos
 std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosis& d,
                                                                   const std::vector<std::string>& record_files);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -6,10 +6,10 @@
 #include <fmt/format.h>
 
 #include "lib/units/units.h"
-#include "montecarlo/gap/null/record_simulation.h"
+#include "montecarlo/runs/simulation/record_simulation.h"
 #include "montecarlo/random/philox.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 /// x to 9 significant digits, as a writer printing "%.9g" leaves it.
@@ -33,7 +33,7 @@ ForeignLayout foreign_layout_of(std::uint64_t file_seed, bool quantization) {
   return l;
 }
 
-RecordFile simulate_foreign_file(TruthOptions truth, const Sampler& sampler, std::uint64_t seed, const ForeignRuns& spec,
+RecordFile simulate_foreign_file(TruthOptions truth, const mc::Sampler& sampler, std::uint64_t seed, const ForeignRuns& spec,
                                  const ForeignLayout& layout) {
   truth.filter_interval_s = layout.f_every_s;
   truth.dv_pulse_mps = layout.pulses ? TruthOptions{}.dv_pulse_mps : 0.0;
@@ -55,14 +55,14 @@ RecordFile simulate_foreign_file(TruthOptions truth, const Sampler& sampler, std
     // the run's own stream (not the simulator's).
     double end = T + nav;
     if (r % 3 == 2 && nav > 4800.0) {
-      CounterStream stream(seed, Stream::Measurement, (std::uint64_t{1} << 40) + static_cast<std::uint64_t>(r));
+      mc::CounterStream stream(seed, mc::Stream::Measurement, (std::uint64_t{1} << 40) + static_cast<std::uint64_t>(r));
       end = T + 3600.0 + 1200.0 * stream.uniform01();
     }
     std::vector<double> times;
     if (layout.zero_row) times.push_back(0.0);  // the switch-over itself: r, no complete f window
     for (const double t : grid)
       if (t <= end + 1e-9) times.push_back(t);
-    RecordRun run = simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(r), times,
+    RecordRun run = runs::simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(r), times,
                                         {T, spec.position_resolution_m});
     run.id = 100 + 7 * static_cast<std::int64_t>(r);
     for (RecordRow& row : run.rows) {
@@ -80,4 +80,4 @@ RecordFile simulate_foreign_file(TruthOptions truth, const Sampler& sampler, std
   return file;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -16,7 +16,7 @@
 #include "lib/truth/simulator.h"
 #include "montecarlo/sampler/sampler.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 struct ForeignLayout {
   double f_every_s = 10.0, r_every_s = 30.0;
@@ -38,7 +38,7 @@ struct ForeignRuns {
   double test_duration_s = 900.0, nav_duration_s = 5400.0, position_resolution_m = 0.0;
   int runs = 20;
 };
-RecordFile simulate_foreign_file(TruthOptions truth, const Sampler& sampler, std::uint64_t seed, const ForeignRuns& runs,
+RecordFile simulate_foreign_file(TruthOptions truth, const mc::Sampler& sampler, std::uint64_t seed, const ForeignRuns& runs,
                                  const ForeignLayout& layout);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -12,13 +12,13 @@
 
 #include "lib/truth/effect.h"
 #include "lib/units/units.h"
-#include "montecarlo/gap/null/record_simulation.h"
+#include "montecarlo/runs/simulation/record_simulation.h"
 #include "montecarlo/gap/validation/foreign_layout.h"
 #include "montecarlo/write/csv.h"
 #include "montecarlo/write/json.h"
 #include "montecarlo/write/markdown.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 /// The parameters an effect's magnitude scales (the others keep their defaults).
@@ -106,10 +106,10 @@ RecordFile own_layout_file(const std::vector<EffectSpec>& effects, std::uint64_t
   file.header.set("filter_interval_s", truth.filter_interval_s);
   for (std::size_t i = 0; i < effects.size(); ++i)
     file.header.set(fmt::format("truth.effect.{}", i), format_effect(effects[i]));
-  const Sampler sampler(UncertaintyModel{});
+  const mc::Sampler sampler(UncertaintyModel{});
   const std::vector<double> times = uniform_times(T + nav, truth.filter_interval_s, false);
   for (int r = 0; r < runs; ++r)
-    file.runs.push_back(simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(r), times, {T, 0.0}));
+    file.runs.push_back(runs::simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(r), times, {T, 0.0}));
   return without_truth(std::move(file));  // the diagnosis is blind
 }
 
@@ -118,7 +118,7 @@ RecordFile foreign_layout_file(const std::vector<EffectSpec>& effects, std::uint
   truth.effects = effects;
   ForeignRuns spec;
   spec.runs = runs;
-  return simulate_foreign_file(truth, Sampler(UncertaintyModel{}), seed, spec, layout);
+  return simulate_foreign_file(truth, mc::Sampler(UncertaintyModel{}), seed, spec, layout);
 }
 
 ValidationResult validate_diagnosis(const ValidationOptions& options) {
@@ -291,13 +291,13 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
   const Confusion m = confusion_of(r);
   std::vector<std::string> header = {"true effect"};
   header.insert(header.end(), m.columns.begin(), m.columns.end());
-  Table confusion(header);
+  mc::Table confusion(header);
   for (std::size_t row = 0; row < m.rows.size(); ++row) {
     std::vector<std::string> cells = {m.rows[row]};
     for (const int n : m.counts[row]) cells.push_back(std::to_string(n));
     confusion.add_row(cells);
   }
-  Table scores({"effect", "detectable at (x default)", "detected files", "identified", "rate", "median shrink",
+  mc::Table scores({"effect", "detectable at (x default)", "detected files", "identified", "rate", "median shrink",
                 "strict: identified / significant files", "detection threshold (x default)", "median fitted/true"});
   for (const EffectScore& s : r.scores)
     scores.add_row({s.effect, s.detectable_magnitudes.empty() ? "-" : fmt::format("{}", fmt::join(s.detectable_magnitudes, ", ")),
@@ -310,7 +310,7 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
   // study (tests/cli/gap_validate_test.cpp), its time is not.
   std::vector<std::string> case_columns = {"effect", "magnitude", "seed", "G", "p", "top", "identified", "shrink"};
   if (options.foreign_layouts) case_columns.push_back("layout");
-  Table cases(case_columns);
+  mc::Table cases(case_columns);
   for (const ValidationCase& c : r.cases) {
     std::vector<std::string> row = {c.effect, fmt::format("{}", c.magnitude), std::to_string(c.seed),
                                     fmt::format("{:.3g}", c.gap), fmt::format("{:.3g}", c.p_value), c.top,
@@ -336,19 +336,19 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
             "run numbers not consecutive, unknown header keys, no pulse-weight or filter-interval key."
           : "",
       options.foreign_layouts ? ", its f continuous or in 0.1 ft/s pulses as the layout says" : ", with its 0.1 ft/s pulses",
-      r.false_alarms, r.null_files, options.alpha, r.false_alarm_low, r.false_alarm_high, r.false_alarm_p, r.median_shrink, r.median_seconds, r.max_seconds, render_markdown(scores), render_markdown(confusion),
-      render_markdown(cases));
+      r.false_alarms, r.null_files, options.alpha, r.false_alarm_low, r.false_alarm_high, r.false_alarm_p, r.median_shrink, r.median_seconds, r.max_seconds, mc::render_markdown(scores), mc::render_markdown(confusion),
+      mc::render_markdown(cases));
   for (const std::string& e : r.undetectable)
     md += fmt::format("- {}: not detectable at the magnitudes tried ({} x its defaults): no magnitude has more than "
                       "half its files significant, so no target applies to it\n", e, fmt::join(options.magnitudes, ", "));
   if (r.failures.empty()) md += "Every target holds.\n";
   for (const std::string& f : r.failures) md += "- not met: " + f + "\n";
-  Json j = Json::object();
+  mc::Json j = mc::Json::object();
   j["quick"] = options.quick;
   j["layout"] = options.foreign_layouts ? "foreign" : "own";
   j["null_files"] = r.null_files;
   j["false_alarms"] = r.false_alarms;
-  Json ci = Json::array();
+  mc::Json ci = mc::Json::array();
   ci.push_back(r.false_alarm_low);
   ci.push_back(r.false_alarm_high);
   j["false_alarm_rate_ci95"] = ci;
@@ -356,11 +356,11 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
   j["median_shrink"] = r.median_shrink;
   j["diagnosis_seconds_median"] = r.median_seconds;
   j["diagnosis_seconds_max"] = r.max_seconds;
-  Json s = Json::array();
+  mc::Json s = mc::Json::array();
   for (const EffectScore& e : r.scores) {
-    Json o = Json::object();
+    mc::Json o = mc::Json::object();
     o["effect"] = e.effect;
-    Json mags = Json::array();
+    mc::Json mags = mc::Json::array();
     for (double m : e.detectable_magnitudes) mags.push_back(m);
     o["detectable_magnitudes"] = mags;
     o["detected_files"] = e.detected;
@@ -374,13 +374,13 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
     s.push_back(o);
   }
   j["effects"] = s;
-  Json f = Json::array();
+  mc::Json f = mc::Json::array();
   for (const std::string& x : r.failures) f.push_back(x);
   j["failures"] = f;
-  Json u = Json::array();
+  mc::Json u = mc::Json::array();
   for (const std::string& x : r.undetectable) u.push_back(x);
   j["undetectable"] = u;
-  return {{"validation.md", md}, {"confusion.md", render_markdown(confusion)}, {"confusion.csv", render_csv(confusion)},
+  return {{"validation.md", md}, {"confusion.md", render_markdown(confusion)}, {"confusion.csv", mc::render_csv(confusion)},
           {"validation.json", j.dump(2) + "\n"}};
 }
 
@@ -388,4 +388,4 @@ std::vector<std::string> validation_file_names() {
   return {"validation.md", "confusion.md", "confusion.csv", "validation.json"};
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -13,7 +13,7 @@
 #include "lib/records/record.h"
 #include "lib/truth/effect.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 struct ValidationOptions {
   bool quick = false;
@@ -103,4 +103,4 @@ std::vector<std::string> validation_file_names();
 std::vector<std::pair<std::string, std::string>> validation_report(const ValidationResult& r,
                                                                    const ValidationOptions& options);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

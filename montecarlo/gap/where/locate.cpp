@@ -2,10 +2,10 @@
 
 #include "montecarlo/gap/where/where.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
-void locate_gap(Diagnosis& d, const PreparedRuns& p, const std::vector<std::optional<gap::RunAnalyser>>& analysers,
-                const gap::Pooled& observed, const Null& null, const std::vector<Eigen::VectorXd>& null_z,
+void locate_gap(Diagnosis& d, const runs::PreparedRuns& p, const std::vector<std::optional<runs::RunAnalyser>>& analysers,
+                const Pooled& observed, const ModelNull& null, const std::vector<Eigen::VectorXd>& null_z,
                 const std::vector<int>& null_layout, double alpha) {
   d.groups = group_results(observed, null.calibration, null.log_ratios, alpha);
   if (d.pessimistic.significant) d.pessimistic.where = pessimistic_groups(d.groups, null.log_ratios, alpha);
@@ -13,20 +13,20 @@ void locate_gap(Diagnosis& d, const PreparedRuns& p, const std::vector<std::opti
     return std::string(g.coherent ? "common to all runs" : "run-to-run scatter");
   });
   d.by_axis = shares_by(d.groups, [](const GroupResult& g) {
-    const int axis = gap::group_axis(g.representative());
+    const int axis = runs::group_axis(g.representative());
     return axis < 0 ? std::string("estimates") : std::string(1, "xyz"[axis]);
   });
-  d.by_stage = shares_by(d.groups, [](const GroupResult& g) { return gap::group_stage(g.representative()); });
+  d.by_stage = shares_by(d.groups, [](const GroupResult& g) { return runs::group_stage(g.representative()); });
   d.by_window = shares_by(d.groups, [](const GroupResult& g) {
-    if (g.representative() == gap::kEstimatesGroup) return std::string("estimates");
-    return g.coherent && gap::group_stage(g.representative()) != "test-run fit" ? std::string("after test (all windows)")
-                                                                               : gap::group_window(g.group);
+    if (g.representative() == runs::kEstimatesGroup) return std::string("estimates");
+    return g.coherent && runs::group_stage(g.representative()) != "test-run fit" ? std::string("after test (all windows)")
+                                                                               : runs::group_window(g.group);
   });
   std::vector<Eigen::VectorXd> z(p.runs.size());
-  std::vector<const gap::Layout*> layouts, null_layouts;
+  std::vector<const runs::Layout*> layouts, null_layouts;
   std::vector<const Eigen::VectorXd*> expected, null_expected;
   for (std::size_t r = 0; r < p.runs.size(); ++r) {
-    const gap::RunAnalyser& a = *analysers[static_cast<std::size_t>(p.layout_of[r])];
+    const runs::RunAnalyser& a = *analysers[static_cast<std::size_t>(p.layout_of[r])];
     a.analyse(run_values(p.runs[r]), z[r]);
     layouts.push_back(&p.layouts[static_cast<std::size_t>(p.layout_of[r])]);
     expected.push_back(&a.expected_square());
@@ -39,4 +39,4 @@ void locate_gap(Diagnosis& d, const PreparedRuns& p, const std::vector<std::opti
   d.allan = allan_curves(layouts, z, expected, null_layouts, null_z, null_expected, p.site.filter_interval_s);
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

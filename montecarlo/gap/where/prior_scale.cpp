@@ -1,3 +1,4 @@
+#include "montecarlo/gap/fit/candidate_fit.h"
 #include "montecarlo/gap/where/prior_scale.h"
 
 #include <cmath>
@@ -5,17 +6,17 @@
 #include "montecarlo/gap/candidates/definitions.h"
 #include "montecarlo/gap/null/bootstrap.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
-PriorScale fit_prior_scale(const PreparedRuns& p, const gap::NullCalibration& m0, double pessimistic_critical,
+PriorScale fit_prior_scale(const runs::PreparedRuns& p, const NullCalibration& m0, double pessimistic_critical,
                            std::uint64_t seed) {
   // 0.01 … 100 in steps of 10^(1/8) ≈ 1.33: half the candidates' step in
   // log, so that the resampled range says something about the data.
-  gap::Candidate c = gap::candidates::bounds();
+  Candidate c = candidates::bounds();
   std::vector<double>& grid = c.parameters.front().grid;
   grid.clear();
   for (int k = -16; k <= 16; ++k) grid.push_back(std::pow(10.0, k / 8.0));
-  const std::vector<std::vector<gap::Extension>> none(p.layouts.size());
+  const std::vector<std::vector<runs::Extension>> none(p.layouts.size());
   const CandidateSums sums = evaluate_candidate(p, c, none, m0);
   const std::size_t n = p.runs.size();
   const std::vector<int> runs = all_runs(n);
@@ -35,12 +36,12 @@ PriorScale fit_prior_scale(const PreparedRuns& p, const gap::NullCalibration& m0
   out.low = quantile(draws, 0.16);
   out.high = quantile(draws, 0.84);
   // G₋ as the verdict reads it (coherent groups against at least the model's scatter).
-  const gap::RunSet set = run_set_under(sums, runs, std::vector<Choice>(n, best));
-  const gap::LogRatios ratios =
-      gap::log_ratios(gap::pool(set, runs), m0, gap::CoherentReference::kAtLeastModelScatter);
-  out.pessimistic_after = gap::signed_gap(ratios).pessimistic;
+  const RunSet set = run_set_under(sums, runs, std::vector<Choice>(n, best));
+  const LogRatios ratios =
+      log_ratios(pool(set, runs), m0, CoherentReference::kAtLeastModelScatter);
+  out.pessimistic_after = signed_gap(ratios).pessimistic;
   out.explains = out.pessimistic_after <= pessimistic_critical;
   return out;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

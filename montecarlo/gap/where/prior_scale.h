@@ -10,13 +10,13 @@
 /// effect: it never enters the ranking or the greedy steps.
 #include <cstdint>
 
-#include "montecarlo/gap/diagnosis.h"
-#include "montecarlo/gap/fit/candidate_fit.h"
+#include "montecarlo/gap/diagnosis_results.h"
+#include "montecarlo/runs/prepared_runs.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// `pessimistic_critical`: the null files' G₋ at 1 − α.
-PriorScale fit_prior_scale(const PreparedRuns& p, const gap::NullCalibration& m0, double pessimistic_critical,
+PriorScale fit_prior_scale(const runs::PreparedRuns& p, const NullCalibration& m0, double pessimistic_critical,
                            std::uint64_t seed);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -5,16 +5,16 @@
 #include <cmath>
 #include <map>
 
-namespace insmc::mc {
+namespace insmc::gap {
 
-std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::NullCalibration& calibration,
-                                       const std::vector<gap::LogRatios>& null_log_ratios, double alpha) {
-  const gap::LogRatios l = gap::log_ratios(observed, calibration, gap::CoherentReference::kAtLeastModelScatter);
-  const gap::GroupValues power = gap::group_power(observed.power);
-  const gap::GroupValues null_power = gap::expected_power(observed.power, calibration);
-  const gap::CoherentValues coherent = gap::coherent_power(observed);
-  const gap::CoherentValues null_coherent =
-      gap::expected_coherent_power(observed, calibration, gap::CoherentReference::kAtLeastModelScatter);
+std::vector<GroupResult> group_results(const Pooled& observed, const NullCalibration& calibration,
+                                       const std::vector<LogRatios>& null_log_ratios, double alpha) {
+  const LogRatios l = log_ratios(observed, calibration, CoherentReference::kAtLeastModelScatter);
+  const GroupValues power = group_power(observed.power);
+  const GroupValues null_power = expected_power(observed.power, calibration);
+  const CoherentValues coherent = coherent_power(observed);
+  const CoherentValues null_coherent =
+      expected_coherent_power(observed, calibration, CoherentReference::kAtLeastModelScatter);
   double total = 0;
   for (double v : l.scatter)
     if (std::isfinite(v)) total += v * v;
@@ -22,7 +22,7 @@ std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::N
     if (std::isfinite(v)) total += v * v;
   const auto p_value = [&](const auto& pick, double value) {
     std::size_t above = 0;
-    for (const gap::LogRatios& nl : null_log_ratios) {
+    for (const LogRatios& nl : null_log_ratios) {
       const double v = pick(nl);
       if (!std::isfinite(v) || std::abs(v) >= std::abs(value)) ++above;
     }
@@ -32,7 +32,7 @@ std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::N
   // the groups plot draws).
   const auto band = [&](const auto& pick, GroupResult& r) {
     std::vector<double> v;
-    for (const gap::LogRatios& nl : null_log_ratios)
+    for (const LogRatios& nl : null_log_ratios)
       if (const double x = pick(nl); std::isfinite(x)) v.push_back(x);
     if (v.empty()) return;
     std::sort(v.begin(), v.end());
@@ -41,36 +41,36 @@ std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::N
     r.null_high = at(1 - 0.5 * alpha);
   };
   std::vector<GroupResult> out;
-  for (int g = 0; g < gap::kGroupCount; ++g) {
+  for (int g = 0; g < runs::kGroupCount; ++g) {
     if (!std::isfinite(l.scatter[g])) continue;
     out.push_back({false, g, observed.power.count[g], power[g], null_power[g], l.scatter[g],
-                   p_value([g](const gap::LogRatios& nl) { return nl.scatter[g]; }, l.scatter[g]),
+                   p_value([g](const LogRatios& nl) { return nl.scatter[g]; }, l.scatter[g]),
                    total > 0 ? l.scatter[g] * l.scatter[g] / total : 0.0, 0.0, 0.0});
-    band([g](const gap::LogRatios& nl) { return nl.scatter[g]; }, out.back());
+    band([g](const LogRatios& nl) { return nl.scatter[g]; }, out.back());
   }
-  for (int c = 0; c < gap::kCoherentCount; ++c) {
+  for (int c = 0; c < runs::kCoherentCount; ++c) {
     const auto k = static_cast<std::size_t>(c);
     if (!std::isfinite(l.coherent[k])) continue;
     double count = 0;
-    for (int g = 0; g < gap::kGroupCount; ++g)
-      if (gap::coherent_group_of(g) == c) count += observed.power.count[g];
+    for (int g = 0; g < runs::kGroupCount; ++g)
+      if (runs::coherent_group_of(g) == c) count += observed.power.count[g];
     out.push_back({true, c, count, coherent[k], null_coherent[k], l.coherent[k],
-                   p_value([k](const gap::LogRatios& nl) { return nl.coherent[k]; }, l.coherent[k]),
+                   p_value([k](const LogRatios& nl) { return nl.coherent[k]; }, l.coherent[k]),
                    total > 0 ? l.coherent[k] * l.coherent[k] / total : 0.0, 0.0, 0.0});
-    band([k](const gap::LogRatios& nl) { return nl.coherent[k]; }, out.back());
+    band([k](const LogRatios& nl) { return nl.coherent[k]; }, out.back());
   }
   return out;
 }
 
 std::vector<std::string> pessimistic_groups(const std::vector<GroupResult>& groups,
-                                            const std::vector<gap::LogRatios>& null_log_ratios, double alpha) {
+                                            const std::vector<LogRatios>& null_log_ratios, double alpha) {
   std::vector<const GroupResult*> below, beyond;
   for (const GroupResult& g : groups)
     if (g.log_ratio < 0) below.push_back(&g);
   std::sort(below.begin(), below.end(), [](const GroupResult* a, const GroupResult* b) { return a->log_ratio < b->log_ratio; });
   for (const GroupResult* g : below) {
     std::size_t as_low = 0;
-    for (const gap::LogRatios& nl : null_log_ratios) {
+    for (const LogRatios& nl : null_log_ratios) {
       const double v = g->coherent ? nl.coherent[static_cast<std::size_t>(g->group)] : nl.scatter[static_cast<std::size_t>(g->group)];
       if (!std::isfinite(v) || v <= g->log_ratio) ++as_low;
     }
@@ -94,9 +94,9 @@ std::vector<Share> shares_by(const std::vector<GroupResult>& groups,
   return out;
 }
 
-std::vector<TimeFunctionShares> time_function_shares(const std::vector<const gap::Layout*>& layouts,
+std::vector<TimeFunctionShares> time_function_shares(const std::vector<const runs::Layout*>& layouts,
                                                      const std::vector<Eigen::VectorXd>& z,
-                                                     const gap::RecordSite& site) {
+                                                     const runs::RecordSite& site) {
   const char* names[] = {"Schuler sin/cos(w_s t)", "earth rate sin/cos(w_ie t)", "t^2", "t^3", "t^4", "rest"};
   const double ws = site.model.schuler_radps(), wie = site.model.earth_rate_radps;
   std::vector<TimeFunctionShares> out;
@@ -106,8 +106,8 @@ std::vector<TimeFunctionShares> time_function_shares(const std::vector<const gap
       std::vector<double> t, v;
       // z[r] holds the run's rows: all of the layout's, or its first ones.
       for (std::size_t i = 0; i < static_cast<std::size_t>(z[r].size()); ++i) {
-        const gap::ObservationRow& row = layouts[r]->rows[i];
-        if (static_cast<int>(i) < layouts[r]->test_rows || row.quantity != gap::Quantity::kR || row.axis != axis) continue;
+        const runs::ObservationRow& row = layouts[r]->rows[i];
+        if (static_cast<int>(i) < layouts[r]->test_rows || row.quantity != runs::Quantity::kR || row.axis != axis) continue;
         t.push_back(row.t_s);
         v.push_back(z[r][static_cast<Eigen::Index>(i)]);
       }
@@ -144,11 +144,11 @@ namespace {
 
 /// Σ of squared differences of consecutive cluster means and their count,
 /// per cluster size, for one axis of one run's f residuals.
-void add_allan(const gap::Layout& layout, const Eigen::VectorXd& z, const Eigen::VectorXd& expected, int axis,
+void add_allan(const runs::Layout& layout, const Eigen::VectorXd& z, const Eigen::VectorXd& expected, int axis,
                std::map<int, std::pair<double, double>>& acc) {
   std::vector<double> e;
   for (std::size_t i = 0; i < static_cast<std::size_t>(z.size()); ++i)  // the run's rows: a prefix of the layout
-    if (layout.rows[i].quantity == gap::Quantity::kF && layout.rows[i].axis == axis)
+    if (layout.rows[i].quantity == runs::Quantity::kF && layout.rows[i].axis == axis)
       e.push_back(z[static_cast<Eigen::Index>(i)] * std::sqrt(expected[static_cast<Eigen::Index>(i)]));
   for (int m = 1; 4 * m <= static_cast<int>(e.size()); m *= 2) {
     std::vector<double> means;
@@ -166,10 +166,10 @@ void add_allan(const gap::Layout& layout, const Eigen::VectorXd& z, const Eigen:
 
 }  // namespace
 
-std::vector<AllanCurve> allan_curves(const std::vector<const gap::Layout*>& layouts,
+std::vector<AllanCurve> allan_curves(const std::vector<const runs::Layout*>& layouts,
                                      const std::vector<Eigen::VectorXd>& z,
                                      const std::vector<const Eigen::VectorXd*>& expected,
-                                     const std::vector<const gap::Layout*>& null_layouts,
+                                     const std::vector<const runs::Layout*>& null_layouts,
                                      const std::vector<Eigen::VectorXd>& null_z,
                                      const std::vector<const Eigen::VectorXd*>& null_expected,
                                      double filter_interval_s) {
@@ -207,4 +207,4 @@ std::vector<AllanCurve> allan_curves(const std::vector<const gap::Layout*>& layo
   return out;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -6,21 +6,21 @@
 #include <string>
 #include <vector>
 
-#include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/gap/diagnosis_results.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 
 /// Per scatter and coherent group: power, the calibrated expected power, ℓ,
 /// its p-value against the null files' |ℓ|, its share of Σ ℓ², and the
 /// null files' ℓ band (quantiles α/2 and 1 − α/2).
-std::vector<GroupResult> group_results(const gap::Pooled& observed, const gap::NullCalibration& calibration,
-                                       const std::vector<gap::LogRatios>& null_log_ratios, double alpha);
+std::vector<GroupResult> group_results(const Pooled& observed, const NullCalibration& calibration,
+                                       const std::vector<LogRatios>& null_log_ratios, double alpha);
 
 /// The groups where the data show less than the model (ℓ < 0) beyond what
 /// the null files show there (lower-tail p < alpha), most negative first;
 /// when none is beyond alone, the most negative one.
 std::vector<std::string> pessimistic_groups(const std::vector<GroupResult>& groups,
-                                            const std::vector<gap::LogRatios>& null_log_ratios, double alpha);
+                                            const std::vector<LogRatios>& null_log_ratios, double alpha);
 
 /// Σ of the groups' shares under each key (key order of first appearance).
 std::vector<Share> shares_by(const std::vector<GroupResult>& groups,
@@ -30,20 +30,20 @@ std::vector<Share> shares_by(const std::vector<GroupResult>& groups,
 /// runs) explained by, in this order, the Schuler terms sin/cos ω_s t, the
 /// earth-rate terms sin/cos ω_ie t, then t², t³, t⁴ (each after the ones
 /// before, least squares per run), and what is left ("rest").
-std::vector<TimeFunctionShares> time_function_shares(const std::vector<const gap::Layout*>& layouts,
+std::vector<TimeFunctionShares> time_function_shares(const std::vector<const runs::Layout*>& layouts,
                                                      const std::vector<Eigen::VectorXd>& z,
-                                                     const gap::RecordSite& site);
+                                                     const runs::RecordSite& site);
 
 /// Per axis: Allan deviation of the f residuals (all f rows of a run in
 /// time order, non-overlapping clusters of 1, 2, 4, ... rows) of the data
 /// and of the null runs, with the null band: 5–95 % over null files of as
 /// many runs as the data (consecutive null runs).
-std::vector<AllanCurve> allan_curves(const std::vector<const gap::Layout*>& layouts,
+std::vector<AllanCurve> allan_curves(const std::vector<const runs::Layout*>& layouts,
                                      const std::vector<Eigen::VectorXd>& z,
                                      const std::vector<const Eigen::VectorXd*>& expected,
-                                     const std::vector<const gap::Layout*>& null_layouts,
+                                     const std::vector<const runs::Layout*>& null_layouts,
                                      const std::vector<Eigen::VectorXd>& null_z,
                                      const std::vector<const Eigen::VectorXd*>& null_expected,
                                      double filter_interval_s);
 
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -10,7 +10,7 @@
 namespace insmc::mc::testing {
 
 /// A random permutation of 0..n-1 (Fisher–Yates on the Philox stream).
-inline std::vector<std::size_t> permutation(std::size_t n, CounterStream& rng) {
+inline std::vector<std::size_t> permutation(std::size_t n, mc::CounterStream& rng) {
   std::vector<std::size_t> p(n);
   std::iota(p.begin(), p.end(), std::size_t{0});
   for (std::size_t i = n; i > 1; --i) {

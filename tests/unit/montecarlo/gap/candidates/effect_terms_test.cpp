@@ -13,7 +13,7 @@
 #include "montecarlo/gap/candidates/candidates.h"
 #include "montecarlo/gap/ranking/effect_terms.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 const gap::Candidate& candidate(const std::string& name) {
@@ -28,7 +28,7 @@ TEST(EffectTerms, ATransientAtSwitchOverIsReportedAtSwitchOnAsTheTruthDefinesIt)
   // conversion must give B back, for the warm-up the site says.
   EffectSpec spec = parse_effect("thermal_transient:bias=0.2mg,drift=3meru,tau=1200s,warmup=600s");
   const Perturbations p = realize_effects(std::span<const EffectSpec>(&spec, 1), EffectContext{});
-  gap::RecordSite site;
+  runs::RecordSite site;
   site.warmup_s = 600.0;
   std::vector<double> fitted = {p.alignment_bias_mps2[0], p.alignment_drift_radps[0], 1200.0};
   ASSERT_LT(fitted[0], 0.2 * kMgToMps2);  // the records see less than the switch-on value
@@ -44,7 +44,7 @@ TEST(EffectTerms, TheFindingIsAnEffectArgumentSimulateAccepts) {
   c.parameters = {{"bias", Dimension::kAcceleration, 0.2 * kMgToMps2, 0, 0, false, {}},
                   {"drift", Dimension::kAngularRate, 3 * kMeruToRadps, 0, 0, false, {}},
                   {"tau", Dimension::kTime, 1200.0, 0, 0, false, {}}};
-  gap::RecordSite site;
+  runs::RecordSite site;
   EffectArgument a = effect_argument(c, site);
   EXPECT_EQ(a.text, "thermal_transient:bias=0.2mg,drift=3meru,tau=1.2e+03s,warmup=900s");
   ASSERT_EQ(a.kept.size(), 1U);
@@ -64,4 +64,4 @@ TEST(EffectTerms, TheFindingIsAnEffectArgumentSimulateAccepts) {
 }
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -12,16 +12,16 @@
 #include "lib/units/units.h"
 #include "montecarlo/gap/candidates/common.h"
 #include "montecarlo/gap/candidates/random_process.h"
-#include "montecarlo/gap/model/gaussian_model.h"
-#include "tests/unit/montecarlo/gap/test_layout.h"
+#include "montecarlo/runs/model/gaussian_model.h"
+#include "tests/unit/montecarlo/runs/test_layout.h"
 
 namespace insmc::gap::candidates {
 namespace {
 
 struct Context {
-  Layout layout = testing::test_layout(6300.0);
-  RecordSite site;
-  BaseModel base;
+  runs::Layout layout = runs::testing::test_layout(6300.0);
+  runs::RecordSite site;
+  runs::BaseModel base;
   LayoutContext ctx;
   Context() {
     site.filter_interval_s = 10.0;
@@ -31,7 +31,7 @@ struct Context {
 };
 
 /// Σ_k of what a unit angle variance about each axis puts on f_k: |f|² − f_k².
-double tilt_weight(const ObservationRow& row, const ModelOptions& m) {
+double tilt_weight(const runs::ObservationRow& row, const ModelOptions& m) {
   const Eigen::Vector3d f = specific_force(row.t_s, m);
   return f.squaredNorm() - f[row.axis] * f[row.axis];
 }
@@ -42,9 +42,9 @@ TEST(RandomProcess, ATiltReachesTheVerticalAccelerometerAsGravityTurnsInThePlatf
   const double g = c.site.model.gravity_mps2;
   bool vertical_seen = false;
   for (std::size_t i = 0; i < c.layout.rows.size(); ++i) {
-    const ObservationRow& row = c.layout.rows[i];
+    const runs::ObservationRow& row = c.layout.rows[i];
     const double got = add[static_cast<Eigen::Index>(i)];
-    if (row.quantity != Quantity::kF) {
+    if (row.quantity != runs::Quantity::kF) {
       EXPECT_EQ(got, 0.0);
       continue;
     }
@@ -68,14 +68,14 @@ TEST(RandomProcess, ADriftsRemainderOnTheFRowsIsTheBridgeVarianceLessItsFirstMod
   // from interval to interval.
   const Context c;
   const double sigma = 1.0 * kMeruToRadps, q = sigma * sigma / 3600.0;
-  const Extension e = process_extension(c.ctx, Drive::kRate, sigma, 0.0);
+  const runs::Extension e = process_extension(c.ctx, Drive::kRate, sigma, 0.0);
   const double d = std::max(kMinKnotSpacingS, 6300.0 / kMaxKnots), d3 = d * d * d;
   const double pi4 = std::pow(std::numbers::pi, 4);
   const double mean = q * d3 * (1.0 / 30.0 - 3.0 / pi4), per_interval = q * d3 * (1.0 / 12.0 - 8.0 / pi4);
   ASSERT_EQ(e.noise_var_add.size(), static_cast<Eigen::Index>(c.layout.rows.size()));
   for (std::size_t i = 0; i < c.layout.rows.size(); ++i) {
-    const ObservationRow& row = c.layout.rows[i];
-    if (row.quantity != Quantity::kF) continue;
+    const runs::ObservationRow& row = c.layout.rows[i];
+    if (row.quantity != runs::Quantity::kF) continue;
     const double want = (mean + per_interval * row.t_s / d) * tilt_weight(row, c.site.model);
     EXPECT_NEAR(e.noise_var_add[static_cast<Eigen::Index>(i)], want, 1e-9 * want) << row.t_s;
   }
@@ -84,7 +84,7 @@ TEST(RandomProcess, ADriftsRemainderOnTheFRowsIsTheBridgeVarianceLessItsFirstMod
 TEST(RandomProcess, AnAngleRandomWalksRemainderGoesThroughTheSameTilt) {
   const Context c;
   const double sigma = 0.1 * kMradToRad;
-  const Extension e = process_extension(c.ctx, Drive::kAngle, sigma, 0.0);
+  const runs::Extension e = process_extension(c.ctx, Drive::kAngle, sigma, 0.0);
   const Eigen::VectorXd unit = tilt_f_noise(c.ctx, 1.0);
   // The same shape as a unit tilt, scaled by the bridge's white remainder.
   double scale = 0;

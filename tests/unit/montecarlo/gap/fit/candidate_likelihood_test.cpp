@@ -16,13 +16,13 @@
 #include "lib/uncertainty/uncertainty_model.h"
 #include "lib/units/units.h"
 #include "montecarlo/gap/fit/likelihood_fit.h"
-#include "montecarlo/gap/model/likelihood.h"
-#include "tests/unit/montecarlo/gap/test_layout.h"
+#include "montecarlo/runs/model/likelihood.h"
+#include "tests/unit/montecarlo/runs/test_layout.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
-gap::Layout layout(double end_s) { return gap::testing::test_layout(end_s); }
+runs::Layout layout(double end_s) { return runs::testing::test_layout(end_s); }
 
 const gap::Candidate& candidate(const std::string& name) {
   for (const gap::Candidate& c : gap::candidate_registry())
@@ -31,17 +31,17 @@ const gap::Candidate& candidate(const std::string& name) {
 }
 
 /// `runs` draws y = μ + H c + e from the model with `bounds` at scale `s`.
-PreparedRuns drawn_runs(int runs, double s, std::uint64_t seed) {
-  PreparedRuns p;
+runs::PreparedRuns drawn_runs(int runs, double s, std::uint64_t seed) {
+  runs::PreparedRuns p;
   p.site.filter_interval_s = 10.0;
   p.site.dv_pulse_mps = 0.1 * kFtpsToMps;
   p.x_var = UncertaintyModel{}.variance();
-  const gap::Layout l = layout(2700.0);
+  const runs::Layout l = layout(2700.0);
   const int L = p.layout_index(l);
   gap::LayoutContext ctx{&p.layouts[0], &p.site, &p.bases[0], {}};
   const double theta[] = {s};
-  const gap::Extension e = candidate("bounds").build(ctx, theta);
-  const gap::GaussianModel m = gap::combine(p.bases[0], {&e});
+  const runs::Extension e = candidate("bounds").build(ctx, theta);
+  const runs::GaussianModel m = runs::combine(p.bases[0], {&e});
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal;
   for (int r = 0; r < runs; ++r) {
@@ -61,8 +61,8 @@ PreparedRuns drawn_runs(int runs, double s, std::uint64_t seed) {
 
 TEST(GapCandidateLikelihood, IsTheCombinedModelsLikelihoodAndFitsTheDrawnValue) {
   const double truth = 3.0;
-  const PreparedRuns p = drawn_runs(16, truth, 5);
-  const std::vector<std::vector<gap::Extension>> selected(p.layouts.size());
+  const runs::PreparedRuns p = drawn_runs(16, truth, 5);
+  const std::vector<std::vector<runs::Extension>> selected(p.layouts.size());
   const gap::Candidate& c = candidate("bounds");
   const RunLogLikelihoods evaluate = candidate_evaluation(p, c, selected);
 
@@ -75,9 +75,9 @@ TEST(GapCandidateLikelihood, IsTheCombinedModelsLikelihoodAndFitsTheDrawnValue) 
               static_cast<int>(p.runs.size()));
 
   gap::LayoutContext ctx{&p.layouts[0], &p.site, &p.bases[0], {}};
-  const gap::Extension e = c.build(ctx, at);
-  const gap::RunLikelihood direct(gap::combine(p.bases[0], {&e}));
-  const gap::RunLikelihood null_model(gap::combine(p.bases[0], {}));
+  const runs::Extension e = c.build(ctx, at);
+  const runs::RunLikelihood direct(runs::combine(p.bases[0], {&e}));
+  const runs::RunLikelihood null_model(runs::combine(p.bases[0], {}));
   const std::vector<double> null = null_log_likelihoods(p, selected);
   ASSERT_EQ(ll.size(), p.runs.size());
   for (std::size_t r = 0; r < p.runs.size(); ++r) {
@@ -103,4 +103,4 @@ TEST(GapCandidateLikelihood, IsTheCombinedModelsLikelihoodAndFitsTheDrawnValue) 
 }
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::gap

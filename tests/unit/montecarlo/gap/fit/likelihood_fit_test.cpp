@@ -10,7 +10,7 @@
 #include <numeric>
 #include <random>
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 /// m runs of n iid N(0, σ²) values; the parameter is σ². Run j's
@@ -222,4 +222,4 @@ TEST(GapLikelihoodFit, CrossValidationGainsWhereTheNullIsWrong) {
 }
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -7,7 +7,7 @@
 
 #include "montecarlo/gap/fit/subgrid.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 TEST(Subgrid, TheVertexOfAParabolaThroughThreePointsIsItsMinimum) {
@@ -40,4 +40,4 @@ TEST(Subgrid, TheVertexOfAConvexParabolaWithItsLeastInTheMiddleLiesBetweenTheNei
 }
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::gap

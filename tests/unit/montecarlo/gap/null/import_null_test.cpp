@@ -12,7 +12,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 constexpr double kAlignS = 300, kTestS = 300, kNavS = 300, kIntervalS = 10;
@@ -111,4 +111,4 @@ TEST(ImportNull, SaysWhyWhenItCannotGoThroughTheImport) {
 }
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -6,7 +6,7 @@
 
 #include "montecarlo/gap/ranking/finding_check.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 ParameterEstimate estimate(double value, double low, double high) {
@@ -49,4 +49,4 @@ TEST(FindingCheck, ARatioDoesNotApplyToARangeReachingZero) {
 }
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -5,7 +5,7 @@
 #include "montecarlo/gap/candidates/candidates.h"
 #include "montecarlo/gap/ranking/statements.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 TEST(Statements, EveryCandidateSaysWhatTestShowsItsOwnSignature) {
@@ -22,4 +22,4 @@ TEST(Statements, AClassNamesTheTestOfEachMemberOrTheOneTheyShareOnce) {
 }
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -7,7 +7,7 @@
 
 #include "lib/units/units.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
@@ -73,4 +73,4 @@ TEST(LeadingFinding, APessimisticModelIsSaidWhenNoGapIsAbove) {
 }
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::gap

@@ -11,9 +11,9 @@
 #include <set>
 
 #include "lib/records/record_io.h"
-#include "montecarlo/gap/null/record_simulation.h"
+#include "montecarlo/runs/simulation/record_simulation.h"
 
-namespace insmc::mc {
+namespace insmc::gap {
 namespace {
 
 ForeignRuns short_runs() {
@@ -39,7 +39,7 @@ TEST(ForeignLayout, RowsFollowTheRecordersOwnGrids) {
   layout.r_every_s = 30.0;
   layout.pulses = false;
   layout.zero_row = true;
-  const RecordFile file = simulate_foreign_file(TruthOptions{}, Sampler(UncertaintyModel{}), 3, short_runs(), layout);
+  const RecordFile file = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 3, short_runs(), layout);
   EXPECT_EQ(file.header.find("dv_pulse_mps"), nullptr);
   EXPECT_EQ(file.header.find("filter_interval_s"), nullptr);
   EXPECT_TRUE(file.header.truth_entries.empty());
@@ -75,8 +75,8 @@ TEST(ForeignLayout, ALongerWindowIsTheMeanOfTheWindowsItSpansAndRIsTheSame) {
   fine.pulses = coarse.pulses = false;
   ForeignRuns spec = short_runs();
   spec.runs = 1;
-  const RecordRun a = simulate_foreign_file(TruthOptions{}, Sampler(UncertaintyModel{}), 5, spec, fine).runs[0];
-  const RecordRun b = simulate_foreign_file(TruthOptions{}, Sampler(UncertaintyModel{}), 5, spec, coarse).runs[0];
+  const RecordRun a = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 5, spec, fine).runs[0];
+  const RecordRun b = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 5, spec, coarse).runs[0];
   std::map<double, const RecordRow*> at;
   for (const RecordRow& row : a.rows) at[row.t_s] = &row;
   int compared = 0;
@@ -96,4 +96,4 @@ TEST(ForeignLayout, ALongerWindowIsTheMeanOfTheWindowsItSpansAndRIsTheSame) {
 }
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::gap

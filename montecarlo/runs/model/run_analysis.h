@@ -1,0 +1,99 @@
+#pragma once
+/// One run against a GaussianModel (gaussian_model.h), the way the report's
+/// preflight procedure uses the data: the test-run rows are fitted (linear
+/// minimum-variance estimate of the causes c with the prior), then the
+/// navigation rows are predicted from that fit. Each row gets a normalized
+/// square z² whose expectation under the model is exactly 1, whatever the
+/// distribution (only second moments enter):
+///   test rows:  residual e = y − H ĉ,   E e² = σ² − h P⁺ hᵀ;
+///   nav rows:   innovation ν = y − H ĉ, E ν² = h P⁺ hᵀ + σ²;
+///   estimates:  ĉ_j of x,               E ĉ_j² = P_jj − P⁺_jj,
+/// P⁺ the posterior covariance. Sums per report group (layout.h) are what the
+/// gap metric aggregates over runs.
+///
+/// The fit weights rows by the model's noise_var, which carries a
+/// model-error floor (gaussian_model.h); the data carry only
+/// actual_noise_var. So each row also gets the expectation of its square
+/// under the actual noise with that same (floor-weighted) fit, E_i: with
+/// A = P⁺P⁻¹P⁺, B = K R_a Kᵀ, K = P⁺Hₜᵀ R⁻¹ (the fit's gain), q = h P⁺ hᵀ,
+///   test rows:  E_i = h (A + B) hᵀ + R_a,i (1 − 2 q_i / R_i),
+///   nav rows:   E_i = h (A + B) hᵀ + R_a,i,
+///   estimates:  E_j = P_jj − 2 P⁺_jj + A_jj + B_jj,
+/// which reduce to the normalizers above when R_a = R. E_i is affine in the
+/// noise, so e_i − E_i ≥ 0 is what the floor alone contributes. The group
+/// sums carry Σ E_i/e_i and Σ (1 − E_i/e_i): the metric compares Σ z² with
+/// the first plus the share of the second that the null shows to be real
+/// model error (gap_metric.h).
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "montecarlo/runs/model/gaussian_model.h"
+
+namespace insmc::runs {
+
+/// Per group, over its terms i (rows, or estimates): Σ z², their number,
+/// Σ E_i/e_i (the expected Σ z² under the actual noise) and Σ (1 − E_i/e_i)
+/// (what the model-error floor adds to it).
+struct GroupSums {
+  std::array<double, kGroupCount> z2{};
+  std::array<double, kGroupCount> count{};
+  std::array<double, kGroupCount> expected{};
+  std::array<double, kGroupCount> floor{};
+  GroupSums& operator+=(const GroupSums& o) {
+    for (int g = 0; g < kGroupCount; ++g)
+      z2[g] += o.z2[g], count[g] += o.count[g], expected[g] += o.expected[g], floor[g] += o.floor[g];
+    return *this;
+  }
+};
+
+/// An estimate counts in the "estimates vs prior" group when the test run
+/// removes at least this share of its prior variance.
+inline constexpr double kResolvedShare = 0.1;
+
+class RunAnalyser {
+ public:
+  RunAnalyser(const Layout& layout, const GaussianModel& model);
+
+  /// Group sums of one run's values (layout order). A run may hold the
+  /// first rows of the layout only (it stopped early; at least the test
+  /// rows): every result is then that of those rows.
+  GroupSums analyse(const Eigen::VectorXd& y) const;
+  /// As analyse, also giving z (the signed normalized residual/innovation per row).
+  GroupSums analyse(const Eigen::VectorXd& y, Eigen::VectorXd& z) const;
+
+  /// The run's normalized values: z per row, then each resolved estimate
+  /// over its expected std (the terms of the group sums). Affine in the data:
+  /// normalized(y) = normalized_linear(y − model mean).
+  Eigen::VectorXd normalized(const Eigen::VectorXd& data) const;
+  Eigen::VectorXd normalized_linear(const Eigen::VectorXd& y) const;
+  /// Group sums of normalized values.
+  GroupSums sums_of(const Eigen::VectorXd& normalized_values) const;
+
+  /// Expected square of each row's residual (test) or innovation (nav)
+  /// under the model's own noise: the normalizer e_i.
+  const Eigen::VectorXd& expected_square() const { return expected_; }
+  /// The same under the actual noise, E_i (rows, then resolved estimates
+  /// over their normalizers).
+  const Eigen::VectorXd& actual_square() const { return actual_; }
+  /// The x column (catalogue index) of each resolved estimate, in the order
+  /// the normalized values list them after the rows.
+  const std::vector<int>& estimate_x_columns() const { return estimate_x_; }
+
+ private:
+  const Layout* layout_;
+  Eigen::VectorXd mean_;          // rows
+  Eigen::MatrixXd H_;             // rows × active columns
+  Eigen::MatrixXd weighted_test_; // test rows of H / σ², rows × active
+  Eigen::MatrixXd posterior_;     // P⁺
+  Eigen::VectorXd expected_;      // rows
+  Eigen::VectorXd actual_;        // rows + estimates
+  std::vector<int> estimate_columns_;  // active indices of resolved x
+  std::vector<int> estimate_x_;        // their catalogue indices
+  Eigen::VectorXd estimate_var_;
+  Eigen::VectorXd share_;         // rows + estimates: min(1, E_i/e_i), the data-independent part of the sums
+  int test_rows_ = 0;
+};
+
+}  // namespace insmc::runs

@@ -1,0 +1,86 @@
+#pragma once
+/// The records as the run model reads them (its site completed, short
+/// filter windows summed, a scheme's estimates recomputed from each run's
+/// own test rows) and its runs placed on their layouts, each layout with its
+/// base model: what the diagnosis, its null and `compensate` start from.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "lib/records/record.h"
+#include "lib/uncertainty/uncertainty_model.h"
+#include "lib/units/units.h"
+#include "montecarlo/runs/model/gaussian_model.h"
+#include "montecarlo/runs/model/key_space.h"
+#include "montecarlo/runs/model/scheme_rows.h"
+#include "montecarlo/runs/records/layout.h"
+#include "montecarlo/runs/records/site_values.h"
+
+namespace insmc::runs {
+
+/// How records are read into the run model.
+struct RecordReading {
+  UncertaintyModel prior;  ///< Table 3.1 unless overridden
+  /// Pulse weight assumed when the header has no dv_pulse_mps and the f
+  /// rows are too few to tell a lattice (site_values.h) [m/s].
+  double default_pulse_mps = 0.1 * kFtpsToMps;
+  ExtractionOptions extraction;
+  /// f windows shorter than this are summed into windows of at least this
+  /// length before anything else (records/filter_windows.h) [s].
+  double min_filter_interval_s = 1.0;
+};
+
+/// The records as the run model uses them, and its site. After a scheme
+/// that uses the test run, each run's estimates are recomputed from its test
+/// rows (scheme_rows.h): the test rows kept are the filter grid τ..T the
+/// estimates use; when a run lacks part of that grid, the navigation rows
+/// cannot be conditioned on the estimates and only the test run (still
+/// uncompensated) is diagnosed.
+struct Records {
+  RecordFile file;
+  RecordSite site;
+  std::vector<SchemeEstimates> estimates;  // per run, for a scheme that uses the test run
+  bool navigation_dropped = false;         // the scheme's estimates could not be recomputed
+};
+
+/// The report's estimators of the records' test run (T, τ, pulse weight and
+/// resolution from the completed site), with the terms `insmc run` fits
+/// (resolvable_terms under `prior`); throws InputError naming the header key
+/// of a test-run setting out of range.
+TestRunEstimators record_estimators(const RecordSite& site, const UncertaintyModel& prior);
+
+/// The records read: `statements` gets what the data cannot support,
+/// `site_values` every value of the site with its source.
+Records read_records(const RecordFile& file, const RecordReading& options, std::vector<std::string>& statements,
+                     std::vector<SiteValue>& site_values);
+
+/// Takes the scheme's use of a run's own test-run estimates off its rows
+/// (scheme_rows.h): exact, whatever moved the estimates.
+void take_off_estimates(RunData& run, const BaseModel& base, const SchemeEstimates& estimates);
+
+/// The runs, their layouts and the base model of each layout.
+struct PreparedRuns {
+  RecordSite site;
+  std::vector<RunData> runs;
+  std::vector<Layout> layouts;
+  std::vector<int> layout_of;  // per run
+  std::vector<BaseModel> bases;
+  UncertaintyVector x_var;
+  KeySpace keys;  // over every layout
+
+  /// Index of `layout`, added (with its base model and keys) when new.
+  int layout_index(const Layout& layout);
+  /// Index of the layout `run` is analysed under: its own, or a known
+  /// layout it is the beginning of (rows_begun; the run then loses the
+  /// last r row that layout lacks), else its own, added.
+  int place(RunData& run);
+};
+
+/// The records' runs on their layouts, each layout with its base model, the
+/// scheme's estimates taken off.
+PreparedRuns prepare(const Records& records, const RecordReading& options);
+
+/// A run's row values as a vector.
+Eigen::VectorXd run_values(const RunData& run);
+
+}  // namespace insmc::runs
