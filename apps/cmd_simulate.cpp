@@ -71,15 +71,15 @@ int run_simulate(const Args& args) {
     throw InputError("--layout", "foreign", "writes the runs without a scheme; give --scheme none");
   const OutputFileOption out("--out", (*vm)["out"].as<std::string>(), input_files(*vm));  // checked and locked before the work
   if (foreign) {
-    const bool quantization = std::any_of(truth.effects.begin(), truth.effects.end(),
-                                          [](const EffectSpec& e) { return e.kind == EffectKind::kQuantization; });
+    const bool needs_pulses = std::any_of(truth.effects.begin(), truth.effects.end(),
+                                          [](const EffectSpec& e) { return e.kind.info().needs_pulses; });
     gap::ForeignRuns spec;
     spec.test_duration_s = test.duration_s;
     spec.nav_duration_s = nav_s;
     spec.position_resolution_m = test.position_resolution_m;
     spec.runs = runs;
     out.write(write_record_file(
-        gap::simulate_foreign_file(truth, mc::Sampler(uncertainties), seed, spec, gap::foreign_layout_of(seed, quantization))));
+        gap::simulate_foreign_file(truth, mc::Sampler(uncertainties), seed, spec, gap::foreign_layout_of(seed, needs_pulses))));
     return 0;
   }
   // The scheme's estimators: the same resolvable terms as `insmc run` fits.

@@ -43,6 +43,8 @@ inline constexpr std::string_view kKeyDvPulseMps = "dv_pulse_mps";
 inline constexpr std::string_view kKeyPositionResolutionM = "position_resolution_m";
 inline constexpr std::string_view kKeyNavStartS = "nav_start_s";
 inline constexpr std::string_view kKeyFilterIntervalS = "filter_interval_s";
+/// Optional: switch-on to switch-over [s] (a thermal transient's warm-up).
+inline constexpr std::string_view kKeyWarmupS = "warmup_s";
 /// Prefix of the raw-sensor stage's numeric keys (import-imu; "imu.noise" alone is its status).
 inline constexpr std::string_view kRawStagePrefix = import_keys::kNoisePrefix;
 inline constexpr std::string_view kTruthKeyPrefix = "truth.";

@@ -4,7 +4,9 @@
 
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "lib/common/assert.h"
 #include "lib/common/closest_name.h"
@@ -16,19 +18,27 @@
 namespace insmc {
 namespace {
 
-using effects::EffectDefinition;
+/// The registry: the built-in effects (effects/effect_list.h), then those
+/// added by register_effect(). Its order is the index of each EffectKind.
+struct Registry {
+  std::vector<const EffectDefinition*> definitions;
+  std::vector<EffectInfo> infos;
+};
 
-const std::array<const EffectDefinition*, kEffectKindCount>& definitions() {
-  static const std::array<const EffectDefinition*, kEffectKindCount> d = {
-      &effects::quantization(),          &effects::sway(),
-      &effects::accel_bias_instability(), &effects::gyro_drift_instability(),
-      &effects::angle_random_walk(),     &effects::velocity_random_walk(),
-      &effects::thermal_transient(),     &effects::anisoelastic_drift(),
-      &effects::scale_factor_nonlinearity(), &effects::gravity_model(),
-      &effects::deflection_of_vertical(), &effects::alignment_transient(),
-      &effects::switch_transient(),
-  };
-  return d;
+Registry& registry() {
+  static Registry r = [] {
+    Registry out;
+#define INSMC_EFFECT(name) out.definitions.push_back(&effects::name());
+#include "lib/truth/effects/effect_list.h"
+#undef INSMC_EFFECT
+    for (const EffectDefinition* d : out.definitions) {
+      INSMC_ASSERT(d->info.parameters.size() <= kMaxEffectParameters, "{} has {} parameters", d->info.name,
+                   d->info.parameters.size());
+      out.infos.push_back(d->info);
+    }
+    return out;
+  }();
+  return r;
 }
 
 std::string effect_names() {
@@ -46,27 +56,41 @@ std::string parameter_names(const EffectInfo& e) {
 
 }  // namespace
 
-std::span<const EffectInfo> effect_registry() {
-  static const std::array<EffectInfo, kEffectKindCount> infos = [] {
-    std::array<EffectInfo, kEffectKindCount> a{};
-    for (int k = 0; k < kEffectKindCount; ++k) {
-      a[k] = definitions()[k]->info;
-      INSMC_ASSERT(static_cast<int>(a[k].kind) == k, "registry order: {} at {}", a[k].name, k);
-      INSMC_ASSERT(a[k].parameters.size() <= kMaxEffectParameters, "{} has {} parameters",
-                   a[k].name, a[k].parameters.size());
-    }
-    return a;
-  }();
-  return infos;
+std::span<const EffectInfo> effect_registry() { return registry().infos; }
+
+EffectKind register_effect(const EffectDefinition& definition) {
+  Registry& r = registry();
+  for (const EffectInfo& e : r.infos)
+    if (e.name == definition.info.name)
+      throw std::logic_error(fmt::format("effect {} is registered already", e.name));
+  INSMC_ASSERT(definition.info.parameters.size() <= kMaxEffectParameters, "{} has {} parameters",
+               definition.info.name, definition.info.parameters.size());
+  if (r.definitions.size() >= static_cast<std::size_t>(kMaxEffects))
+    throw std::logic_error(fmt::format("effect {}: the registry holds {} effects at most", definition.info.name, kMaxEffects));
+  r.definitions.push_back(&definition);
+  r.infos.push_back(definition.info);
+  return EffectKind(static_cast<int>(r.infos.size()) - 1);
 }
 
-const EffectInfo& effect_info(EffectKind kind) { return effect_registry()[static_cast<int>(kind)]; }
+const EffectInfo& EffectKind::info() const {
+  const auto& infos = registry().infos;
+  INSMC_ASSERT(index_ >= 0 && static_cast<std::size_t>(index_) < infos.size(), "no effect {}", index_);
+  return infos[static_cast<std::size_t>(index_)];
+}
 
-std::string_view to_string(EffectKind kind) { return effect_info(kind).name; }
+const EffectInfo& effect_info(EffectKind kind) { return kind.info(); }
+
+std::string_view to_string(EffectKind kind) { return kind.info().name; }
+
+std::optional<EffectKind> find_effect(std::string_view name) {
+  const auto infos = effect_registry();
+  for (std::size_t k = 0; k < infos.size(); ++k)
+    if (infos[k].name == name) return EffectKind(static_cast<int>(k));
+  return std::nullopt;
+}
 
 EffectKind parse_effect_kind(std::string_view text, std::string_view field) {
-  for (const EffectInfo& e : effect_registry())
-    if (e.name == text) return e.kind;
+  if (const auto kind = find_effect(text)) return *kind;
   std::vector<std::string> names;
   for (const EffectInfo& e : effect_registry()) names.emplace_back(e.name);
   throw InputError(std::string(field), echo_input(text),
@@ -107,16 +131,7 @@ void validate_effect(const EffectSpec& spec, std::string_view field) {
     const std::string name = fmt::format("{} {}.{}", field, info.name, p.name);
     require_in_range(name, v, p.dimension, physical_range(p));
   }
-  if (spec.kind == EffectKind::kSway) {
-    if (spec.value("period_min") > spec.value("period_max"))
-      throw InputError(fmt::format("{} sway.period_min", field),
-                       format_quantity(spec.value("period_min"), Dimension::kTime),
-                       "must be <= period_max");
-    const double n = spec.value("components");
-    if (n != std::round(n) || n > 64)
-      throw InputError(fmt::format("{} sway.components", field), fmt::format("{}", n),
-                       "must be a whole number from 1 to 64");
-  }
+  if (info.check) info.check(spec, field);
 }
 
 namespace {
@@ -181,16 +196,17 @@ std::string format_effect(const EffectSpec& spec) {
 }
 
 std::uint64_t effect_stream(EffectKind kind, int occurrence) {
-  return (static_cast<std::uint64_t>(kind) + 1) << 16 | static_cast<std::uint64_t>(occurrence);
+  return (static_cast<std::uint64_t>(kind.index()) + 1) << 16 | static_cast<std::uint64_t>(occurrence);
 }
 
 Perturbations realize_effects(std::span<const EffectSpec> effects, const EffectContext& context) {
   Perturbations p;
-  std::array<int, kEffectKindCount> occurrences{};
+  const Registry& r = registry();
+  std::array<int, kMaxEffects> occurrences{};
   static const NormalSource kNoNoise;
   for (const EffectSpec& spec : effects) {
-    const int k = static_cast<int>(spec.kind);
-    const EffectDefinition& def = *definitions()[k];
+    const auto k = static_cast<std::size_t>(spec.kind.index());
+    const EffectDefinition& def = *r.definitions.at(k);
     INSMC_ASSERT(!def.info.random || context.noise != nullptr,
                  "effect {} is random but no NormalSource was given", def.info.name);
     NormalDraws draws(context.noise ? *context.noise : kNoNoise, effect_stream(spec.kind, occurrences[k]++));

@@ -8,7 +8,7 @@ namespace {
 constexpr EffectParameter kParameters[] = {
     {"sigma", Dimension::kAcceleration, 50e-6 * kGravityMps2,
      "1σ of the bias (Gauss–Markov) or its 1σ after one hour (random walk, tau = 0)",
-     ParameterRange::kNonNegative},
+     ParameterRange::kNonNegative, 0.0, EffectMagnitude::kScaled, RawSensorLimit::kBiasWander},
     {"tau", Dimension::kTime, 300.0, "correlation time; 0 selects a random walk",
      ParameterRange::kNonNegative},
 };
@@ -25,10 +25,10 @@ void realize(const EffectSpec& spec, const EffectContext& c, NormalDraws& draws,
 
 const EffectDefinition& accel_bias_instability() {
   static const EffectDefinition d{
-      {EffectKind::kAccelBiasInstability, "accel_bias_instability",
+      {"accel_bias_instability",
        "accelerometer bias instability: a first-order Gauss–Markov process of correlation time "
        "tau, or a random walk (tau = 0), per axis",
-       kParameters, true},
+       kParameters, true, RawSensor::kAccelerometer},
       &realize};
   return d;
 }

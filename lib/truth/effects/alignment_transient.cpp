@@ -15,10 +15,10 @@ constexpr double kCoarseAlignmentLimitRad = 1.0;
 constexpr EffectParameter kParameters[] = {
     {"level_initial", Dimension::kAngle, 5.0 * kMradToRad,
      "1σ level error per axis at the start of the fine alignment", ParameterRange::kNonNegative,
-     kCoarseAlignmentLimitRad},
+     kCoarseAlignmentLimitRad, EffectMagnitude::kScaled},
     {"azimuth_initial", Dimension::kAngle, 20.0 * kMradToRad,
      "1σ azimuth error at the start of the fine alignment", ParameterRange::kNonNegative,
-     kCoarseAlignmentLimitRad},
+     kCoarseAlignmentLimitRad, EffectMagnitude::kScaled},
     {"duration", Dimension::kTime, 600.0, "fine-alignment time", ParameterRange::kPositive},
     {"level_tau", Dimension::kTime, 120.0, "settling time constant of the leveling loops",
      ParameterRange::kPositive},
@@ -39,7 +39,7 @@ void realize(const EffectSpec& spec, const EffectContext&, NormalDraws& draws, P
 
 const EffectDefinition& alignment_transient() {
   static const EffectDefinition d{
-      {EffectKind::kAlignmentTransient, "alignment_transient",
+      {"alignment_transient",
        "alignment loops not settled at switch-over: the initial error decayed by "
        "e^{-duration/tau} remains as a random misalignment (level and azimuth)",
        kParameters, true},

@@ -8,7 +8,7 @@ namespace {
 constexpr EffectParameter kParameters[] = {
     {"angle_1h", Dimension::kAngle, 0.1 * kMradToRad,
      "1σ platform angle after one hour per axis (ARW coefficient × sqrt(1 h))",
-     ParameterRange::kNonNegative},
+     ParameterRange::kNonNegative, 0.0, EffectMagnitude::kScaled, RawSensorLimit::kWhiteNoise1h},
 };
 
 void realize(const EffectSpec& spec, const EffectContext& c, NormalDraws& draws, Perturbations& p) {
@@ -19,10 +19,10 @@ void realize(const EffectSpec& spec, const EffectContext& c, NormalDraws& draws,
 
 const EffectDefinition& angle_random_walk() {
   static const EffectDefinition d{
-      {EffectKind::kAngleRandomWalk, "angle_random_walk",
+      {"angle_random_walk",
        "gyro angle random walk: white rate noise turns the platform by a random walk, seen by the "
        "accelerometers as a wandering tilt",
-       kParameters, true},
+       kParameters, true, RawSensor::kGyro},
       &realize};
   return d;
 }

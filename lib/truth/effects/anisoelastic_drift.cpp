@@ -11,7 +11,7 @@ constexpr EffectParameter kParameters[] = {
     {"coefficient", Dimension::kAngularRate, 5.0 * kMeruToRadps,
      "drift per g² of the product of the two other specific-force components (per 1 g = "
      "9.80665 m/s²)",
-     ParameterRange::kAny},
+     ParameterRange::kAny, 0.0, EffectMagnitude::kScaled},
 };
 
 void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturbations& p) {
@@ -22,10 +22,10 @@ void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturb
 
 const EffectDefinition& anisoelastic_drift() {
   static const EffectDefinition d{
-      {EffectKind::kAnisoelasticDrift, "anisoelastic_drift",
+      {"anisoelastic_drift",
        "anisoelastic (g²-sensitive) gyro drift: ω_x = c f_y f_z, ω_y = c f_z f_x, "
        "ω_z = c f_x f_y in the platform frame",
-       kParameters, false},
+       kParameters, false, RawSensor::kGyro},
       &realize};
   return d;
 }

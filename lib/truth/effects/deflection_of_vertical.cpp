@@ -7,9 +7,9 @@ namespace {
 
 constexpr EffectParameter kParameters[] = {
     {"xi", Dimension::kAngle, 0.3 * kMradToRad,
-     "ξ, deflection about east (added to x's deflection_xi)", ParameterRange::kAny},
+     "ξ, deflection about east (added to x's deflection_xi)", ParameterRange::kAny, 0.0, EffectMagnitude::kScaled},
     {"eta", Dimension::kAngle, 0.3 * kMradToRad,
-     "η, deflection about north (added to x's deflection_eta)", ParameterRange::kAny},
+     "η, deflection about north (added to x's deflection_eta)", ParameterRange::kAny, 0.0, EffectMagnitude::kScaled},
 };
 
 void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturbations& p) {
@@ -20,7 +20,7 @@ void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturb
 
 const EffectDefinition& deflection_of_vertical() {
   static const EffectDefinition d{
-      {EffectKind::kDeflectionOfVertical, "deflection_of_vertical",
+      {"deflection_of_vertical",
        "deflection of the vertical at the site beyond Table 3.1 (2.8b): the leveling loops find "
        "the deflected plumb line, the computer's gravitation does not have it",
        kParameters, false},

@@ -9,7 +9,7 @@ namespace {
 constexpr EffectParameter kParameters[] = {
     {"j2", Dimension::kDimensionless, kEarthJ2,
      "J2 of the truth beyond the computer's model (default: the earth's whole J2)",
-     ParameterRange::kAny},
+     ParameterRange::kAny, 0.0, EffectMagnitude::kScaled},
 };
 
 void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturbations& p) {
@@ -20,7 +20,7 @@ void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturb
 
 const EffectDefinition& gravity_model() {
   static const EffectDefinition d{
-      {EffectKind::kGravityModel, "gravity_model",
+      {"gravity_model",
        "gravity-model error: the true gravitation has a J2 term the computer does not model; the "
        "site's plumb line and the computed gravitation both differ",
        kParameters, false},

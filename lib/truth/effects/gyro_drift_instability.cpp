@@ -8,7 +8,7 @@ namespace {
 constexpr EffectParameter kParameters[] = {
     {"sigma", Dimension::kAngularRate, 1.0 * kMeruToRadps,
      "1σ of the drift (Gauss–Markov) or its 1σ after one hour (random walk, tau = 0)",
-     ParameterRange::kNonNegative},
+     ParameterRange::kNonNegative, 0.0, EffectMagnitude::kScaled, RawSensorLimit::kBiasWander},
     {"tau", Dimension::kTime, 1200.0, "correlation time; 0 selects a random walk",
      ParameterRange::kNonNegative},
 };
@@ -25,10 +25,10 @@ void realize(const EffectSpec& spec, const EffectContext& c, NormalDraws& draws,
 
 const EffectDefinition& gyro_drift_instability() {
   static const EffectDefinition d{
-      {EffectKind::kGyroDriftInstability, "gyro_drift_instability",
+      {"gyro_drift_instability",
        "gyro drift instability: a first-order Gauss–Markov process of correlation time tau, or a "
        "random walk (rate random walk, tau = 0), per gyro",
-       kParameters, true},
+       kParameters, true, RawSensor::kGyro},
       &realize};
   return d;
 }

@@ -7,7 +7,7 @@ namespace {
 constexpr EffectParameter kParameters[] = {
     {"dv_pulse", Dimension::kVelocity, 0.5 * kFtpsToMps,
      "pulse weight of the accelerometer velocity increments (the model's is 0.1 ft/s)",
-     ParameterRange::kPositive},
+     ParameterRange::kPositive, 0.0, EffectMagnitude::kExcessOverModelPulse, RawSensorLimit::kVelocityQuantization},
 };
 
 void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturbations& p) {
@@ -18,11 +18,11 @@ void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturb
 
 const EffectDefinition& quantization() {
   static const EffectDefinition d{
-      {EffectKind::kQuantization, "quantization",
+      {"quantization",
        "accelerometer pulses of another weight than the model's (remainder carried); "
        "coarser pulses add sawtooth velocity errors to the navigation and counting noise to the "
        "filtered accelerometer data",
-       kParameters, false},
+       kParameters, false, RawSensor::kNone, true},
       &realize};
   return d;
 }

@@ -8,7 +8,7 @@ namespace {
 constexpr EffectParameter kParameters[] = {
     {"k2", Dimension::kAcceleration, 200e-6 * kGravityMps2,
      "output error at 1 g along the axis (second-order coefficient × 1 g²), all axes",
-     ParameterRange::kAny},
+     ParameterRange::kAny, 0.0, EffectMagnitude::kScaled},
 };
 
 void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturbations& p) {
@@ -19,9 +19,9 @@ void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturb
 
 const EffectDefinition& scale_factor_nonlinearity() {
   static const EffectDefinition d{
-      {EffectKind::kScaleFactorNonlinearity, "scale_factor_nonlinearity",
+      {"scale_factor_nonlinearity",
        "accelerometer scale-factor nonlinearity: f_m,k += k2 (f_k / 1 g)²",
-       kParameters, false},
+       kParameters, false, RawSensor::kAccelerometer},
       &realize};
   return d;
 }

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
+#include "lib/common/input_error.h"
 #include "lib/truth/effects/effects.h"
 
 namespace insmc::effects {
@@ -11,7 +14,7 @@ namespace {
 
 constexpr EffectParameter kParameters[] = {
     {"accel_rms", Dimension::kAcceleration, 5.0 * kMgToMps2,
-     "RMS of the horizontal sway acceleration per axis", ParameterRange::kNonNegative, kGravityMps2},
+     "RMS of the horizontal sway acceleration per axis", ParameterRange::kNonNegative, kGravityMps2, EffectMagnitude::kScaled},
     {"period_min", Dimension::kTime, 2.0, "shortest sway period", ParameterRange::kPositive, 3600.0},
     {"period_max", Dimension::kTime, 20.0, "longest sway period", ParameterRange::kPositive, 3600.0},
     {"vertical_ratio", Dimension::kDimensionless, 0.3,
@@ -20,6 +23,17 @@ constexpr EffectParameter kParameters[] = {
      "sinusoids per axis (periods log-uniform in [period_min, period_max], random phases)",
      ParameterRange::kPositive, 64.0},
 };
+
+// The periods in order and a whole number of sinusoids.
+void check(const EffectSpec& spec, std::string_view field) {
+  if (spec.value("period_min") > spec.value("period_max"))
+    throw InputError(fmt::format("{} sway.period_min", field), format_quantity(spec.value("period_min"), Dimension::kTime),
+                     "must be <= period_max");
+  const double n = spec.value("components");
+  if (n != std::round(n) || n > 64)
+    throw InputError(fmt::format("{} sway.components", field), fmt::format("{}", n),
+                     "must be a whole number from 1 to 64");
+}
 
 void realize(const EffectSpec& spec, const EffectContext&, NormalDraws& draws, Perturbations& p) {
   const double rms = spec.value("accel_rms");
@@ -46,10 +60,10 @@ void realize(const EffectSpec& spec, const EffectContext&, NormalDraws& draws, P
 
 const EffectDefinition& sway() {
   static const EffectDefinition d{
-      {EffectKind::kSway, "sway",
+      {"sway",
        "band-limited motion of the vehicle on its gear: disturbance acceleration in the "
        "accelerometer data and an initial velocity error (velocity wiggle)",
-       kParameters, true},
+       kParameters, true, RawSensor::kNone, false, &check},
       &realize};
   return d;
 }

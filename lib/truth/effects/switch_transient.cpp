@@ -8,9 +8,9 @@ namespace {
 
 constexpr EffectParameter kParameters[] = {
     {"misalignment", Dimension::kAngle, 0.3 * kMradToRad,
-     "1σ misalignment step per axis at switch-over", ParameterRange::kNonNegative},
+     "1σ misalignment step per axis at switch-over", ParameterRange::kNonNegative, 0.0, EffectMagnitude::kScaled},
     {"bias", Dimension::kAcceleration, 0.1 * kMgToMps2,
-     "1σ accelerometer bias step per axis at switch-over", ParameterRange::kNonNegative},
+     "1σ accelerometer bias step per axis at switch-over", ParameterRange::kNonNegative, 0.0, EffectMagnitude::kScaled},
 };
 
 void realize(const EffectSpec& spec, const EffectContext&, NormalDraws& draws, Perturbations& p) {
@@ -22,7 +22,7 @@ void realize(const EffectSpec& spec, const EffectContext&, NormalDraws& draws, P
 
 const EffectDefinition& switch_transient() {
   static const EffectDefinition d{
-      {EffectKind::kSwitchTransient, "switch_transient",
+      {"switch_transient",
        "steps in misalignment and accelerometer bias at switch-over beyond Table 3.1 "
        "(normal, per axis)",
        kParameters, true},

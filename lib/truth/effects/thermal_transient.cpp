@@ -10,12 +10,12 @@ namespace {
 
 constexpr EffectParameter kParameters[] = {
     {"bias", Dimension::kAcceleration, 0.1 * kMgToMps2,
-     "accelerometer bias offset at switch-on, all axes, decaying with tau", ParameterRange::kAny},
+     "accelerometer bias offset at switch-on, all axes, decaying with tau", ParameterRange::kAny, 0.0, EffectMagnitude::kScaled},
     {"drift", Dimension::kAngularRate, 2.0 * kMeruToRadps,
-     "gyro drift offset at switch-on, all gyros, decaying with tau", ParameterRange::kAny},
+     "gyro drift offset at switch-on, all gyros, decaying with tau", ParameterRange::kAny, 0.0, EffectMagnitude::kScaled},
     {"tau", Dimension::kTime, 1200.0, "thermal time constant", ParameterRange::kPositive},
     {"warmup", Dimension::kTime, 900.0, "time from switch-on to switch-over (the alignment)",
-     ParameterRange::kNonNegative},
+     ParameterRange::kNonNegative, 0.0, EffectMagnitude::kFixed, RawSensorLimit::kNone, "warmup_s"},
 };
 
 void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturbations& p) {
@@ -33,7 +33,7 @@ void realize(const EffectSpec& spec, const EffectContext&, NormalDraws&, Perturb
 
 const EffectDefinition& thermal_transient() {
   static const EffectDefinition d{
-      {EffectKind::kThermalTransient, "thermal_transient",
+      {"thermal_transient",
        "exponential settling of accelerometer bias and gyro drift after switch-on: "
        "b(t) = bias e^{-(warmup + t)/tau}, likewise the drift",
        kParameters, false},

@@ -7,7 +7,7 @@ namespace {
 constexpr EffectParameter kParameters[] = {
     {"velocity_1h", Dimension::kVelocity, 0.3,
      "1σ velocity error after one hour per axis (VRW coefficient × sqrt(1 h))",
-     ParameterRange::kNonNegative},
+     ParameterRange::kNonNegative, 0.0, EffectMagnitude::kScaled, RawSensorLimit::kWhiteNoise1h},
 };
 
 void realize(const EffectSpec& spec, const EffectContext& c, NormalDraws& draws, Perturbations& p) {
@@ -19,10 +19,10 @@ void realize(const EffectSpec& spec, const EffectContext& c, NormalDraws& draws,
 
 const EffectDefinition& velocity_random_walk() {
   static const EffectDefinition d{
-      {EffectKind::kVelocityRandomWalk, "velocity_random_walk",
+      {"velocity_random_walk",
        "accelerometer velocity random walk: white noise on the specific force, so the velocity "
        "increments perform a random walk",
-       kParameters, true},
+       kParameters, true, RawSensor::kAccelerometer},
       &realize};
   return d;
 }

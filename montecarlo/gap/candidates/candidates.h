@@ -8,7 +8,7 @@
 /// (priors wider than Table 3.1) and `nonlinearity` (terms the linear level
 /// drops). Effects these observables cannot tell apart are one class named
 /// by its members joined with `|`. One file per candidate in this folder
-/// (definitions.h), listed in registry.cpp.
+/// (definitions.h), listed once in candidate_list.h.
 #include <functional>
 #include <map>
 #include <span>
@@ -70,7 +70,14 @@ struct Candidate {
   std::vector<int> amplitude_indices() const;
 };
 
-/// Every candidate, in a fixed order.
+/// Every candidate, in a fixed order: the built-in ones
+/// (candidate_list.h), then those registered.
 const std::vector<Candidate>& candidate_registry();
+
+/// Adds a candidate (one defined outside this library, e.g. a test's, for
+/// an effect it registered with register_effect(), under the effect's
+/// name). Call before any diagnosis starts (the registry is not locked);
+/// throws std::logic_error on a name in use.
+void register_candidate(Candidate candidate);
 
 }  // namespace insmc::gap

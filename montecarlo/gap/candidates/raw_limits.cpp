@@ -2,53 +2,55 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <string_view>
 #include <utility>
+
+#include "lib/truth/effect.h"
 
 namespace insmc::gap {
 
-using runs::RawChannel;
-using runs::RawStage;
+namespace {
+
+/// The raw sensor a parameter's limit is read from: the velocity
+/// quantization is the accelerometers', the rest the effect's own sensor.
+RawSensor limiting_sensor(const EffectInfo& info, RawSensorLimit limit) {
+  return limit == RawSensorLimit::kVelocityQuantization ? RawSensor::kAccelerometer : info.sensor;
+}
+
+}  // namespace
 
 std::string sensor_of_effect(const std::string& effect) {
-  static const char* const kGyro[] = {"gyro_drift_instability", "angle_random_walk", "anisoelastic_drift"};
-  static const char* const kAccel[] = {"accel_bias_instability", "velocity_random_walk", "scale_factor_nonlinearity"};
   bool gyro = false, accel = false;
   std::size_t p = 0;
   while (p <= effect.size()) {  // a class "a|b": every member
     const std::size_t q = std::min(effect.find('|', p), effect.size());
-    const std::string one = effect.substr(p, q - p);
-    for (const char* g : kGyro) gyro = gyro || one == g;
-    for (const char* a : kAccel) accel = accel || one == a;
+    if (const auto kind = find_effect(std::string_view(effect).substr(p, q - p))) {
+      gyro = gyro || kind->info().sensor == RawSensor::kGyro;
+      accel = accel || kind->info().sensor == RawSensor::kAccelerometer;
+    }
     p = q + 1;
   }
   return gyro == accel ? "" : gyro ? "gyro" : "accelerometer";
 }
 
 std::vector<Candidate> limit_candidates(const std::vector<Candidate>& candidates, const runs::RawStage& raw,
-                                             std::vector<std::string>& statements) {
-  enum class Kind { kWalk, kWander, kQuantization };
-  struct Limit {
-    const char* candidate;
-    const char* parameter;
-    bool gyro;
-    Kind kind;
-  };
-  static const Limit kLimits[] = {{"angle_random_walk", "angle_1h", true, Kind::kWalk},
-                                  {"gyro_drift_instability", "sigma", true, Kind::kWander},
-                                  {"velocity_random_walk", "velocity_1h", false, Kind::kWalk},
-                                  {"accel_bias_instability", "sigma", false, Kind::kWander},
-                                  {"quantization", "dv_pulse", false, Kind::kQuantization}};
+                                        std::vector<std::string>& statements) {
   std::vector<Candidate> out = candidates;
-  for (Candidate& c : out)
-    for (const Limit& l : kLimits) {
-      if (c.name != l.candidate) continue;
+  for (Candidate& c : out) {
+    const auto kind = find_effect(c.name);
+    if (!kind) continue;
+    const EffectInfo& info = kind->info();
+    for (const EffectParameter& limited : info.parameters) {
+      if (limited.raw_limit == RawSensorLimit::kNone) continue;
+      const bool gyro = limiting_sensor(info, limited.raw_limit) == RawSensor::kGyro;
       double cap = -1;
       for (const runs::RawChannel& ch : raw.channels) {
-        if ((ch.channel.rfind("gyro", 0) == 0) != l.gyro) continue;
+        if ((ch.channel.rfind("gyro", 0) == 0) != gyro) continue;
         // The selected term's interval upper end, or (not selected) what the
         // Allan deviation allows it at most.
-        const auto [upper, bound] = l.kind == Kind::kWalk     ? std::pair{ch.walk_1h_upper_si, ch.walk_1h_bound_si}
-                                    : l.kind == Kind::kWander ? std::pair{ch.wander_upper_si, ch.wander_bound_si}
+        const auto [upper, bound] =
+            limited.raw_limit == RawSensorLimit::kWhiteNoise1h ? std::pair{ch.walk_1h_upper_si, ch.walk_1h_bound_si}
+            : limited.raw_limit == RawSensorLimit::kBiasWander ? std::pair{ch.wander_upper_si, ch.wander_bound_si}
                                                               : std::pair{ch.quantization_upper_si, ch.quantization_bound_si};
         const double v = upper >= 0 ? upper : bound;
         cap = std::max(cap, v);
@@ -56,12 +58,12 @@ std::vector<Candidate> limit_candidates(const std::vector<Candidate>& candidates
       if (cap < 0) continue;  // the header states nothing for this sensor
       if (cap == 0) {         // the raw outputs of this sensor do not vary at all
         statements.push_back(fmt::format("{}: left out (the raw {} outputs show no noise at all)", c.name,
-                                         l.gyro ? "gyro" : "accelerometer"));
+                                         gyro ? "gyro" : "accelerometer"));
         c.name.clear();
         break;
       }
       for (CandidateParameter& p : c.parameters) {
-        if (p.name != l.parameter) continue;
+        if (p.name != limited.name) continue;
         std::vector<double> grid;
         for (double g : p.grid)
           if (g < cap) grid.push_back(g);
@@ -75,6 +77,7 @@ std::vector<Candidate> limit_candidates(const std::vector<Candidate>& candidates
                                          c.name, p.name, cap));
       }
     }
+  }
   std::erase_if(out, [](const Candidate& c) { return c.name.empty(); });
   return out;
 }

@@ -1,5 +1,8 @@
 #include "montecarlo/gap/candidates/definitions.h"
 
+#include <stdexcept>
+#include <utility>
+
 namespace insmc::gap {
 
 int Candidate::grid_size() const {
@@ -27,27 +30,27 @@ std::vector<int> Candidate::amplitude_indices() const {
   return out;
 }
 
-/// Keep the order: equal held-out gaps keep it in the ranking (a stable
-/// sort), so another order changes the report.
-const std::vector<Candidate>& candidate_registry() {
-  static const std::vector<Candidate> all = {
-      candidates::bounds(),
-      candidates::quantization(),
-      candidates::sway(),
-      candidates::accel_bias_instability(),
-      candidates::gyro_drift_instability(),
-      candidates::angle_random_walk(),
-      candidates::velocity_random_walk(),
-      candidates::thermal_transient(),
-      candidates::anisoelastic_drift(),
-      candidates::scale_factor_nonlinearity(),
-      candidates::deflection_of_vertical(),
-      candidates::gravity_model(),
-      candidates::alignment_transient(),
-      candidates::switch_transient(),
-      candidates::nonlinearity(),
-  };
+namespace {
+
+std::vector<Candidate>& registry() {
+  static std::vector<Candidate> all = [] {
+    std::vector<Candidate> out;
+#define INSMC_CANDIDATE(name) out.push_back(candidates::name());
+#include "montecarlo/gap/candidates/candidate_list.h"
+#undef INSMC_CANDIDATE
+    return out;
+  }();
   return all;
+}
+
+}  // namespace
+
+const std::vector<Candidate>& candidate_registry() { return registry(); }
+
+void register_candidate(Candidate candidate) {
+  for (const Candidate& c : registry())
+    if (c.name == candidate.name) throw std::logic_error("candidate " + c.name + " is registered already");
+  registry().push_back(std::move(candidate));
 }
 
 }  // namespace insmc::gap

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "lib/common/input_error.h"
+#include "lib/records/record.h"
 #include "lib/truth/effect.h"
 #include "lib/units/quantity_display.h"
 
@@ -10,11 +11,10 @@ namespace insmc::gap {
 
 EffectArgument effect_argument(const CandidateResult& c, const runs::RecordSite& site) {
   EffectArgument out;
-  const EffectInfo* info = nullptr;
-  for (const EffectInfo& e : effect_registry())
-    if (e.name == c.effect) info = &e;
-  if (info == nullptr) return out;
-  EffectSpec spec = default_effect(info->kind);
+  const std::optional<EffectKind> kind = find_effect(c.effect);
+  if (!kind) return out;
+  const EffectInfo* info = &kind->info();
+  EffectSpec spec = default_effect(*kind);
   std::vector<bool> fitted(info->parameters.size(), false);
   for (std::size_t i = 0; i < info->parameters.size(); ++i)
     for (const ParameterEstimate& p : c.parameters)
@@ -25,7 +25,7 @@ EffectArgument effect_argument(const CandidateResult& c, const runs::RecordSite&
   out.text = std::string(info->name);
   for (std::size_t i = 0; i < info->parameters.size(); ++i) {
     const EffectParameter& par = info->parameters[i];
-    if (par.name == "warmup" && info->kind == EffectKind::kThermalTransient) {
+    if (par.header_key == kKeyWarmupS) {  // the records state it: not fitted
       spec.values_si[i] = site.warmup_s;
       out.kept.push_back(fmt::format("warmup = {} ({})", format_quantity_rounded(site.warmup_s, par.dimension),
                                      site.warmup_from_header ? "the records' warmup_s"

@@ -24,11 +24,11 @@ std::string ForeignLayout::describe() const {
                      pulses ? "0.1 ft/s pulses" : "continuous f", zero_row ? ", a row at t = 0" : "");
 }
 
-ForeignLayout foreign_layout_of(std::uint64_t file_seed, bool quantization) {
+ForeignLayout foreign_layout_of(std::uint64_t file_seed, bool needs_pulses) {
   ForeignLayout l;
   l.f_every_s = std::array{5.0, 10.0, 20.0}[file_seed % 3];
   l.r_every_s = std::array{10.0, 30.0, 60.0}[(file_seed / 3) % 3];
-  l.pulses = quantization || (file_seed / 9) % 2 == 0;
+  l.pulses = needs_pulses || (file_seed / 9) % 2 == 0;
   l.zero_row = (file_seed / 2) % 2 == 1;
   return l;
 }

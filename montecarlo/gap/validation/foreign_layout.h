@@ -26,8 +26,9 @@ struct ForeignLayout {
 };
 
 /// The layout of the file of `file_seed`: every combination comes round.
-/// A quantization file keeps the pulses its effect is about.
-ForeignLayout foreign_layout_of(std::uint64_t file_seed, bool quantization);
+/// A file of an effect on the pulse counting (EffectInfo::needs_pulses)
+/// keeps the pulses its effect is about.
+ForeignLayout foreign_layout_of(std::uint64_t file_seed, bool needs_pulses);
 
 /// `runs` truth-level runs (scheme none) of `truth` (its effects, site and
 /// system; its filter interval and pulse weight are the layout's), run r a

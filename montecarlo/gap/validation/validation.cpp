@@ -21,35 +21,17 @@
 namespace insmc::gap {
 namespace {
 
-/// The parameters an effect's magnitude scales (the others keep their defaults).
-std::vector<std::string> magnitude_parameters(EffectKind kind) {
-  switch (kind) {
-    case EffectKind::kQuantization: return {"dv_pulse"};
-    case EffectKind::kSway: return {"accel_rms"};
-    case EffectKind::kAccelBiasInstability: case EffectKind::kGyroDriftInstability: return {"sigma"};
-    case EffectKind::kAngleRandomWalk: return {"angle_1h"};
-    case EffectKind::kVelocityRandomWalk: return {"velocity_1h"};
-    case EffectKind::kThermalTransient: return {"bias", "drift"};
-    case EffectKind::kAnisoelasticDrift: return {"coefficient"};
-    case EffectKind::kScaleFactorNonlinearity: return {"k2"};
-    case EffectKind::kGravityModel: return {"j2"};
-    case EffectKind::kDeflectionOfVertical: return {"xi", "eta"};
-    case EffectKind::kAlignmentTransient: return {"level_initial", "azimuth_initial"};
-    case EffectKind::kSwitchTransient: return {"misalignment", "bias"};
-  }
-  return {};
-}
-
 EffectSpec scaled_effect(EffectKind kind, double magnitude, double model_pulse_mps) {
   EffectSpec spec = default_effect(kind);
-  const EffectInfo& info = effect_info(kind);
-  for (const std::string& name : magnitude_parameters(kind)) {
-    for (std::size_t i = 0; i < info.parameters.size(); ++i) {
-      if (info.parameters[i].name != name) continue;
-      // Pulses: magnitude 1 is the default weight (5 model pulses), 0 the model's own.
-      spec.values_si[i] = kind == EffectKind::kQuantization
-                              ? model_pulse_mps * (1.0 + magnitude * (spec.values_si[i] / model_pulse_mps - 1.0))
-                              : spec.values_si[i] * magnitude;
+  const EffectInfo& info = kind.info();
+  for (std::size_t i = 0; i < info.parameters.size(); ++i) {
+    switch (info.parameters[i].magnitude) {
+      case EffectMagnitude::kFixed: break;
+      case EffectMagnitude::kScaled: spec.values_si[i] *= magnitude; break;
+      case EffectMagnitude::kExcessOverModelPulse:
+        // Magnitude 1 is the default weight, 0 the model's own.
+        spec.values_si[i] = model_pulse_mps * (1.0 + magnitude * (spec.values_si[i] / model_pulse_mps - 1.0));
+        break;
     }
   }
   return spec;
@@ -151,7 +133,7 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
     if (!selected(options, name)) continue;
     for (std::size_t mi = 0; mi < options.magnitudes.size(); ++mi)
       for (int s = 0; s < options.seeds; ++s)
-        jobs.push_back({name, scaled_effect(registry[e].kind, options.magnitudes[mi], model_pulse),
+        jobs.push_back({name, scaled_effect(EffectKind(static_cast<int>(e)), options.magnitudes[mi], model_pulse),
                         options.magnitudes[mi], s, effect_file_seed(options.seed, e, mi, s)});
   }
   // A magnitude that takes an effect beyond its physical range is refused
@@ -166,7 +148,7 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
     if (job.spec) effects.push_back(*job.spec);
     std::optional<ForeignLayout> layout;
     if (options.foreign_layouts)
-      layout = foreign_layout_of(job.file_seed, job.spec && job.spec->kind == EffectKind::kQuantization);
+      layout = foreign_layout_of(job.file_seed, job.spec && job.spec->kind.info().needs_pulses);
     const RecordFile records = layout ? foreign_layout_file(effects, job.file_seed, options.runs_per_file, *layout)
                                       : own_layout_file(effects, job.file_seed, options.runs_per_file);
     const auto start = std::chrono::steady_clock::now();

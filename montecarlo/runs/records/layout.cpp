@@ -153,7 +153,7 @@ RecordSite read_site(const RecordHeader& header, double default_pulse_mps) {
   } else {
     site.filter_interval_s = 0.0;  // filled in from the data by the caller
   }
-  if (const std::string* warmup = header.find("warmup_s")) {
+  if (const std::string* warmup = header.find(std::string(kKeyWarmupS))) {
     double v = 0.0;
     if (records_detail::parse_double(*warmup, v) != records_detail::NumberStatus::kOk || !(v >= 0) || v > 48 * 3600.0)
       throw InputError("header warmup_s", *warmup, "must be a number of seconds in [0, 172800] (switch-on to switch-over)");
