@@ -45,21 +45,15 @@ int replay(const mc::StudyConfig& c, const mc::StudyLayout& l, const mc::StudyMa
   const UncertaintyVector x = mc::Sampler(c.uncertainties).draw(c.seed, index);
   fmt::print("# sample {} (seed {}, fidelity {})\n\nuncertainty,value_si\n", index, c.seed, to_string(c.fidelity));
   for (const auto& spec : catalogue()) fmt::print("{},{}\n", spec.name, mc::format_number(x[spec.index]));
-  static const char* const kSlots[][2] = {
-      {"realignment zeta_r", "rad"}, {"realignment bias change", "mps2"}, {"realignment velocity", "mps"},
-      {"U2 hat (position fit)", ""}, {"U3 hat (position fit)", ""},      {"U3 hat (accelerometer fit)", ""},
-      {"filtered delta f(T)", "mps2"}, {"alignment torquer commands", "radps"},
-      {"alignment accelerometer outputs", "mps2"}, {"velocity wiggle at T", "mps"}};
-  const int starts[] = {ez::kRealignZeta, ez::kRealignBias, ez::kRealignVelocity, ez::kU2, ez::kU3, ez::kU3Accel,
-                        ez::kDfT, ez::kTorquerCommands, ez::kAlignAccel, ez::kWiggleAtT, ez::kDim};
   Eigen::MatrixXd xm = x, z(ez::kDim, 1);
   for (std::size_t j = 0; j < c.systems.size(); ++j) {
     map.pipeline(static_cast<int>(j)).extended_vectors(index, 1, xm, z);
     fmt::print("\nsystem {}: estimates and measurements (fitted {})\nquantity,x,y,z\n", system_number(c.systems[j]),
                map.fitted_terms(static_cast<int>(j)));
-    for (int q = 0; q < 10; ++q) {
-      std::string row = fmt::format("{}{}", kSlots[q][0], *kSlots[q][1] ? fmt::format(" [{}]", kSlots[q][1]) : "");
-      for (int i = starts[q]; i < starts[q + 1]; ++i) row += fmt::format(",{}", mc::format_number(z(i, 0)));
+    for (int q = 0; q < ez::kSlotCount; ++q) {
+      const ExtendedSlot& slot = ez::kSlots[q];
+      std::string row = fmt::format("{}{}", slot.name, slot.unit.empty() ? "" : fmt::format(" [{}]", slot.unit));
+      for (int i = ez::slot_start(q); i < ez::slot_start(q + 1); ++i) row += fmt::format(",{}", mc::format_number(z(i, 0)));
       fmt::print("{}\n", row);
     }
   }

@@ -1,3 +1,4 @@
+#include "lib/common/enum_names.h"
 #include "lib/common/system.h"
 
 #include "lib/common/input_error.h"
@@ -11,19 +12,15 @@ System parse_system(std::string_view text, std::string_view field) {
                    "must be 1 (theodolite azimuth) or 2 (gyrocompassing)");
 }
 
-std::string_view to_string(Fidelity f) {
-  switch (f) {
-    case Fidelity::kPaper: return "paper";
-    case Fidelity::kLinear: return "linear";
-    case Fidelity::kTruth: return "truth";
-  }
-  return "?";
-}
+namespace {
+constexpr EnumName<Fidelity> kFidelityNames[] = {
+    {Fidelity::kPaper, "paper"}, {Fidelity::kLinear, "linear"}, {Fidelity::kTruth, "truth"}};
+}  // namespace
+
+std::string_view to_string(Fidelity f) { return name_of<Fidelity>(kFidelityNames, f); }
 
 Fidelity parse_fidelity(std::string_view text, std::string_view field) {
-  if (text == "paper") return Fidelity::kPaper;
-  if (text == "linear") return Fidelity::kLinear;
-  if (text == "truth") return Fidelity::kTruth;
+  if (const auto f = value_named<Fidelity>(kFidelityNames, text)) return *f;
   throw InputError(std::string(field), std::string(text), "must be paper, linear or truth");
 }
 

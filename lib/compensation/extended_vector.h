@@ -6,23 +6,57 @@
 /// estimates themselves come from the simulated, quantized data of each
 /// sample (never from an assumed distribution).
 #include <Eigen/Core>
+#include <iterator>
+#include <string_view>
 
 #include "lib/uncertainty/uncertainty_vector.h"
 
 namespace insmc {
+/// One block of z after x: what it holds (as `run --replay` prints it),
+/// its SI unit (empty: dimensionless) and its size.
+struct ExtendedSlot {
+  std::string_view name;
+  std::string_view unit;
+  int size;
+};
+
 namespace ez {
-inline constexpr int kX = 0;                                ///< x, the catalogue's uncertainties (ux::)
-inline constexpr int kRealignZeta = ux::kDim;               ///< ζ_r of the realignment [rad] (3)
-inline constexpr int kRealignBias = kRealignZeta + 3;       ///< ∂f_r of the realignment [m/s²] (2)
-inline constexpr int kRealignVelocity = kRealignBias + 2;   ///< (u)V at the new switch-over [m/s] (3)
-inline constexpr int kU2 = kRealignVelocity + 3;            ///< Û2 from position data (4.8b) (3)
-inline constexpr int kU3 = kU2 + 3;                         ///< Û3 from position data (4.8c) (3)
-inline constexpr int kU3Accel = kU3 + 3;                    ///< Û3 from the accelerometer data, slope of (5.12) (3)
-inline constexpr int kDfT = kU3Accel + 3;                   ///< filtered Δf̂(T) of (5.10) [m/s²] (3)
-inline constexpr int kTorquerCommands = kDfT + 3;           ///< measured alignment torquer commands ω_c (5.14) [rad/s] (3)
-inline constexpr int kAlignAccel = kTorquerCommands + 3;    ///< measured alignment accelerometer outputs Δf_m (5.19) [m/s²] (3)
-inline constexpr int kWiggleAtT = kAlignAccel + 3;          ///< velocity wiggle at T seen by the resets of 5.2/5.3 [m/s] (3)
-inline constexpr int kDim = kWiggleAtT + 3;
+/// The slots after x, in z's order: the one list of them (the pipeline
+/// writes each at its start below, `run --replay` prints them from here).
+inline constexpr ExtendedSlot kSlots[] = {
+    {"realignment zeta_r", "rad", 3},              ///< ζ_r of the realignment
+    {"realignment bias change", "mps2", 2},        ///< ∂f_r of the realignment
+    {"realignment velocity", "mps", 3},            ///< (u)V at the new switch-over
+    {"U2 hat (position fit)", "", 3},              ///< Û2 from position data (4.8b)
+    {"U3 hat (position fit)", "", 3},              ///< Û3 from position data (4.8c)
+    {"U3 hat (accelerometer fit)", "", 3},         ///< Û3 from the accelerometer data, slope of (5.12)
+    {"filtered delta f(T)", "mps2", 3},            ///< filtered Δf̂(T) of (5.10)
+    {"alignment torquer commands", "radps", 3},    ///< measured alignment torquer commands ω_c (5.14)
+    {"alignment accelerometer outputs", "mps2", 3},  ///< measured alignment accelerometer outputs Δf_m (5.19)
+    {"velocity wiggle at T", "mps", 3},            ///< velocity wiggle at T seen by the resets of 5.2/5.3
+};
+inline constexpr int kSlotCount = static_cast<int>(std::size(kSlots));
+
+/// Where slot `slot` of kSlots starts in z.
+constexpr int slot_start(int slot) {
+  int start = ux::kDim;
+  for (int i = 0; i < slot; ++i) start += kSlots[i].size;
+  return start;
+}
+
+inline constexpr int kX = 0;                           ///< x, the catalogue's uncertainties (ux::)
+inline constexpr int kRealignZeta = slot_start(0);
+inline constexpr int kRealignBias = slot_start(1);
+inline constexpr int kRealignVelocity = slot_start(2);
+inline constexpr int kU2 = slot_start(3);
+inline constexpr int kU3 = slot_start(4);
+inline constexpr int kU3Accel = slot_start(5);
+inline constexpr int kDfT = slot_start(6);
+inline constexpr int kTorquerCommands = slot_start(7);
+inline constexpr int kAlignAccel = slot_start(8);
+inline constexpr int kWiggleAtT = slot_start(9);
+inline constexpr int kDim = slot_start(kSlotCount);
+static_assert(kWiggleAtT + 3 == kDim, "every slot of kSlots has its start above");
 }  // namespace ez
 
 using ExtendedVector = Eigen::Matrix<double, ez::kDim, 1>;

@@ -1,3 +1,4 @@
+#include "lib/common/enum_names.h"
 #include "lib/imu/imu_samples.h"
 
 #include <fmt/format.h>
@@ -219,32 +220,23 @@ class Parser {
 
 }  // namespace
 
-std::string_view to_string(GyroUnit u) {
-  switch (u) {
-    case GyroUnit::kDegPerS: return "deg/s";
-    case GyroUnit::kRadPerS: return "rad/s";
-    case GyroUnit::kDegPerH: return "deg/h";
-  }
-  return "?";
-}
+namespace {
+constexpr EnumName<GyroUnit> kGyroUnitNames[] = {
+    {GyroUnit::kDegPerS, "deg/s"}, {GyroUnit::kRadPerS, "rad/s"}, {GyroUnit::kDegPerH, "deg/h"}};
+constexpr EnumName<AccelUnit> kAccelUnitNames[] = {{AccelUnit::kG, "g"}, {AccelUnit::kMps2, "m/s2"}};
+}  // namespace
 
-std::string_view to_string(AccelUnit u) {
-  switch (u) {
-    case AccelUnit::kG: return "g";
-    case AccelUnit::kMps2: return "m/s2";
-  }
-  return "?";
-}
+std::string_view to_string(GyroUnit u) { return name_of<GyroUnit>(kGyroUnitNames, u); }
+
+std::string_view to_string(AccelUnit u) { return name_of<AccelUnit>(kAccelUnitNames, u); }
 
 GyroUnit parse_gyro_unit(std::string_view text, std::string_view field) {
-  for (GyroUnit u : {GyroUnit::kDegPerS, GyroUnit::kRadPerS, GyroUnit::kDegPerH})
-    if (to_string(u) == text) return u;
+  if (const auto u = value_named<GyroUnit>(kGyroUnitNames, text)) return *u;
   throw InputError(std::string(field), echo_input(text), std::string(kGyroAllowed));
 }
 
 AccelUnit parse_accel_unit(std::string_view text, std::string_view field) {
-  for (AccelUnit u : {AccelUnit::kG, AccelUnit::kMps2})
-    if (to_string(u) == text) return u;
+  if (const auto u = value_named<AccelUnit>(kAccelUnitNames, text)) return *u;
   throw InputError(std::string(field), echo_input(text), std::string(kAccelAllowed));
 }
 

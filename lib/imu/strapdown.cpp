@@ -1,3 +1,4 @@
+#include "lib/common/enum_names.h"
 #include "lib/imu/strapdown.h"
 
 #include <fmt/format.h>
@@ -88,11 +89,14 @@ std::string describe_duration(double s) { return fmt::format("{:.6g} s", s); }
 
 }  // namespace
 
-std::string_view to_string(GyroBiasMode m) { return m == GyroBiasMode::kRemove ? "remove" : "keep"; }
+namespace {
+constexpr EnumName<GyroBiasMode> kGyroBiasModeNames[] = {{GyroBiasMode::kRemove, "remove"}, {GyroBiasMode::kKeep, "keep"}};
+}  // namespace
+
+std::string_view to_string(GyroBiasMode m) { return name_of<GyroBiasMode>(kGyroBiasModeNames, m); }
 
 GyroBiasMode parse_gyro_bias_mode(std::string_view text, std::string_view field) {
-  if (text == "remove") return GyroBiasMode::kRemove;
-  if (text == "keep") return GyroBiasMode::kKeep;
+  if (const auto m = value_named<GyroBiasMode>(kGyroBiasModeNames, text)) return *m;
   throw InputError(std::string(field), std::string(text),
                    "must be remove (subtract the bias estimated during alignment) or keep");
 }

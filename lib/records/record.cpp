@@ -1,3 +1,4 @@
+#include "lib/common/enum_names.h"
 #include "lib/records/record.h"
 
 #include <fmt/format.h>
@@ -42,19 +43,12 @@ std::optional<double> optional_header_number(const RecordHeader& h, std::string_
 
 }  // namespace
 
-std::string_view to_string(Phase p) {
-  switch (p) {
-    case Phase::kAlign: return "align";
-    case Phase::kTest: return "test";
-    case Phase::kNav: return "nav";
-  }
-  return "?";
-}
+constexpr EnumName<Phase> kPhaseNames[] = {{Phase::kAlign, "align"}, {Phase::kTest, "test"}, {Phase::kNav, "nav"}};
+
+std::string_view to_string(Phase p) { return name_of<Phase>(kPhaseNames, p); }
 
 Phase parse_phase(std::string_view text, std::string_view field) {
-  for (Phase p : {Phase::kAlign, Phase::kTest, Phase::kNav}) {
-    if (to_string(p) == text) return p;
-  }
+  if (const auto p = value_named<Phase>(kPhaseNames, text)) return *p;
   throw InputError(std::string(field), std::string(text), "must be one of: align, test, nav");
 }
 
