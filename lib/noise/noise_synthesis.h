@@ -1,7 +1,7 @@
 #pragma once
 /// Sampled noise of one sensor channel with the terms of a NoiseModel
 /// (lib/noise/noise_terms.h), for a null that must carry a sensor's own
-/// noise (the gap diagnosis's null through the import, docs/gap.md §2).
+/// noise (the gap diagnosis's null through the import, docs/gap-method.md §2).
 /// Each term by its own recursion at the sample interval dt, the sample
 /// value being the channel's mean over [t_k, t_k + dt) (IMUs output
 /// increments):

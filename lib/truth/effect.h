@@ -82,7 +82,7 @@ struct EffectParameter {
   /// How the effect's magnitude (`gap-validate --magnitudes`) acts on it.
   EffectMagnitude magnitude = EffectMagnitude::kFixed;
   /// What a raw-sensor stage's fit bounds it by (the diagnosis limits the
-  /// effect's candidate to it, docs/gap.md §4).
+  /// effect's candidate to it, docs/gap-method.md §4).
   RawSensorLimit raw_limit = RawSensorLimit::kNone;
   /// The record header key that states it for a set of records (e.g.
   /// "warmup_s"): a finding takes it from there rather than fitting it.

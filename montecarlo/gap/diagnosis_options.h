@@ -47,7 +47,7 @@ struct DiagnosisOptions : runs::RecordReading {
   /// between physical limits, and how many of them are paired; 0: none.
   /// Off unless asked for (`gap --likelihood N`): the likelihood of the run
   /// model is not yet calibrated on the null as G is, and it costs 2-3 times
-  /// the rest of the diagnosis (docs/gap.md §4).
+  /// the rest of the diagnosis (docs/gap-method.md §4).
   int likelihood_candidates = 0;
   int likelihood_pair_candidates = 0;
   RankWhen rank = RankWhen::kAlways;

@@ -94,7 +94,7 @@ struct MlParameter {
   bool at_limit = false;       ///< the maximum sits at a physical limit
 };
 
-/// The maximum-likelihood side of a candidate or a pair (docs/gap.md §4).
+/// The maximum-likelihood side of a candidate or a pair (docs/gap-method.md §4).
 struct LikelihoodResult {
   bool fitted = false;
   std::vector<MlParameter> parameters;

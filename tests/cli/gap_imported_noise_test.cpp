@@ -13,7 +13,7 @@
 // outside Table 3.1 is significant against the model alone; it fails if the
 // import's null or the raw stage break). The false-alarm rate needs many
 // files (its binomial bound is vacuous below ten), the long measurement
-// (docs/gap.md §2):
+// (docs/gap-method.md §2):
 //   INSMC_GAP_IMPORTED_NOISE_FILES=50 build/test/tests/cli/cli_gap_imported_noise_test
 #include <gtest/gtest.h>
 

@@ -6,9 +6,9 @@
 // (leveling and gyro-bias estimate over its alignment window, continuous f).
 // Such records scatter far less than Table 3.1 lets a system scatter, and
 // their runs are alike to the last digit: the diagnosis may call the model
-// pessimistic about them, never an unmodelled effect (docs/gap.md §2).
+// pessimistic about them, never an unmodelled effect (docs/gap-method.md §2).
 //
-// CI runs a few files; the long measurement (docs/gap.md §2):
+// CI runs a few files; the long measurement (docs/gap-method.md §2):
 //   INSMC_GAP_IMPORTED_FILES=50 build/gap/tests/cli/cli_gap_imported_null_test
 #include <gtest/gtest.h>
 

@@ -54,7 +54,7 @@ TEST(GapLikelihood, AWithheldVelocityRandomWalkIsFittedNearItsValueAndGainsAbove
   // The 95 % interval is statistical only (20 runs of ~2000 rows each make
   // it a few percent wide); the run model's process is an approximation of
   // the truth's (knots and one bridge mode, random_process.h), which measured
-  // 0.91 of the true value here (docs/gap.md §4). Required: within half a
+  // 0.91 of the true value here (docs/gap-method.md §4). Required: within half a
   // grid step (×1.78^½) of the truth, what the least-G fit resolves at best.
   EXPECT_FALSE(v.at_limit);
   EXPECT_LT(std::abs(std::log(v.value / truth)), 0.5 * std::log(1.78));

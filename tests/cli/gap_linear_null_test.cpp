@@ -8,9 +8,9 @@
 // (continuous outputs) and show unmodelled-effect false alarms at the rate
 // alpha, and "pessimistic" findings at no more than that rate either (the
 // linear level lacks the truth level's second-order terms, which the model
-// allows for without requiring them: docs/gap.md §2).
+// allows for without requiring them: docs/gap-method.md §2).
 //
-// CI runs a few files; the long measurement (docs/gap.md §2):
+// CI runs a few files; the long measurement (docs/gap-method.md §2):
 //   INSMC_GAP_NULL_FILES=100 build/gap/tests/cli/cli_gap_linear_null_test
 #include <gtest/gtest.h>
 
@@ -126,7 +126,7 @@ TEST(GapLinearNull, RecordsOfAnotherWriterWithoutPulseKeysShowFalseAlarmsAtAlpha
   EXPECT_LE(unmodelled, bound);
   // The writer leaves out nothing the model asks for: its r rows lack only
   // the truth level's second-order terms, which the model allows for and
-  // does not require (the band of docs/gap.md §2).
+  // does not require (the band of docs/gap-method.md §2).
   EXPECT_LE(pessimistic, bound);
 }
 

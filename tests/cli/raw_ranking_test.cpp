@@ -1,6 +1,6 @@
 // Synthetic raw IMUs through import-imu and gap: with the raw-sensor stage
 // in the header, gyro-only noise ranks a gyro effect first and
-// accelerometer-only noise an accelerometer effect (docs/gap.md §4). Each
+// accelerometer-only noise an accelerometer effect (docs/gap-method.md §4). Each
 // file: six recordings of 6,700 s at 1 Hz, a level sensor (x north, z down)
 // at 45°, earth rate and gravity exact. INSMC_RAW_RANKING_FILES files per
 // case (default 1; the measured study used more).

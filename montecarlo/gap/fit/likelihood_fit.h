@@ -1,7 +1,7 @@
 #pragma once
 /// Maximum-likelihood fit of a candidate's non-amplitude parameters over a
 /// set of runs, without grid edges. The least-G fit (candidate_fit.h,
-/// docs/gap.md §4) searches capped log grids and can only say "at the edge";
+/// docs/gap-method.md §4) searches capped log grids and can only say "at the edge";
 /// here each parameter is searched on a log scale between its physical
 /// limits, and a fit at a limit is a statement about the physics.
 ///
@@ -76,7 +76,7 @@ LikelihoodFit fit_likelihood(LikelihoodLattice& lattice, std::span<const int> ru
 /// other half's log-likelihood at that fit, less its log-likelihood under
 /// the null model (no candidate, `null_per_run`), is summed over both folds.
 /// Positive: the candidate predicts runs it was not fitted to better than
-/// the model without it (docs/gap.md §4, the ranking by held-out runs).
+/// the model without it (docs/gap-method.md §4, the ranking by held-out runs).
 struct CrossValidation {
   double gain = 0.0;
   /// Fold f is fitted on half f (runs f, f + 2, …) and scored on the other half.

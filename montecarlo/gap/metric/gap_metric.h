@@ -99,7 +99,7 @@ inline double gap_value(const RunSet& set, std::span<const int> runs, const Null
 /// those with ℓ < 0 (less than the model: an assumption pessimistic, e.g. a
 /// declared pulse weight coarser than the data show, priors wider than the
 /// system). The significance of an unmodelled effect is one-sided, on G₊;
-/// G₋ is a finding of its own (docs/gap.md §2).
+/// G₋ is a finding of its own (docs/gap-method.md §2).
 struct SignedGap {
   double unmodelled = 0.0;   ///< G₊
   double pessimistic = 0.0;  ///< G₋

@@ -1,5 +1,5 @@
 #pragma once
-/// The null through the import (docs/gap.md §2). Records that came through
+/// The null through the import (docs/gap-method.md §2). Records that came through
 /// `import-imu` with its raw-sensor stage state the sensor's fitted noise
 /// (header imu.noise.*, docs/noise.md) and how they were imported (imu.*).
 /// The null runs then carry that noise too: it is synthesized at the raw

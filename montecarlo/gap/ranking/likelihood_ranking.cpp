@@ -188,7 +188,7 @@ void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const ru
   // Then the pairs and, in the same parallel pass, each candidate's reference:
   // the same held-out gain on null files of the records' size. A pair's
   // reference is not measured: it would cost more than all the other fits
-  // together (docs/gap.md §4).
+  // together (docs/gap-method.md §4).
   std::vector<runs::PreparedRuns> file(static_cast<std::size_t>(files));
   std::vector<std::vector<double>> file_null_ll(file.size());
   tbb::parallel_for(std::size_t{0}, file.size(), [&](std::size_t f) {

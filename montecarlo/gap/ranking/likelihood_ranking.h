@@ -1,5 +1,5 @@
 #pragma once
-/// The maximum-likelihood side of the first ranking (docs/gap.md §4). The
+/// The maximum-likelihood side of the first ranking (docs/gap-method.md §4). The
 /// ranking itself stays by held-out G (ranking.h); beside it the best
 /// candidates by held-out G are fitted by maximum likelihood between their
 /// physical limits (fit/likelihood_fit.h), with profile intervals, their

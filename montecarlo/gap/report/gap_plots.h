@@ -1,5 +1,5 @@
 #pragma once
-/// The diagnosis' two figures (docs/gap.md §3), drawn by gnuplot
+/// The diagnosis' two figures (docs/gap-method.md §3), drawn by gnuplot
 /// (montecarlo/write/plot/): the groups' ln ratios by name against the null
 /// files' band, and the Allan deviation of the f residuals on log–log axes
 /// against the null runs' band, in µg.

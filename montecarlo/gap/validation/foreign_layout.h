@@ -1,5 +1,5 @@
 #pragma once
-/// Validation records in another recorder's conventions (docs/gap.md §5,
+/// Validation records in another recorder's conventions (docs/gap-method.md §5,
 /// "Foreign layouts"): the same truth-level runs as gap-validate's own
 /// files, written as software other than insmc would write them — f every
 /// 5, 10 or 20 s and r every 10, 30 or 60 s on their own grids (rows with

@@ -313,7 +313,7 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
       "(rows: true effect; columns: the diagnosis' top effect or class)\n\n{}\n## Every file\n\n{}\n## Targets\n\n",
       options.quick ? " (quick subset)" : "", options.runs_per_file, fmt::join(options.magnitudes, ", "), options.seeds,
       options.foreign_layouts
-          ? " Each file is written in another recorder's conventions (`--layout foreign`, docs/gap.md §5): f and r "
+          ? " Each file is written in another recorder's conventions (`--layout foreign`, docs/gap-method.md §5): f and r "
             "on grids of their own (column `layout`), a third of the runs stopping 60-80 min into the navigation, "
             "run numbers not consecutive, unknown header keys, no pulse-weight or filter-interval key."
           : "",

@@ -3,10 +3,10 @@
 /// alike) under a GaussianModel (gaussian_model.h):
 ///   y = μ + H c + e,  c ~ N(0, P = diag(prior_var)),  e ~ N(0, R = diag(noise_var)),
 ///   log p(y) = −½ [ n log 2π + log|S| + (y − μ)ᵀ S⁻¹ (y − μ) ],  S = H P Hᵀ + R.
-/// The gap metric (docs/gap.md §2) uses second moments only; the likelihood
+/// The gap metric (docs/gap-method.md §2) uses second moments only; the likelihood
 /// is what a candidate's parameters are fitted by without grid edges
 /// (likelihood_fit.h). R is the fit weights, noise_var, model-error floor
-/// included (docs/gap.md §1): the floor stands for what the linear level does
+/// included (docs/gap-method.md §1): the floor stands for what the linear level does
 /// not promise, and without it the likelihood would chase sub-metre detail.
 ///
 /// S is never formed: with s = √prior (causes of prior 0 dropped) and

@@ -49,7 +49,7 @@ TEST(CandidateRegistry, NamesAreUnique) {
 }
 
 /// Every parameter states its physical limits and why (the maximum-likelihood
-/// fit searches between them, docs/gap.md §4): a searched one a positive log
+/// fit searches between them, docs/gap-method.md §4): a searched one a positive log
 /// range that reaches below its grid's least positive value (a grid may
 /// reach beyond the upper one: `bounds` to 1000, quantization to 5 m/s, kept
 /// for the ranking by G that section 5 validates), an amplitude ± the
