@@ -72,6 +72,248 @@ std::string rollup_markdown(const CompensateResult& result, const CompensateOpti
                                                           options.risk));
 }
 
+/// The site's values with their sources, and the statements about the records.
+std::string site_markdown(const UnitRecords& rec) {
+  std::string md;
+  Table site({"key", "value", "source", "reason"});
+  for (const runs::SiteValue& v : rec.site_values) site.add_row({v.key, format_number(v.value), v.source, v.reason});
+  md += "## The site and its test run\n\n" + render_markdown(site) + "\n";
+  for (const std::string& s : rec.statements) md += "- " + s + "\n";
+  if (!rec.statements.empty()) md += "\n";
+  return md;
+}
+
+/// What the test run separates: each coefficient's sigma after T, 2T, 4T
+/// (markdown into `md`; returns its JSON).
+Json identifiability_section(const CompensateResult& result, const UnitRecords& rec, std::string& md) {
+  Table t({"coefficient", "mixes (share of its spread)", "prior sigma", "sigma at T", "at 2T", "at 4T"});
+  Json ident = Json::array();
+  for (const Identifiability& e : result.identifiability) {
+    std::string mixes;
+    Json m = Json::array();
+    for (const auto& [name, share] : e.mixes) {
+      mixes += fmt::format("{}{} {:.0f} %", mixes.empty() ? "" : ", ", name, 100 * share);
+      Json j = Json::object();
+      j["uncertainty"] = name;
+      j["share"] = share;
+      m.push_back(std::move(j));
+    }
+    std::vector<std::string> row = {e.name, mixes, fmt::format("{:.3g}", e.prior_sigma)};
+    Json sig = Json::array();
+    for (const auto& [T, sigma] : e.sigma_by_duration) {
+      row.push_back(fmt::format("{:.3g}", sigma));
+      Json j = Json::object();
+      j["test_duration_s"] = T;
+      j["sigma"] = sigma;
+      sig.push_back(std::move(j));
+    }
+    t.add_row(row);
+    Json j = Json::object();
+    j["name"] = e.name;
+    j["mixes"] = std::move(m);
+    j["prior_sigma"] = e.prior_sigma;
+    j["sigma_by_test_duration"] = std::move(sig);
+    ident.push_back(std::move(j));
+  }
+  md += "## What the test run separates\n\n" + render_markdown(t) +
+        fmt::format("\nEach coefficient of (3.29b-d) is a sum over Table 3.1's uncertainties (4.10); its sigma after a "
+                    "test run of T = {:g} min, and of 2T and 4T with as many filter windows, is that of the best "
+                    "linear estimate from the test rows (no data needed). A coefficient whose sigma stays near its "
+                    "prior spread is not separated by this test; (4.6) gives the pulse-count limit.\n\n",
+                    rec.site.test_duration_s / 60.0);
+  return ident;
+}
+
+/// A unit's estimates: rows of estimates.csv, markdown into `md`; returns their JSON.
+Json estimates_section(const UnitResult& u, const std::string& run, Table& estimates, std::string& md) {
+  md += "### Estimates\n\n";
+  Table est_md({"coefficient", "this unit", "sigma", "prior sigma", "report's estimator", "unit", "resolved"});
+  Json est_json = Json::array();
+  for (const UnitEstimate& e : u.estimates) {
+    const std::string report = e.report_estimator ? format_number(*e.report_estimator) : "";
+    estimates.add_row({run, e.name, format_number(e.value), format_number(e.sigma), format_number(e.prior_sigma),
+                       report, e.unit, e.resolved() ? "yes" : "no"});
+    est_md.add_row({e.name, fmt::format("{:.4g}", e.value), fmt::format("{:.3g}", e.sigma),
+                    fmt::format("{:.3g}", e.prior_sigma), e.report_estimator ? fmt::format("{:.4g}", *e.report_estimator) : "-",
+                    e.unit, e.resolved() ? "yes" : "no"});
+    Json j = Json::object();
+    j["name"] = e.name;
+    j["value"] = e.value;
+    j["sigma"] = e.sigma;
+    j["unit"] = e.unit;
+    j["prior_sigma"] = e.prior_sigma;
+    if (e.report_estimator) j["report_estimator"] = *e.report_estimator;
+    j["resolved"] = e.resolved();
+    est_json.push_back(std::move(j));
+  }
+  md += render_markdown(est_md) +
+        "\nU2..U4 are the report's coefficients (3.29b-d) of this unit, df_T its accelerometer output error at T: "
+        "their best linear estimate from the test rows and its error's sigma; `resolved` when the test run "
+        "halves the population's spread. The report's estimators (4.8b, c), (5.10) are what the schemes apply.\n\n";
+  return est_json;
+}
+
+/// The compensation each scheme applies and its envelope: rows of
+/// compensation.csv and envelope.csv, markdown into `md`; returns their JSON.
+Json schemes_section(const UnitResult& u, const UnitRecords& rec, const std::string& run, Table& compensation,
+                     Table& envelope, std::string& md) {
+  md += "### The compensation each scheme applies\n\n";
+  Table comp_md({"scheme", "ready (min)", "step at point 2 (ug)", "ramp (ug/min)", "torquer rates (meru)", "also"});
+  Json schemes = Json::array();
+  for (const SchemePrediction& p : u.schemes) {
+    const std::string name(to_string(p.scheme));
+    const SchemeCompensation& c = p.compensation;
+    const auto list = [](const Vec3& v, double scale) {
+      return fmt::format("{:.4g}, {:.4g}, {:.4g}", v[0] / scale, v[1] / scale, v[2] / scale);
+    };
+    std::string also;
+    if (c.realigns) also += "realign; ";
+    if (c.resets_at_test_end) also += "reset velocity and position at T; ";
+    if (c.from_alignment_data) also += "from the alignment phase's torquer commands and accelerometer outputs (not in the records: modelled); ";
+    comp_md.add_row({name, t_min_text(p.ready_time_s), list(c.step_mps2, kUgToMps2), list(c.ramp_mps3, kUgToMps2 / 60.0),
+                     list(c.torquer_radps, kMeruToRadps), also});
+    for (int a = 0; a < 3; ++a) {
+      compensation.add_row({run, name, "step", axis_name(a), format_number(c.step_mps2[a]), "m/s^2"});
+      compensation.add_row({run, name, "ramp", axis_name(a), format_number(c.ramp_mps3[a]), "m/s^3"});
+      compensation.add_row({run, name, "torquer_rate", axis_name(a), format_number(c.torquer_radps[a]), "rad/s"});
+    }
+    Json cj = Json::object();
+    cj["step_mps2"] = vec_json(c.step_mps2);
+    cj["ramp_mps3"] = vec_json(c.ramp_mps3);
+    cj["torquer_radps"] = vec_json(c.torquer_radps);
+    cj["realigns"] = c.realigns;
+    cj["resets_at_test_end"] = c.resets_at_test_end;
+    cj["from_alignment_data"] = c.from_alignment_data;
+    Json env = Json::array();
+    for (const UnitPositionError& e : p.envelope) {
+      for (int a = 0; a <= 3; ++a) {
+        const bool h = a == 3;
+        const double unit_rms = h ? e.unit_horizontal_rms_m() : e.unit_rms_m(a);
+        const double pop_rms = h ? e.population_horizontal_rms_m() : e.population_rms_m(a);
+        const std::string axis = h ? "horizontal" : axis_name(a);
+        envelope.add_row({run, name, t_min_text(e.t_s), axis, h ? "" : format_number(e.mean_m[a]),
+                          format_number(unit_rms), format_number(pop_rms)});
+        Json ej = Json::object();
+        ej["system"] = system_number(rec.site.system);
+        ej["axis"] = axis;
+        ej["t_min"] = e.t_s / 60.0;
+        ej["rms_m"] = unit_rms;
+        ej["population_rms_m"] = pop_rms;
+        if (!h) ej["mean_m"] = e.mean_m[a];
+        env.push_back(std::move(ej));
+      }
+    }
+    Json sj = Json::object();
+    sj["scheme"] = name;
+    sj["ready_time_s"] = p.ready_time_s;
+    sj["compensation"] = std::move(cj);
+    sj["envelope"] = std::move(env);
+    schemes.push_back(std::move(sj));
+  }
+  md += render_markdown(comp_md) +
+        "\nPer axis x, y, z of the platform frame a'. The step and ramp act from the scheme's start; torquer rates "
+        "from the switch-over (5.1.2, combined).\n\n";
+  return schemes;
+}
+
+/// A unit's position error at the report times against the population's.
+std::string envelope_markdown(const UnitResult& u, const CompensateOptions& options) {
+  std::string md;
+  md += "### Position error after each scheme: this unit and the population\n\n";
+  Table env_md({"scheme", "t (min)", "this unit: horizontal RMS (m)", "(n.mi.)", "population (m)", "this unit x, y, z RMS (m)"});
+  for (const SchemePrediction& p : u.schemes)
+    for (const UnitPositionError& e : p.envelope)
+      if (is_report_time(e.t_s, options))
+        env_md.add_row({std::string(to_string(p.scheme)), t_min_text(e.t_s), fmt::format("{:.1f}", e.unit_horizontal_rms_m()),
+                        nmi_text(e.unit_horizontal_rms_m()), fmt::format("{:.1f}", e.population_horizontal_rms_m()),
+                        fmt::format("{:.1f}, {:.1f}, {:.1f}", e.unit_rms_m(0), e.unit_rms_m(1), e.unit_rms_m(2))});
+  md += render_markdown(env_md) +
+        "\nThis unit's RMS is over what its test run leaves unknown (the run model conditioned on its data); the "
+        "population's over Table 3.1's units with the same test run. Both are exact for the linear level: no "
+        "sampling, so no interval. Every 3 min in envelope.csv.\n\n";
+  return md;
+}
+
+/// The limits checked and the verdict: markdown into `md`, the verdict's
+/// words into `verdict_line`; returns the checks' JSON.
+Json verdict_section(const UnitResult& u, const CompensateOptions& options, std::string& md, std::string& verdict_line) {
+  verdict_line = u.fits_model() ? "no limits given" : "NO-GO (the test rows do not fit the model)";
+  Json checks = Json::array();
+  if (!u.checks.empty()) {
+    Table lim({"limit", fmt::format("RMS ({})", length_suffix(options.units)), "P(exceed)", "within risk"});
+    for (const LimitCheck& c : u.checks) {
+      lim.add_row({c.limit.text, length_text(c.rms_m, options.units), fmt::format("{:.3g}", c.probability),
+                   c.within() ? "yes" : "no"});
+      Json j = Json::object();
+      j["limit"] = c.limit.text;
+      j["component"] = std::string(to_string(c.limit.component));
+      j["t_min"] = c.limit.t_s / 60.0;
+      j["limit_m"] = c.limit.limit_m;
+      j["rms_m"] = c.rms_m;
+      j["probability"] = c.probability;
+      j["risk"] = c.risk;
+      j["within"] = c.within();
+      checks.push_back(std::move(j));
+    }
+    verdict_line = u.go ? "GO" : u.fits_model() ? "NO-GO" : "NO-GO (the test rows do not fit the model)";
+    md += fmt::format("### Verdict with scheme {}: {}\n\n", to_string(u.recommended), verdict_line) +
+          render_markdown(lim) +
+          fmt::format("\nGo when every limit is exceeded with probability at most {:g} (--risk), the position "
+                      "error taken Gaussian with this unit's mean and covariance.\n\n", options.risk);
+  } else if (!u.fits_model()) {
+    md += "### Verdict: NO-GO (the test rows do not fit the model)\n\n";
+  }
+  return checks;
+}
+
+/// Each unit's horizontal RMS after each scheme against the population's,
+/// one panel per scheme, with the horizontal limits.
+PanelFigure compensate_plot(const CompensateResult& result, const CompensateOptions& options, const std::string& source) {
+  PanelFigure plot;
+  plot.stem = "compensate";
+  const double per_m = length_factor(options.units);
+  plot.title = fmt::format("{}: horizontal RMS of each unit after each scheme, against the population{}", source,
+                             result.units.size() > kMaxPlottedUnits
+                                 ? fmt::format(" (the first {} of {} units)", kMaxPlottedUnits, result.units.size())
+                                 : "");
+  plot.x_label = "time on the scheme's clock [min]";
+  plot.y_label = fmt::format("horizontal RMS [{}]", length_suffix(options.units));
+  plot.marked_x = {42, 63, 84};
+  plot.columns = 3;
+  if (!result.units.empty())
+    for (std::size_t s = 0; s < result.units.front().schemes.size(); ++s) {
+      PlotPanel panel;
+      panel.title = std::string(to_string(result.units.front().schemes[s].scheme));
+      PlotLine pop;
+      pop.name = "population";
+      pop.thin = true;
+      for (const UnitPositionError& e : result.units.front().schemes[s].envelope) {
+        pop.x.push_back(e.t_s / 60.0);
+        pop.y.push_back(per_m * e.population_horizontal_rms_m());
+      }
+      panel.lines.push_back(pop);
+      // The limits the RMS is held against (horizontal ones; a limit on
+      // one axis is not a horizontal RMS).
+      for (const PositionLimit& l : options.limits)
+        if (l.component == PositionLimit::Component::kHorizontal)
+          panel.limits.push_back({per_m * l.limit_m,
+                                  fmt::format("limit {} at {:g} min", l.text.substr(l.text.find('=') + 1), l.t_s / 60),
+                                  l.t_s / 60});
+      for (std::size_t k = 0; k < result.units.size() && k < kMaxPlottedUnits; ++k) {
+        PlotLine line;
+        line.name = fmt::format("unit (run {})", result.units[k].run);
+        line.colour = static_cast<int>(k);
+        for (const UnitPositionError& e : result.units[k].schemes[s].envelope) {
+          line.x.push_back(e.t_s / 60.0);
+          line.y.push_back(per_m * e.unit_horizontal_rms_m());
+        }
+        panel.lines.push_back(std::move(line));
+      }
+      plot.panels.push_back(std::move(panel));
+    }
+  return plot;
+}
+
 }  // namespace
 
 CompensateFiles render_compensate(const CompensateResult& result, const CompensateOptions& options,
@@ -88,52 +330,8 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
       system_number(rec.site.system), rec.site.test_duration_s / 60.0, rec.site.filter_interval_s,
       rec.site.estimators->fitted_terms, t_min_text(options.flight_time_s));
   md += rollup_markdown(result, options);
-  {
-    Table site({"key", "value", "source", "reason"});
-    for (const runs::SiteValue& v : rec.site_values) site.add_row({v.key, format_number(v.value), v.source, v.reason});
-    md += "## The site and its test run\n\n" + render_markdown(site) + "\n";
-    for (const std::string& s : rec.statements) md += "- " + s + "\n";
-    if (!rec.statements.empty()) md += "\n";
-  }
-  Json identifiability_json = Json::array();
-  {
-    Table t({"coefficient", "mixes (share of its spread)", "prior sigma", "sigma at T", "at 2T", "at 4T"});
-    Json ident = Json::array();
-    for (const Identifiability& e : result.identifiability) {
-      std::string mixes;
-      Json m = Json::array();
-      for (const auto& [name, share] : e.mixes) {
-        mixes += fmt::format("{}{} {:.0f} %", mixes.empty() ? "" : ", ", name, 100 * share);
-        Json j = Json::object();
-        j["uncertainty"] = name;
-        j["share"] = share;
-        m.push_back(std::move(j));
-      }
-      std::vector<std::string> row = {e.name, mixes, fmt::format("{:.3g}", e.prior_sigma)};
-      Json sig = Json::array();
-      for (const auto& [T, sigma] : e.sigma_by_duration) {
-        row.push_back(fmt::format("{:.3g}", sigma));
-        Json j = Json::object();
-        j["test_duration_s"] = T;
-        j["sigma"] = sigma;
-        sig.push_back(std::move(j));
-      }
-      t.add_row(row);
-      Json j = Json::object();
-      j["name"] = e.name;
-      j["mixes"] = std::move(m);
-      j["prior_sigma"] = e.prior_sigma;
-      j["sigma_by_test_duration"] = std::move(sig);
-      ident.push_back(std::move(j));
-    }
-    md += "## What the test run separates\n\n" + render_markdown(t) +
-          fmt::format("\nEach coefficient of (3.29b-d) is a sum over Table 3.1's uncertainties (4.10); its sigma after a "
-                      "test run of T = {:g} min, and of 2T and 4T with as many filter windows, is that of the best "
-                      "linear estimate from the test rows (no data needed). A coefficient whose sigma stays near its "
-                      "prior spread is not separated by this test; (4.6) gives the pulse-count limit.\n\n",
-                      rec.site.test_duration_s / 60.0);
-    identifiability_json = std::move(ident);
-  }
+  md += site_markdown(rec);
+  Json identifiability_json = identifiability_section(result, rec, md);
   Json units = Json::array();
   for (const UnitResult& u : result.units) {
     const std::string run = std::to_string(u.run);
@@ -143,127 +341,11 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
                       u.fits_model() ? "" : fmt::format(". **They do not fit the model (p < {:g})**: what follows assumes "
                                                         "it, and no verdict is go; `insmc gap` on these records says "
                                                         "where and why", kInconsistentP));
-    md += "### Estimates\n\n";
-    Table est_md({"coefficient", "this unit", "sigma", "prior sigma", "report's estimator", "unit", "resolved"});
-    Json est_json = Json::array();
-    for (const UnitEstimate& e : u.estimates) {
-      const std::string report = e.report_estimator ? format_number(*e.report_estimator) : "";
-      estimates.add_row({run, e.name, format_number(e.value), format_number(e.sigma), format_number(e.prior_sigma),
-                         report, e.unit, e.resolved() ? "yes" : "no"});
-      est_md.add_row({e.name, fmt::format("{:.4g}", e.value), fmt::format("{:.3g}", e.sigma),
-                      fmt::format("{:.3g}", e.prior_sigma), e.report_estimator ? fmt::format("{:.4g}", *e.report_estimator) : "-",
-                      e.unit, e.resolved() ? "yes" : "no"});
-      Json j = Json::object();
-      j["name"] = e.name;
-      j["value"] = e.value;
-      j["sigma"] = e.sigma;
-      j["unit"] = e.unit;
-      j["prior_sigma"] = e.prior_sigma;
-      if (e.report_estimator) j["report_estimator"] = *e.report_estimator;
-      j["resolved"] = e.resolved();
-      est_json.push_back(std::move(j));
-    }
-    md += render_markdown(est_md) +
-          "\nU2..U4 are the report's coefficients (3.29b-d) of this unit, df_T its accelerometer output error at T: "
-          "their best linear estimate from the test rows and its error's sigma; `resolved` when the test run "
-          "halves the population's spread. The report's estimators (4.8b, c), (5.10) are what the schemes apply.\n\n";
-
-    md += "### The compensation each scheme applies\n\n";
-    Table comp_md({"scheme", "ready (min)", "step at point 2 (ug)", "ramp (ug/min)", "torquer rates (meru)", "also"});
-    Json schemes = Json::array();
-    for (const SchemePrediction& p : u.schemes) {
-      const std::string name(to_string(p.scheme));
-      const SchemeCompensation& c = p.compensation;
-      const auto list = [](const Vec3& v, double scale) {
-        return fmt::format("{:.4g}, {:.4g}, {:.4g}", v[0] / scale, v[1] / scale, v[2] / scale);
-      };
-      std::string also;
-      if (c.realigns) also += "realign; ";
-      if (c.resets_at_test_end) also += "reset velocity and position at T; ";
-      if (c.from_alignment_data) also += "from the alignment phase's torquer commands and accelerometer outputs (not in the records: modelled); ";
-      comp_md.add_row({name, t_min_text(p.ready_time_s), list(c.step_mps2, kUgToMps2), list(c.ramp_mps3, kUgToMps2 / 60.0),
-                       list(c.torquer_radps, kMeruToRadps), also});
-      for (int a = 0; a < 3; ++a) {
-        compensation.add_row({run, name, "step", axis_name(a), format_number(c.step_mps2[a]), "m/s^2"});
-        compensation.add_row({run, name, "ramp", axis_name(a), format_number(c.ramp_mps3[a]), "m/s^3"});
-        compensation.add_row({run, name, "torquer_rate", axis_name(a), format_number(c.torquer_radps[a]), "rad/s"});
-      }
-      Json cj = Json::object();
-      cj["step_mps2"] = vec_json(c.step_mps2);
-      cj["ramp_mps3"] = vec_json(c.ramp_mps3);
-      cj["torquer_radps"] = vec_json(c.torquer_radps);
-      cj["realigns"] = c.realigns;
-      cj["resets_at_test_end"] = c.resets_at_test_end;
-      cj["from_alignment_data"] = c.from_alignment_data;
-      Json env = Json::array();
-      for (const UnitPositionError& e : p.envelope) {
-        for (int a = 0; a <= 3; ++a) {
-          const bool h = a == 3;
-          const double unit_rms = h ? e.unit_horizontal_rms_m() : e.unit_rms_m(a);
-          const double pop_rms = h ? e.population_horizontal_rms_m() : e.population_rms_m(a);
-          const std::string axis = h ? "horizontal" : axis_name(a);
-          envelope.add_row({run, name, t_min_text(e.t_s), axis, h ? "" : format_number(e.mean_m[a]),
-                            format_number(unit_rms), format_number(pop_rms)});
-          Json ej = Json::object();
-          ej["system"] = system_number(rec.site.system);
-          ej["axis"] = axis;
-          ej["t_min"] = e.t_s / 60.0;
-          ej["rms_m"] = unit_rms;
-          ej["population_rms_m"] = pop_rms;
-          if (!h) ej["mean_m"] = e.mean_m[a];
-          env.push_back(std::move(ej));
-        }
-      }
-      Json sj = Json::object();
-      sj["scheme"] = name;
-      sj["ready_time_s"] = p.ready_time_s;
-      sj["compensation"] = std::move(cj);
-      sj["envelope"] = std::move(env);
-      schemes.push_back(std::move(sj));
-    }
-    md += render_markdown(comp_md) +
-          "\nPer axis x, y, z of the platform frame a'. The step and ramp act from the scheme's start; torquer rates "
-          "from the switch-over (5.1.2, combined).\n\n";
-
-    md += "### Position error after each scheme: this unit and the population\n\n";
-    Table env_md({"scheme", "t (min)", "this unit: horizontal RMS (m)", "(n.mi.)", "population (m)", "this unit x, y, z RMS (m)"});
-    for (const SchemePrediction& p : u.schemes)
-      for (const UnitPositionError& e : p.envelope)
-        if (is_report_time(e.t_s, options))
-          env_md.add_row({std::string(to_string(p.scheme)), t_min_text(e.t_s), fmt::format("{:.1f}", e.unit_horizontal_rms_m()),
-                          nmi_text(e.unit_horizontal_rms_m()), fmt::format("{:.1f}", e.population_horizontal_rms_m()),
-                          fmt::format("{:.1f}, {:.1f}, {:.1f}", e.unit_rms_m(0), e.unit_rms_m(1), e.unit_rms_m(2))});
-    md += render_markdown(env_md) +
-          "\nThis unit's RMS is over what its test run leaves unknown (the run model conditioned on its data); the "
-          "population's over Table 3.1's units with the same test run. Both are exact for the linear level: no "
-          "sampling, so no interval. Every 3 min in envelope.csv.\n\n";
-
-    std::string verdict_line = u.fits_model() ? "no limits given" : "NO-GO (the test rows do not fit the model)";
-    Json checks = Json::array();
-    if (!u.checks.empty()) {
-      Table lim({"limit", fmt::format("RMS ({})", length_suffix(options.units)), "P(exceed)", "within risk"});
-      for (const LimitCheck& c : u.checks) {
-        lim.add_row({c.limit.text, length_text(c.rms_m, options.units), fmt::format("{:.3g}", c.probability),
-                     c.within() ? "yes" : "no"});
-        Json j = Json::object();
-        j["limit"] = c.limit.text;
-        j["component"] = std::string(to_string(c.limit.component));
-        j["t_min"] = c.limit.t_s / 60.0;
-        j["limit_m"] = c.limit.limit_m;
-        j["rms_m"] = c.rms_m;
-        j["probability"] = c.probability;
-        j["risk"] = c.risk;
-        j["within"] = c.within();
-        checks.push_back(std::move(j));
-      }
-      verdict_line = u.go ? "GO" : u.fits_model() ? "NO-GO" : "NO-GO (the test rows do not fit the model)";
-      md += fmt::format("### Verdict with scheme {}: {}\n\n", to_string(u.recommended), verdict_line) +
-            render_markdown(lim) +
-            fmt::format("\nGo when every limit is exceeded with probability at most {:g} (--risk), the position "
-                        "error taken Gaussian with this unit's mean and covariance.\n\n", options.risk);
-    } else if (!u.fits_model()) {
-      md += "### Verdict: NO-GO (the test rows do not fit the model)\n\n";
-    }
+    Json est_json = estimates_section(u, run, estimates, md);
+    Json schemes = schemes_section(u, rec, run, compensation, envelope, md);
+    md += envelope_markdown(u, options);
+    std::string verdict_line;
+    Json checks = verdict_section(u, options, md, verdict_line);
     const std::string runner =
         u.runner_up ? fmt::format(", {:.1f} m ({:.1f} %) ahead of {}", u.margin_m,
                                   100.0 * u.margin_m / std::max(u.recommended_rms_m + u.margin_m, 1e-300),
@@ -316,47 +398,7 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
   f.compensation_csv = render_csv(compensation);
   f.envelope_csv = render_csv(envelope);
 
-  f.plot.stem = "compensate";
-  const double per_m = length_factor(options.units);
-  f.plot.title = fmt::format("{}: horizontal RMS of each unit after each scheme, against the population{}", source,
-                             result.units.size() > kMaxPlottedUnits
-                                 ? fmt::format(" (the first {} of {} units)", kMaxPlottedUnits, result.units.size())
-                                 : "");
-  f.plot.x_label = "time on the scheme's clock [min]";
-  f.plot.y_label = fmt::format("horizontal RMS [{}]", length_suffix(options.units));
-  f.plot.marked_x = {42, 63, 84};
-  f.plot.columns = 3;
-  if (!result.units.empty())
-    for (std::size_t s = 0; s < result.units.front().schemes.size(); ++s) {
-      PlotPanel panel;
-      panel.title = std::string(to_string(result.units.front().schemes[s].scheme));
-      PlotLine pop;
-      pop.name = "population";
-      pop.thin = true;
-      for (const UnitPositionError& e : result.units.front().schemes[s].envelope) {
-        pop.x.push_back(e.t_s / 60.0);
-        pop.y.push_back(per_m * e.population_horizontal_rms_m());
-      }
-      panel.lines.push_back(pop);
-      // The limits the RMS is held against (horizontal ones; a limit on
-      // one axis is not a horizontal RMS).
-      for (const PositionLimit& l : options.limits)
-        if (l.component == PositionLimit::Component::kHorizontal)
-          panel.limits.push_back({per_m * l.limit_m,
-                                  fmt::format("limit {} at {:g} min", l.text.substr(l.text.find('=') + 1), l.t_s / 60),
-                                  l.t_s / 60});
-      for (std::size_t k = 0; k < result.units.size() && k < kMaxPlottedUnits; ++k) {
-        PlotLine line;
-        line.name = fmt::format("unit (run {})", result.units[k].run);
-        line.colour = static_cast<int>(k);
-        for (const UnitPositionError& e : result.units[k].schemes[s].envelope) {
-          line.x.push_back(e.t_s / 60.0);
-          line.y.push_back(per_m * e.unit_horizontal_rms_m());
-        }
-        panel.lines.push_back(std::move(line));
-      }
-      f.plot.panels.push_back(std::move(panel));
-    }
+  f.plot = compensate_plot(result, options, source);
   return f;
 }
 
