@@ -120,10 +120,11 @@ double curve_value(const AssumptionCurve& c, std::size_t j, std::size_t k, std::
 
 }  // namespace
 
-RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even,
-                      LengthUnit unit) {
-  RankFiles f;
-  const std::string fidelity(to_string(config.fidelity));
+namespace {
+
+/// ranking.csv's rows and the orders' JSON: every order with its intervals and tests.
+Json orders_section(const std::vector<SchemeOrder>& orders, const std::string& fidelity, LengthUnit unit,
+                    RankFiles& f) {
   const std::string u = length_suffix(unit);
   const double per_m = length_factor(unit);
   Table ranking({"system", "t_min", "fidelity", "rank", "scheme", "rms_" + u, "rms_lo_" + u, "rms_hi_" + u,
@@ -160,7 +161,11 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
     orders_json.push_back(std::move(oj));
   }
   f.ranking_csv = render_csv(ranking);
+  return orders_json;
+}
 
+/// breakeven.csv's rows and the crossings' JSON.
+Json crossings_section(const BreakEven& even, const std::string& fidelity, RankFiles& f) {
   Table breakeven({"system", "t_min", "fidelity", "assumption", "leader", "challenger", "value", "unit"});
   Json crossings_json = Json::array();
   for (const Crossing& c : even.crossings) {
@@ -178,8 +183,13 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
     crossings_json.push_back(std::move(j));
   }
   f.breakeven_csv = render_csv(breakeven);
+  return crossings_json;
+}
 
-  // rank.md: the order with its significance, then the limits of the first place.
+/// rank.md: the order with its significance, then the limits of the first place.
+std::string rank_markdown(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even,
+                          const std::string& fidelity, LengthUnit unit) {
+  const std::string u = length_suffix(unit);
   std::string md = fmt::format(
       "# insmc rank: the schemes in order, and the assumptions that decide it\n\n"
       "Fidelity {}, {} samples, seed {}, confidence {:g} %. Order by the horizontal RMS of the Monte Carlo "
@@ -232,9 +242,13 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
                                         config.schemes[leader])});
     }
   md += render_markdown(limits);
-  f.rank_md = md;
+  return md;
+}
 
-  // stdout: the order and the limits at the last report time.
+/// stdout: the order and the limits at the last report time.
+std::string rank_summary(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even,
+                         LengthUnit unit) {
+  const std::string u = length_suffix(unit);
   std::string text;
   const std::size_t last_k = config.report_times_s.size() - 1;
   for (const SchemeOrder& o : orders) {
@@ -251,18 +265,24 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
                           limits_sentence(config, config.systems[j], config.report_times_s[last_k], a, even.crossings,
                                           config.schemes[leader]));
   }
-  f.summary_text = text;
+  return text;
+}
 
-  // The figure: per assumption and system, every scheme's RMS at the last
-  // report time, the crossings marked on the first scheme's line.
-  f.plot.stem = "rank";
-  f.plot.title = fmt::format("Horizontal RMS at {} min along each assumption ({} level; scheme none, which none "
+/// The figure: per assumption and system, every scheme's RMS at the last
+/// report time, the crossings marked on the first scheme's line.
+PanelFigure rank_plot(const StudyConfig& config, const BreakEven& even, const std::string& fidelity, LengthUnit unit) {
+  PanelFigure plot;
+  const std::string u = length_suffix(unit);
+  const double per_m = length_factor(unit);
+  const std::size_t last_k = config.report_times_s.size() - 1;
+  plot.stem = "rank";
+  plot.title = fmt::format("Horizontal RMS at {} min along each assumption ({} level; scheme none, which none "
                              "of them moves, left out; points: where the first place changes hands)",
                              t_min_text(config.report_times_s[last_k]), fidelity);
-  f.plot.y_label = fmt::format("horizontal RMS [{}]", u);
+  plot.y_label = fmt::format("horizontal RMS [{}]", u);
   // Two panels a row (three beyond eight panels, both systems): one column
   // of six assumptions, or two of twelve, runs past an A4 page's height.
-  f.plot.columns = config.systems.size() > 1 ? 3 : 2;
+  plot.columns = config.systems.size() > 1 ? 3 : 2;
   for (const AssumptionCurve& c : even.curves) {
     const DisplayUnit d = display_unit(c.assumption);
     for (std::size_t j = 0; j < config.systems.size(); ++j) {
@@ -290,10 +310,23 @@ RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>&
             }
         panel.lines.push_back(std::move(line));
       }
-      f.plot.panels.push_back(std::move(panel));
+      plot.panels.push_back(std::move(panel));
     }
   }
+  return plot;
+}
 
+}  // namespace
+
+RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even,
+                      LengthUnit unit) {
+  RankFiles f;
+  const std::string fidelity(to_string(config.fidelity));
+  Json orders_json = orders_section(orders, fidelity, unit, f);
+  Json crossings_json = crossings_section(even, fidelity, f);
+  f.rank_md = rank_markdown(config, orders, even, fidelity, unit);
+  f.summary_text = rank_summary(config, orders, even, unit);
+  f.plot = rank_plot(config, even, fidelity, unit);
   f.rank_json = Json::object();
   f.rank_json["orders"] = std::move(orders_json);
   f.rank_json["breakeven"] = std::move(crossings_json);
