@@ -252,6 +252,230 @@ std::size_t find_stop(const std::vector<double>& stops, double t) {
   return static_cast<std::size_t>(it - stops.begin());
 }
 
+/// The terms faster than the step, by their exact integrals over [t, t1]
+/// (split): the random accelerometer processes add to the velocity
+/// increments; the random platform rotations (drift process, angle random
+/// walk) turn the measured force by −θ(s) × f^a within the step (first order
+/// in θ, a few µrad per step), the drift process also turning the platform
+/// for the steps that follow. (cm, sm): cos, sin ω_ie at the step's middle.
+void add_process_terms(State& y, const Dynamics& d, const Perturbations& p, double t, double t1, double cm,
+                       double sm) {
+  const bool has_bias_process = !p.bias_process.empty(), has_vrw = !p.velocity_walk.empty();
+  const bool has_drift_process = !p.drift_process.empty(), has_angle_walk = !p.angle_walk.empty();
+  const bool turns = has_drift_process || has_angle_walk;
+  if (has_bias_process || has_vrw || turns) {
+    Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
+    if (has_bias_process) {
+      const GridProcess::Integrals b = p.bias_process.integrals(t, t1);
+      dv += b.first;
+      dw += b.second;
+    }
+    if (has_vrw) {
+      const Vec3 v0 = p.velocity_walk.at(t);
+      dv += p.velocity_walk.at(t1) - v0;
+      dw += p.velocity_walk.integrals(t, t1).first - (t1 - t) * v0;
+    }
+    if (turns) {
+      const Vec3 f_a = d.scale.asDiagonal() * (quaternion_matrix(y.segment<4>(kQ)).transpose() *
+                                               rotate_z(cm, sm, d.site_specific_force_e));
+      if (has_drift_process) {
+        const GridProcess::Integrals w_int = p.drift_process.integrals(t, t1);
+        dv -= w_int.second.cross(f_a);
+        dw -= w_int.third.cross(f_a);
+        turn_platform(y, w_int.first);
+      }
+      if (has_angle_walk) {
+        const GridProcess::Integrals a_int = p.angle_walk.integrals(t, t1);
+        dv -= a_int.first.cross(f_a);
+        dw -= a_int.second.cross(f_a);
+      }
+    }
+    y.segment<3>(kDV) += dv;
+    y.segment<3>(kDW) += dw;
+    y.segment<3>(kDVel) += d.c_hat * dv;
+    y.segment<3>(kDR) += d.c_hat * dw;
+  }
+}
+
+/// The sway motion in the platform over [t, t1], exactly: its inertial
+/// displacement x(t) = R(t) C_n^e s(t) and velocity v(t) = R(t) C_n^e (ṡ + Ω × s)
+/// give ΔV = v(t1) − v(t0), ΔW = x(t1) − x(t0) − h v(t0). The computer follows
+/// the true motion, so δr keeps only the initial offsets.
+void add_sway(State& y, const Dynamics& d, const Perturbations& p, double t, double t1, double tm, double w_ie,
+              const Mat3& c_e_n, const Vec3& earth_axis_n) {
+  const auto inertial = [&](double time, SwayState* velocity) {
+    const SwayState st = sway_at(p.sway, time);
+    const Mat3 r = earth_rotation(w_ie * time) * c_e_n;
+    velocity->velocity_n = r * (st.velocity_n + earth_axis_n.cross(st.position_n));
+    velocity->position_n = r * st.position_n;
+  };
+  SwayState a, b;  // here in i
+  inertial(t, &a);
+  inertial(t1, &b);
+  Mat3 c_a_i = quaternion_matrix(y.segment<4>(kQ)).transpose();
+  if (!p.angle_walk.empty()) c_a_i = rotation(p.angle_walk.at(tm)).transpose() * c_a_i;
+  const Mat3 to_platform = d.scale.asDiagonal() * c_a_i;
+  y.segment<3>(kDV) += to_platform * (b.velocity_n - a.velocity_n);
+  y.segment<3>(kDW) += to_platform * (b.position_n - a.position_n - (t1 - t) * a.velocity_n);
+}
+
+/// The misalignment C' at switch-over (2.18a) and what the alignment
+/// electronics saw: the loops' mean torquer commands (5.14) and
+/// accelerometer outputs (5.19).
+struct Switchover {
+  Vec3 misalignment_rad, command_radps, accel_output_mps2;
+};
+
+Switchover switch_over(const TruthOptions& o, const ModelOptions& site_options, const UncertaintyVector& x_align,
+                       const Perturbations& p) {
+  Switchover out;
+  if (o.alignment_loops) {
+    // The loops in the time domain (2.9)/(2.13), the sway as (u)r̈ (t ≤ 0).
+    std::function<Vec3(double)> sway_acceleration;
+    if (!p.sway.empty())
+      sway_acceleration = [&p](double t) {
+        Vec3 a = Vec3::Zero();
+        for (const SwayComponent& c : p.sway) {
+          const double w = 2.0 * std::numbers::pi / c.period_s;
+          a -= w * w * std::sin(w * t + c.phase_rad) * c.amplitude_n_m;
+        }
+        return a;
+      };
+    const AlignmentLoopRun loops =
+        simulate_alignment_loops(o.system, site_options, *o.alignment_loops, x_align, sway_acceleration);
+    out.misalignment_rad = loops.misalignment_rad + x_align.segment<3>(ux::kMisalignAlign) + p.misalignment_step_rad;  // (2.18a)
+    out.command_radps = loops.mean_command_radps;
+    out.accel_output_mps2 = loops.mean_accel_output_mps2;
+  } else {
+    // The loops in steady state (2.10)/(2.14); their commands (5.14) and
+    // accelerometer outputs (5.19) as the alignment electronics see them.
+    const Sensitivity3 steady = full_steady_state_misalignment(o.system, site_options);
+    out.misalignment_rad = full_switchover_misalignment(o.system, site_options) * x_align + p.misalignment_step_rad;  // (2.18a)
+    out.command_radps = torquer_commands(steady, site_options) * x_align;
+    out.accel_output_mps2 = alignment_accelerometer_outputs(steady, site_options) * x_align;
+  }
+  return out;
+}
+
+/// The run's state at each stop of the integration.
+struct StopRecords {
+  std::vector<Vec3> velocity, error;
+  std::vector<PulseCount3> pulses;
+};
+
+/// The records at the output times: the position error at each, and the
+/// filtered accelerometer output error over the window τ before it against
+/// the computer's f̂ of (4.1) with ĝ = `g_hat` (NaN before the first window).
+TruthRun outputs_at(const std::vector<double>& output_times_s, const std::vector<double>& stops,
+                    const StopRecords& at_stops, double g_hat, const Mat3& c_i_ap_hat, double w_ie, double L0,
+                    double tau) {
+  const double cosL = std::cos(L0);
+  TruthRun run;
+  const std::size_t n = output_times_s.size();
+  run.t_s = output_times_s;
+  run.position_error_ap_m.resize(n);
+  run.accel_error_ap_mps2.resize(n);
+  run.pulse_counts.resize(n);
+  // (4.1): f̂^{a'} = Ĉ_i^{a'} C_n^i(t) (0, 0, −ĝ), C_n^i(t) e_z = −(cL cos ω_ie t, cL sin ω_ie t, sL).
+  const double sinL = std::sin(L0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = 0; k < n; ++k) {
+    const double tk = output_times_s[k];
+    const std::size_t end = find_stop(stops, tk);
+    run.position_error_ap_m[k] = at_stops.error[end];
+    if (tk < tau - 1e-9) {
+      run.accel_error_ap_mps2[k] = Vec3::Constant(nan);
+      run.pulse_counts[k] = PulseCount3::Zero();
+      continue;
+    }
+    const std::size_t begin = find_stop(stops, std::max(0.0, tk - tau));
+    const double ta = stops[begin], tb = stops[end], span = tb - ta;
+    const Vec3 mean_up(cosL * (std::sin(w_ie * tb) - std::sin(w_ie * ta)) / (w_ie * span),
+                       cosL * (std::cos(w_ie * ta) - std::cos(w_ie * tb)) / (w_ie * span), sinL);
+    const Vec3 f_hat = g_hat * (c_i_ap_hat * mean_up);
+    run.accel_error_ap_mps2[k] = (at_stops.velocity[end] - at_stops.velocity[begin]) / span - f_hat;
+    run.pulse_counts[k] = at_stops.pulses[end] - at_stops.pulses[begin];
+  }
+  return run;
+}
+
+/// The instruments of the run: mass unbalance, drift, scale factor, the
+/// navigation bias (3.18) and the effects' terms on them (3.10)–(3.13).
+void set_instruments(Dynamics& d, const UncertaintyVector& x, const Perturbations& p, const TruthOptions& o, double g_s,
+                     double L0) {
+  const double cosL = std::cos(L0);
+  for (int k = 0; k < 3; ++k) {
+    // (3.10) with MUX = 0: (3.13a) gives ω_MU = g MUZ cos² L0; the g·MUY drift
+    // angle is g·MUY cos L0 (1 − cos ω_ie t)/ω_ie (errata.md#3-13).
+    d.mass_unbalance(k, 1) = x[ux::kGyroMuyDrift + k] / g_s;
+    const double w_mu = x[ux::kGyroMuDrift + k];
+    if (w_mu != 0.0) {
+      INSMC_ASSERT(cosL * cosL > 1e-12, "ω_MU needs cos L0 != 0 (L0 = {} rad)", L0);
+      d.mass_unbalance(k, 2) = w_mu / (g_s * cosL * cosL);
+    }
+  }
+  // ω_AI = ω_do − MU f_level, f_level = (0, 0, −g_s) (3.11), (3.12).
+  d.drift_ai = x.segment<3>(ux::kGyroDrift) + g_s * d.mass_unbalance.col(2);
+  d.scale = Vec3::Ones() + x.segment<3>(ux::kAccelScale);
+  d.nav_bias = x.segment<3>(ux::kAccelBias) + p.nav_bias_step_mps2;
+  for (int k = 0; k < 2; ++k)
+    d.nav_bias[k] += x[ux::kBiasChangeConst + k] + x[ux::kBiasChangeAlign + k];  // (3.18)
+  d.quadratic = p.accel_quadratic_per_mps2;
+  d.anisoelastic = p.anisoelastic_radps_per_mps2sq;
+  d.bias_transients = &p.bias_transients;
+  d.drift_transients = &p.drift_transients;
+  d.torquer = &o.torquer_command_radps;
+  d.compensation = &o.accel_compensation;
+}
+
+/// Points 5, 6 at time t: the computer's integrators get the position and
+/// velocity of (3.22), (3.23) for its stationary vehicle (r_c0 at switch-over),
+/// turned with the earth to now, plus the resets' own errors; the true
+/// vehicle keeps its motion (sway).
+void reset_computer(State& y, const Dynamics& d, const Perturbations& p, const UncertaintyVector& x, double t,
+                    double w_ie, const Vec3& r_c0, const Mat3& c_e_n, const Mat3& c_ap_i) {
+  const Vec3 earth_axis(0.0, 0.0, w_ie);
+  const Vec3 earth_axis_n = c_e_n.transpose() * earth_axis;
+  const Mat3 turn = earth_rotation(w_ie * t);
+  const Vec3 offset_i = turn * (r_c0 - d.site_position_e);
+  const SwayState st = sway_at(p.sway, t);
+  const Mat3 to_i = turn * c_e_n;
+  y.segment<3>(kDR) = offset_i - to_i * st.position_n;
+  y.segment<3>(kDVel) = earth_axis.cross(offset_i) - to_i * (st.velocity_n + earth_axis_n.cross(st.position_n));
+  // The resets' own errors (catalogue: reset_position_error, reset_velocity_error), given in a'.
+  y.segment<3>(kDR) += c_ap_i * x.segment<3>(ux::kResetPositionError);
+  y.segment<3>(kDVel) += c_ap_i * x.segment<3>(ux::kResetVelocityError);
+}
+
+/// The gravity fields of the computer and of the truth, and the run's
+/// effects realized (their draws made here, once) at the site's gravity.
+struct RunEffects {
+  GravityField computer_field, true_field;
+  Perturbations p;
+};
+
+RunEffects realize_run_effects(const TruthOptions& o, double duration_s, const NormalSource& noise) {
+  const ModelOptions& m = o.model;
+  const double w_ie = m.earth_rate_radps, r0 = m.radius_m, L0 = m.latitude_rad;
+  const double j2_computer = o.j2_gravity ? kEarthJ2 : 0.0;
+  const GravityField computer_field = model_gravity_field(m.gravity_mps2, r0, j2_computer);
+  GravityField true_field = computer_field;
+  // Site gravity before the effects (for their normalizations); the J2 effect
+  // changes it by ~1e-3, which no effect's size depends on.
+  const Vec3 probe = position_for_plumb_latitude(true_field, w_ie, r0, L0);
+  EffectContext context;
+  context.duration_s = duration_s;
+  context.noise_grid_s = o.noise_grid_s;
+  context.site_gravity_mps2 =
+      (true_field.gravitation(probe) + w_ie * w_ie * Vec3(probe.x(), probe.y(), 0.0)).norm();
+  context.latitude_rad = L0;
+  context.earth_rate_radps = w_ie;
+  context.noise = noise ? &noise : nullptr;
+  RunEffects out{computer_field, true_field, realize_effects(o.effects, context)};
+  out.true_field.j2 += out.p.extra_j2;
+  return out;
+}
+
 }  // namespace
 
 Mat3 switchover_attitude(const Vec3& c_prime, const Vec3& f_ap) {
@@ -335,22 +559,10 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
       stop_times(output_times_s, tau, {compensation.active() ? compensation.start_s : -1.0, o.reset_at_s});
 
   // ---- effects ---------------------------------------------------------------
-  const double j2_computer = o.j2_gravity ? kEarthJ2 : 0.0;
-  const GravityField computer_field = model_gravity_field(m.gravity_mps2, r0, j2_computer);
-  GravityField true_field = computer_field;
-  // Site gravity before the effects (for their normalizations); the J2 effect
-  // changes it by ~1e-3, which no effect's size depends on.
-  const Vec3 probe = position_for_plumb_latitude(true_field, w_ie, r0, L0);
-  EffectContext context;
-  context.duration_s = stops.back();
-  context.noise_grid_s = o.noise_grid_s;
-  context.site_gravity_mps2 =
-      (true_field.gravitation(probe) + w_ie * w_ie * Vec3(probe.x(), probe.y(), 0.0)).norm();
-  context.latitude_rad = L0;
-  context.earth_rate_radps = w_ie;
-  context.noise = noise ? &noise : nullptr;
-  const Perturbations p = realize_effects(o.effects, context);
-  true_field.j2 += p.extra_j2;
+  const RunEffects effects = realize_run_effects(o, stops.back(), noise);
+  const GravityField& computer_field = effects.computer_field;
+  const GravityField& true_field = effects.true_field;
+  const Perturbations& p = effects.p;
 
   // ---- the site (truth) ------------------------------------------------------
   Dynamics d;
@@ -372,33 +584,8 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   x_align.segment<3>(ux::kAccelBias) += p.alignment_bias_mps2;
   x_align.segment<3>(ux::kGyroDrift) += p.alignment_drift_radps;
   x_align.segment<2>(ux::kDeflection) += p.deflection_rad;
-  Vec3 c_prime;
-  Vec3 alignment_command, alignment_accel;
-  if (o.alignment_loops) {
-    // The loops in the time domain (2.9)/(2.13), the sway as (u)r̈ (t ≤ 0).
-    std::function<Vec3(double)> sway_acceleration;
-    if (!p.sway.empty())
-      sway_acceleration = [&p](double t) {
-        Vec3 a = Vec3::Zero();
-        for (const SwayComponent& c : p.sway) {
-          const double w = 2.0 * std::numbers::pi / c.period_s;
-          a -= w * w * std::sin(w * t + c.phase_rad) * c.amplitude_n_m;
-        }
-        return a;
-      };
-    const AlignmentLoopRun loops =
-        simulate_alignment_loops(o.system, site_options, *o.alignment_loops, x_align, sway_acceleration);
-    c_prime = loops.misalignment_rad + x_align.segment<3>(ux::kMisalignAlign) + p.misalignment_step_rad;  // (2.18a)
-    alignment_command = loops.mean_command_radps;
-    alignment_accel = loops.mean_accel_output_mps2;
-  } else {
-    // The loops in steady state (2.10)/(2.14); their commands (5.14) and
-    // accelerometer outputs (5.19) as the alignment electronics see them.
-    const Sensitivity3 steady = full_steady_state_misalignment(o.system, site_options);
-    c_prime = full_switchover_misalignment(o.system, site_options) * x_align + p.misalignment_step_rad;  // (2.18a)
-    alignment_command = torquer_commands(steady, site_options) * x_align;
-    alignment_accel = alignment_accelerometer_outputs(steady, site_options) * x_align;
-  }
+  const Switchover switchover = switch_over(o, site_options, x_align, p);
+  const Vec3& c_prime = switchover.misalignment_rad;
   const Mat3 c_i_ap = C_ap_i(L0);
   const Mat3 c_ap_i = c_i_ap.transpose();
   // C_{a'}^{a0} = I + ψ, ψ = paper_skew(C') = −[C'×] (2.17), (2.18): to first
@@ -407,29 +594,7 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   const Eigen::Vector4d q0 = matrix_quaternion(c_ap_i * switchover_attitude(c_prime, f_ap0));
 
   // ---- instruments -------------------------------------------------------------
-  const double cosL = std::cos(L0);
-  for (int k = 0; k < 3; ++k) {
-    // (3.10) with MUX = 0: (3.13a) gives ω_MU = g MUZ cos² L0; the g·MUY drift
-    // angle is g·MUY cos L0 (1 − cos ω_ie t)/ω_ie (errata.md#3-13).
-    d.mass_unbalance(k, 1) = x[ux::kGyroMuyDrift + k] / g_s;
-    const double w_mu = x[ux::kGyroMuDrift + k];
-    if (w_mu != 0.0) {
-      INSMC_ASSERT(cosL * cosL > 1e-12, "ω_MU needs cos L0 != 0 (L0 = {} rad)", L0);
-      d.mass_unbalance(k, 2) = w_mu / (g_s * cosL * cosL);
-    }
-  }
-  // ω_AI = ω_do − MU f_level, f_level = (0, 0, −g_s) (3.11), (3.12).
-  d.drift_ai = x.segment<3>(ux::kGyroDrift) + g_s * d.mass_unbalance.col(2);
-  d.scale = Vec3::Ones() + x.segment<3>(ux::kAccelScale);
-  d.nav_bias = x.segment<3>(ux::kAccelBias) + p.nav_bias_step_mps2;
-  for (int k = 0; k < 2; ++k)
-    d.nav_bias[k] += x[ux::kBiasChangeConst + k] + x[ux::kBiasChangeAlign + k];  // (3.18)
-  d.quadratic = p.accel_quadratic_per_mps2;
-  d.anisoelastic = p.anisoelastic_radps_per_mps2sq;
-  d.bias_transients = &p.bias_transients;
-  d.drift_transients = &p.drift_transients;
-  d.torquer = &o.torquer_command_radps;
-  d.compensation = &compensation;
+  set_instruments(d, x, p, o, g_s, L0);
 
   // ---- navigation computer -----------------------------------------------------
   const double latitude_hat = L0 + x[ux::kLatitudeError];
@@ -462,18 +627,16 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   Vec3 velocity_sum = Vec3::Zero();  // ∫ f_m (continuous)
 
   // ---- records at the stops ------------------------------------------------------
-  std::vector<Vec3> stop_velocity(stops.size()), stop_error(stops.size());
-  std::vector<PulseCount3> stop_pulses(stops.size());
+  StopRecords at_stops{std::vector<Vec3>(stops.size()), std::vector<Vec3>(stops.size()),
+                       std::vector<PulseCount3>(stops.size())};
   const auto record = [&](std::size_t k) {
-    stop_velocity[k] = w > 0 ? Vec3(w * pulses.cast<double>()) : velocity_sum;
-    stop_pulses[k] = pulses;
-    stop_error[k] = c_i_ap * (y.segment<3>(kDR) - d.c_hat * remainder_integral);
+    at_stops.velocity[k] = w > 0 ? Vec3(w * pulses.cast<double>()) : velocity_sum;
+    at_stops.pulses[k] = pulses;
+    at_stops.error[k] = c_i_ap * (y.segment<3>(kDR) - d.c_hat * remainder_integral);
   };
   record(0);
 
-  const bool has_bias_process = !p.bias_process.empty(), has_vrw = !p.velocity_walk.empty();
   const bool has_sway = !p.sway.empty();
-  const bool has_drift_process = !p.drift_process.empty(), has_angle_walk = !p.angle_walk.empty();
   double t = 0.0, c0 = 1.0, s0 = 0.0;
   State k1, k2, k3, k4;
   for (std::size_t stop = 1; stop < stops.size(); ++stop) {
@@ -493,65 +656,8 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
       d.derivative(t1, c1, s1, y + h * k3, k4);
       y += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
       y.segment<4>(kQ).normalize();
-      // Terms faster than the step, by their exact integrals (split): the
-      // random accelerometer processes add to the velocity increments; the
-      // random platform rotations (drift process, angle random walk) turn the
-      // measured force by −θ(s) × f^a within the step (first order in θ, a
-      // few µrad per step), the drift process also turning the platform for
-      // the steps that follow.
-      const bool turns = has_drift_process || has_angle_walk;
-      if (has_bias_process || has_vrw || turns) {
-        Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
-        if (has_bias_process) {
-          const GridProcess::Integrals b = p.bias_process.integrals(t, t1);
-          dv += b.first;
-          dw += b.second;
-        }
-        if (has_vrw) {
-          const Vec3 v0 = p.velocity_walk.at(t);
-          dv += p.velocity_walk.at(t1) - v0;
-          dw += p.velocity_walk.integrals(t, t1).first - (t1 - t) * v0;
-        }
-        if (turns) {
-          const Vec3 f_a = d.scale.asDiagonal() * (quaternion_matrix(y.segment<4>(kQ)).transpose() *
-                                                   rotate_z(cm, sm, d.site_specific_force_e));
-          if (has_drift_process) {
-            const GridProcess::Integrals w_int = p.drift_process.integrals(t, t1);
-            dv -= w_int.second.cross(f_a);
-            dw -= w_int.third.cross(f_a);
-            turn_platform(y, w_int.first);
-          }
-          if (has_angle_walk) {
-            const GridProcess::Integrals a_int = p.angle_walk.integrals(t, t1);
-            dv -= a_int.first.cross(f_a);
-            dw -= a_int.second.cross(f_a);
-          }
-        }
-        y.segment<3>(kDV) += dv;
-        y.segment<3>(kDW) += dw;
-        y.segment<3>(kDVel) += d.c_hat * dv;
-        y.segment<3>(kDR) += d.c_hat * dw;
-      }
-      if (has_sway) {
-        // The sway motion in the platform, exactly: its inertial displacement
-        // x(t) = R(t) C_n^e s(t) and velocity v(t) = R(t) C_n^e (ṡ + Ω × s) give
-        // ΔV = v(t1) − v(t0), ΔW = x(t1) − x(t0) − h v(t0). The computer follows
-        // the true motion, so δr keeps only the initial offsets (set above).
-        const auto inertial = [&](double time, SwayState* velocity) {
-          const SwayState st = sway_at(p.sway, time);
-          const Mat3 r = earth_rotation(w_ie * time) * c_e_n;
-          velocity->velocity_n = r * (st.velocity_n + earth_axis_n.cross(st.position_n));
-          velocity->position_n = r * st.position_n;
-        };
-        SwayState a, b;  // here in i
-        inertial(t, &a);
-        inertial(t1, &b);
-        Mat3 c_a_i = quaternion_matrix(y.segment<4>(kQ)).transpose();
-        if (has_angle_walk) c_a_i = rotation(p.angle_walk.at(tm)).transpose() * c_a_i;
-        const Mat3 to_platform = d.scale.asDiagonal() * c_a_i;
-        y.segment<3>(kDV) += to_platform * (b.velocity_n - a.velocity_n);
-        y.segment<3>(kDW) += to_platform * (b.position_n - a.position_n - (t1 - t) * a.velocity_n);
-      }
+      add_process_terms(y, d, p, t, t1, cm, sm);
+      if (has_sway) add_sway(y, d, p, t, t1, tm, w_ie, c_e_n, earth_axis_n);
       // Pulses: accumulator a(s) = ρ + ΔV(s); the computer's velocity lags the
       // continuous one by Ĉ(ρ − ρ0), its position by Ĉ ∫(ρ − ρ0) dt.
       const Vec3 dv_step = y.segment<3>(kDV), dw_step = y.segment<3>(kDW);
@@ -572,58 +678,21 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
     }
     record(stop);
     if (o.reset_at_s >= 0.0 && std::abs(stops[stop] - o.reset_at_s) <= 1e-9) {
-      // Points 5, 6: the computer's integrators get the position and velocity
-      // of (3.22), (3.23) for its stationary vehicle, turned with the earth to
-      // now; the true vehicle keeps its motion (sway). Its pulse count
-      // restarts from the present remainder.
-      const Mat3 turn = earth_rotation(w_ie * t);
-      const Vec3 offset_i = turn * (r_c0 - d.site_position_e);
-      const SwayState st = sway_at(p.sway, t);
-      const Mat3 to_i = turn * c_e_n;
-      y.segment<3>(kDR) = offset_i - to_i * st.position_n;
-      y.segment<3>(kDVel) = earth_axis.cross(offset_i) - to_i * (st.velocity_n + earth_axis_n.cross(st.position_n));
-      // The resets' own errors (catalogue: reset_position_error, reset_velocity_error), given in a'.
-      y.segment<3>(kDR) += c_ap_i * x.segment<3>(ux::kResetPositionError);
-      y.segment<3>(kDVel) += c_ap_i * x.segment<3>(ux::kResetVelocityError);
+      // Points 5, 6; the pulse count restarts from the present remainder.
+      reset_computer(y, d, p, x, t, w_ie, r_c0, c_e_n, c_ap_i);
       rho0 = rho;
       remainder_integral.setZero();
       record(stop);
     }
   }
 
-  // ---- outputs ---------------------------------------------------------------------
-  TruthRun run;
+  TruthRun run = outputs_at(output_times_s, stops, at_stops, g_s * (1.0 - 3.0 * x[ux::kAltitudeError] / r0),
+                            c_i_ap_hat, w_ie, L0, tau);
   run.dv_pulse_mps = w;
   run.site_gravity_mps2 = g_s;
   run.switchover_misalignment_rad = c_prime;
-  run.alignment_command_radps = alignment_command;
-  run.alignment_accel_output_mps2 = alignment_accel;
-  const std::size_t n = output_times_s.size();
-  run.t_s = output_times_s;
-  run.position_error_ap_m.resize(n);
-  run.accel_error_ap_mps2.resize(n);
-  run.pulse_counts.resize(n);
-  // (4.1): f̂^{a'} = Ĉ_i^{a'} C_n^i(t) (0, 0, −ĝ), C_n^i(t) e_z = −(cL cos ω_ie t, cL sin ω_ie t, sL).
-  const double g_hat = g_s * (1.0 - 3.0 * x[ux::kAltitudeError] / r0);
-  const double sinL = std::sin(L0);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t k = 0; k < n; ++k) {
-    const double tk = output_times_s[k];
-    const std::size_t end = find_stop(stops, tk);
-    run.position_error_ap_m[k] = stop_error[end];
-    if (tk < tau - 1e-9) {
-      run.accel_error_ap_mps2[k] = Vec3::Constant(nan);
-      run.pulse_counts[k] = PulseCount3::Zero();
-      continue;
-    }
-    const std::size_t begin = find_stop(stops, std::max(0.0, tk - tau));
-    const double ta = stops[begin], tb = stops[end], span = tb - ta;
-    const Vec3 mean_up(cosL * (std::sin(w_ie * tb) - std::sin(w_ie * ta)) / (w_ie * span),
-                       cosL * (std::cos(w_ie * ta) - std::cos(w_ie * tb)) / (w_ie * span), sinL);
-    const Vec3 f_hat = g_hat * (c_i_ap_hat * mean_up);
-    run.accel_error_ap_mps2[k] = (stop_velocity[end] - stop_velocity[begin]) / span - f_hat;
-    run.pulse_counts[k] = stop_pulses[end] - stop_pulses[begin];
-  }
+  run.alignment_command_radps = switchover.command_radps;
+  run.alignment_accel_output_mps2 = switchover.accel_output_mps2;
   return run;
 }
 
