@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "apps/bounds_file.h"
 #include "apps/checkpoint.h"
 #include "apps/config_file.h"
 #include "apps/option_sources.h"
@@ -23,6 +22,7 @@
 #include "lib/records/record_io.h"
 #include "lib/units/quantity.h"
 #include "montecarlo/aggregate/byte_io.h"
+#include "montecarlo/check/bounds_file.h"
 
 namespace insmc::fuzz {
 namespace {
@@ -73,7 +73,7 @@ Outcome imu(std::string_view data) {
 }
 
 Outcome bounds(std::string_view data) {
-  return guarded([&] { app::parse_bounds_text(data, "fuzz.txt"); });
+  return guarded([&] { mc::parse_bounds_text(data, "fuzz.txt"); });
 }
 
 Outcome config(std::string_view data) {

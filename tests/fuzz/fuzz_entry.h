@@ -18,7 +18,7 @@ Outcome records(std::string_view data);
 /// parse_imu_csv; the first byte chooses units, rate or time column, and
 /// column names.
 Outcome imu(std::string_view data);
-/// check's bounds file (apps/bounds_file.h).
+/// check's bounds file (montecarlo/check/bounds_file.h).
 Outcome bounds(std::string_view data);
 /// The --config INI reader (apps/config_file.h) with options of every kind
 /// the subcommands use; then stored and notified as parse_args does.

@@ -1,5 +1,5 @@
 // check's bounds file: every mistake with FILE:LINE:COLUMN, the caps.
-#include "apps/bounds_file.h"
+#include "montecarlo/check/bounds_file.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include "lib/common/input_error.h"
 #include "lib/units/units.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 namespace {
 
 std::string error_of(const std::string& text) {
@@ -30,7 +30,7 @@ TEST(BoundsFile, ReadsBounds) {
   EXPECT_EQ(b[0].line, 3);
   EXPECT_EQ(b[0].scheme, Scheme::kNone);
   EXPECT_EQ(b[0].system, System::kGyrocompass);
-  EXPECT_EQ(b[0].axis, mc::Axis::kHorizontal);
+  EXPECT_EQ(b[0].axis, Axis::kHorizontal);
   EXPECT_EQ(b[0].t_s, 84 * 60.0);
   EXPECT_EQ(b[0].limit_m, 9000.0);
   EXPECT_FALSE(b[0].confidence);
@@ -144,4 +144,4 @@ TEST(BoundsFile, CapsOnReportTimesBoundsAndLines) {
 }
 
 }  // namespace
-}  // namespace insmc::app
+}  // namespace insmc::mc
