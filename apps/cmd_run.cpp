@@ -2,7 +2,7 @@
 // (apps/stdout_choice.h), writes the output files of the README's contract
 // into --out DIR. With --checkpoint it saves its progress
 // (montecarlo/study/checkpoint.h) and --resume continues it; under MPI the
-// ranks share the blocks (apps/study_runner.h, apps/ranks.h).
+// ranks share the blocks (montecarlo/study/study_runner.h, apps/ranks.h).
 #include <algorithm>
 #include <chrono>
 #include <fmt/ranges.h>
@@ -18,9 +18,9 @@
 #include "apps/option_sources.h"
 #include "apps/output_paths.h"
 #include "apps/ranks.h"
+#include "apps/run_watch.h"
 #include "apps/stdout_choice.h"
 #include "apps/study_options.h"
-#include "apps/study_runner.h"
 #include "apps/sweep.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
@@ -145,8 +145,8 @@ mc::Checkpoint load_checkpoint(const std::string& path, Ranks& ranks) {
 }
 
 /// The finished blocks and their state from a checkpoint of this study.
-StudyProgress restore_progress(const mc::Checkpoint& ck, const std::string& path, const mc::StudyConfig& config,
-                               const mc::StudyLayout& layout, const mc::StudyMap& map, Ranks& ranks) {
+mc::StudyProgress restore_progress(const mc::Checkpoint& ck, const std::string& path, const mc::StudyConfig& config,
+                                   const mc::StudyLayout& layout, const mc::StudyMap& map, Ranks& ranks) {
   if (ck.fingerprint != study_fingerprint(config, map) || ck.samples != config.samples)
     throw InputError("--resume", path,
                      "the study no longer matches the checkpoint's (was its --config file changed?)");
@@ -154,7 +154,7 @@ StudyProgress restore_progress(const mc::Checkpoint& ck, const std::string& path
   for (std::size_t i = 0; i < ck.done.size(); ++i)
     if (ck.done[i].end > blocks || (i > 0 && ck.done[i].begin < ck.done[i - 1].end))
       throw InputError("--resume", path, "the checkpoint is corrupt (finished blocks)");
-  StudyProgress p;
+  mc::StudyProgress p;
   p.done = mc::normalize(ck.done);
   p.state = mc::StudyAccumulator(map);
   on_root_or_fail_everywhere(ranks, "--resume", path, [&] {  // rank 0 merges the states
@@ -298,10 +298,11 @@ int run_command(const Args& args, Ranks& ranks) {
     }
     const mc::SweepFiles files =
         mc::run_sweep(config, sweeps, unit, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
-          RunPlan plan;
+          mc::RunPlan plan;
           plan.result_everywhere = true;
           mc::StudyAccumulator state =
-              run_study_blocks(c, m, ranks, StudyProgress{{}, mc::StudyAccumulator(m)}, plan).progress.state;
+              run_study_blocks(c, m, ranks, mc::StudyProgress{{}, mc::StudyAccumulator(m)}, plan, false)
+                  .progress.state;
           // The sweep's own count (a point's samples have their own line while it runs).
           if (points_progress) points_progress->update("sweep", ++points_done, points_total, "points");
           return state;
@@ -360,10 +361,11 @@ int run_command(const Args& args, Ranks& ranks) {
     return ranks.root() ? replay(config, layout, map, index) : 0;
   }
 
-  StudyProgress start{{}, mc::StudyAccumulator(map)};
+  mc::StudyProgress start{{}, mc::StudyAccumulator(map)};
   if (resumed) start = restore_progress(*resumed, resume_path, config, layout, map, ranks);
   const std::uint64_t resumed_from_sample = mc::sample_total(start.done, config.samples);
-  RunPlan plan;
+  mc::RunPlan plan;
+  bool stop_on_signals = false;  // SIGINT/SIGTERM: a checkpoint, then exit
   if (!checkpoint_path.empty()) {
     mc::StudyConfig settings = config;
     settings.threads = 0;
@@ -374,8 +376,8 @@ int run_command(const Args& args, Ranks& ranks) {
     ck.fingerprint = study_fingerprint(config, map);
     ck.samples = config.samples;
     plan.checkpoint_every_s = checkpoint_every_s;
-    plan.stop_on_signals = true;
-    plan.write_checkpoint = [ck = std::move(ck), &checkpoint_file](const StudyProgress& p) mutable {
+    stop_on_signals = true;
+    plan.write_checkpoint = [ck = std::move(ck), &checkpoint_file](const mc::StudyProgress& p) mutable {
       ck.done = p.done;
       ck.state = p.state.serialize();
       checkpoint_file->write(mc::encode_checkpoint(ck));
@@ -385,7 +387,7 @@ int run_command(const Args& args, Ranks& ranks) {
   }
 
   const auto started = std::chrono::steady_clock::now();
-  const RunOutcome outcome = run_study_blocks(config, map, ranks, std::move(start), plan);
+  const mc::RunOutcome outcome = run_study_blocks(config, map, ranks, std::move(start), plan, stop_on_signals);
   const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (outcome.signal != 0) {
     if (ranks.root())
