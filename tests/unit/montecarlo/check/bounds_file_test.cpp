@@ -8,17 +8,13 @@
 
 #include "lib/common/input_error.h"
 #include "lib/units/units.h"
+#include "tests/unit/input_error_of.h"
 
 namespace insmc::mc {
 namespace {
 
 std::string error_of(const std::string& text) {
-  try {
-    parse_bounds_text(text, "bounds.txt");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return test::input_error_of([&] { parse_bounds_text(text, "bounds.txt"); });
 }
 
 TEST(BoundsFile, ReadsBounds) {

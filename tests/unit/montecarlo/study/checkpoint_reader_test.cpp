@@ -10,6 +10,7 @@
 #include "lib/common/version.h"
 #include "montecarlo/aggregate/byte_io.h"
 #include "montecarlo/study/checkpoint.h"
+#include "tests/unit/input_error_of.h"
 
 namespace insmc::mc {
 namespace {
@@ -32,12 +33,7 @@ std::string with_count(bool args, std::uint64_t count) {
 }
 
 std::string error_of(const std::string& bytes) {
-  try {
-    decode_checkpoint(bytes, "ck.bin");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return test::input_error_of([&] { decode_checkpoint(bytes, "ck.bin"); });
 }
 
 TEST(CheckpointReader, AnEmptyCheckpointDecodes) { EXPECT_EQ(error_of(with_count(true, 0)), "(accepted)"); }

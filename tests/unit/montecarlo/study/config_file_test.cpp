@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lib/common/input_error.h"
+#include "tests/unit/input_error_of.h"
 
 namespace insmc::mc {
 namespace {
@@ -24,14 +25,11 @@ std::vector<ConfigEntry> entries_of(const std::string& text) {
 }
 
 std::string error_of(const std::string& text) {
-  try {
+  return test::input_error_of([&] {
     read_config_text(text, "study.ini", [](const ConfigEntry& e) {
       return e.key == "refused" ? std::string("refused by the taker") : std::string();
     });
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  });
 }
 
 TEST(ConfigFile, ReadsKeysSectionsCommentsAndABom) {

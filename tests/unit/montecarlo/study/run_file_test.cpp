@@ -7,18 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "lib/common/input_error.h"
+#include "tests/unit/input_error_of.h"
 
 namespace insmc::mc {
 namespace {
 
 std::string error_of(const std::string& text) {
-  try {
-    run_arguments_from_json(text, "run.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return test::input_error_of([&] { run_arguments_from_json(text, "run.json"); });
 }
 
 TEST(RunFile, ReadsSettingsArgumentsAlone) {
