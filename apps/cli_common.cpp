@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "apps/config_file.h"
+#include "apps/config_options.h"
 #include "apps/help_examples.h"
 #include "apps/sweep.h"
 #include "lib/common/closest_name.h"

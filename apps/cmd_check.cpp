@@ -5,12 +5,12 @@
 // 2 for a malformed file.
 #include <fmt/format.h>
 
-#include "apps/bounds_file.h"
 #include "apps/cli_common.h"
 #include "apps/study_options.h"
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
 #include "lib/units/units.h"
+#include "montecarlo/check/bounds_file.h"
 #include "montecarlo/write/interval_format.h"
 #include "montecarlo/engine/engine.h"
 #include "montecarlo/write/csv.h"
@@ -19,15 +19,15 @@ namespace insmc::app {
 namespace {
 
 /// Output o's estimate of the bound's metric with its interval at `confidence`.
-mc::QuantileEstimate estimate(BoundMetric metric, const mc::StudyLayout& layout, const mc::StudyAccumulator& acc,
+mc::QuantileEstimate estimate(mc::BoundMetric metric, const mc::StudyLayout& layout, const mc::StudyAccumulator& acc,
                               std::size_t o, double confidence) {
   const mc::OutputSummary sum = acc.outputs()[o].summarize(confidence);
-  if (metric == BoundMetric::kRms) return {sum.rms, sum.rms_lo, sum.rms_hi};
+  if (metric == mc::BoundMetric::kRms) return {sum.rms, sum.rms_lo, sum.rms_hi};
   // The bounds file allows percentiles on horizontal outputs alone, and
   // their times are the study's report times: their samples are kept.
   const std::optional<mc::HorizontalAccuracy> a = acc.accuracy(layout, o, sum, confidence);
   INSMC_ASSERT(a.has_value(), "a percentile bound on output {} whose samples are not kept", o);
-  return metric == BoundMetric::kCep50 ? a->cep50_m : a->cep95_m;
+  return metric == mc::BoundMetric::kCep50 ? a->cep50_m : a->cep95_m;
 }
 
 }  // namespace
@@ -43,7 +43,8 @@ int run_check(const Args& args) {
   if (!vm) return 0;
   if (!vm->count("bounds")) throw InputError("--bounds", "(missing)", "give the file of bounds to check");
   const std::string bounds_path = (*vm)["bounds"].as<std::string>();
-  const std::vector<Bound> bounds = read_input("--bounds", bounds_path, [&] { return read_bounds_file(bounds_path); });
+  const std::vector<mc::Bound> bounds =
+      read_input("--bounds", bounds_path, [&] { return mc::read_bounds_file(bounds_path); });
   mc::StudyConfig config = read_study_config(*vm, true);
   const mc::LengthUnit unit = read_length_unit(*vm);
   const bool units_given = !(*vm)["units"].defaulted();
@@ -52,7 +53,7 @@ int run_check(const Args& args) {
   config.schemes.clear();
   config.report_times_s.clear();
   config.with_grid = false;
-  for (const Bound& b : bounds) {
+  for (const mc::Bound& b : bounds) {
     if (std::find(config.systems.begin(), config.systems.end(), b.system) == config.systems.end())
       config.systems.push_back(b.system);
     if (std::find(config.schemes.begin(), config.schemes.end(), b.scheme) == config.schemes.end())
@@ -65,7 +66,7 @@ int run_check(const Args& args) {
   const mc::StudyMap map(config, layout);
   const mc::StudyAccumulator acc = mc::run_blocks(config, map, 0, mc::block_count(config.samples));
   int violated = 0;
-  for (const Bound& b : bounds) {
+  for (const mc::Bound& b : bounds) {
     for (size_t o = 0; o < layout.outputs.size(); ++o) {
       const auto& s = layout.outputs[o];
       if (s.scheme != b.scheme || s.system != b.system || s.axis != b.axis ||
@@ -84,7 +85,7 @@ int run_check(const Args& args) {
       const auto at_place = [&](double x) { return place ? mc::format_at_place(x, *place) : mc::format_significant(x, 6); };
       fmt::print("{} line {}: scheme={} system={} axis={} t_min={}: {} {} {}, upper {}% limit {} {} {} bound {} {}\n",
                  ok ? "ok      " : "VIOLATED", b.line, to_string(b.scheme), system_number(b.system),
-                 to_string(b.axis), mc::format_number(b.t_s / 60), names_of(b.metric).label,
+                 to_string(b.axis), mc::format_number(b.t_s / 60), mc::names_of(b.metric).label,
                  mc::format_with_interval(k * e.value, k * (e.hi - e.lo) / 2), mc::length_suffix(u),
                  mc::format_number(100 * conf), at_place(k * e.hi), mc::length_suffix(u), ok ? "<=" : ">",
                  fmt::format("{:.6g}", k * b.limit_m), mc::length_suffix(u));

@@ -1,8 +1,8 @@
 // insmc run: the Monte Carlo study. Prints a summary of the envelope
 // (apps/stdout_choice.h), writes the output files of the README's contract
-// into --out DIR. With --checkpoint it saves its progress (apps/checkpoint.h)
-// and --resume continues it; under MPI the ranks share the blocks
-// (apps/study_runner.h, apps/ranks.h).
+// into --out DIR. With --checkpoint it saves its progress
+// (montecarlo/study/checkpoint.h) and --resume continues it; under MPI the
+// ranks share the blocks (montecarlo/study/study_runner.h, apps/ranks.h).
 #include <algorithm>
 #include <chrono>
 #include <fmt/ranges.h>
@@ -12,17 +12,15 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "apps/checkpoint.h"
 #include "apps/progress.h"
 #include "apps/cli_common.h"
 #include "apps/interrupt.h"
 #include "apps/option_sources.h"
 #include "apps/output_paths.h"
 #include "apps/ranks.h"
-#include "apps/run_file.h"
+#include "apps/run_watch.h"
 #include "apps/stdout_choice.h"
 #include "apps/study_options.h"
-#include "apps/study_runner.h"
 #include "apps/sweep.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
@@ -33,6 +31,8 @@
 #include "montecarlo/engine/engine.h"
 #include "lib/compensation/extended_vector.h"
 #include "montecarlo/sampler/sampler.h"
+#include "montecarlo/study/checkpoint.h"
+#include "montecarlo/study/run_file.h"
 #include "montecarlo/write/csv.h"
 #include "montecarlo/write/plot/gnuplot.h"
 
@@ -68,7 +68,8 @@ int replay(const mc::StudyConfig& c, const mc::StudyLayout& l, const mc::StudyMa
   return 0;
 }
 
-/// settings_json with the arguments that made the numbers (apps/run_file.h).
+/// settings_json with the arguments that made the numbers (apps/option_sources.h,
+/// read back by montecarlo/study/run_file.h).
 mc::Json run_settings(const mc::StudyConfig& config, const po::variables_map& vm, const po::options_description& opts) {
   mc::Json settings = mc::settings_json(config);
   mc::Json arguments = mc::Json::array();
@@ -87,7 +88,7 @@ const std::vector<std::string> kResumeOptions = {"out",     "format",     "quiet
 std::uint64_t study_fingerprint(const mc::StudyConfig& config, const mc::StudyMap& map) {
   mc::StudyConfig c = config;
   c.threads = 0;
-  return fnv1a64(mc::settings_json(c).dump() + mc::StudyAccumulator(map).serialize());
+  return mc::fnv1a64(mc::settings_json(c).dump() + mc::StudyAccumulator(map).serialize());
 }
 
 /// Runs `f` on rank 0; a failure there becomes the same InputError on every
@@ -125,21 +126,21 @@ void on_root_input_errors(Ranks& ranks, F&& f) {
 
 /// --resume FILE: read on rank 0 and sent to the others (no shared file
 /// system needed for it).
-Checkpoint load_checkpoint(const std::string& path, Ranks& ranks) {
+mc::Checkpoint load_checkpoint(const std::string& path, Ranks& ranks) {
   std::string bytes;
   on_root_or_fail_everywhere(ranks, "--resume", path, [&] {
     try {  // capped; a directory or a read error is an error
-      bytes = read_checkpoint_file(path);
+      bytes = mc::read_checkpoint_file(path);
     } catch (const FileReadError& e) {
       throw std::runtime_error(e.why());  // named "--resume = PATH" below
     }
   });
-  return decode_checkpoint(ranks.broadcast(std::move(bytes)), path);
+  return mc::decode_checkpoint(ranks.broadcast(std::move(bytes)), path);
 }
 
 /// The finished blocks and their state from a checkpoint of this study.
-StudyProgress restore_progress(const Checkpoint& ck, const std::string& path, const mc::StudyConfig& config,
-                               const mc::StudyLayout& layout, const mc::StudyMap& map, Ranks& ranks) {
+mc::StudyProgress restore_progress(const mc::Checkpoint& ck, const std::string& path, const mc::StudyConfig& config,
+                                   const mc::StudyLayout& layout, const mc::StudyMap& map, Ranks& ranks) {
   if (ck.fingerprint != study_fingerprint(config, map) || ck.samples != config.samples)
     throw InputError("--resume", path,
                      "the study no longer matches the checkpoint's (was its --config file changed?)");
@@ -147,7 +148,7 @@ StudyProgress restore_progress(const Checkpoint& ck, const std::string& path, co
   for (std::size_t i = 0; i < ck.done.size(); ++i)
     if (ck.done[i].end > blocks || (i > 0 && ck.done[i].begin < ck.done[i - 1].end))
       throw InputError("--resume", path, "the checkpoint is corrupt (finished blocks)");
-  StudyProgress p;
+  mc::StudyProgress p;
   p.done = mc::normalize(ck.done);
   p.state = mc::StudyAccumulator(map);
   on_root_or_fail_everywhere(ranks, "--resume", path, [&] {  // rank 0 merges the states
@@ -207,7 +208,7 @@ int run_command(const Args& args, Ranks& ranks) {
     }
     std::vector<GivenOption> kept;
     try {
-      kept = given_options(read_run_arguments(from), opts);
+      kept = given_options(mc::read_run_arguments(from), opts);
     } catch (const po::error& e) {
       throw InputError("--from", echo_input(from), "settings.arguments: " + parse_error_message(e));
     }
@@ -221,7 +222,7 @@ int run_command(const Args& args, Ranks& ranks) {
 
   // --resume: the checkpoint's own arguments, with this command line's
   // --out, --format, ... in place of theirs, parsed as if typed again.
-  std::optional<Checkpoint> resumed;
+  std::optional<mc::Checkpoint> resumed;
   const std::string resume_path = vm->count("resume") ? (*vm)["resume"].as<std::string>() : "";
   if (vm->count("resume")) {
     std::vector<std::string> overrides;
@@ -291,10 +292,11 @@ int run_command(const Args& args, Ranks& ranks) {
     }
     const mc::SweepFiles files =
         mc::run_sweep(config, sweeps, unit, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
-          RunPlan plan;
+          mc::RunPlan plan;
           plan.result_everywhere = true;
           mc::StudyAccumulator state =
-              run_study_blocks(c, m, ranks, StudyProgress{{}, mc::StudyAccumulator(m)}, plan).progress.state;
+              run_study_blocks(c, m, ranks, mc::StudyProgress{{}, mc::StudyAccumulator(m)}, plan, false)
+                  .progress.state;
           // The sweep's own count (a point's samples have their own line while it runs).
           if (points_progress) points_progress->update("sweep", ++points_done, points_total, "points");
           return state;
@@ -353,32 +355,33 @@ int run_command(const Args& args, Ranks& ranks) {
     return ranks.root() ? replay(config, layout, map, index) : 0;
   }
 
-  StudyProgress start{{}, mc::StudyAccumulator(map)};
+  mc::StudyProgress start{{}, mc::StudyAccumulator(map)};
   if (resumed) start = restore_progress(*resumed, resume_path, config, layout, map, ranks);
   const std::uint64_t resumed_from_sample = mc::sample_total(start.done, config.samples);
-  RunPlan plan;
+  mc::RunPlan plan;
+  bool stop_on_signals = false;  // SIGINT/SIGTERM: a checkpoint, then exit
   if (!checkpoint_path.empty()) {
     mc::StudyConfig settings = config;
     settings.threads = 0;
-    Checkpoint ck;
+    mc::Checkpoint ck;
     ck.version = kVersion;
     ck.args = explicit_arguments(*vm, opts, not_in_run_files());  // what defines the study, as run.json keeps it
     ck.settings = mc::settings_json(settings).dump();
     ck.fingerprint = study_fingerprint(config, map);
     ck.samples = config.samples;
     plan.checkpoint_every_s = checkpoint_every_s;
-    plan.stop_on_signals = true;
-    plan.write_checkpoint = [ck = std::move(ck), &checkpoint_file](const StudyProgress& p) mutable {
+    stop_on_signals = true;
+    plan.write_checkpoint = [ck = std::move(ck), &checkpoint_file](const mc::StudyProgress& p) mutable {
       ck.done = p.done;
       ck.state = p.state.serialize();
-      checkpoint_file->write(encode_checkpoint(ck));
+      checkpoint_file->write(mc::encode_checkpoint(ck));
     };
     // A path that cannot be written fails now, not after the first stretch of work.
     on_root_input_errors(ranks, [&] { plan.write_checkpoint(start); });
   }
 
   const auto started = std::chrono::steady_clock::now();
-  const RunOutcome outcome = run_study_blocks(config, map, ranks, std::move(start), plan);
+  const mc::RunOutcome outcome = run_study_blocks(config, map, ranks, std::move(start), plan, stop_on_signals);
   const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (outcome.signal != 0) {
     if (ranks.root())

@@ -1,9 +1,9 @@
 // MPI ranks for `insmc run` (compiled only with -DINSMC_MPI=ON): the block
-// range is split into contiguous rank shares by apps/study_runner.cpp; here
-// the ranks' accumulator states are merged by an MPI reduction whose
-// operation deserializes two states, merges them (exactly: the sums are
-// fixed-point, so any reduction tree gives the same bits) and serializes
-// the result back.
+// range is split into contiguous rank shares by
+// montecarlo/study/study_runner.cpp; here the ranks' accumulator states are
+// merged by an MPI reduction whose operation deserializes two states, merges
+// them (exactly: the sums are fixed-point, so any reduction tree gives the
+// same bits) and serializes the result back.
 #include <algorithm>
 #include <climits>
 #include <cstdio>

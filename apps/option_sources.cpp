@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <fmt/format.h>
+#include <stdexcept>
 
 #include "lib/common/input_text.h"
 
@@ -57,6 +59,48 @@ const std::vector<std::string>& not_in_run_files() {
     return out;
   }();
   return names;
+}
+
+Args explicit_arguments(const po::variables_map& vm, const po::options_description& options,
+                        const std::vector<std::string>& drop) {
+  Args out;
+  for (const auto& option : options.options()) {
+    const std::string& name = option->long_name();
+    if (!vm.count(name) || vm[name].defaulted() || std::find(drop.begin(), drop.end(), name) != drop.end()) continue;
+    const boost::any& v = vm[name].value();
+    if (const auto* s = boost::any_cast<std::string>(&v)) {
+      out.push_back(fmt::format("--{}={}", name, *s));
+    } else if (const auto* list = boost::any_cast<std::vector<std::string>>(&v)) {
+      for (const std::string& e : *list) out.push_back(fmt::format("--{}={}", name, e));
+    } else if (const auto* d = boost::any_cast<double>(&v)) {
+      out.push_back(fmt::format("--{}={}", name, *d));  // shortest exact round trip
+    } else if (const auto* i = boost::any_cast<int>(&v)) {
+      out.push_back(fmt::format("--{}={}", name, *i));
+    } else if (const auto* b = boost::any_cast<bool>(&v)) {
+      if (*b) out.push_back("--" + name);
+    } else {
+      throw std::logic_error("option --" + name + " has a type run.json cannot keep");
+    }
+  }
+  return out;
+}
+
+std::vector<GivenOption> given_options(const Args& args, const po::options_description& options) {
+  po::options_description all;
+  all.add(options);
+  all.add_options()("help,h", "")("config", po::value<std::string>(), "");  // as parse_args adds them
+  const po::parsed_options parsed = po::command_line_parser(args).options(all).run();
+  std::vector<GivenOption> out;
+  for (const po::option& o : parsed.options) out.push_back({o.string_key, o.original_tokens});
+  return out;
+}
+
+Args without_options(const std::vector<GivenOption>& given, const std::vector<std::string>& drop) {
+  Args out;
+  for (const GivenOption& o : given)
+    if (std::find(drop.begin(), drop.end(), o.name) == drop.end())
+      out.insert(out.end(), o.tokens.begin(), o.tokens.end());
+  return out;
 }
 
 }  // namespace insmc::app

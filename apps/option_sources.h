@@ -6,13 +6,20 @@
 /// --resume`), which insmc writes, not even that. No file may act (--help,
 /// --from, --resume, --replay, another --config) or name a path insmc writes
 /// (--out, --checkpoint): a downloaded run.json must never write where the
-/// user did not ask (docs/robustness.md).
-#include <boost/program_options/errors.hpp>
+/// user did not ask (docs/robustness.md). Here too the options a file keeps
+/// (explicit_arguments) and how a file's options meet those typed beside
+/// them (given_options, without_options); the files themselves are read by
+/// montecarlo/study/run_file.h and montecarlo/study/checkpoint.h.
+#include <boost/program_options.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "apps/subcommands.h"
+
 namespace insmc::app {
+
+namespace po = boost::program_options;
 
 enum class OptionSource {
   kCommandLine,
@@ -33,5 +40,23 @@ const std::vector<std::string>& not_in_run_files();
 /// holding one (`--x%value%`) made what() loop for ever; such an error is
 /// told by the option's name alone.
 std::string parse_error_message(const boost::program_options::error& e);
+
+/// The options of `options` that `vm` holds other than by default, each as
+/// `--name=value` (one per value of a repeatable option; a switch as
+/// `--name`), in the order of `options`, leaving out those named in `drop`.
+Args explicit_arguments(const po::variables_map& vm, const po::options_description& options,
+                        const std::vector<std::string>& drop);
+
+/// The options of a command line as (name, tokens) pairs: `options` plus the
+/// --help and --config that parse_args adds. Names are canonical (an
+/// abbreviation like --samp is reported as "samples").
+struct GivenOption {
+  std::string name;
+  Args tokens;  ///< as typed: {"--out", "DIR"} or {"--out=DIR"}
+};
+std::vector<GivenOption> given_options(const Args& args, const po::options_description& options);
+
+/// The tokens of `given` without the options named in `drop`.
+Args without_options(const std::vector<GivenOption>& given, const std::vector<std::string>& drop);
 
 }  // namespace insmc::app

@@ -11,11 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "apps/bounds_file.h"
-#include "apps/checkpoint.h"
-#include "apps/config_file.h"
+#include "apps/config_options.h"
 #include "apps/option_sources.h"
-#include "apps/run_file.h"
 #include "apps/study_options.h"
 #include "apps/sweep.h"
 #include "lib/common/input_error.h"
@@ -23,6 +20,9 @@
 #include "lib/records/record_io.h"
 #include "lib/units/quantity.h"
 #include "montecarlo/aggregate/byte_io.h"
+#include "montecarlo/check/bounds_file.h"
+#include "montecarlo/study/checkpoint.h"
+#include "montecarlo/study/run_file.h"
 
 namespace insmc::fuzz {
 namespace {
@@ -73,7 +73,7 @@ Outcome imu(std::string_view data) {
 }
 
 Outcome bounds(std::string_view data) {
-  return guarded([&] { app::parse_bounds_text(data, "fuzz.txt"); });
+  return guarded([&] { mc::parse_bounds_text(data, "fuzz.txt"); });
 }
 
 Outcome config(std::string_view data) {
@@ -98,12 +98,12 @@ Outcome checkpoint(std::string_view data) {
   if (static_cast<unsigned char>(data[0]) % 2 == 1) {
     bytes = "insmc checkpoint\n";
     bytes.append(data.substr(1));
-    mc::byte_io::put_u64(bytes, app::fnv1a64(bytes));
+    mc::byte_io::put_u64(bytes, mc::fnv1a64(bytes));
   } else {
     bytes = std::string(data.substr(1));
   }
   return guarded([&] {
-    const app::Checkpoint ck = app::decode_checkpoint(bytes, "fuzz.ck");
+    const mc::Checkpoint ck = mc::decode_checkpoint(bytes, "fuzz.ck");
     // The state as run --resume reads it; one it accepts is written back the same.
     try {
       // Read, written and read again: the second writing is the first.
@@ -118,7 +118,7 @@ Outcome checkpoint(std::string_view data) {
 }
 
 Outcome run_json(std::string_view data) {
-  return guarded([&] { app::run_arguments_from_json(data, "fuzz.json"); });
+  return guarded([&] { mc::run_arguments_from_json(data, "fuzz.json"); });
 }
 
 Outcome options(std::string_view data) {

@@ -18,10 +18,11 @@ Outcome records(std::string_view data);
 /// parse_imu_csv; the first byte chooses units, rate or time column, and
 /// column names.
 Outcome imu(std::string_view data);
-/// check's bounds file (apps/bounds_file.h).
+/// check's bounds file (montecarlo/check/bounds_file.h).
 Outcome bounds(std::string_view data);
-/// The --config INI reader (apps/config_file.h) with options of every kind
-/// the subcommands use; then stored and notified as parse_args does.
+/// The --config INI reader (montecarlo/study/config_file.h) and its keys'
+/// checks (apps/config_options.h) with options of every kind the
+/// subcommands use; then stored and notified as parse_args does.
 Outcome config(std::string_view data);
 /// decode_checkpoint; with the first byte odd, the rest is a body after the
 /// magic line to which a valid checksum is appended (so the fuzzer reaches
@@ -29,7 +30,8 @@ Outcome config(std::string_view data);
 Outcome checkpoint(std::string_view data);
 /// parse_quantity; the first byte chooses the dimension (or parse_rate_hz).
 Outcome quantity(std::string_view data);
-/// run.json's settings.arguments (apps/run_file.h), as `run --from` reads them.
+/// run.json's settings.arguments (montecarlo/study/run_file.h), as `run --from`
+/// reads them.
 Outcome run_json(std::string_view data);
 /// The option parser: lines of the input as the arguments of `insmc run`
 /// (no --config, which would read a file), parsed, checked and turned into

@@ -18,7 +18,7 @@
 #include "montecarlo/write/length_unit.h"
 #include "montecarlo/study/output_layout.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 
 /// Caps: a CI job checks tens of bounds (7 schemes × 2 systems × 4 axes × 3
 /// report times = 168 covers every output of the report's figures).
@@ -44,11 +44,11 @@ struct Bound {
   int line = 0;
   Scheme scheme = Scheme::kNone;
   System system = System::kTheodolite;
-  mc::Axis axis = mc::Axis::kHorizontal;
+  Axis axis = Axis::kHorizontal;
   double t_s = 0.0;
   BoundMetric metric = BoundMetric::kRms;
   double limit_m = 0.0;
-  mc::LengthUnit unit = mc::LengthUnit::kMetre;  ///< the unit the limit was written in (km as m)
+  LengthUnit unit = LengthUnit::kMetre;  ///< the unit the limit was written in (km as m)
   std::optional<double> confidence;
 };
 
@@ -58,4 +58,4 @@ std::vector<Bound> parse_bounds_text(std::string_view text, std::string_view sou
 /// Reads (at most kMaxBoundsFileBytes) and parses the file.
 std::vector<Bound> read_bounds_file(const std::string& path);
 
-}  // namespace insmc::app
+}  // namespace insmc::mc

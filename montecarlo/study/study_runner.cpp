@@ -1,35 +1,32 @@
-#include "apps/study_runner.h"
+#include "montecarlo/study/study_runner.h"
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <optional>
 
-#include "apps/interrupt.h"
-#include "apps/progress.h"
+namespace insmc::mc {
 
-namespace insmc::app {
-
-RunOutcome run_study_blocks(const mc::StudyConfig& c, const mc::StudyMap& map, Ranks& ranks, StudyProgress start,
+RunOutcome run_study_blocks(const StudyConfig& c, const StudyMap& map, Ranks& ranks, StudyProgress start,
                             const RunPlan& plan) {
   using Clock = std::chrono::steady_clock;
   RunOutcome out;
-  out.shares = mc::split_remaining(mc::block_count(c.samples), start.done, ranks.size());
-  const mc::BlockSet& mine = out.shares[static_cast<std::size_t>(ranks.rank())];
-  const std::uint64_t my_blocks = mc::block_total(mine);
+  out.shares = split_remaining(block_count(c.samples), start.done, ranks.size());
+  const BlockSet& mine = out.shares[static_cast<std::size_t>(ranks.rank())];
+  const std::uint64_t my_blocks = block_total(mine);
 
-  std::atomic<bool> pause{false};
-  std::optional<InterruptGuard> guard;
-  if (plan.stop_on_signals) guard.emplace(pause);
-  const auto signal = [&] { return guard ? InterruptGuard::signal_received() : 0; };
-  std::optional<Progress> progress;
-  if (ranks.root()) progress.emplace(mc::sample_total(mine, c.samples));
+  RunWatch no_watch;
+  RunWatch& watch = plan.watch != nullptr ? *plan.watch : no_watch;
+  std::atomic<bool> own_pause{false};
+  std::atomic<bool>& pause = watch.stop_flag() != nullptr ? *watch.stop_flag() : own_pause;
+  const auto signal = [&] { return watch.stop_signal(); };
+  const bool root = ranks.root();
+  if (root) watch.start(sample_total(mine, c.samples));
 
   const double every_s = std::min(plan.checkpoint_every_s, 1e9);  // ~30 years: no overflow in ns
   const auto every = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(every_s));
   Clock::time_point deadline = plan.checkpoint_every_s > 0 ? Clock::now() + every : Clock::time_point::max();
-  mc::StudyAccumulator local(map);  // this rank's blocks of this run
-  std::uint64_t finished = 0;       // blocks of `mine` finished, a prefix in share order
+  StudyAccumulator local(map);  // this rank's blocks of this run
+  std::uint64_t finished = 0;   // blocks of `mine` finished, a prefix in share order
   for (;;) {
     // Work until the share is finished, a checkpoint is due or a signal came.
     while (finished < my_blocks && !pause.load()) {
@@ -37,31 +34,31 @@ RunOutcome run_study_blocks(const mc::StudyConfig& c, const mc::StudyMap& map, R
       std::size_t i = 0;
       while (skip >= mine[i].size()) skip -= mine[i++].size();
       const std::uint64_t first = mine[i].begin + skip;
-      const std::uint64_t samples_before = mc::sample_total(mc::take_front(mine, finished), c.samples);
+      const std::uint64_t samples_before = sample_total(take_front(mine, finished), c.samples);
       const auto on_block = [&](std::uint64_t samples_done) {
-        if (progress) progress->update(samples_before + samples_done);
+        if (root) watch.progress(samples_before + samples_done);
         if (Clock::now() >= deadline) pause.store(true);
       };
       std::uint64_t end = first;
-      local.merge(mc::run_blocks(c, map, first, mine[i].end, on_block, &pause, &end));  // moved in
+      local.merge(run_blocks(c, map, first, mine[i].end, on_block, &pause, &end));  // moved in
       finished += end - first;
     }
     const std::vector<std::int64_t> status = ranks.max_all({signal(), finished < my_blocks ? 1 : 0});
     const bool complete = status[1] == 0, interrupted = status[0] != 0 && !complete;
     if (complete || plan.write_checkpoint) {
-      mc::StudyAccumulator merged = ranks.merge(local, complete && plan.result_everywhere);
+      StudyAccumulator merged = ranks.merge(local, complete && plan.result_everywhere);
       const std::vector<std::uint64_t> counts = ranks.gather(finished);
       if (ranks.root() || (complete && plan.result_everywhere)) {
         out.progress.state = start.state;
         out.progress.state.merge(std::move(merged));
       }
       if (ranks.root()) {
-        mc::BlockSet done = start.done;
+        BlockSet done = start.done;
         for (std::size_t r = 0; r < counts.size(); ++r) {
-          const mc::BlockSet part = mc::take_front(out.shares[r], counts[r]);
+          const BlockSet part = take_front(out.shares[r], counts[r]);
           done.insert(done.end(), part.begin(), part.end());
         }
-        out.progress.done = mc::normalize(std::move(done));
+        out.progress.done = normalize(std::move(done));
         if (plan.write_checkpoint) plan.write_checkpoint(out.progress);
       }
     }
@@ -73,4 +70,4 @@ RunOutcome run_study_blocks(const mc::StudyConfig& c, const mc::StudyMap& map, R
   }
 }
 
-}  // namespace insmc::app
+}  // namespace insmc::mc

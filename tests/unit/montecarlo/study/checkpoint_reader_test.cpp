@@ -5,13 +5,14 @@
 #include <filesystem>
 #include <string>
 
-#include "apps/checkpoint.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 #include "lib/common/version.h"
 #include "montecarlo/aggregate/byte_io.h"
+#include "montecarlo/study/checkpoint.h"
+#include "tests/unit/input_error_of.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 namespace {
 
 /// A checkpoint whose argument count (or range count) is `count`, with a
@@ -25,19 +26,14 @@ std::string with_count(bool args, std::uint64_t count) {
   const std::size_t argc_at = std::string("insmc checkpoint\n").size() + 4 + 8 + c.version.size();
   const std::size_t ranges_at = argc_at + 8 + 8 + 8 + 8;
   std::string patched;
-  mc::byte_io::put_u64(patched, count);
+  byte_io::put_u64(patched, count);
   bytes.replace(args ? argc_at : ranges_at, 8, patched);
-  mc::byte_io::put_u64(bytes, fnv1a64(bytes));
+  byte_io::put_u64(bytes, fnv1a64(bytes));
   return bytes;
 }
 
 std::string error_of(const std::string& bytes) {
-  try {
-    decode_checkpoint(bytes, "ck.bin");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return test::input_error_of([&] { decode_checkpoint(bytes, "ck.bin"); });
 }
 
 TEST(CheckpointReader, AnEmptyCheckpointDecodes) { EXPECT_EQ(error_of(with_count(true, 0)), "(accepted)"); }
@@ -65,4 +61,4 @@ TEST(CheckpointReader, ADirectoryIsAReadError) {
 }
 
 }  // namespace
-}  // namespace insmc::app
+}  // namespace insmc::mc

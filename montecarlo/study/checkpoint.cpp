@@ -1,4 +1,4 @@
-#include "apps/checkpoint.h"
+#include "montecarlo/study/checkpoint.h"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -8,13 +8,13 @@
 #include "lib/common/version.h"
 #include "montecarlo/aggregate/byte_io.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 namespace {
 
 constexpr std::string_view kMagic = "insmc checkpoint\n";
 
 void put_string(std::string& out, std::string_view s) {
-  mc::byte_io::put_u64(out, s.size());
+  byte_io::put_u64(out, s.size());
   out.append(s);
 }
 
@@ -65,20 +65,20 @@ std::uint64_t fnv1a64(std::string_view bytes) {
 std::string encode_checkpoint(const Checkpoint& c) {
   std::string out(kMagic);
   out.reserve(c.state.size() + 4096);
-  mc::byte_io::put_u32(out, kCheckpointFormat);
+  byte_io::put_u32(out, kCheckpointFormat);
   put_string(out, c.version);
-  mc::byte_io::put_u64(out, c.args.size());
+  byte_io::put_u64(out, c.args.size());
   for (const std::string& a : c.args) put_string(out, a);
   put_string(out, c.settings);
-  mc::byte_io::put_u64(out, c.fingerprint);
-  mc::byte_io::put_u64(out, c.samples);
-  mc::byte_io::put_u64(out, c.done.size());
-  for (const mc::BlockRange& r : c.done) {
-    mc::byte_io::put_u64(out, r.begin);
-    mc::byte_io::put_u64(out, r.end);
+  byte_io::put_u64(out, c.fingerprint);
+  byte_io::put_u64(out, c.samples);
+  byte_io::put_u64(out, c.done.size());
+  for (const BlockRange& r : c.done) {
+    byte_io::put_u64(out, r.begin);
+    byte_io::put_u64(out, r.end);
   }
   put_string(out, c.state);
-  mc::byte_io::put_u64(out, fnv1a64(out));
+  byte_io::put_u64(out, fnv1a64(out));
   return out;
 }
 
@@ -113,7 +113,7 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& path) {
   if (ranges > kMaxCheckpointRanges)
     r.fail(fmt::format("the checkpoint is corrupt ({} block ranges; at most {})", ranges, kMaxCheckpointRanges));
   for (std::uint64_t i = 0; i < ranges; ++i) {
-    mc::BlockRange range;
+    BlockRange range;
     range.begin = r.u64();
     range.end = r.u64();
     if (range.end < range.begin) r.fail("the checkpoint is corrupt (block range)");
@@ -129,22 +129,4 @@ std::string read_checkpoint_file(const std::string& path) {
   return read_file_capped(path, kMaxCheckpointFileBytes, "checkpoint");
 }
 
-std::vector<GivenOption> given_options(const Args& args, const po::options_description& options) {
-  po::options_description all;
-  all.add(options);
-  all.add_options()("help,h", "")("config", po::value<std::string>(), "");  // as parse_args adds them
-  const po::parsed_options parsed = po::command_line_parser(args).options(all).run();
-  std::vector<GivenOption> out;
-  for (const po::option& o : parsed.options) out.push_back({o.string_key, o.original_tokens});
-  return out;
-}
-
-Args without_options(const std::vector<GivenOption>& given, const std::vector<std::string>& drop) {
-  Args out;
-  for (const GivenOption& o : given)
-    if (std::find(drop.begin(), drop.end(), o.name) == drop.end())
-      out.insert(out.end(), o.tokens.begin(), o.tokens.end());
-  return out;
-}
-
-}  // namespace insmc::app
+}  // namespace insmc::mc

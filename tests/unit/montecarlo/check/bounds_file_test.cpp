@@ -1,5 +1,5 @@
 // check's bounds file: every mistake with FILE:LINE:COLUMN, the caps.
-#include "apps/bounds_file.h"
+#include "montecarlo/check/bounds_file.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -8,17 +8,13 @@
 
 #include "lib/common/input_error.h"
 #include "lib/units/units.h"
+#include "tests/unit/input_error_of.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 namespace {
 
 std::string error_of(const std::string& text) {
-  try {
-    parse_bounds_text(text, "bounds.txt");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return test::input_error_of([&] { parse_bounds_text(text, "bounds.txt"); });
 }
 
 TEST(BoundsFile, ReadsBounds) {
@@ -30,7 +26,7 @@ TEST(BoundsFile, ReadsBounds) {
   EXPECT_EQ(b[0].line, 3);
   EXPECT_EQ(b[0].scheme, Scheme::kNone);
   EXPECT_EQ(b[0].system, System::kGyrocompass);
-  EXPECT_EQ(b[0].axis, mc::Axis::kHorizontal);
+  EXPECT_EQ(b[0].axis, Axis::kHorizontal);
   EXPECT_EQ(b[0].t_s, 84 * 60.0);
   EXPECT_EQ(b[0].limit_m, 9000.0);
   EXPECT_FALSE(b[0].confidence);
@@ -144,4 +140,4 @@ TEST(BoundsFile, CapsOnReportTimesBoundsAndLines) {
 }
 
 }  // namespace
-}  // namespace insmc::app
+}  // namespace insmc::mc

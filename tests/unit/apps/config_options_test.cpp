@@ -1,6 +1,7 @@
-// The --config INI reader: file:line and key in every message, BOM,
+// The options of a --config INI file (apps/config_options.h, over the reader
+// montecarlo/study/config_file.h): file:line and key in every message, BOM,
 // duplicates, escaped echoes, caps.
-#include "apps/config_file.h"
+#include "apps/config_options.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "lib/common/input_error.h"
+#include "montecarlo/study/config_file.h"
 
 namespace insmc::app {
 namespace {
@@ -33,7 +35,7 @@ std::string error_of(const std::string& text) {
   return "(accepted)";
 }
 
-TEST(ConfigFile, ReadsKeysSectionsCommentsAndABom) {
+TEST(ConfigOptions, ReadsKeysSectionsCommentsAndABom) {
   const auto d = test_options();
   po::variables_map vm;
   po::store(parse_config_text("\xEF\xBB\xBF# study\nsamples = 1000\r\n\nbound = a=1 # first\nbound=b=2\n[study]\nseed=7\n",
@@ -44,7 +46,7 @@ TEST(ConfigFile, ReadsKeysSectionsCommentsAndABom) {
   EXPECT_EQ(vm["study.seed"].as<int>(), 7);
 }
 
-TEST(ConfigFile, CommandLineWins) {
+TEST(ConfigOptions, CommandLineWins) {
   const auto d = test_options();
   po::variables_map vm;
   const std::vector<std::string> args = {"--samples", "5"};
@@ -53,7 +55,7 @@ TEST(ConfigFile, CommandLineWins) {
   EXPECT_EQ(vm["samples"].as<std::uint64_t>(), 5u);
 }
 
-TEST(ConfigFile, MessagesNameFileLineAndKey) {
+TEST(ConfigOptions, MessagesNameFileLineAndKey) {
   EXPECT_EQ(error_of("samples = 10\nsampels = 5\n"),
             "study.ini:2: unknown option 'sampels' (the keys are the long option names, without --)");
   EXPECT_EQ(error_of("\n\nsamples = many\n"), "study.ini:3: samples = 'many': not a value this option takes (see --help)");
@@ -63,7 +65,7 @@ TEST(ConfigFile, MessagesNameFileLineAndKey) {
   EXPECT_EQ(error_of("[study\n"), "study.ini:1: section line '[study' is not '[name]'");
 }
 
-TEST(ConfigFile, EchoesAreEscapedAndCut) {
+TEST(ConfigOptions, EchoesAreEscapedAndCut) {
   const std::string e = error_of("samples = \x1b[2J" + std::string(1000, '9') + "x\n");
   EXPECT_EQ(e, "study.ini:1: samples = '\\x1B[2J" + std::string(36, '9') +
                    "\u2026(1005 bytes)': not a value this option takes (see --help)");
@@ -71,10 +73,10 @@ TEST(ConfigFile, EchoesAreEscapedAndCut) {
   EXPECT_EQ(k, "study.ini:1: unknown option 'bad\\x01key' (the keys are the long option names, without --)");
 }
 
-TEST(ConfigFile, CapsOnLinesAndEntries) {
-  EXPECT_EQ(error_of("latitude = " + std::string(kMaxConfigLineBytes, '1') + "\n"),
+TEST(ConfigOptions, CapsOnLinesAndEntries) {
+  EXPECT_EQ(error_of("latitude = " + std::string(mc::kMaxConfigLineBytes, '1') + "\n"),
             fmt::format("study.ini:1: line of {} bytes: a --config line may hold at most {} bytes",
-                        kMaxConfigLineBytes + 11, kMaxConfigLineBytes));
+                        mc::kMaxConfigLineBytes + 11, mc::kMaxConfigLineBytes));
   std::string many;
   for (std::size_t i = 0; i <= kMaxConfigEntries; ++i) many += "bound = x\n";
   EXPECT_EQ(error_of(many), fmt::format("study.ini:{}: more than {} options: a --config file may hold at most {}",

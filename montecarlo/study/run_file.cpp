@@ -1,13 +1,12 @@
-#include "apps/run_file.h"
+#include "montecarlo/study/run_file.h"
 
-#include <algorithm>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 namespace {
 
 /// Reads settings.arguments with nlohmann's SAX interface: memory follows
@@ -61,7 +60,7 @@ class ArgumentsReader final : public nlohmann::json_sax<nlohmann::json> {
     return false;
   }
 
-  Args arguments;
+  std::vector<std::string> arguments;
   bool found = false;
   std::string problem;
 
@@ -106,31 +105,7 @@ class ArgumentsReader final : public nlohmann::json_sax<nlohmann::json> {
 
 }  // namespace
 
-Args explicit_arguments(const po::variables_map& vm, const po::options_description& options,
-                        const std::vector<std::string>& drop) {
-  Args out;
-  for (const auto& option : options.options()) {
-    const std::string& name = option->long_name();
-    if (!vm.count(name) || vm[name].defaulted() || std::find(drop.begin(), drop.end(), name) != drop.end()) continue;
-    const boost::any& v = vm[name].value();
-    if (const auto* s = boost::any_cast<std::string>(&v)) {
-      out.push_back(fmt::format("--{}={}", name, *s));
-    } else if (const auto* list = boost::any_cast<std::vector<std::string>>(&v)) {
-      for (const std::string& e : *list) out.push_back(fmt::format("--{}={}", name, e));
-    } else if (const auto* d = boost::any_cast<double>(&v)) {
-      out.push_back(fmt::format("--{}={}", name, *d));  // shortest exact round trip
-    } else if (const auto* i = boost::any_cast<int>(&v)) {
-      out.push_back(fmt::format("--{}={}", name, *i));
-    } else if (const auto* b = boost::any_cast<bool>(&v)) {
-      if (*b) out.push_back("--" + name);
-    } else {
-      throw std::logic_error("option --" + name + " has a type run.json cannot keep");
-    }
-  }
-  return out;
-}
-
-Args run_arguments_from_json(std::string_view text, std::string_view source) {
+std::vector<std::string> run_arguments_from_json(std::string_view text, std::string_view source) {
   const std::string where(source);
   ArgumentsReader reader;
   const bool parsed = nlohmann::json::sax_parse(text.begin(), text.end(), &reader);
@@ -141,8 +116,8 @@ Args run_arguments_from_json(std::string_view text, std::string_view source) {
   return std::move(reader.arguments);
 }
 
-Args read_run_arguments(const std::string& path) {
+std::vector<std::string> read_run_arguments(const std::string& path) {
   return run_arguments_from_json(read_file_capped(path, kMaxRunJsonBytes, "--from file"), path);
 }
 
-}  // namespace insmc::app
+}  // namespace insmc::mc

@@ -16,10 +16,9 @@
 #include <string_view>
 #include <vector>
 
-#include "apps/cli_common.h"
 #include "montecarlo/engine/block_ranges.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 
 inline constexpr std::uint32_t kCheckpointFormat = 2;  // 2: the arguments define the study only (no --out)
 
@@ -34,11 +33,11 @@ inline constexpr std::uint64_t kMaxCheckpointRanges = 1'000'000;
 
 struct Checkpoint {
   std::string version;            ///< the insmc that wrote it; --resume needs the same
-  Args args;                      ///< the run's arguments without --checkpoint and --resume
+  std::vector<std::string> args;  ///< the run's arguments without --checkpoint and --resume
   std::string settings;           ///< settings JSON of the run, threads 0 (for people)
   std::uint64_t fingerprint = 0;  ///< of the settings and the study's outputs (checked on resume)
   std::uint64_t samples = 0;
-  mc::BlockSet done;              ///< finished blocks
+  BlockSet done;                  ///< finished blocks
   std::string state;              ///< StudyAccumulator::serialize(), merged over `done`
 };
 
@@ -57,16 +56,4 @@ std::string read_checkpoint_file(const std::string& path);
 /// corruption, not tampering).
 std::uint64_t fnv1a64(std::string_view bytes);
 
-/// The options of a command line as (name, tokens) pairs: `options` plus the
-/// --help and --config that parse_args adds. Names are canonical (an
-/// abbreviation like --samp is reported as "samples").
-struct GivenOption {
-  std::string name;
-  Args tokens;  ///< as typed: {"--out", "DIR"} or {"--out=DIR"}
-};
-std::vector<GivenOption> given_options(const Args& args, const po::options_description& options);
-
-/// The tokens of `given` without the options named in `drop`.
-Args without_options(const std::vector<GivenOption>& given, const std::vector<std::string>& drop);
-
-}  // namespace insmc::app
+}  // namespace insmc::mc

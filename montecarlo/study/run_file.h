@@ -4,18 +4,13 @@
 /// command line or in a --config file, in canonical `--name=value` form,
 /// without the ones that choose where and how the results are shown), and
 /// `insmc run --from DIR/run.json` runs them again.
-#include <boost/program_options.hpp>
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "apps/subcommands.h"
-
-namespace insmc::app {
-
-namespace po = boost::program_options;
+namespace insmc::mc {
 
 /// Caps of the reader: run.json is the envelope and the settings, some
 /// hundred kilobytes; the arguments are a few dozen.
@@ -23,18 +18,12 @@ inline constexpr std::uint64_t kMaxRunJsonBytes = std::uint64_t{64} << 20;
 inline constexpr std::size_t kMaxRunArguments = 10'000;
 inline constexpr std::size_t kMaxRunArgumentBytes = 64 * 1024;
 
-/// The options of `options` that `vm` holds other than by default, each as
-/// `--name=value` (one per value of a repeatable option; a switch as
-/// `--name`), in the order of `options`, leaving out those named in `drop`.
-Args explicit_arguments(const po::variables_map& vm, const po::options_description& options,
-                        const std::vector<std::string>& drop);
-
 /// settings.arguments of a run.json text; throws InputError naming `source`
 /// when the text is not JSON, lacks the array, or an element is not a
 /// string starting with "--" (or breaks a cap).
-Args run_arguments_from_json(std::string_view text, std::string_view source);
+std::vector<std::string> run_arguments_from_json(std::string_view text, std::string_view source);
 
 /// The same from a file, read with the size cap.
-Args read_run_arguments(const std::string& path);
+std::vector<std::string> read_run_arguments(const std::string& path);
 
-}  // namespace insmc::app
+}  // namespace insmc::mc

@@ -1,13 +1,14 @@
-// run.json's settings.arguments (apps/run_file.h): each option type an insmc
-// option has comes back as the `--name=value` it was given as; a type the
-// file cannot keep is a programming error caught before the study runs.
+// The options run.json keeps in settings.arguments (explicit_arguments,
+// apps/option_sources.h): each option type an insmc option has comes back
+// as the `--name=value` it was given as; a type the file cannot keep is a
+// programming error caught before the study runs.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "apps/run_file.h"
+#include "apps/option_sources.h"
 
 namespace insmc::app {
 namespace {

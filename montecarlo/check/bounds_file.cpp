@@ -1,4 +1,4 @@
-#include "apps/bounds_file.h"
+#include "montecarlo/check/bounds_file.h"
 
 #include <fmt/format.h>
 
@@ -15,7 +15,7 @@
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 namespace {
 
 constexpr std::string_view kKeys = "scheme, system, axis, t_min, confidence";
@@ -29,8 +29,8 @@ constexpr std::array<std::pair<std::string_view, BoundMetric>, 4> kMetrics = {{{
 // The units a limit's key may carry (rms_ft): factor to metres.
 constexpr std::array<std::pair<std::string_view, double>, 3> kKeyUnits = {
     {{"m", 1.0}, {"ft", kFtToM}, {"nmi", kNmiToM}}};
-constexpr std::array<std::pair<std::string_view, mc::Axis>, 4> kAxes = {
-    {{"x", mc::Axis::kX}, {"y", mc::Axis::kY}, {"z", mc::Axis::kZ}, {"horizontal", mc::Axis::kHorizontal}}};
+constexpr std::array<std::pair<std::string_view, Axis>, 4> kAxes = {
+    {{"x", Axis::kX}, {"y", Axis::kY}, {"z", Axis::kZ}, {"horizontal", Axis::kHorizontal}}};
 
 /// The metric a limit token starts with (rms_m<=…, cep50<=…), if any.
 std::optional<std::pair<std::string_view, BoundMetric>> limit_metric(std::string_view text) {
@@ -42,7 +42,7 @@ std::optional<std::pair<std::string_view, BoundMetric>> limit_metric(std::string
 }
 
 /// The bounds file's name of an axis (kAxes).
-std::string_view axis_name(mc::Axis a) {
+std::string_view axis_name(Axis a) {
   for (const auto& [name, axis] : kAxes)
     if (axis == a) return name;
   return "?";
@@ -136,7 +136,7 @@ class BoundsParser {
     b.scheme = parse_scheme_token(kv.at("scheme"));
     b.system = parse_system_token(kv.at("system"));
     b.axis = parse_axis_token(kv.at("axis"));
-    if (b.metric != BoundMetric::kRms && b.axis != mc::Axis::kHorizontal)
+    if (b.metric != BoundMetric::kRms && b.axis != Axis::kHorizontal)
       fail(limit->column, fmt::format("limit {}: {} is a percentile of the horizontal radial error; it needs "
                                       "axis=horizontal, not axis={}",
                                       quote(limit->text), names_of(b.metric).key, axis_name(b.axis)));
@@ -170,15 +170,15 @@ class BoundsParser {
       } catch (const InputError& e) {
         fail(value.column, e.what());
       }
-      b.unit = value.text.ends_with("nmi") || value.text.ends_with("NM") ? mc::LengthUnit::kNauticalMile
-               : value.text.ends_with("ft")                              ? mc::LengthUnit::kFoot
-                                                                         : mc::LengthUnit::kMetre;
+      b.unit = value.text.ends_with("nmi") || value.text.ends_with("NM") ? LengthUnit::kNauticalMile
+               : value.text.ends_with("ft")                              ? LengthUnit::kFoot
+                                                                         : LengthUnit::kMetre;
     } else {
       const std::string_view unit = key.substr(metric_name.size() + 1);
       const auto u = std::find_if(kKeyUnits.begin(), kKeyUnits.end(), [&](const auto& k) { return k.first == unit; });
       if (u == kKeyUnits.end()) fail(t.column, fmt::format("limit {}: expected {}", quote(t.text), kLimitForms));
       x = number(value, key) * u->second;
-      b.unit = unit == "nmi" ? mc::LengthUnit::kNauticalMile : unit == "ft" ? mc::LengthUnit::kFoot : mc::LengthUnit::kMetre;
+      b.unit = unit == "nmi" ? LengthUnit::kNauticalMile : unit == "ft" ? LengthUnit::kFoot : LengthUnit::kMetre;
     }
     if (!(x >= 0) || !(x <= kPositionLimitRange.max_si))
       fail(value.column, fmt::format("{}: the limit must lie in [0, 40000 km] (the earth's circumference)", quote(t.text)));
@@ -209,7 +209,7 @@ class BoundsParser {
     fail(t.column, fmt::format("system = {}: must be 1 (theodolite) or 2 (gyrocompassing)", quote(t.text)));
   }
 
-  mc::Axis parse_axis_token(const Token& t) const {
+  Axis parse_axis_token(const Token& t) const {
     for (const auto& [name, axis] : kAxes)
       if (name == t.text) return axis;
     fail(t.column, fmt::format("axis = {}: must be x, y, z or horizontal", quote(t.text)));
@@ -239,4 +239,4 @@ std::vector<Bound> read_bounds_file(const std::string& path) {
   return parse_bounds_text(read_file_capped(path, kMaxBoundsFileBytes, "bounds file"), path);
 }
 
-}  // namespace insmc::app
+}  // namespace insmc::mc
