@@ -147,7 +147,7 @@ int run_import_imu(const Args& args) {
   nav.nav_duration_s = q("nav-duration", Dimension::kTime);
   nav.output_interval_s = q("interval", Dimension::kTime);
   nav.gyro_bias = parse_gyro_bias_mode((*vm)["gyro-bias"].as<std::string>(), "--gyro-bias");
-  if (auto e = validate(nav)) throw *e;
+  validate(nav);
   const RunsFrom runs_from = parse_runs_from((*vm)["runs-from"].as<std::string>());
   // What the record file can hold (lib/records/record.h): a run of at most
   // 48 h, a filter interval in [0.1 ms, 1 h].

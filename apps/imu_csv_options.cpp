@@ -60,7 +60,7 @@ ImuCsvOptions read_imu_csv_options(const po::variables_map& vm) {
     csv.time_column = vm["time-column"].as<std::string>();
     csv.time_unit_s = time_unit_s;
   }
-  if (auto e = validate(csv)) throw *e;
+  validate(csv);
   return csv;
 }
 

@@ -276,45 +276,40 @@ double parse_rate_hz(std::string_view text, std::string_view field) {
   return rate;
 }
 
-std::optional<InputError> validate(const ImuCsvOptions& o) {
+void validate(const ImuCsvOptions& o) {
   const bool timed = !o.time_column.empty();
   if (!timed && !(o.rate_hz > 0 && std::isfinite(o.rate_hz)))
-    return InputError("--rate", fmt::format("{}Hz", o.rate_hz),
-                      "give a finite sample rate > 0 (e.g. 100Hz), or a time column with --time-column");
+    throw InputError("--rate", fmt::format("{}Hz", o.rate_hz),
+                     "give a finite sample rate > 0 (e.g. 100Hz), or a time column with --time-column");
   if (!timed && !(o.rate_hz >= kMinImuRateHz && o.rate_hz <= kMaxImuRateHz))
-    return InputError("--rate", fmt::format("{}Hz", o.rate_hz),
+    throw InputError("--rate", fmt::format("{}Hz", o.rate_hz),
                       fmt::format("must lie in [{}Hz, {}kHz]", kMinImuRateHz, kMaxImuRateHz / 1e3));
   if (timed && o.rate_hz != 0.0)
-    return InputError("--rate", fmt::format("{}Hz", o.rate_hz),
+    throw InputError("--rate", fmt::format("{}Hz", o.rate_hz),
                       "give either --rate or --time-column, not both");
   if (!(o.time_unit_s >= 1e-9 && o.time_unit_s <= 86400.0))
-    return InputError("--time-unit", fmt::format("{}s", o.time_unit_s), "must lie in [1ns, 1 day]");
+    throw InputError("--time-unit", fmt::format("{}s", o.time_unit_s), "must lie in [1ns, 1 day]");
   std::set<std::string> seen;
-  const auto check = [&](const std::string& name, const char* option) -> std::optional<InputError> {
-    if (name.empty()) return InputError(option, "''", "column names must not be empty");
+  const auto check = [&](const std::string& name, const char* option) {
+    if (name.empty()) throw InputError(option, "''", "column names must not be empty");
     if (name.find(',') != std::string::npos || name.front() == '#')
-      return InputError(option, echo_input(name), "a column name cannot contain ',' or start with '#'");
+      throw InputError(option, echo_input(name), "a column name cannot contain ',' or start with '#'");
     // The reader trims the header's fields and the name goes into the
     // record header: blanks at its ends or control bytes could never match.
     if (is_blank(name.front()) || is_blank(name.back()))
-      return InputError(option, "'" + echo_input(name) + "'", "a column name cannot start or end with a blank");
+      throw InputError(option, "'" + echo_input(name) + "'", "a column name cannot start or end with a blank");
     for (const char ch : name)
       if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7F)
-        return InputError(option, echo_input(name), "a column name cannot contain control characters");
-    if (!seen.insert(name).second) return InputError(option, echo_input(name), "each column may be used once");
-    return std::nullopt;
+        throw InputError(option, echo_input(name), "a column name cannot contain control characters");
+    if (!seen.insert(name).second) throw InputError(option, echo_input(name), "each column may be used once");
   };
-  for (const auto& n : o.gyro_columns)
-    if (auto e = check(n, "--gyro-columns")) return e;
-  for (const auto& n : o.accel_columns)
-    if (auto e = check(n, "--accel-columns")) return e;
-  if (timed)
-    if (auto e = check(o.time_column, "--time-column")) return e;
-  return std::nullopt;
+  for (const auto& n : o.gyro_columns) check(n, "--gyro-columns");
+  for (const auto& n : o.accel_columns) check(n, "--accel-columns");
+  if (timed) check(o.time_column, "--time-column");
 }
 
 ImuSamples parse_imu_csv(std::string_view text, std::string_view source_name, const ImuCsvOptions& options) {
-  if (auto e = validate(options)) throw *e;
+  validate(options);
   return Parser(text, source_name, options).parse();
 }
 
@@ -335,7 +330,7 @@ std::optional<InputError> hole_problem(const ImuSamples& s) {
 }
 
 ImuSamples read_imu_csv(const std::filesystem::path& path, const ImuCsvOptions& options) {
-  if (auto e = validate(options)) throw *e;
+  validate(options);
   const std::string text = read_file_capped(path, kMaxImuFileBytes, "IMU file");
   if (text.size() >= 2 && static_cast<unsigned char>(text[0]) == 0x1f && static_cast<unsigned char>(text[1]) == 0x8b)
     throw InputError(fmt::format("{}: gzip-compressed; import-imu reads plain CSV: unpack it first "

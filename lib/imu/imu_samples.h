@@ -92,8 +92,8 @@ struct ImuCsvOptions {
 
 /// Checks every constraint on the options (one source of time, distinct
 /// non-empty column names, rate within its caps, positive time unit);
-/// nullopt if valid.
-std::optional<InputError> validate(const ImuCsvOptions& options);
+/// throws InputError otherwise.
+void validate(const ImuCsvOptions& options);
 
 /// The samples of one file, SI, times relative to the first sample.
 struct ImuSamples {

@@ -101,26 +101,25 @@ GyroBiasMode parse_gyro_bias_mode(std::string_view text, std::string_view field)
                    "must be remove (subtract the bias estimated during alignment) or keep");
 }
 
-std::optional<InputError> validate(const StrapdownOptions& o) {
+void validate(const StrapdownOptions& o) {
   const auto bad = [](const char* field, double v, const char* unit, const char* allowed) {
     return InputError(field, fmt::format("{}{}", v, unit), allowed);
   };
   if (!(std::abs(o.latitude_rad) < 0.5 * std::numbers::pi))
-    return bad("--latitude", o.latitude_rad / kDegToRad, "deg", "must lie strictly between -90deg and 90deg");
+    throw bad("--latitude", o.latitude_rad / kDegToRad, "deg", "must lie strictly between -90deg and 90deg");
   if (!(o.altitude_m >= -1e4 && o.altitude_m <= 1e5))
-    return bad("--altitude", o.altitude_m, "m", "must lie in [-10km, 100km]");
-  if (!std::isfinite(o.azimuth_rad)) return bad("--azimuth", o.azimuth_rad, "rad", "must be finite");
+    throw bad("--altitude", o.altitude_m, "m", "must lie in [-10km, 100km]");
+  if (!std::isfinite(o.azimuth_rad)) throw bad("--azimuth", o.azimuth_rad, "rad", "must be finite");
   if (!(o.align_duration_s > 0) || !std::isfinite(o.align_duration_s))
-    return bad("--align-duration", o.align_duration_s, "s", "must be finite and > 0");
+    throw bad("--align-duration", o.align_duration_s, "s", "must be finite and > 0");
   if (!(o.test_duration_s > 0) || !std::isfinite(o.test_duration_s))
-    return bad("--test-duration", o.test_duration_s, "s", "must be finite and > 0");
+    throw bad("--test-duration", o.test_duration_s, "s", "must be finite and > 0");
   if (!(o.nav_duration_s > 0) || !std::isfinite(o.nav_duration_s))
-    return bad("--nav-duration", o.nav_duration_s, "s", "must be finite and > 0");
+    throw bad("--nav-duration", o.nav_duration_s, "s", "must be finite and > 0");
   if (!(o.output_interval_s > 0) || !(o.output_interval_s <= o.test_duration_s))
-    return bad("--interval", o.output_interval_s, "s", "must be > 0 and no longer than the test run");
+    throw bad("--interval", o.output_interval_s, "s", "must be > 0 and no longer than the test run");
   if (!(o.earth_rate_radps > 0 && o.gravity_mps2 > 0 && o.radius_m > 0))
-    return bad("earth constants", o.radius_m, "m", "earth rate, g and r0 must be > 0");
-  return std::nullopt;
+    throw bad("earth constants", o.radius_m, "m", "earth rate, g and r0 must be > 0");
 }
 
 StationarySite stationary_site(const StrapdownOptions& o) {
@@ -190,7 +189,7 @@ int runs_available(const ImuSamples& s, const StrapdownOptions& o) {
 }
 
 StrapdownRun run_strapdown(const ImuSamples& s, double start_s, const StrapdownOptions& o) {
-  if (auto e = validate(o)) throw *e;
+  validate(o);
   INSMC_ASSERT(s.size() >= 2, "{} samples", s.size());
   const double T = o.test_duration_s, tau = o.output_interval_s, end = T + o.nav_duration_s;
   const std::size_t k_start = first_sample_at(s, start_s);

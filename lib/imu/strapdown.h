@@ -86,9 +86,9 @@ struct StrapdownOptions {
   double run_duration_s() const { return align_duration_s + test_duration_s + nav_duration_s; }
 };
 
-/// Checks every constraint above; nullopt if valid. Field names are the
+/// Checks every constraint above; throws InputError otherwise. Field names are the
 /// command-line options of `insmc import-imu`.
-std::optional<InputError> validate(const StrapdownOptions& options);
+void validate(const StrapdownOptions& options);
 
 /// The stationary site on the model earth, in the earth-fixed frame e (= i at
 /// t = 0) and the site's geographic frame n (north, east, down).

@@ -499,37 +499,32 @@ std::optional<InputError> truth_latitude_error(double latitude_rad, std::string 
   return InputError(std::move(field), fmt::format("{}deg", latitude_rad / kDegToRad), truth_latitude_limit_text());
 }
 
-std::optional<InputError> validate(const TruthOptions& o) {
+void validate(const TruthOptions& o) {
   const auto bad = [](std::string field, double v, std::string allowed) {
     return InputError(std::move(field), fmt::format("{}", v), std::move(allowed));
   };
   // Within a degree of a pole the truth level leaves the linear level:
   // measured (uncompensated, system 1, 84 min) 0.2 % apart at 89°, 0.5 % at
   // 89.5°, 15 % at 89.9°, diverging at 89.99° (docs/truth-vs-models.md).
-  if (auto err = truth_latitude_error(o.model.latitude_rad, "latitude")) return err;
+  if (auto err = truth_latitude_error(o.model.latitude_rad, "latitude")) throw *err;
   // Pulse weights up to 10 m/s, filter intervals from 1 ms and steps from
   // 10 ms: the output and step counts of a 48 h run stay bounded.
   if (!(o.dv_pulse_mps >= 0 && o.dv_pulse_mps <= magnitude_limit(Dimension::kVelocity)))
-    return bad("dv_pulse_mps", o.dv_pulse_mps, "must lie in [0, 10] m/s (0 = continuous)");
+    throw bad("dv_pulse_mps", o.dv_pulse_mps, "must lie in [0, 10] m/s (0 = continuous)");
   if (!(o.filter_interval_s >= 1e-3 && o.filter_interval_s <= magnitude_limit(Dimension::kTime)))
-    return bad("filter_interval_s", o.filter_interval_s, "must lie in [0.001, 172800] s");
-  if (!(o.step_s >= 0.01 && o.step_s <= 60)) return bad("step_s", o.step_s, "must lie in [0.01, 60] s");
+    throw bad("filter_interval_s", o.filter_interval_s, "must lie in [0.001, 172800] s");
+  if (!(o.step_s >= 0.01 && o.step_s <= 60)) throw bad("step_s", o.step_s, "must lie in [0.01, 60] s");
   if (!(o.noise_grid_s > 0) || !std::isfinite(o.noise_grid_s))
-    return bad("noise_grid_s", o.noise_grid_s, "must be > 0");
-  if (!std::isfinite(o.reset_at_s)) return bad("reset_at_s", o.reset_at_s, "must be finite (negative = no reset)");
+    throw bad("noise_grid_s", o.noise_grid_s, "must be > 0");
+  if (!std::isfinite(o.reset_at_s)) throw bad("reset_at_s", o.reset_at_s, "must be finite (negative = no reset)");
   const AccelCompensation& c = o.accel_compensation;
   if (!(c.start_s >= 0) || !std::isfinite(c.start_s) || !c.step_mps2.allFinite() || !c.ramp_mps3.allFinite())
-    return bad("accel_compensation.start_s", c.start_s, "must be >= 0 with a finite step and ramp");
+    throw bad("accel_compensation.start_s", c.start_s, "must be >= 0 with a finite step and ramp");
   for (int k = 0; k < 3; ++k)
     if (!(o.pulse_phase[k] >= -0.5 && o.pulse_phase[k] < 0.5))
-      return bad(fmt::format("pulse_phase[{}]", k), o.pulse_phase[k], "must be in [-0.5, 0.5)");
-  try {
-    if (o.alignment_loops) validate(*o.alignment_loops);
-    for (const EffectSpec& e : o.effects) validate_effect(e);
-  } catch (const InputError& e) {
-    return e;
-  }
-  return std::nullopt;
+      throw bad(fmt::format("pulse_phase[{}]", k), o.pulse_phase[k], "must be in [-0.5, 0.5)");
+  if (o.alignment_loops) validate(*o.alignment_loops);
+  for (const EffectSpec& e : o.effects) validate_effect(e);
 }
 
 std::vector<double> uniform_times(double end_s, double interval_s, bool include_zero) {
@@ -547,7 +542,11 @@ std::vector<double> uniform_times(double end_s, double interval_s, bool include_
 
 TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
                         const std::vector<double>& output_times_s, const NormalSource& noise) {
-  if (auto err = validate(o)) INSMC_ASSERT(false, "invalid TruthOptions: {}", err->what());
+  try {
+    validate(o);  // the callers' options are checked at the edge: a failure here is a bug
+  } catch (const InputError& e) {
+    INSMC_ASSERT(false, "invalid TruthOptions: {}", e.what());
+  }
   for (std::size_t k = 0; k < output_times_s.size(); ++k)
     INSMC_ASSERT(output_times_s[k] >= 0 && (k == 0 || output_times_s[k] >= output_times_s[k - 1]),
                  "output times must ascend from 0: {} at {}", output_times_s[k], k);

@@ -144,7 +144,6 @@ struct TruthOptions {
   double reset_at_s = -1.0;
 };
 
-/// Checks every constraint on the options (and each effect); nullopt if valid.
 /// The truth simulator's site latitude limit, |L0| <= 89 deg.
 inline constexpr double kMaxTruthLatitudeDeg = 89.0;
 /// What a latitude beyond it is told.
@@ -153,7 +152,9 @@ std::string truth_latitude_limit_text();
 /// (`field`: the command-line option or the record key); nullopt within.
 std::optional<InputError> truth_latitude_error(double latitude_rad, std::string field);
 
-std::optional<InputError> validate(const TruthOptions& options);
+/// Checks every constraint on the options (and each effect); throws
+/// InputError naming the field and what it allows.
+void validate(const TruthOptions& options);
 
 using PulseCount3 = Eigen::Matrix<std::int64_t, 3, 1>;
 

@@ -1,6 +1,8 @@
 #pragma once
 // The one-line message of the InputError that `read()` throws, or
-// "(accepted)" when it throws none: what the readers' tests compare.
+// "(accepted)" when it throws none: what the readers' tests compare; and
+// the InputError a check throws, if any.
+#include <optional>
 #include <string>
 
 #include "lib/common/input_error.h"
@@ -15,6 +17,17 @@ std::string input_error_of(Read&& read) {
     return e.what();
   }
   return "(accepted)";
+}
+
+/// The InputError that `check()` throws, if any (a validate() call).
+template <class Check>
+std::optional<InputError> thrown_by(Check&& check) {
+  try {
+    check();
+  } catch (const InputError& e) {
+    return e;
+  }
+  return std::nullopt;
 }
 
 }  // namespace insmc::test

@@ -85,8 +85,13 @@ std::optional<ImportNull> import_null_for(const RecordFile& file, std::vector<st
   nav.output_interval_s = *interval;
   const std::string* mode = header.find(import_keys::kGyroBias);
   nav.gyro_bias = mode && *mode == "keep" ? GyroBiasMode::kKeep : GyroBiasMode::kRemove;
-  if (const std::optional<InputError> e = validate(nav);
-      e || nav.run_duration_s() > kMaxRunDurationS + nav.align_duration_s) {
+  std::optional<InputError> e;
+  try {
+    validate(nav);
+  } catch (const InputError& problem) {
+    e = problem;
+  }
+  if (e || nav.run_duration_s() > kMaxRunDurationS + nav.align_duration_s) {
     statements.push_back(fmt::format("the null does not go through the import: its imu.* settings are not an "
                                      "import's ({})", e ? e->what() : "a run longer than 48 h"));
     return std::nullopt;

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "tests/unit/input_error_of.h"
 #include "lib/imu/imu_samples.h"
 
 namespace insmc {
@@ -87,15 +88,15 @@ TEST(ImuCaps, LongLinesAreRefusedAndValuesEscaped) {
 TEST(ImuCaps, ColumnNamesWithControlBytesOrBlanksAtTheEndsAreRefused) {
   ImuCsvOptions o = at(100);
   o.gyro_columns[0] = "gx ";
-  ASSERT_TRUE(validate(o).has_value());
-  EXPECT_NE(std::string(validate(o)->what()).find("cannot start or end with a blank"), std::string::npos)
-      << validate(o)->what();
+  ASSERT_TRUE(test::thrown_by([&] { validate(o); }).has_value());
+  EXPECT_NE(std::string(test::thrown_by([&] { validate(o); })->what()).find("cannot start or end with a blank"), std::string::npos)
+      << test::thrown_by([&] { validate(o); })->what();
   o.gyro_columns[0] = "g\x01x";
-  EXPECT_NE(std::string(validate(o)->what()).find("--gyro-columns = g\\x01x: a column name cannot contain control"),
+  EXPECT_NE(std::string(test::thrown_by([&] { validate(o); })->what()).find("--gyro-columns = g\\x01x: a column name cannot contain control"),
             std::string::npos)
-      << validate(o)->what();
+      << test::thrown_by([&] { validate(o); })->what();
   o.gyro_columns[0] = " gx";
-  EXPECT_TRUE(validate(o).has_value());
+  EXPECT_TRUE(test::thrown_by([&] { validate(o); }).has_value());
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Reading IMU CSV files: units, column order, time sources, the accepted
 // forms, and one case per kind of bad input (one-line message naming file,
 // line, column and field).
+#include "tests/unit/input_error_of.h"
 #include "lib/imu/imu_samples.h"
 
 #include <gtest/gtest.h>
@@ -102,15 +103,15 @@ TEST(ImuSamples, EachKindOfBadInputNamesFileLineColumnAndField) {
 
 TEST(ImuSamples, OptionsUnitsAndRatesAreChecked) {
   ImuCsvOptions o;
-  ASSERT_TRUE(validate(o).has_value());  // no rate and no time column
-  EXPECT_EQ(validate(o)->field(), "--rate");
+  ASSERT_TRUE(test::thrown_by([&] { validate(o); }).has_value());  // no rate and no time column
+  EXPECT_EQ(test::thrown_by([&] { validate(o); })->field(), "--rate");
   o.rate_hz = 100.0;
-  EXPECT_FALSE(validate(o).has_value());
+  EXPECT_FALSE(test::thrown_by([&] { validate(o); }).has_value());
   o.time_column = "t";
-  EXPECT_EQ(validate(o)->field(), "--rate");  // both given
+  EXPECT_EQ(test::thrown_by([&] { validate(o); })->field(), "--rate");  // both given
   o = adis_at(100.0);
   o.accel_columns[0] = "gyro_x_dps";
-  EXPECT_EQ(validate(o)->field(), "--accel-columns");
+  EXPECT_EQ(test::thrown_by([&] { validate(o); })->field(), "--accel-columns");
 
   EXPECT_DOUBLE_EQ(parse_rate_hz("100Hz", "--rate"), 100.0);
   EXPECT_DOUBLE_EQ(parse_rate_hz("0.2kHz", "--rate"), 200.0);

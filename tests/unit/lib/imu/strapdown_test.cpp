@@ -2,6 +2,7 @@
 // navigates without error; a horizontal accelerometer bias step gives the
 // Schuler response; a gyro drift gives the tilt-driven position error of a
 // hand derivation; alignment recovers tilt, heading and gyro bias.
+#include "tests/unit/input_error_of.h"
 #include "lib/imu/strapdown.h"
 
 #include <gtest/gtest.h>
@@ -228,17 +229,17 @@ TEST(ImuStrapdown, AlignmentRefusesWhatNoStationaryImuMeasures) {
 
 TEST(ImuStrapdown, OptionsAreValidated) {
   StrapdownOptions o;
-  EXPECT_FALSE(validate(o).has_value());
+  EXPECT_FALSE(test::thrown_by([&] { validate(o); }).has_value());
   o.output_interval_s = 0.0;
-  ASSERT_TRUE(validate(o).has_value());
-  EXPECT_EQ(validate(o)->field(), "--interval");
+  ASSERT_TRUE(test::thrown_by([&] { validate(o); }).has_value());
+  EXPECT_EQ(test::thrown_by([&] { validate(o); })->field(), "--interval");
   o = StrapdownOptions{};
   o.latitude_rad = 0.5 * std::numbers::pi;
-  ASSERT_TRUE(validate(o).has_value());
-  EXPECT_EQ(validate(o)->field(), "--latitude");
+  ASSERT_TRUE(test::thrown_by([&] { validate(o); }).has_value());
+  EXPECT_EQ(test::thrown_by([&] { validate(o); })->field(), "--latitude");
   o = StrapdownOptions{};
   o.nav_duration_s = -1.0;
-  EXPECT_EQ(validate(o)->field(), "--nav-duration");
+  EXPECT_EQ(test::thrown_by([&] { validate(o); })->field(), "--nav-duration");
   EXPECT_EQ(parse_gyro_bias_mode("keep", "--gyro-bias"), GyroBiasMode::kKeep);
   EXPECT_THROW(parse_gyro_bias_mode("drop", "--gyro-bias"), InputError);
 }

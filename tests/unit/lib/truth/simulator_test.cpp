@@ -8,6 +8,7 @@
 // and its even part ((r(x) + r(−x))/2, the products of uncertainties the
 // linear model drops by construction). The odd part must meet the bound for
 // every uncertainty; the even part is measured and attributed.
+#include "tests/unit/input_error_of.h"
 #include "lib/truth/simulator.h"
 
 #include <gtest/gtest.h>
@@ -508,17 +509,17 @@ TEST(TruthSimulator, IsDeterministic) {
 
 TEST(TruthSimulator, OptionsAreValidated) {
   TruthOptions o;
-  EXPECT_FALSE(validate(o).has_value());
+  EXPECT_FALSE(test::thrown_by([&] { validate(o); }).has_value());
   o.step_s = 0.0;
-  ASSERT_TRUE(validate(o).has_value());
-  EXPECT_EQ(validate(o)->field(), "step_s");
+  ASSERT_TRUE(test::thrown_by([&] { validate(o); }).has_value());
+  EXPECT_EQ(test::thrown_by([&] { validate(o); })->field(), "step_s");
   o = TruthOptions{};
   o.pulse_phase.x() = 0.5;
-  ASSERT_TRUE(validate(o).has_value());
+  ASSERT_TRUE(test::thrown_by([&] { validate(o); }).has_value());
   o = TruthOptions{};
   o.dv_pulse_mps = -1.0;
-  ASSERT_TRUE(validate(o).has_value());
-  EXPECT_EQ(validate(o)->field(), "dv_pulse_mps");
+  ASSERT_TRUE(test::thrown_by([&] { validate(o); }).has_value());
+  EXPECT_EQ(test::thrown_by([&] { validate(o); })->field(), "dv_pulse_mps");
 }
 
 TEST(TruthSimulator, CostOfOneRun) {
