@@ -25,10 +25,6 @@ namespace {
 /// flight line checks a few units at a time.
 constexpr std::size_t kMaxUnits = 100;
 constexpr std::size_t kMaxLimits = 20;
-/// Flight and limit times on the scheme's clock: the report's flights last
-/// 84 min; 12 h is longer than any preflight-compensated flight.
-constexpr double kMaxFlightTimeS = 12 * 3600.0;
-constexpr PhysicalRange kSiteGravity{9.7, 9.9};
 
 mc::PositionLimit parse_limit(const std::string& text) {
   const std::string allowed =
@@ -45,7 +41,7 @@ mc::PositionLimit parse_limit(const std::string& text) {
   else throw InputError("--limit", echo_input(text), allowed);
   l.t_s = parse_quantity(std::string_view(text).substr(at + 1, eq - at - 1), Dimension::kTime, "--limit");
   l.limit_m = parse_quantity(std::string_view(text).substr(eq + 1), Dimension::kLength, "--limit");
-  if (!(l.t_s > 0 && l.t_s <= kMaxFlightTimeS) || !kPositionLimitRange.contains(l.limit_m))
+  if (!(l.t_s > 0 && l.t_s <= mc::kMaxFlightTimeS) || !kPositionLimitRange.contains(l.limit_m))
     throw InputError("--limit", echo_input(text), allowed);
   return l;
 }
@@ -100,8 +96,6 @@ int run_compensate(const Args& args) {
   options.prior = read_uncertainty_model(*vm);
   options.schemes = parse_schemes((*vm)["scheme"].as<std::string>());
   options.flight_time_s = parse_quantity((*vm)["flight-time"].as<std::string>(), Dimension::kTime, "--flight-time");
-  if (!(options.flight_time_s > 0 && options.flight_time_s <= kMaxFlightTimeS))
-    throw InputError("--flight-time", (*vm)["flight-time"].as<std::string>(), "must lie in (0, 12h]");
   if (vm->count("limit")) {
     const auto texts = (*vm)["limit"].as<std::vector<std::string>>();
     if (texts.size() > kMaxLimits)
@@ -110,19 +104,13 @@ int run_compensate(const Args& args) {
   }
   options.units = read_length_unit(*vm);
   options.risk = (*vm)["risk"].as<double>();
-  if (!(options.risk > 0 && options.risk <= 0.5))
-    throw InputError("--risk", fmt::format("{}", options.risk), "must lie in (0, 0.5]");
   options.realignment_duration_s =
       parse_quantity((*vm)["realignment-duration"].as<std::string>(), Dimension::kTime, "--realignment-duration");
-  require_in_range("--realignment-duration", options.realignment_duration_s, Dimension::kTime,
-                   test_run_range::kRealignmentDuration);
   if (vm->count("run")) options.run = (*vm)["run"].as<long long>();
-  if (vm->count("site-gravity")) {
+  if (vm->count("site-gravity"))
     options.site_gravity_mps2 =
         parse_quantity((*vm)["site-gravity"].as<std::string>(), Dimension::kAcceleration, "--site-gravity");
-    require_in_range("--site-gravity", *options.site_gravity_mps2, Dimension::kAcceleration, kSiteGravity,
-                     "the specific force on the earth's surface: 9.78 to 9.84 m/s^2 at sea level, less at altitude");
-  }
+  mc::validate(options);
   std::optional<OutputFolderOption> out = prepare_figure_folder(
       *vm, "compensate", {"compensate.md", "estimates.csv", "compensation.csv", "envelope.csv", "compensate.json"},
       {"compensate"});

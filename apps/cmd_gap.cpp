@@ -42,31 +42,18 @@ int run_gap(const Args& args) {
   if (format == OutputFormat::kCsv) throw InputError("--format", "csv", "gap prints markdown or json");
   gap::DiagnosisOptions options;
   options.alpha = (*vm)["alpha"].as<double>();
-  if (!(options.alpha > 0 && options.alpha < 0.5))
-    throw InputError("--alpha", fmt::format("{}", options.alpha), "must lie in (0, 0.5)");
   options.seed = read_count(*vm, "seed");
   options.calibration_runs = (*vm)["calibration-runs"].as<int>();
-  if (options.calibration_runs < 0 || options.calibration_runs > 100000)
-    throw InputError("--calibration-runs", std::to_string(options.calibration_runs), "must lie in [0, 100000]");
-  if (options.calibration_runs > 0 && options.calibration_runs < 50)
-    throw InputError("--calibration-runs", std::to_string(options.calibration_runs), "use 0 (automatic) or >= 50");
   options.max_selected = (*vm)["max-effects"].as<int>();
-  if (options.max_selected < 1 || options.max_selected > 5)
-    throw InputError("--max-effects", std::to_string(options.max_selected), "must lie in [1, 5]");
   options.likelihood_candidates = (*vm)["likelihood"].as<int>();
-  if (options.likelihood_candidates < 0 || options.likelihood_candidates > 15)
-    throw InputError("--likelihood", std::to_string(options.likelihood_candidates), "must lie in [0, 15]");
   options.likelihood_pair_candidates = (*vm)["likelihood-pairs"].as<int>();
-  if (options.likelihood_pair_candidates < 0 || options.likelihood_pair_candidates > 5 ||
-      options.likelihood_pair_candidates > options.likelihood_candidates)
-    throw InputError("--likelihood-pairs", std::to_string(options.likelihood_pair_candidates),
-                     "must lie in [0, 5] and not exceed --likelihood");
   const std::string rank = (*vm)["rank"].as<std::string>();
   if (rank == "always") options.rank = gap::RankWhen::kAlways;
   else if (rank == "significant") options.rank = gap::RankWhen::kIfSignificant;
   else if (rank == "never") options.rank = gap::RankWhen::kNever;
   else throw InputError("--rank", echo_input(rank), "always, significant or never");
   options.prior = read_uncertainty_model(*vm);
+  gap::validate(options);
   std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "gap", gap::diagnosis_file_names(), gap::diagnosis_figure_stems());
 
   const std::vector<std::string> names = (*vm)["records"].as<std::vector<std::string>>();

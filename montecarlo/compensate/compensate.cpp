@@ -2,11 +2,28 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
 
 #include "lib/common/assert.h"
+#include "lib/common/input_error.h"
+#include "lib/preflight/test_run.h"
+#include "lib/units/physical_range.h"
+#include "lib/units/quantity.h"
 #include "montecarlo/compensate/exceedance.h"
 
 namespace insmc::mc {
+
+void validate(const CompensateOptions& options) {
+  if (!(options.flight_time_s > 0 && options.flight_time_s <= kMaxFlightTimeS))
+    throw InputError("--flight-time", format_quantity(options.flight_time_s, Dimension::kTime), "must lie in (0, 12h]");
+  if (!(options.risk > 0 && options.risk <= 0.5))
+    throw InputError("--risk", fmt::format("{}", options.risk), "must lie in (0, 0.5]");
+  require_in_range("--realignment-duration", options.realignment_duration_s, Dimension::kTime,
+                   test_run_range::kRealignmentDuration);
+  if (options.site_gravity_mps2)
+    require_in_range("--site-gravity", *options.site_gravity_mps2, Dimension::kAcceleration, PhysicalRange{9.7, 9.9},
+                     "the specific force on the earth's surface: 9.78 to 9.84 m/s^2 at sea level, less at altitude");
+}
 namespace {
 
 constexpr double kGridStepS = 180.0;
@@ -69,6 +86,7 @@ std::vector<double> envelope_times(const CompensateOptions& options) {
 }
 
 CompensateResult compensate(const RecordFile& file, const CompensateOptions& options) {
+  validate(options);
   INSMC_ASSERT(!options.schemes.empty(), "no scheme");
   CompensateResult out;
   out.records = read_unit_records(file, options.prior, options.run, options.site_gravity_mps2);

@@ -23,6 +23,10 @@ struct PositionLimit {
 };
 std::string_view to_string(PositionLimit::Component c);
 
+/// Flight and limit times on the scheme's clock: the report's flights last
+/// 84 min; 12 h is longer than any preflight-compensated flight.
+inline constexpr double kMaxFlightTimeS = 12 * 3600.0;
+
 struct CompensateOptions {
   UncertaintyModel prior;
   std::vector<Scheme> schemes;          ///< candidates, in registry order
@@ -34,6 +38,10 @@ struct CompensateOptions {
   std::optional<double> site_gravity_mps2;  ///< the site's specific force (read_unit_records)
   LengthUnit units = LengthUnit::kMetre;    ///< of the roll-up and the verdicts (SI inside)
 };
+
+/// Checks every setting's range; throws InputError naming the option of
+/// `insmc compensate` that sets it.
+void validate(const CompensateOptions& options);
 
 struct LimitCheck {
   PositionLimit limit;

@@ -51,6 +51,7 @@ void add_raw_stage(Diagnosis& d, const RecordFile& file) {
 }  // namespace
 
 Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
+  validate(given);
   DiagnosisOptions options = given;
   Diagnosis d;
   if (const auto raw = runs::raw_stage_from_header(file.header); raw && !options.candidates)

@@ -58,6 +58,10 @@ struct DiagnosisOptions : runs::RecordReading {
   std::shared_ptr<const std::vector<Candidate>> candidates;
 };
 
+/// Checks every setting's range; throws InputError naming the option of
+/// `insmc gap` that sets it.
+void validate(const DiagnosisOptions& options);
+
 /// options.candidates, or the registry's.
 inline const std::vector<Candidate>& candidates_of(const DiagnosisOptions& options) {
   return options.candidates ? *options.candidates : candidate_registry();

@@ -103,7 +103,22 @@ RecordFile foreign_layout_file(const std::vector<EffectSpec>& effects, std::uint
   return simulate_foreign_file(truth, mc::Sampler(UncertaintyModel{}), seed, spec, layout);
 }
 
+void validate(const ValidationOptions& options) {
+  if (options.null_files < 0 || options.null_files > 10000)
+    throw InputError("--null-files", std::to_string(options.null_files), "must lie in [0, 10000]");
+  if (options.seeds < 1 || options.seeds > 100) throw InputError("--seeds", std::to_string(options.seeds), "must lie in [1, 100]");
+  if (options.runs_per_file < 2 || options.runs_per_file > static_cast<int>(kMaxDiagnosedRuns))
+    throw InputError("runs per file", std::to_string(options.runs_per_file),
+                     fmt::format("must lie in [2, {}]", kMaxDiagnosedRuns));
+  for (const double m : options.magnitudes)
+    if (!(m > 0) || m > 1000)
+      throw InputError("--magnitudes", fmt::format("{}", fmt::join(options.magnitudes, ",")),
+                       "must be a comma list of factors in (0, 1000]");
+  for (const std::string& name : options.effects) parse_effect_kind(name, "--effect");
+}
+
 ValidationResult validate_diagnosis(const ValidationOptions& options) {
+  validate(options);
   ValidationResult result;
   DiagnosisOptions d;
   d.alpha = options.alpha;

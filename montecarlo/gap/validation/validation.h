@@ -35,6 +35,11 @@ struct ValidationOptions {
   static ValidationOptions quick_subset();
 };
 
+/// Checks every setting's range (the diagnosis' own by validate() of
+/// DiagnosisOptions); throws InputError naming the option of
+/// `insmc gap-validate` that sets it.
+void validate(const ValidationOptions& options);
+
 /// One blind diagnosis of one file.
 struct ValidationCase {
   std::string effect;      ///< "none" for null data

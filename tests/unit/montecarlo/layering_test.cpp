@@ -50,8 +50,8 @@ bool starts_with(const std::string& s, const std::string& prefix) { return s.rfi
 /// file outside every stage.
 int gap_stage(const std::string& path) {
   static const std::vector<std::string> kOrder = {
-      "montecarlo/gap/metric/",          "montecarlo/gap/candidates/",       "montecarlo/gap/diagnosis_options.h",
-      "montecarlo/gap/diagnosis_results.h", "montecarlo/gap/null/",         "montecarlo/gap/fit/",
+      "montecarlo/gap/metric/",          "montecarlo/gap/candidates/",       "montecarlo/gap/diagnosis_options.",
+      "montecarlo/gap/diagnosis_results.", "montecarlo/gap/null/",         "montecarlo/gap/fit/",
       "montecarlo/gap/where/",           "montecarlo/gap/ranking/",          "montecarlo/gap/diagnosis.h",
       "montecarlo/gap/diagnosis.cpp",    "montecarlo/gap/report/",           "montecarlo/gap/validation/"};
   for (std::size_t i = 0; i < kOrder.size(); ++i)
