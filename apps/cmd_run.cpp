@@ -165,7 +165,169 @@ mc::StudyProgress restore_progress(const mc::Checkpoint& ck, const std::string& 
   return p;
 }
 
-int run_command(const Args& args, Ranks& ranks) {
+/// The options a file kept (`kept`: a run.json's or a checkpoint's
+/// arguments), with those this command line gives (but `own`, the option
+/// naming the file) in place of theirs, as if typed again.
+Args with_given_options(const std::vector<GivenOption>& kept, const Args& args, const po::options_description& opts,
+                        const std::string& own) {
+  std::vector<std::string> overrides;
+  Args override_tokens;
+  for (const GivenOption& o : given_options(args, opts)) {
+    if (o.name == own) continue;
+    overrides.push_back(o.name);
+    override_tokens.insert(override_tokens.end(), o.tokens.begin(), o.tokens.end());
+  }
+  Args out = without_options(kept, overrides);
+  out.insert(out.end(), override_tokens.begin(), override_tokens.end());
+  return out;
+}
+
+/// --from: the arguments of DIR/run.json, with this command line's options
+/// in place of theirs.
+Args arguments_from_run_file(const Args& args, const po::options_description& opts, const std::string& from) {
+  std::vector<GivenOption> kept;
+  try {
+    kept = given_options(mc::read_run_arguments(from), opts);
+  } catch (const po::error& e) {
+    throw InputError("--from", echo_input(from), "settings.arguments: " + parse_error_message(e));
+  }
+  for (const GivenOption& o : kept)
+    if (const std::string why = refused_from(o.name, OptionSource::kRunFile); !why.empty())
+      throw InputError("--from", echo_input(from), fmt::format("settings.arguments holds --{}, which {}", o.name, why));
+  return with_given_options(kept, args, opts, "from");
+}
+
+/// --resume restores every setting: only --out, --format, ... may be given beside it.
+void refuse_options_beside_resume(const Args& args, const po::options_description& opts, const std::string& resume_path) {
+  for (const GivenOption& o : given_options(args, opts))
+    if (o.name != "resume" && std::find(kResumeOptions.begin(), kResumeOptions.end(), o.name) == kResumeOptions.end())
+      throw InputError("--resume", resume_path,
+                       fmt::format("the checkpoint restores every setting; --{} cannot be given with it (only "
+                                   "--out, --format, --quiet, --full, --threads, --checkpoint and "
+                                   "--checkpoint-every can)",
+                                   o.name));
+}
+
+/// --resume: the checkpoint's own arguments, with this command line's
+/// --out, --format, ... in place of theirs.
+Args arguments_from_checkpoint(const Args& args, const po::options_description& opts, const std::string& resume_path,
+                               const mc::Checkpoint& resumed) {
+  const std::vector<GivenOption> kept = given_options(resumed.args, opts);
+  for (const GivenOption& o : kept)
+    if (const std::string why = refused_from(o.name, OptionSource::kRunFile); !why.empty())
+      throw InputError("--resume", resume_path, fmt::format("the checkpoint holds --{}, which {}", o.name, why));
+  return with_given_options(kept, args, opts, "resume");
+}
+
+/// A sweep: each point's study split over the ranks, then sweep.csv,
+/// sweep.md, sweep.json and the figure, and the summary on stdout.
+int run_sweep_points(const po::variables_map& vm, const mc::StudyConfig& config, const std::vector<SweepAxis>& sweeps,
+                     const std::string& checkpoint_path, const mc::Json& settings, const StdoutChoice& shown,
+                     mc::LengthUnit unit, std::optional<OutputFolderOption>& out, Ranks& ranks) {
+  if (vm.count("replay")) throw InputError("--replay", vm["replay"].as<std::string>(), "cannot be combined with a sweep");
+  if (!checkpoint_path.empty())
+    throw InputError("--checkpoint", checkpoint_path,
+                     "cannot be combined with a sweep (checkpoint the points as separate runs)");
+  // Each point's blocks are split over the ranks (one rank without MPI).
+  const auto sweep_start = std::chrono::steady_clock::now();
+  std::uint64_t points_total = 1, points_done = 0;
+  for (const SweepAxis& a : sweeps) points_total *= a.texts.size();
+  std::optional<Progress> points_progress;
+  if (ranks.root()) {
+    points_progress.emplace(points_total, "points");
+    points_progress->update("sweep", 0, points_total, "points");
+  }
+  const mc::SweepFiles files =
+      mc::run_sweep(config, sweeps, unit, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
+        mc::RunPlan plan;
+        plan.result_everywhere = true;
+        mc::StudyAccumulator state =
+            run_study_blocks(c, m, ranks, mc::StudyProgress{{}, mc::StudyAccumulator(m)}, plan, false)
+                .progress.state;
+        // The sweep's own count (a point's samples have their own line while it runs).
+        if (points_progress) points_progress->update("sweep", ++points_done, points_total, "points");
+        return state;
+      });
+  points_progress.reset();
+  if (!ranks.root()) return 0;
+  mc::Json json = files.json;
+  json["settings"] = settings;
+  const std::string sweep_json = json.dump();
+  if (out) {
+    OutputFiles written{{"sweep.csv", files.sweep_csv}, {"sweep.md", files.summary_md}, {"sweep.json", sweep_json}};
+    for (auto& f : mc::figure_files("sweep", mc::render_panel_figure(files.plot))) written.push_back(std::move(f));
+    out->write(written);
+  }
+  if (shown.quiet) return 0;
+  if (shown.format != OutputFormat::kMarkdown) {
+    fmt::print("{}", shown.format == OutputFormat::kCsv ? files.sweep_csv : sweep_json);
+    return 0;
+  }
+  std::vector<std::string> swept;
+  std::size_t points = 1;
+  for (const SweepAxis& a : sweeps) {
+    swept.push_back(mc::quantity_name(a.column));
+    points *= a.texts.size();
+  }
+  fmt::print("insmc run: sweep of {} over {} points, {} samples each, seed {}, fidelity {}, {:.2f} s\n\n"
+             "Horizontal RMS position error [{}] ± half its {}% interval at each report time.\n\n{}",
+             fmt::join(swept, " × "), points, config.samples, config.seed, to_string(config.fidelity),
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count(),
+             mc::length_suffix(unit), mc::format_number(100 * config.confidence), files.summary_md);
+  if (out)
+    fmt::print("\nFiles written in {}: sweep.csv (every axis and time), sweep.md, sweep.json, sweep.gp, sweep.svg, "
+               "sweep.png\n", vm["out"].as<std::string>());
+  else
+    fmt::print("\nEvery axis and time: --format csv, or --out DIR for sweep.csv, sweep.md, sweep.json and the "
+               "figure\n");
+  return 0;
+}
+
+/// --replay's INDEX: a sample of the study.
+std::uint64_t replay_index(const std::string& text, std::uint64_t samples) {
+  std::uint64_t index = 0;
+  try {
+    std::size_t used = 0;
+    index = std::stoull(text, &used);
+    if (used != text.size()) throw std::invalid_argument(text);
+  } catch (const std::exception&) {
+    throw InputError("--replay", text, "must be a sample index, 0 <= INDEX < --samples");
+  }
+  if (index >= samples) throw InputError("--replay", text, fmt::format("must be below --samples = {}", samples));
+  return index;
+}
+
+/// run.json: the settings, the time, where a resumed run started, the
+/// ranks' shares and the envelope.
+mc::Json run_json_of(const mc::Json& settings, double elapsed_s, std::uint64_t resumed_from_sample,
+                     const mc::StudyConfig& config, const Ranks& ranks, const mc::RunOutcome& outcome,
+                     const mc::EnvelopeFiles& files) {
+  mc::Json run = mc::Json::object();
+  run["settings"] = settings;
+  run["elapsed_s"] = elapsed_s;
+  run["resumed_from_sample"] = resumed_from_sample;
+  if (ranks.distributed()) {
+    run["ranks"] = ranks.size();
+    mc::Json shares = mc::Json::array();  // per rank: its [first, end) sample ranges in this run
+    for (const mc::BlockSet& share : outcome.shares) {
+      mc::Json ranges = mc::Json::array();
+      for (const mc::BlockRange& r : share) {
+        mc::Json range = mc::Json::array();
+        range.push_back(std::min(config.samples, r.begin * mc::kBlockSize));
+        range.push_back(std::min(config.samples, r.end * mc::kBlockSize));
+        ranges.push_back(range);
+      }
+      shares.push_back(ranges);
+    }
+    run["rank_sample_ranges"] = shares;
+  }
+  run["envelope"] = files.envelope_json;
+  return run;
+}
+
+/// run's options: its outputs, --replay, checkpoints, --resume, --from,
+/// and the study's.
+po::options_description run_options() {
   po::options_description opts("Options");
   opts.add_options()("out", po::value<std::string>(), "folder for envelope.csv, envelope_grid.csv, envelope.md, "
                                                       "envelope.gp with the envelope.svg and envelope.png gnuplot "
@@ -185,6 +347,11 @@ int run_command(const Args& args, Ranks& ranks) {
       "elapsed_s aside); options given here replace the file's");
   add_stdout_switches(opts, "the RMS of every axis at every report time");
   opts.add(study_options_description(true));
+  return opts;
+}
+
+int run_command(const Args& args, Ranks& ranks) {
+  const po::options_description opts = run_options();
   const std::string synopsis = "[options]\n       insmc run --resume FILE [--out DIR] [--format F]";
   auto vm = parse_args(args, "run", synopsis, opts, Lists::kSweeps);
   if (!vm) return 0;
@@ -199,24 +366,7 @@ int run_command(const Args& args, Ranks& ranks) {
     const std::string from = (*vm)["from"].as<std::string>();
     if (vm->count("resume"))
       throw InputError("--from", echo_input(from), "cannot be given with --resume (a checkpoint restores its own run)");
-    std::vector<std::string> overrides;
-    Args override_tokens;
-    for (const GivenOption& o : given_options(args, opts)) {
-      if (o.name == "from") continue;
-      overrides.push_back(o.name);
-      override_tokens.insert(override_tokens.end(), o.tokens.begin(), o.tokens.end());
-    }
-    std::vector<GivenOption> kept;
-    try {
-      kept = given_options(mc::read_run_arguments(from), opts);
-    } catch (const po::error& e) {
-      throw InputError("--from", echo_input(from), "settings.arguments: " + parse_error_message(e));
-    }
-    for (const GivenOption& o : kept)
-      if (const std::string why = refused_from(o.name, OptionSource::kRunFile); !why.empty())
-        throw InputError("--from", echo_input(from), fmt::format("settings.arguments holds --{}, which {}", o.name, why));
-    run_args = without_options(kept, overrides);
-    run_args.insert(run_args.end(), override_tokens.begin(), override_tokens.end());
+    run_args = arguments_from_run_file(args, opts, from);
     vm = parse_args_again(run_args, opts);
   }
 
@@ -225,26 +375,9 @@ int run_command(const Args& args, Ranks& ranks) {
   std::optional<mc::Checkpoint> resumed;
   const std::string resume_path = vm->count("resume") ? (*vm)["resume"].as<std::string>() : "";
   if (vm->count("resume")) {
-    std::vector<std::string> overrides;
-    Args override_tokens;
-    for (const GivenOption& o : given_options(args, opts)) {
-      if (o.name == "resume") continue;
-      if (std::find(kResumeOptions.begin(), kResumeOptions.end(), o.name) == kResumeOptions.end())
-        throw InputError("--resume", resume_path,
-                         fmt::format("the checkpoint restores every setting; --{} cannot be given with it (only "
-                                     "--out, --format, --quiet, --full, --threads, --checkpoint and "
-                                     "--checkpoint-every can)",
-                                     o.name));
-      overrides.push_back(o.name);
-      override_tokens.insert(override_tokens.end(), o.tokens.begin(), o.tokens.end());
-    }
+    refuse_options_beside_resume(args, opts, resume_path);
     resumed = load_checkpoint(resume_path, ranks);
-    const std::vector<GivenOption> kept = given_options(resumed->args, opts);
-    for (const GivenOption& o : kept)
-      if (const std::string why = refused_from(o.name, OptionSource::kRunFile); !why.empty())
-        throw InputError("--resume", resume_path, fmt::format("the checkpoint holds --{}, which {}", o.name, why));
-    run_args = without_options(kept, overrides);
-    run_args.insert(run_args.end(), override_tokens.begin(), override_tokens.end());
+    run_args = arguments_from_checkpoint(args, opts, resume_path, *resumed);
     if (!vm->count("checkpoint")) run_args.insert(run_args.end(), {"--checkpoint", resume_path});
     vm = parse_args_again(run_args, opts);
   }
@@ -276,65 +409,7 @@ int run_command(const Args& args, Ranks& ranks) {
       if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path, inputs);
     });
   }
-  if (!sweeps.empty()) {
-    if (vm->count("replay")) throw InputError("--replay", (*vm)["replay"].as<std::string>(), "cannot be combined with a sweep");
-    if (!checkpoint_path.empty())
-      throw InputError("--checkpoint", checkpoint_path,
-                       "cannot be combined with a sweep (checkpoint the points as separate runs)");
-    // Each point's blocks are split over the ranks (one rank without MPI).
-    const auto sweep_start = std::chrono::steady_clock::now();
-    std::uint64_t points_total = 1, points_done = 0;
-    for (const SweepAxis& a : sweeps) points_total *= a.texts.size();
-    std::optional<Progress> points_progress;
-    if (ranks.root()) {
-      points_progress.emplace(points_total, "points");
-      points_progress->update("sweep", 0, points_total, "points");
-    }
-    const mc::SweepFiles files =
-        mc::run_sweep(config, sweeps, unit, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
-          mc::RunPlan plan;
-          plan.result_everywhere = true;
-          mc::StudyAccumulator state =
-              run_study_blocks(c, m, ranks, mc::StudyProgress{{}, mc::StudyAccumulator(m)}, plan, false)
-                  .progress.state;
-          // The sweep's own count (a point's samples have their own line while it runs).
-          if (points_progress) points_progress->update("sweep", ++points_done, points_total, "points");
-          return state;
-        });
-    points_progress.reset();
-    if (!ranks.root()) return 0;
-    mc::Json json = files.json;
-    json["settings"] = settings;
-    const std::string sweep_json = json.dump();
-    if (out) {
-      OutputFiles written{{"sweep.csv", files.sweep_csv}, {"sweep.md", files.summary_md}, {"sweep.json", sweep_json}};
-      for (auto& f : mc::figure_files("sweep", mc::render_panel_figure(files.plot))) written.push_back(std::move(f));
-      out->write(written);
-    }
-    if (shown.quiet) return 0;
-    if (shown.format != OutputFormat::kMarkdown) {
-      fmt::print("{}", shown.format == OutputFormat::kCsv ? files.sweep_csv : sweep_json);
-      return 0;
-    }
-    std::vector<std::string> swept;
-    std::size_t points = 1;
-    for (const SweepAxis& a : sweeps) {
-      swept.push_back(mc::quantity_name(a.column));
-      points *= a.texts.size();
-    }
-    fmt::print("insmc run: sweep of {} over {} points, {} samples each, seed {}, fidelity {}, {:.2f} s\n\n"
-               "Horizontal RMS position error [{}] ± half its {}% interval at each report time.\n\n{}",
-               fmt::join(swept, " × "), points, config.samples, config.seed, to_string(config.fidelity),
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count(),
-               mc::length_suffix(unit), mc::format_number(100 * config.confidence), files.summary_md);
-    if (out)
-      fmt::print("\nFiles written in {}: sweep.csv (every axis and time), sweep.md, sweep.json, sweep.gp, sweep.svg, "
-                 "sweep.png\n", (*vm)["out"].as<std::string>());
-    else
-      fmt::print("\nEvery axis and time: --format csv, or --out DIR for sweep.csv, sweep.md, sweep.json and the "
-                 "figure\n");
-    return 0;
-  }
+  if (!sweeps.empty()) return run_sweep_points(*vm, config, sweeps, checkpoint_path, settings, shown, unit, out, ranks);
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
 
@@ -342,16 +417,7 @@ int run_command(const Args& args, Ranks& ranks) {
     const std::string text = (*vm)["replay"].as<std::string>();
     if (!checkpoint_path.empty()) throw InputError("--checkpoint", checkpoint_path, "cannot be combined with --replay");
     if (shown.quiet) throw InputError("--replay", text, "prints one sample: cannot be combined with --quiet");
-    std::uint64_t index = 0;
-    try {
-      std::size_t used = 0;
-      index = std::stoull(text, &used);
-      if (used != text.size()) throw std::invalid_argument(text);
-    } catch (const std::exception&) {
-      throw InputError("--replay", text, "must be a sample index, 0 <= INDEX < --samples");
-    }
-    if (index >= config.samples)
-      throw InputError("--replay", text, fmt::format("must be below --samples = {}", config.samples));
+    const std::uint64_t index = replay_index(text, config.samples);
     return ranks.root() ? replay(config, layout, map, index) : 0;
   }
 
@@ -397,27 +463,7 @@ int run_command(const Args& args, Ranks& ranks) {
   const mc::StudyAccumulator& acc = outcome.progress.state;
 
   const mc::EnvelopeFiles files = mc::render_envelope(config, layout, map, acc, unit);
-  mc::Json run = mc::Json::object();
-  run["settings"] = settings;
-  run["elapsed_s"] = elapsed_s;
-  run["resumed_from_sample"] = resumed_from_sample;
-  if (ranks.distributed()) {
-    run["ranks"] = ranks.size();
-    mc::Json shares = mc::Json::array();  // per rank: its [first, end) sample ranges in this run
-    for (const mc::BlockSet& share : outcome.shares) {
-      mc::Json ranges = mc::Json::array();
-      for (const mc::BlockRange& r : share) {
-        mc::Json range = mc::Json::array();
-        range.push_back(std::min(config.samples, r.begin * mc::kBlockSize));
-        range.push_back(std::min(config.samples, r.end * mc::kBlockSize));
-        ranges.push_back(range);
-      }
-      shares.push_back(ranges);
-    }
-    run["rank_sample_ranges"] = shares;
-  }
-  run["envelope"] = files.envelope_json;
-  const std::string run_json = run.dump();
+  const std::string run_json = run_json_of(settings, elapsed_s, resumed_from_sample, config, ranks, outcome, files).dump();
 
   if (out) {
     OutputFiles written{{"envelope.csv", files.envelope_csv},
