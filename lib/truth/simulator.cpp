@@ -540,16 +540,26 @@ std::vector<double> uniform_times(double end_s, double interval_s, bool include_
   return t;
 }
 
-TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
-                        const std::vector<double>& output_times_s, const NormalSource& noise) {
+namespace {
+
+/// The callers' options are checked at the edge (validate()): a failure
+/// here is a bug, not an input error.
+void assert_valid(const TruthOptions& o, const std::vector<double>& output_times_s) {
   try {
-    validate(o);  // the callers' options are checked at the edge: a failure here is a bug
+    validate(o);
   } catch (const InputError& e) {
     INSMC_ASSERT(false, "invalid TruthOptions: {}", e.what());
   }
   for (std::size_t k = 0; k < output_times_s.size(); ++k)
     INSMC_ASSERT(output_times_s[k] >= 0 && (k == 0 || output_times_s[k] >= output_times_s[k - 1]),
                  "output times must ascend from 0: {} at {}", output_times_s[k], k);
+}
+
+}  // namespace
+
+TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
+                        const std::vector<double>& output_times_s, const NormalSource& noise) {
+  assert_valid(o, output_times_s);
   const ModelOptions& m = o.model;
   const double w_ie = m.earth_rate_radps, r0 = m.radius_m, L0 = m.latitude_rad;
   const double tau = o.filter_interval_s;

@@ -121,6 +121,38 @@ struct SummaryRow {
   std::vector<std::string> rms;  ///< per report time
   std::string accuracy, fitted;
 };
+/// A point's horizontal RMS at the last report time in the figure: one
+/// panel per scheme; one line per system and combination of the other swept
+/// quantities (every line of a product sweep).
+void add_to_plot(mc::PanelFigure& plot, const mc::OutputSpec& spec, int scheme_i, const std::vector<SweepAxis>& axes,
+                 const std::vector<std::size_t>& idx, const AxisInUserUnits& x_axis, const mc::OutputSummary& s,
+                 double k) {
+  if (plot.panels.size() <= static_cast<std::size_t>(scheme_i)) plot.panels.resize(static_cast<std::size_t>(scheme_i) + 1);
+  mc::PlotPanel& panel = plot.panels[static_cast<std::size_t>(scheme_i)];
+  panel.title = std::string(to_string(spec.scheme));
+  std::string name = fmt::format("system {}", system_number(spec.system));
+  std::size_t others = 0;
+  for (std::size_t i = 1; i < axes.size(); ++i) {
+    name += fmt::format(", {} {}", quantity_name(axes[i].column), axes[i].texts[idx[i]]);
+    others = others * axes[i].texts.size() + idx[i];
+  }
+  mc::PlotLine* line = nullptr;
+  for (mc::PlotLine& l : panel.lines)
+    if (l.name == name) line = &l;
+  if (!line) {
+    // A colour per system and combination of the other quantities;
+    // system 2 dashed as well (told apart in grey print).
+    const int system_i = spec.system == System::kGyrocompass ? 1 : 0;
+    panel.lines.push_back({name, {}, {}, {}, {}, {}, static_cast<int>(2 * others) + system_i, system_i == 1});
+    line = &panel.lines.back();
+  }
+  line->x.push_back(x_axis.x[idx[0]]);
+  line->y.push_back(k * s.rms);
+  line->lo.push_back(k * s.rms_lo);
+  line->hi.push_back(k * s.rms_hi);
+  line->marks.push_back({x_axis.x[idx[0]], k * s.rms, k * s.rms_lo, k * s.rms_hi});  // the studied points
+}
+
 }  // namespace
 
 void check_sweep_size(const std::vector<SweepAxis>& axes) {
@@ -247,32 +279,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
         for (SummaryRow& r : point_rows)
           if (r.scheme == row[swept_columns] && r.system == row[swept_columns + 1])
             r.accuracy = mc::readable_accuracy_cells(accuracy, unit).front();
-        // One panel per scheme; one line per system and combination of the
-        // other swept quantities (every line of a product sweep).
-        if (plot.panels.size() <= static_cast<std::size_t>(scheme_i)) plot.panels.resize(static_cast<std::size_t>(scheme_i) + 1);
-        mc::PlotPanel& panel = plot.panels[static_cast<std::size_t>(scheme_i)];
-        panel.title = std::string(to_string(spec.scheme));
-        std::string name = fmt::format("system {}", system_number(spec.system));
-        std::size_t others = 0;
-        for (std::size_t i = 1; i < axes.size(); ++i) {
-          name += fmt::format(", {} {}", quantity_name(axes[i].column), axes[i].texts[idx[i]]);
-          others = others * axes[i].texts.size() + idx[i];
-        }
-        mc::PlotLine* line = nullptr;
-        for (mc::PlotLine& l : panel.lines)
-          if (l.name == name) line = &l;
-        if (!line) {
-          // A colour per system and combination of the other quantities;
-          // system 2 dashed as well (told apart in grey print).
-          const int system_i = spec.system == System::kGyrocompass ? 1 : 0;
-          panel.lines.push_back({name, {}, {}, {}, {}, {}, static_cast<int>(2 * others) + system_i, system_i == 1});
-          line = &panel.lines.back();
-        }
-        line->x.push_back(x_axis.x[idx[0]]);
-        line->y.push_back(k * s.rms);
-        line->lo.push_back(k * s.rms_lo);
-        line->hi.push_back(k * s.rms_hi);
-        line->marks.push_back({x_axis.x[idx[0]], k * s.rms, k * s.rms_lo, k * s.rms_hi});  // the studied points
+        add_to_plot(plot, spec, scheme_i, axes, idx, x_axis, s, k);
       }
     }
     for (const SummaryRow& r : point_rows) {
