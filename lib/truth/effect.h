@@ -62,7 +62,8 @@ enum class EffectMagnitude {
 /// `import-imu` records measures of it).
 enum class RawSensor { kNone, kGyro, kAccelerometer };
 
-/// Which fitted raw noise term bounds a parameter (runs/records/raw_stage.h).
+/// Which fitted raw noise term bounds a parameter (the raw-sensor stage of
+/// import-imu records, docs/noise.md).
 enum class RawSensorLimit {
   kNone,
   kWhiteNoise1h,  ///< the white noise after 1 h (N·√3600 s) of the effect's sensor

@@ -56,7 +56,7 @@ double unit_diffusion(double tau) { return tau > 0 ? 2.0 / tau : 1.0 / 3600.0; }
 /// impulse through (3.24) on every later r row) and is a column (kBridgeModes
 /// of them per interval); the rest, qΔ(1/6 − Σ 1/(mπ)²) on average, is seen
 /// by the f rows and enters them as noise. Checked against truth runs with
-/// 150 s knots (tests/unit/montecarlo/gap/model): a velocity random walk, which r sees
+/// 150 s knots (tests/unit/montecarlo/runs/model): a velocity random walk, which r sees
 /// through one integration only, is the most demanding.
 constexpr int kBridgeModes = 1;
 double bridge_rest_share(int modes) {

@@ -1,4 +1,4 @@
-// The gap diagnosis' linear-Gaussian run model (montecarlo/gap/model): responses against
+// The linear-Gaussian run model (montecarlo/runs/model): responses against
 // closed forms and against the linear model's own columns, the analyser's
 // expected squares against draws from the model, the metric, the candidates
 // and the extraction of records other software may write.
