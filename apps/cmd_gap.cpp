@@ -28,7 +28,7 @@ int run_gap(const Args& args) {
       "max-effects", po::value<int>()->default_value(3), "effects added greedily at most, >= 1")(
       "likelihood", po::value<int>()->default_value(0),
       "also fit the best N candidates by maximum likelihood between physical limits, with profile intervals and "
-      "held-out log-likelihood gains, in [0, 15] (experimental: docs/gap.md section 4)")(
+      "held-out log-likelihood gains, in [0, 15] (experimental: docs/gap-method.md section 4)")(
       "likelihood-pairs", po::value<int>()->default_value(0),
       "of those, pair the best N and fit each pair jointly, in [0, 5]")(
       "rank", po::value<std::string>()->default_value("always"),

@@ -26,7 +26,7 @@ int run_gap_validate(const Args& args) {
       "magnitudes", po::value<std::string>(), "factors on the effects' defaults, comma list (default 1,3,10,30; quick 30)")(
       "layout", po::value<std::string>()->default_value("own"),
       "own (the records as insmc simulate writes them) or foreign (each file in another recorder's conventions: "
-      "f and r on grids of their own, runs of unequal length, no pulse-weight key; docs/gap-method.md §5)");
+      "f and r on grids of their own, runs of unequal length, no pulse-weight key; docs/gap-method.md section 5)");
   const auto vm = parse_args(args, "gap-validate", "[--quick] [--out DIR]", opts);
   if (!vm) return 0;
   gap::ValidationOptions options = vm->count("quick") ? gap::ValidationOptions::quick_subset() : gap::ValidationOptions{};

@@ -35,7 +35,7 @@ int run_simulate(const Args& args) {
       "layout", po::value<std::string>()->default_value("own"),
       "own, or foreign: the runs written as another recorder would (f every 5, 10 or 20 s and r every 10, 30 or "
       "60 s by the seed, a third of the runs stopping 60-80 min into the navigation, other run numbers and header "
-      "keys, no pulse-weight, filter-interval or resolution key, no truth keys; scheme none; docs/gap.md section 5)");
+      "keys, no pulse-weight, filter-interval or resolution key, no truth keys; scheme none; docs/gap-method.md section 5)");
   opts.add(model_options_description());
   opts.add(test_run_options_description());
   opts.add(uncertainty_options_description());

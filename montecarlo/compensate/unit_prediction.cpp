@@ -65,7 +65,7 @@ void count_f_remainders(runs::GaussianModel& model, const runs::Layout& layout, 
 
 /// The linear estimate's gain on the test rows and its error covariance,
 /// the rows' noise W taken with the model-error floor (the linear level's
-/// allowance against the truth, docs/gap.md): (I − GH) P (I − GH)ᵀ + G W Gᵀ.
+/// allowance against the truth, docs/gap-method.md): (I − GH) P (I − GH)ᵀ + G W Gᵀ.
 struct LinearGain {
   Eigen::MatrixXd G, error_covariance;
   Eigen::LLT<Eigen::MatrixXd> S;  ///< of the rows' covariance H P Hᵀ + W

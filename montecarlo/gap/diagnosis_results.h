@@ -1,5 +1,5 @@
 #pragma once
-/// What a diagnosis finds (`insmc gap`, docs/gap.md): the result of each
+/// What a diagnosis finds (`insmc gap`, docs/gap-method.md): the result of each
 /// stage, gathered in a Diagnosis. The stages fill these in; the report
 /// (report/) and the validation (validation/) read them.
 #include <limits>

@@ -1,5 +1,5 @@
 #pragma once
-/// Candidate effects of the gap diagnosis (docs/gap.md): each a named extension
+/// Candidate effects of the gap diagnosis (docs/gap-method.md): each a named extension
 /// of the linear-Gaussian run model (gaussian_model.h) with parameters on a
 /// grid. They are the diagnosis' own physics of each effect, written from
 /// the effect's definition (the accelerometer error a(t) or platform angle

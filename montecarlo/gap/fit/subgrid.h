@@ -7,7 +7,7 @@
 /// neighbours is fitted by a parabola in the parameter's logarithm (an
 /// added variance's share makes ln(observed / expected), and so G², close to
 /// quadratic in it) and the parameter moves to its vertex, which lies
-/// between the neighbours. docs/gap.md section 3.
+/// between the neighbours. docs/gap-method.md §3.
 #include <vector>
 
 #include "montecarlo/gap/fit/candidate_fit.h"

@@ -1,5 +1,5 @@
 #pragma once
-/// The gap metric (docs/gap.md): scale-free, one log ratio per group of what
+/// The gap metric (docs/gap-method.md): scale-free, one log ratio per group of what
 /// the data show to what the model predicts for them, and their RMS.
 ///
 /// Scatter groups g (layout.h: axis × stage × window), over the runs' terms i:

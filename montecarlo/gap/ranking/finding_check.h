@@ -8,7 +8,7 @@
 /// mean of the fits over the value simulated is the fit's bias, removed from
 /// the value and the 16–84 % range; the bias' own uncertainty (the files'
 /// spread over the square root of their number) widens the range.
-/// docs/gap.md section 3.
+/// docs/gap-method.md §3.
 #include "lib/records/record.h"
 #include "montecarlo/gap/diagnosis_options.h"
 #include "montecarlo/gap/diagnosis_results.h"

@@ -1,5 +1,5 @@
 #pragma once
-/// Where the gap lies (docs/gap.md): per group, shares by axis, stage and
+/// Where the gap lies (docs/gap-method.md): per group, shares by axis, stage and
 /// window; the post-test innovations on the error's time functions; the
 /// Allan deviation of the f residuals against the null's.
 #include <functional>

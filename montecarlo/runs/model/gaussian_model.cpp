@@ -63,7 +63,7 @@ GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>
   // The floor stays the base model's when a candidate widens the priors: the
   // null calibrates its share (κ, λ) for that floor, and a floor grown with
   // the candidate's priors would weight down the very r rows where the
-  // candidate's signature lies (docs/gap.md section 1).
+  // candidate's signature lies (docs/gap-method.md §1).
   m.noise_var = base.noise_var + counting->noise_var;
   m.actual_noise_var = base.actual_noise_var + counting->noise_var;
   m.mean = Eigen::VectorXd::Zero(n);

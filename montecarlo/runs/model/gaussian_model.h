@@ -1,6 +1,6 @@
 #pragma once
 /// The model of one run's observations as the diagnosis sees it: linear in
-/// its causes with known second moments (the linear level, docs/gap.md),
+/// its causes with known second moments (the linear level, docs/gap-method.md),
 ///   y = μ + H c + e,  c ~ (0, diag(prior_var)),  e ~ (0, diag(noise_var)),
 /// c = (x, effect coefficients): the first 33 columns are the uncertainties of
 /// Table 3.1 (priors overridable), further columns come from candidate

@@ -1,5 +1,5 @@
 #pragma once
-/// What the gap diagnosis (docs/gap.md) takes from a record file (docs/records.md):
+/// What the gap diagnosis (docs/gap-method.md) takes from a record file (docs/records.md):
 /// per run, the observations it compares with the model, in the order the
 /// model's rows are built (test rows first: they are what the fit sees), and
 /// the groups by which the gap is reported (axis × stage × time window).
