@@ -21,6 +21,7 @@
 #include "lib/imu/strapdown_records.h"
 #include "lib/noise/noise_analysis.h"
 #include "lib/noise/noise_budget.h"
+#include "lib/records/record_budget.h"
 #include "lib/records/record_io.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
@@ -159,6 +160,22 @@ int run_import_imu(const Args& args) {
     throw InputError("--interval", format_quantity(nav.output_interval_s, Dimension::kTime),
                      fmt::format("must lie in [{}s, {}s] (a record's filter interval)", kMinFilterIntervalS,
                                  kMaxFilterIntervalS));
+  // The rows of a run, a row every interval from t = 0 to T + the
+  // navigation (at most), before any input is read: a file insmc writes is
+  // one its readers take, within the budget (lib/records/record_budget.h).
+  const std::size_t inputs_given = (*vm)["input"].as<std::vector<std::string>>().size();
+  const auto check_rows = [&](std::size_t runs) {
+    const double run_s = nav.test_duration_s + nav.nav_duration_s;
+    const std::size_t per_run = static_cast<std::size_t>(std::floor(run_s / nav.output_interval_s)) + 2;
+    const double finest_s = run_s * static_cast<double>(runs) / static_cast<double>(kMaxWrittenRecordRows - 2 * runs);
+    check_written_rows("--interval", echo_input((*vm)["interval"].as<std::string>()), runs, per_run,
+                       fmt::format("{} of test run and navigation at {}", format_quantity(run_s, Dimension::kTime),
+                                   format_quantity(nav.output_interval_s, Dimension::kTime)),
+                       2 * runs < kMaxWrittenRecordRows
+                           ? fmt::format("the interval must be at least {}", format_quantity(finest_s, Dimension::kTime))
+                           : "import fewer runs");
+  };
+  check_rows(inputs_given);  // at least one run per input
   const OutputFileOption out_file("--out", (*vm)["out"].as<std::string>(), input_files(*vm));  // checked and locked before the work
 
   RecordFile file;
@@ -200,6 +217,7 @@ int run_import_imu(const Args& args) {
                      fmt::format("the inputs make {} runs: a record file for insmc gap holds at most {} (lengthen "
                                  "--nav-duration or --test-duration, or import fewer inputs)",
                                  total_runs, gap::kMaxDiagnosedRuns));
+  check_rows(total_runs);  // the runs the inputs make (split: several an input)
   if (noise_mode == "on") write_noise_header(all_samples, file.header);
 
   const double T = nav.test_duration_s;

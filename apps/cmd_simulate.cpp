@@ -3,6 +3,7 @@
 // named effects. Runs are deterministic per (seed, run).
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <fmt/format.h>
 
 #include "apps/cli_common.h"
@@ -10,6 +11,8 @@
 #include "apps/study_options.h"
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
+#include "lib/common/input_text.h"
+#include "lib/records/record_budget.h"
 #include "lib/records/record_io.h"
 #include "lib/compensation/truth_compensation.h"
 #include "lib/truth/simulator.h"
@@ -20,6 +23,45 @@
 #include "montecarlo/sampler/sampler.h"
 
 namespace insmc::app {
+namespace {
+
+bool needs_pulses(const TruthOptions& truth) {
+  return std::any_of(truth.effects.begin(), truth.effects.end(),
+                     [](const EffectSpec& e) { return e.kind.info().needs_pulses; });
+}
+
+/// The rows the file will hold, from the options alone (before any run is
+/// simulated), within what a writer may write (lib/records/record_budget.h).
+/// Own layout: a row every filter interval through the test run and the
+/// navigation; foreign: the union of its f and r lattices, at most.
+void check_simulated_rows(const po::variables_map& vm, int runs, const TestRunOptions& test, double nav_s,
+                          const std::optional<gap::ForeignLayout>& foreign) {
+  const double T = test.duration_s, tau = test.filter_interval_s;
+  const std::size_t per_run =
+      foreign ? static_cast<std::size_t>(std::floor((T + nav_s) / foreign->f_every_s) +
+                                         std::floor((T + nav_s) / foreign->r_every_s)) + 2
+              : uniform_times(T, tau, false).size() + uniform_times(nav_s, tau, false).size();
+  const std::string what =
+      fmt::format("{} of test run and {} of navigation {}", format_quantity(T, Dimension::kTime),
+                  format_quantity(nav_s, Dimension::kTime),
+                  foreign ? fmt::format("with f every {} and r every {}", format_quantity(foreign->f_every_s, Dimension::kTime),
+                                        format_quantity(foreign->r_every_s, Dimension::kTime))
+                          : fmt::format("at {}", format_quantity(tau, Dimension::kTime)));
+  if (per_run <= kMaxWrittenRecordRows) {
+    check_written_rows("--runs", std::to_string(runs), static_cast<std::size_t>(runs), per_run, what,
+                       fmt::format("at most {} runs fit", kMaxWrittenRecordRows / per_run));
+    return;
+  }
+  // One run alone is too long: the interval or the navigation must change.
+  if (foreign)
+    check_written_rows("--nav-duration", format_quantity(nav_s, Dimension::kTime), 1, per_run, what,
+                       "shorten the navigation");
+  const double shortest_s = (T + nav_s) / static_cast<double>(kMaxWrittenRecordRows - 2);
+  check_written_rows("--filter-interval", echo_input(vm["filter-interval"].as<std::string>()), 1, per_run, what, fmt::format("the filter interval must be at least {}",
+                                                   format_quantity(shortest_s, Dimension::kTime)));
+}
+
+}  // namespace
 
 int run_simulate(const Args& args) {
   po::options_description opts("Options");
@@ -69,17 +111,17 @@ int run_simulate(const Args& args) {
   const bool foreign = read_record_layout(*vm) == RecordLayout::kForeign;
   if (foreign && scheme != Scheme::kNone)
     throw InputError("--layout", "foreign", "writes the runs without a scheme; give --scheme none");
+  check_simulated_rows(*vm, runs, test, nav_s, foreign ? std::optional(gap::foreign_layout_of(seed, needs_pulses(truth)))
+                                                       : std::nullopt);
   const OutputFileOption out("--out", (*vm)["out"].as<std::string>(), input_files(*vm));  // checked and locked before the work
   if (foreign) {
-    const bool needs_pulses = std::any_of(truth.effects.begin(), truth.effects.end(),
-                                          [](const EffectSpec& e) { return e.kind.info().needs_pulses; });
     gap::ForeignRuns spec;
     spec.test_duration_s = test.duration_s;
     spec.nav_duration_s = nav_s;
     spec.position_resolution_m = test.position_resolution_m;
     spec.runs = runs;
     out.write(write_record_file(
-        gap::simulate_foreign_file(truth, mc::Sampler(uncertainties), seed, spec, gap::foreign_layout_of(seed, needs_pulses))));
+        gap::simulate_foreign_file(truth, mc::Sampler(uncertainties), seed, spec, gap::foreign_layout_of(seed, needs_pulses(truth)))));
     return 0;
   }
   // The scheme's estimators: the same resolvable terms as `insmc run` fits.

@@ -5,7 +5,7 @@
 
 namespace insmc::mc {
 namespace {
-constexpr std::string_view kMagic = "insmc-acc2";
+constexpr std::string_view kMagic = "insmc-acc3";  // 3: histograms by their filled bins
 }  // namespace
 
 std::string serialize_state(const std::vector<OutputStats>& outputs, const KeptSamples& kept) {

@@ -233,7 +233,7 @@ OutputSummary OutputStats::summarize(double confidence, bool gaussian) const {
 }
 
 void OutputStats::append_to(std::string& out) const {
-  using byte_io::put_f64, byte_io::put_u64;
+  using byte_io::put_f64, byte_io::put_u32, byte_io::put_u64;
   put_f64(out, shift_);
   put_f64(out, scale_);
   put_u64(out, n_);
@@ -243,11 +243,19 @@ void OutputStats::append_to(std::string& out) const {
   sum_r4_.append_to(out);
   put_f64(out, min_);
   put_f64(out, max_);
-  if (hist_.empty()) {
-    for (int i = 0; i <= AbsHistogramLayout::kBins; ++i) put_u64(out, 0);
-  } else {
-    for (std::uint64_t c : hist_) put_u64(out, c);
-  }
+  // The histogram's filled bins only, (u32 bin, u64 count) in increasing
+  // bin order after their u32 number: the state follows the samples it
+  // holds (a 2-sample study's checkpoint is a few hundred KB, not the
+  // 33 KB × outputs of every bin written), and a full histogram costs at
+  // most 1.5 times its dense size.
+  std::uint32_t filled = 0;
+  for (std::uint64_t c : hist_) filled += c != 0;
+  put_u32(out, filled);
+  for (std::size_t i = 0; i < hist_.size(); ++i)
+    if (hist_[i] != 0) {
+      put_u32(out, static_cast<std::uint32_t>(i));
+      put_u64(out, hist_[i]);
+    }
 }
 
 OutputStats OutputStats::read_from(std::string_view bytes, std::size_t& pos) {
@@ -263,8 +271,20 @@ OutputStats OutputStats::read_from(std::string_view bytes, std::size_t& pos) {
   byte_io::Reader tail(bytes, "OutputStats", pos);
   s.min_ = tail.f64();
   s.max_ = tail.f64();
-  s.hist_.assign(AbsHistogramLayout::kBins + 1, 0);
-  for (auto& c : s.hist_) c = tail.u64();
+  const std::uint32_t filled = tail.u32();
+  if (filled > kOverflowBin + 1) tail.fail("more filled histogram bins than bins");
+  // Allocated as add_block does, with the first value: an output without
+  // any stays empty (all zeros).
+  if (s.n_ > 0 || filled > 0) s.hist_.assign(AbsHistogramLayout::kBins + 1, 0);
+  std::int64_t previous = -1;
+  for (std::uint32_t k = 0; k < filled; ++k) {
+    const std::uint32_t bin = tail.u32();
+    if (bin > kOverflowBin || static_cast<std::int64_t>(bin) <= previous) tail.fail("histogram bins out of order");
+    const std::uint64_t count = tail.u64();
+    if (count == 0) tail.fail("an empty histogram bin listed as filled");
+    s.hist_[bin] = count;
+    previous = bin;
+  }
   pos = tail.position();
   return s;
 }

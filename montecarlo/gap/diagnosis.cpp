@@ -82,6 +82,10 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   std::vector<int> null_layout;
   const int ncal = options.calibration_runs > 0 ? options.calibration_runs : std::max(200, 10 * n);
   d.calibration_runs = ncal;
+  {
+    std::vector<std::string> unused;  // the statements are made below, when the null through the import is built
+    check_null_budget(p, ncal, options.calibration_runs == 0, import_null_for(records.file, unused) ? 2 : 1);
+  }
   const ModelNull null = calibrate(p, records.file, options, ncal, null_z, null_layout);
   std::vector<std::optional<runs::RunAnalyser>> analysers;
   const EvaluatedRuns base = evaluate_under(p, [](int) { return std::vector<const runs::Extension*>{}; }, analysers);

@@ -22,9 +22,11 @@ namespace insmc::mc {
 
 inline constexpr std::uint32_t kCheckpointFormat = 2;  // 2: the arguments define the study only (no --out)
 
-/// Caps of the reader. The state is one histogram and a few sums per output
-/// (~33 KB each): a run with the time grid (49 times × 7 schemes × 2
-/// systems × 4 axes) holds ~90 MB; 1 GiB leaves ten times that. A command
+/// Caps of the reader. The state is a few sums and the filled bins of one
+/// histogram per output (montecarlo/aggregate/output_stats.h: 12 bytes a
+/// filled bin, at most 4097 bins, ~49 KB): a run with the time grid (49
+/// times × 7 schemes × 2 systems × 4 axes) holds at most ~135 MB, a
+/// 2-sample run a few hundred KB; 1 GiB leaves seven times the most. A command
 /// line has tens of arguments; a run's finished blocks merge into a few
 /// ranges (one per rank and interruption).
 inline constexpr std::uint64_t kMaxCheckpointFileBytes = std::uint64_t{1} << 30;

@@ -37,8 +37,7 @@ NullCalibration NullCalibration::from_null(const RunSet& null) {
   for (int c = 0; c < runs::kCoherentCount; ++c) {
     // The mean inner product of two different null runs, over the floor one
     // run contributes: the share of the floor that all runs have in common.
-    const Eigen::MatrixXd& g = null.gram[static_cast<std::size_t>(c)];
-    const double pairs = n > 1 ? (g.sum() - g.trace()) / (n * (n - 1)) : 0.0;
+    const double pairs = n > 1 ? null.distinct_pair_sum(c) / (n * (n - 1)) : 0.0;
     const double floor = over_members(c, [&](int k) { return s.floor[k]; }) / std::max(n, 1.0);
     cal.systematic[static_cast<std::size_t>(c)] = floor > 1e-9 ? std::max(0.0, pairs / floor) : 0.0;
   }

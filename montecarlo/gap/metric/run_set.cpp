@@ -16,10 +16,37 @@ RunSet make_run_set(std::vector<runs::GroupSums> sums, const Eigen::MatrixXd& ke
   std::array<std::vector<Eigen::Index>, runs::kCoherentCount> members;
   for (int k = 0; k < keys.size(); ++k) members[static_cast<std::size_t>(keys.coherent_group(k))].push_back(k);
   for (int c = 0; c < runs::kCoherentCount; ++c) {
-    const Eigen::MatrixXd z = keyed(members[static_cast<std::size_t>(c)], Eigen::all);
-    set.gram[static_cast<std::size_t>(c)] = z.transpose() * z;
+    Eigen::MatrixXd z = keyed(members[static_cast<std::size_t>(c)], Eigen::all);
+    if (set.size() <= kMaxGramRuns)
+      set.gram[static_cast<std::size_t>(c)] = z.transpose() * z;
+    else
+      set.values[static_cast<std::size_t>(c)] = std::move(z);
   }
   return set;
+}
+
+double RunSet::pair_sum(int c, std::span<const int> runs) const {
+  const Eigen::MatrixXd& g = gram[static_cast<std::size_t>(c)];
+  double sum = 0.0;
+  if (size() <= kMaxGramRuns) {
+    for (int a : runs)
+      for (int b : runs) sum += g(a, b);
+    return sum;
+  }
+  const Eigen::MatrixXd& z = values[static_cast<std::size_t>(c)];
+  Eigen::VectorXd total = Eigen::VectorXd::Zero(z.rows());
+  for (int a : runs) total += z.col(a);
+  return total.squaredNorm();
+}
+
+double RunSet::distinct_pair_sum(int c) const {
+  if (size() <= kMaxGramRuns) {
+    const Eigen::MatrixXd& g = gram[static_cast<std::size_t>(c)];
+    return g.sum() - g.trace();
+  }
+  // |Σ z|² − Σ |z_a|²: the pairs of one run with itself taken off.
+  const Eigen::MatrixXd& z = values[static_cast<std::size_t>(c)];
+  return z.rowwise().sum().squaredNorm() - z.colwise().squaredNorm().sum();
 }
 
 Pooled pool(const RunSet& set, std::span<const int> runs) {
@@ -27,13 +54,8 @@ Pooled pool(const RunSet& set, std::span<const int> runs) {
   p.runs = static_cast<int>(runs.size());
   for (int r : runs) p.power += set.sums[static_cast<std::size_t>(r)];
   if (runs.empty()) return p;
-  for (int c = 0; c < runs::kCoherentCount; ++c) {
-    const Eigen::MatrixXd& g = set.gram[static_cast<std::size_t>(c)];
-    double sum = 0.0;
-    for (int a : runs)
-      for (int b : runs) sum += g(a, b);
-    p.coherent[static_cast<std::size_t>(c)] = sum / static_cast<double>(runs.size());
-  }
+  for (int c = 0; c < runs::kCoherentCount; ++c)
+    p.coherent[static_cast<std::size_t>(c)] = set.pair_sum(c, runs) / static_cast<double>(runs.size());
   return p;
 }
 

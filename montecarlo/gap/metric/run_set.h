@@ -19,10 +19,23 @@ namespace insmc::gap {
 
 using CoherentValues = std::array<double, runs::kCoherentCount>;
 
+/// Up to this many runs a set keeps every pair's inner products (13 ×
+/// runs² doubles: 6.8 MB at 256), which pools a multiset of m runs in m²
+/// look-ups; a larger set (a null calibration of thousands of runs) keeps
+/// the runs' keyed values instead and pools by adding their columns, so its
+/// memory and the time to build it grow with the runs, not their square.
+inline constexpr int kMaxGramRuns = 256;
+
 struct RunSet {
   std::vector<runs::GroupSums> sums;                       ///< per run
-  std::array<Eigen::MatrixXd, runs::kCoherentCount> gram;  ///< runs × runs per coherent group
+  std::array<Eigen::MatrixXd, runs::kCoherentCount> gram;  ///< runs × runs per coherent group (≤ kMaxGramRuns runs)
+  std::array<Eigen::MatrixXd, runs::kCoherentCount> values;  ///< the group's keys × runs (more runs)
   int size() const { return static_cast<int>(sums.size()); }
+  /// Σ over ordered pairs (a, b) of `runs` (a multiset) of the inner
+  /// products over coherent group c: |Σ_a z_a|².
+  double pair_sum(int c, std::span<const int> runs) const;
+  /// The same over every pair of different runs of the set (a ≠ b).
+  double distinct_pair_sum(int c) const;
 };
 
 /// The set of runs whose keyed values are the columns of `keyed` (keys × runs).

@@ -3,9 +3,11 @@
 #include <tbb/parallel_for.h>
 
 #include <atomic>
+#include <fmt/format.h>
 #include <optional>
 
 #include "lib/common/assert.h"
+#include "lib/common/input_error.h"
 #include "montecarlo/gap/null/bootstrap.h"
 #include "montecarlo/runs/simulation/record_simulation.h"
 #include "montecarlo/runs/prepared_runs.h"
@@ -54,6 +56,23 @@ std::vector<runs::RunData> simulate_like_records(runs::PreparedRuns& p, const Re
     if (p.site.estimators) take_off_estimates(sim[j], p.bases[static_cast<std::size_t>(layout_of[j])], estimates[j]);
   }
   return sim;
+}
+
+void check_null_budget(const runs::PreparedRuns& p, int runs, bool automatic, int nulls) {
+  if (p.runs.empty()) return;
+  double observations = 0;
+  for (const runs::RunData& r : p.runs) observations += static_cast<double>(r.values.size());
+  const double per_run = nulls * observations / static_cast<double>(p.runs.size());
+  const double bytes = static_cast<double>(runs) * per_run * kNullBytesPerObservation;
+  if (bytes <= kMaxNullBytes) return;
+  const auto fits = static_cast<long long>(kMaxNullBytes / (per_run * kNullBytesPerObservation));
+  throw InputError("--calibration-runs", automatic ? fmt::format("0 (automatic: {})", runs) : std::to_string(runs),
+                   fmt::format("{} null runs like the records' ({:.0f} observations a run{}) hold about {:.0f} MB until "
+                               "the ranking; at most {:.0f} MB: at most {} calibration runs for these records{}",
+                               runs, per_run / nulls, nulls > 1 ? ", twice: the model's null and the import's" : "",
+                               bytes / 1e6, kMaxNullBytes / 1e6, fits,
+                               fits < 50 ? " (fewer than the 50 a calibration needs: diagnose fewer or shorter runs)"
+                                         : ""));
 }
 
 ModelNull calibrate(runs::PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,

@@ -39,6 +39,23 @@ std::vector<runs::RunData> simulate_like_records(runs::PreparedRuns& p, const Re
                                                 int runs, std::uint64_t first_run, const std::vector<EffectSpec>& effects,
                                                 std::vector<int>& layout_of, const ImportNull* import = nullptr);
 
+/// What the null calibration may hold: its runs keep their observations
+/// (each run's values, the layout it is placed in, its keyed and analysed
+/// values: measured about kNullBytesPerObservation bytes an observation) until
+/// the candidates are ranked, so `runs` null runs like the records' take
+/// runs × (the records' mean observations a run) of them. 1 GB of them
+/// bounds the calibration (docs/robustness.md, "Work budgets"); the time
+/// to simulate them grows as they do.
+inline constexpr double kNullBytesPerObservation = 400.0;
+inline constexpr double kMaxNullBytes = 0.8e9;
+
+/// Throws InputError naming --calibration-runs (`automatic`: the default
+/// max(200, 10 × runs)) when `nulls` calibrations (2 when the null through
+/// the import is held beside the model's) of `runs` null runs like p's runs
+/// exceed the budget above, with the largest count that fits; before any
+/// null run is simulated.
+void check_null_budget(const runs::PreparedRuns& p, int runs, bool automatic, int nulls);
+
 /// The model's own null: truth runs like the records' (their times, f rows,
 /// site, pulses), their run set under the base model, the calibration, and
 /// the G of 2000 bootstrap files of the records' size. `z` and `layout_of`

@@ -19,6 +19,20 @@ std::string fmt_params(const std::vector<ParameterEstimate>& ps) {
   return s;
 }
 
+/// A greedy step must close at least this share of the held-out gap left
+/// above the null's critical G (docs/gap-method.md, "Greedy shrink"): a
+/// candidate that closes less describes a sliver of data that the model and
+/// the candidates do not describe, and each step adds its columns to every
+/// model the next ranking fits.
+constexpr double kMinShareClosed = 0.1;
+
+/// The share of what is left (before − the critical G) that a step to
+/// `after` closes; 1 when nothing is left above the critical G.
+double share_closed(double before, double after, double critical) {
+  const double left = before - critical;
+  return left > 0 ? (before - after) / left : 1.0;
+}
+
 }  // namespace
 
 void rank_and_select(Diagnosis& d, const runs::PreparedRuns& p, const ModelNull& null, const DiagnosisOptions& options) {
@@ -35,6 +49,13 @@ void rank_and_select(Diagnosis& d, const runs::PreparedRuns& p, const ModelNull&
     const Scored& best = ranked.front();
     const Candidate& c = registry[static_cast<std::size_t>(best.candidate)];
     if (step > 0 && best.heldout_gap >= before) break;  // nothing left that helps on held-out runs
+    const double closed = share_closed(before, best.heldout_gap, d.model_null_gap_critical());
+    if (step > 0 && closed < kMinShareClosed) {
+      d.statements.push_back(fmt::format("the next candidate, {}, closes {:.0f} % of the held-out gap left above the "
+                                         "null's critical value (less than {:.0f} %): the greedy search stops after {} "
+                                         "effect(s)", c.name, 100 * closed, 100 * kMinShareClosed, step));
+      break;
+    }
     const double left = signed_gap(log_ratios(pool(best.heldout, all_runs(p.runs.size())),
                                                         null.calibration, CoherentReference::kAtLeastModelScatter))
                             .unmodelled;
@@ -49,6 +70,13 @@ void rank_and_select(Diagnosis& d, const runs::PreparedRuns& p, const ModelNull&
     }
     before = best.heldout_gap;
     if (g.p_value >= options.alpha) break;  // no significant gap remains
+    if (closed < kMinShareClosed) {  // the first effect: kept (the ranking's top), but no further step
+      d.statements.push_back(fmt::format("the top candidate closes {:.0f} % of the held-out gap above the null's "
+                                         "critical value (less than {:.0f} %): the data lie far outside what the "
+                                         "candidates describe, and the greedy search stops after it",
+                                         100 * closed, 100 * kMinShareClosed));
+      break;
+    }
     if (step + 1 == options.max_selected)
       d.statements.push_back(fmt::format("a significant gap remains after {} effects ({}); the greedy search stops "
                                          "there", step + 1, fmt_params(best.parameters)));

@@ -153,6 +153,28 @@ TEST(OutputStatsSerialize, RoundTripIsBitExact) {
   EXPECT_EQ(bytes_of(back), empty);
 }
 
+TEST(OutputStatsSerialize, SizeFollowsTheFilledBins) {
+  // Header, four exact sums, min and max, then 4 bytes + 12 per filled bin:
+  // two values, two bins; an empty output none.
+  const std::size_t empty = bytes_of(OutputStats(0.0, 1.0)).size();
+  EXPECT_EQ(bytes_of(one_pass({1.0, -2.0}, 0.0, 1.0)).size(), empty + 2 * 12);
+  EXPECT_LT(empty, 1000u);
+  // Never more than 1.5 times the dense histogram's 4097 × 8 bytes.
+  const std::size_t full = bytes_of(one_pass(normal_values(5, 200000, 0.0, 3.0), 0.0, 0.01)).size();
+  EXPECT_LT(full, empty + (AbsHistogramLayout::kBins + 1) * 12 + 1);
+}
+
+TEST(OutputStatsSerialize, BinsOutOfOrderThrow) {
+  std::string bytes = bytes_of(one_pass({1.0, -2.0}, 0.0, 1.0));
+  // Swap the two (u32 bin, u64 count) entries at the end.
+  const std::size_t second = bytes.size() - 12, first = second - 12;
+  const std::string a = bytes.substr(first, 12), b = bytes.substr(second, 12);
+  bytes.replace(first, 12, b);
+  bytes.replace(second, 12, a);
+  std::size_t pos = 0;
+  EXPECT_THROW(OutputStats::read_from(bytes, pos), std::runtime_error);
+}
+
 TEST(OutputStatsSerialize, TruncatedStateThrows) {
   const std::string bytes = bytes_of(one_pass({1.0, -2.0, 3.0}, 0.0, 1.0));
   // Cut inside the header, inside an ExactSum, and inside the histogram.

@@ -115,5 +115,36 @@ TEST(GapMetric, CoherentGroupsSeeOnlyWhatRunsShareBeyondIndependence) {
   EXPECT_NEAR(log_ratios(pool(null, both), cal).coherent[static_cast<std::size_t>(c)], 0.0, 1e-12);
 }
 
+TEST(GapMetric, ALargeSetPoolsAsItsPairsWould) {
+  // Beyond kMaxGramRuns a set keeps the runs' values, not every pair's
+  // inner products: a multiset pools to Σ_a Σ_b z_a·z_b all the same, and
+  // the null's pairs of different runs are |Σ z|² − Σ |z|².
+  runs::KeySpace keys;
+  runs::Layout l;
+  for (int k = 0; k < 3; ++k)
+    l.rows.push_back({60.0 * (k + 1), runs::Quantity::kR, k, group_of(runs::Stage::kTest, runs::Quantity::kR, k, 0)});
+  l.test_rows = 3;
+  keys.add_layout(l);
+  const int n = kMaxGramRuns + 44;
+  Eigen::MatrixXd z(keys.size(), n);
+  for (int r = 0; r < n; ++r)
+    for (int k = 0; k < keys.size(); ++k) z(k, r) = std::sin(1.0 + 0.37 * r + 1.3 * k);
+  const RunSet large = make_run_set(std::vector<runs::GroupSums>(static_cast<std::size_t>(n)), z, keys);
+  EXPECT_EQ(large.gram[0].size(), 0);
+  const std::vector<int> multiset = {3, 7, 7, 250, 299};
+  for (int c = 0; c < runs::kCoherentCount; ++c) {
+    double pairs = 0.0, distinct = 0.0;
+    for (int k = 0; k < keys.size(); ++k) {
+      if (keys.coherent_group(k) != c) continue;
+      for (int a : multiset)
+        for (int b : multiset) pairs += z(k, a) * z(k, b);
+      const double total = z.row(k).sum();
+      distinct += total * total - z.row(k).squaredNorm();
+    }
+    EXPECT_NEAR(large.pair_sum(c, multiset), pairs, 1e-12 * (1 + std::abs(pairs))) << c;
+    EXPECT_NEAR(large.distinct_pair_sum(c), distinct, 1e-10 * (1 + std::abs(distinct))) << c;
+  }
+}
+
 }  // namespace
 }  // namespace insmc::gap
