@@ -172,7 +172,7 @@ int run_import_imu(const Args& args) {
                        fmt::format("{} of test run and navigation at {}", format_quantity(run_s, Dimension::kTime),
                                    format_quantity(nav.output_interval_s, Dimension::kTime)),
                        2 * runs < kMaxWrittenRecordRows
-                           ? fmt::format("the interval must be at least {}", format_quantity(finest_s, Dimension::kTime))
+                           ? fmt::format("the interval must be at least {}", format_quantity(round_up_3(finest_s), Dimension::kTime))
                            : "import fewer runs");
   };
   check_rows(inputs_given);  // at least one run per input

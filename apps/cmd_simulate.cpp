@@ -58,7 +58,7 @@ void check_simulated_rows(const po::variables_map& vm, int runs, const TestRunOp
                        "shorten the navigation");
   const double shortest_s = (T + nav_s) / static_cast<double>(kMaxWrittenRecordRows - 2);
   check_written_rows("--filter-interval", echo_input(vm["filter-interval"].as<std::string>()), 1, per_run, what, fmt::format("the filter interval must be at least {}",
-                                                   format_quantity(shortest_s, Dimension::kTime)));
+                                                   format_quantity(round_up_3(shortest_s), Dimension::kTime)));
 }
 
 }  // namespace

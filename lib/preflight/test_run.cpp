@@ -90,14 +90,23 @@ TestRunMaps test_run_maps(System system, Fidelity fidelity, const ModelOptions& 
 namespace {
 
 /// (HᵀH)⁻¹Hᵀ by QR of H with unit-norm columns (the columns span many
-/// orders of magnitude), rows of the result scaled back. H = QR with Q's
-/// first p columns Q₁ (K × p): (HᵀH)⁻¹Hᵀ = R⁻¹Q₁ᵀ, in K·p² operations and
-/// K·p doubles. (Solving for every unit datum, K × K, took 1.3 GB and most
-/// of `simulate`'s time at K = 9000, τ = 0.1 s.)
+/// orders of magnitude), rows of the result scaled back. Up to 2048 rows
+/// (every study: at most 1800 intervals) by solving for every unit datum,
+/// the K × K identity, as the study's results have always been computed;
+/// beyond, as R⁻¹Q₁ᵀ (Q₁ the first p columns of Q, K × p), in K·p²
+/// operations and K·p doubles: the identity took 1.3 GB and most of
+/// `simulate`'s time at K = 9000 (τ = 0.1 s) and more memory than the
+/// machine has at 2 h.
 Eigen::MatrixXd least_squares_map(const Eigen::MatrixXd& h) {
+  constexpr Eigen::Index kIdentityRows = 2048;
   const Eigen::VectorXd norms = h.colwise().norm().transpose();
   const Eigen::MatrixXd scaled = h * norms.cwiseInverse().asDiagonal();
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(scaled);
+  if (h.rows() <= kIdentityRows) {
+    const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(h.rows(), h.rows());
+    const Eigen::MatrixXd pinv = qr.solve(identity);  // least-squares solution for each unit datum
+    return norms.cwiseInverse().asDiagonal() * pinv;
+  }
   const Eigen::Index p = h.cols();
   const Eigen::MatrixXd q1 = qr.householderQ() * Eigen::MatrixXd::Identity(h.rows(), p);
   const Eigen::MatrixXd r = qr.matrixQR().topLeftCorner(p, p).triangularView<Eigen::Upper>();

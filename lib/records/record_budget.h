@@ -14,13 +14,21 @@
 
 namespace insmc {
 
-/// Rows a writer builds in one file: 2 million. The writer holds every row
-/// (104 bytes) and the whole text it writes (~130 bytes a row) at once, and
-/// the run it is simulating; measured: `simulate` peaks at 470 bytes a row
-/// (1.9 GB for 4,028,760 rows), so 2 million rows stay under 1 GB. Below the
-/// readers' 4 million (record_io.h): gap and compensate take every file a
-/// writer writes.
-inline constexpr std::size_t kMaxWrittenRecordRows = 2'000'000;
+/// Rows a writer builds in one file: 1.6 million. The writer holds every
+/// row (104 bytes), the whole text it writes (~130 bytes a row) and what
+/// made the rows at once. Measured (docs/robustness.md, "Work budgets"):
+/// `simulate` peaks at 0.91 GB for 1,992,720 rows, `import-imu` at 1.11 GB
+/// for 1,969,000 rows and 0.78 GB for 1,575,000 (about 500 bytes a row), so
+/// 1.6 million rows stay under 0.8 GB. Below the readers' 4 million
+/// (record_io.h): gap and compensate take every file a writer writes.
+inline constexpr std::size_t kMaxWrittenRecordRows = 1'600'000;
+
+/// `x` rounded up to three significant digits (a bound given in a message).
+inline double round_up_3(double x) {
+  if (!(x > 0) || !std::isfinite(x)) return x;
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 2);
+  return std::ceil(x / unit * (1 - 1e-12)) * unit;
+}
 static_assert(kMaxWrittenRecordRows <= kMaxRecordRows, "a writer writes only files its readers take");
 
 /// Throws InputError naming `option` = `value` when `runs` runs of

@@ -41,12 +41,13 @@ std::vector<runs::RunData> simulate_like_records(runs::PreparedRuns& p, const Re
 
 /// What the null calibration may hold: its runs keep their observations
 /// (each run's values, the layout it is placed in, its keyed and analysed
-/// values: measured about kNullBytesPerObservation bytes an observation) until
-/// the candidates are ranked, so `runs` null runs like the records' take
-/// runs × (the records' mean observations a run) of them. 1 GB of them
-/// bounds the calibration (docs/robustness.md, "Work budgets"); the time
-/// to simulate them grows as they do.
-inline constexpr double kNullBytesPerObservation = 400.0;
+/// values) until the candidates are ranked, so `runs` null runs like the
+/// records' hold runs × (the records' mean observations a run) of them.
+/// Measured (docs/robustness.md, "Work budgets"): 55 bytes an observation
+/// (6 runs of 1173 observations: 30 MB at 200 null runs, 127 MB at 1700),
+/// and 2.8 ms a null run to simulate; 64 bytes are counted, and 0.8 GB of
+/// them bound the calibration (10,600 null runs of these records, 30 s).
+inline constexpr double kNullBytesPerObservation = 64.0;
 inline constexpr double kMaxNullBytes = 0.8e9;
 
 /// Throws InputError naming --calibration-runs (`automatic`: the default
