@@ -24,7 +24,7 @@ std::string fmt_params(const std::vector<ParameterEstimate>& ps) {
 /// candidate that closes less describes a sliver of data that the model and
 /// the candidates do not describe, and each step adds its columns to every
 /// model the next ranking fits.
-constexpr double kMinShareClosed = 0.1;
+constexpr double kMinShareClosed = 1.0 / 3;
 
 /// The share of what is left (before − the critical G) that a step to
 /// `after` closes; 1 when nothing is left above the critical G.
@@ -70,16 +70,16 @@ void rank_and_select(Diagnosis& d, const runs::PreparedRuns& p, const ModelNull&
     }
     before = best.heldout_gap;
     if (g.p_value >= options.alpha) break;  // no significant gap remains
-    if (closed < kMinShareClosed) {  // the first effect: kept (the ranking's top), but no further step
+    if (step + 1 == options.max_selected) {
+      d.statements.push_back(fmt::format("a significant gap remains after {} effects ({}); the greedy search stops "
+                                         "there", step + 1, fmt_params(best.parameters)));
+    } else if (closed < kMinShareClosed) {  // the first effect: kept (the ranking's top), but no further step
       d.statements.push_back(fmt::format("the top candidate closes {:.0f} % of the held-out gap above the null's "
                                          "critical value (less than {:.0f} %): the data lie far outside what the "
                                          "candidates describe, and the greedy search stops after it",
                                          100 * closed, 100 * kMinShareClosed));
       break;
     }
-    if (step + 1 == options.max_selected)
-      d.statements.push_back(fmt::format("a significant gap remains after {} effects ({}); the greedy search stops "
-                                         "there", step + 1, fmt_params(best.parameters)));
   }
 }
 
