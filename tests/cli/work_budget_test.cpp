@@ -175,7 +175,10 @@ TEST(WorkBudget, TheGreedySearchStopsOnDataFarOutsideTheModel) {
                           500 * std::cos(t / 800), -t / 100);
   }
   const ProgramResult r = expect_done("gap --records " + write(dir, "long.csv", text) + " --format json");
-  EXPECT_TRUE(has(r.out, "\"greedy\"")) << r.out.substr(0, 2000);
+  // The first step closes most of the gap; the next candidate (nonlinearity
+  // at the edge of its grid) a quarter of what is left, and the third
+  // (switch_transient) 7 %: the search stops before the third ranking.
+  EXPECT_TRUE(has(r.out, "the greedy search stops after 1 effect(s)")) << r.out.substr(0, 4000);
 }
 
 }  // namespace
