@@ -117,7 +117,7 @@ std::string rollup_markdown(const CompensateResult& result, const CompensateOpti
   return fmt::format("## The units at a glance\n\n{}\n{} of {} unit(s) go{}. The detail of each follows.\n\n",
                      render_markdown(t), go, n,
                      !limits ? " (no --limit given: only a unit whose test rows do not fit the model is no-go)"
-                             : fmt::format(" (go: some scheme exceeds every --limit with probability at most {:g}; of "
+                             : fmt::format(" (go: some scheme exceeds each --limit with probability at most {:g}; of "
                                            "those, the one whose worst limit has the largest ratio limit / RMS is used)",
                                            options.risk));
 }

@@ -51,15 +51,19 @@ std::string value_text(Assumption a, double si, const StudyConfig& config, Lengt
   return shown;
 }
 
-/// The values an assumption was searched over (its curve's first and last
-/// point: a bound's catalogue range, F's [0, 1], the test durations scanned).
+/// The values an assumption's crossings were searched over: a bound's
+/// catalogue range (solved exactly there; its curve in the figure spans
+/// less), F's [0, 1], the test durations scanned (the curve's first and
+/// last point).
 std::string searched_range(const BreakEven& even, Assumption a, LengthUnit length) {
+  const DisplayUnit d = display_unit(a, length);
+  const std::string unit = d.unit.empty() ? "" : " " + d.unit;
+  if (const int slot = bound_slot(a); slot >= 0)
+    return fmt::format("0 to {:.3g}{}", bound_range(catalogue()[static_cast<std::size_t>(slot)]).max_si * d.per_si, unit);
+  if (a == Assumption::kRandomFraction) return "0 to 1";
   for (const AssumptionCurve& c : even.curves)
-    if (c.assumption == a && !c.values_si.empty()) {
-      const DisplayUnit d = display_unit(a, length);
-      return fmt::format("{:.3g} to {:.3g}{}{}", c.values_si.front() * d.per_si, c.values_si.back() * d.per_si,
-                         d.unit.empty() ? "" : " ", d.unit);
-    }
+    if (c.assumption == a && !c.values_si.empty())
+      return fmt::format("{:.3g} to {:.3g}{}", c.values_si.front() * d.per_si, c.values_si.back() * d.per_si, unit);
   return "—";
 }
 

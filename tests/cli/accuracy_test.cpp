@@ -212,7 +212,7 @@ TEST(Accuracy, CheckRefusesAConfidenceOutsideTheOptionsRange) {
     const std::string path = write_file(dir, "c.txt", h + "confidence=" + c + "\n");
     const auto r = run_insmc("check --samples 2000 --bounds " + path);
     EXPECT_EQ(r.exit_code, 2) << c << "\n" << r.out << r.err;
-    EXPECT_TRUE(has(r.err, path + ":1:69: confidence = '" + c + "': must lie in [0.5, 0.999999]")) << r.err;
+    EXPECT_TRUE(has(r.err, path + ":1:70: confidence = '" + c + "': must lie in [0.5, 0.999999]")) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_TRUE(r.out.empty()) << r.out;
   }

@@ -80,12 +80,13 @@ std::string least_rms_scheme(const std::string& envelope_csv, const std::string&
   return best;
 }
 
-// The case of the user's report: the least RMS at the flight time (84 min)
-// is 5.4's, which exceeds 1.5 nmi at 42 min with a probability far above
-// the risk, while 5.3 meets it. Before, compensate took 5.4 and said NO-GO.
+// The case of the user's report: the scheme of least RMS at the flight time
+// (84 min; on run 4 of this fleet 5.1.1) exceeds 1.5 nmi at 42 min with a
+// probability far above the risk, while 5.3 meets it. Before, compensate
+// took the flight time's scheme and said NO-GO.
 TEST(CompensateDecision, ChoosesAmongTheSchemesThatMeetEveryLimit) {
   const TempDir dir;
-  const std::string fleet = simulate_fleet(dir, 4);
+  const std::string fleet = simulate_fleet(dir, 5);
   const std::string limit = " --limit horizontal@42min=1.5nmi --units nmi";
   const ProgramResult r = run_insmc("compensate --records " + fleet + " --run 4" + limit + " --out " + dir.str() + "/o");
   const std::vector<SchemeRow> rows = verdict_rows(r.out);
@@ -95,7 +96,7 @@ TEST(CompensateDecision, ChoosesAmongTheSchemesThatMeetEveryLimit) {
   const auto row_of = [&](const std::string& s) {
     return *std::find_if(rows.begin(), rows.end(), [&](const SchemeRow& x) { return x.scheme == s; });
   };
-  ASSERT_EQ(at_flight, "5.4");
+  ASSERT_FALSE(at_flight.empty());
   ASSERT_FALSE(row_of(at_flight).meets) << r.out;
   ASSERT_TRUE(row_of("5.3").meets) << r.out;
   // Go, with the passing scheme of the most margin on its worst limit.
@@ -109,7 +110,7 @@ TEST(CompensateDecision, ChoosesAmongTheSchemesThatMeetEveryLimit) {
   EXPECT_TRUE(has(r.out, "### Verdict: GO with scheme " + best->scheme)) << r.out;
   // The roll-up names the schemes that pass and the one used, with its worst limit.
   const std::string rollup = r.out.substr(0, r.out.find("## The site"));
-  EXPECT_TRUE(has(rollup, "| " + best->scheme + " ")) << rollup;
+  EXPECT_TRUE(has(rollup, " " + best->scheme + " | ")) << rollup;
   EXPECT_TRUE(has(rollup, "of horizontal@42min=1.5nmi")) << rollup;
   EXPECT_TRUE(has(rollup, "5.3")) << rollup;
   EXPECT_TRUE(has(rollup, "| GO")) << rollup;
