@@ -160,7 +160,7 @@ TEST(Rank, NauticalMilesEverywhereWithEachDifferencesSizeAndTheSearchedRanges) {
   const std::string md = read_file(out.path() / "rank.md");
   EXPECT_NE(md.find("(z = "), std::string::npos);
   EXPECT_NE(md.find(" nmi larger"), std::string::npos) << md.substr(0, 3000);
-  EXPECT_NE(md.find("| searched |"), std::string::npos);
+  EXPECT_NE(md.find("| searched "), std::string::npos);
   // The test duration is scanned over 1 to 40 min (whole filter intervals).
   EXPECT_NE(md.find("1 to 40 min"), std::string::npos) << md;
   for (const char* sentence : {"stays first over the whole searched range of", "stays first while"})
