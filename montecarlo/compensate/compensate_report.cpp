@@ -100,7 +100,7 @@ std::string rollup_markdown(const CompensateResult& result, const CompensateOpti
     } else if (limits) {
       const LimitCheck& w = chosen_against_limits(u).worst();
       t.add_row({std::to_string(u.run),
-                 u.choice == SchemeChoice::kNoneMeetsTheLimits ? fmt::format("none (closest: {})", to_string(u.recommended))
+                 u.choice == SchemeChoice::kNoneMeetsTheLimits ? fmt::format("no scheme (closest: {})", to_string(u.recommended))
                                                                : std::string(to_string(u.recommended)),
                  fmt::format("{} of {}", length_text(w.rms_m, options.units), w.limit.text), fmt::format("{:.2g}", w.probability),
                  passing_schemes(u), verdict_word(u)});
