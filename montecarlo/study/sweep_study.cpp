@@ -188,6 +188,24 @@ std::vector<EstimatorSwitch> estimator_switches(const mc::StudyConfig& base, con
   return out;
 }
 
+/// sweep.json's `estimator_switches`; each switch marked on the figure's x axis.
+mc::Json switches_json(const std::vector<EstimatorSwitch>& switches, const AxisInUserUnits& x_axis,
+                       mc::PanelFigure& plot) {
+  mc::Json list = mc::Json::array();
+  for (const EstimatorSwitch& w : switches) {
+    mc::Json j = mc::Json::object();
+    j["system"] = system_number(w.system);
+    j["before"] = w.before;
+    j["after"] = w.after;
+    j["from"] = w.from;
+    j["to"] = w.to;
+    list.push_back(j);
+    if (std::find(plot.marked_x.begin(), plot.marked_x.end(), x_axis.x[w.at_index]) == plot.marked_x.end())
+      plot.marked_x.push_back(x_axis.x[w.at_index]);
+  }
+  return list;
+}
+
 std::string switches_markdown(const mc::StudyConfig& base, const std::vector<EstimatorSwitch>& switches) {
   if (switches.empty()) return "";
   std::string md = fmt::format(
@@ -364,19 +382,7 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
   f.json["axes"] = swept;
   f.json["points"] = point_list;
   const std::vector<EstimatorSwitch> switches = estimator_switches(base, axes, point_idx, point_fitted);
-  mc::Json switch_list = mc::Json::array();
-  for (const EstimatorSwitch& w : switches) {
-    mc::Json j = mc::Json::object();
-    j["system"] = system_number(w.system);
-    j["before"] = w.before;
-    j["after"] = w.after;
-    j["from"] = w.from;
-    j["to"] = w.to;
-    switch_list.push_back(j);
-    if (std::find(plot.marked_x.begin(), plot.marked_x.end(), x_axis.x[w.at_index]) == plot.marked_x.end())
-      plot.marked_x.push_back(x_axis.x[w.at_index]);
-  }
-  f.json["estimator_switches"] = switch_list;
+  f.json["estimator_switches"] = switches_json(switches, x_axis, plot);
   f.sweep_csv = mc::render_csv(table);
   f.summary_md = mc::render_markdown(summary) + switches_markdown(base, switches);
   plot.stem = "sweep";
