@@ -14,18 +14,20 @@
 #include "lib/records/number_text.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
+#include "montecarlo/study/study_config.h"
 
 namespace insmc::mc {
 namespace {
 
 constexpr std::string_view kKeys = "scheme, system, axis, t_min, confidence";
 constexpr std::string_view kLimitForms =
-    "METRIC_UNIT<=NUMBER or METRIC<=NUMBERUNIT (rms_m<=9000, cep50_nmi<=2, p95<=3nmi; METRIC rms, cep50 or p95, "
-    "UNIT m, ft or nmi, NUMBER >= 0)";
-constexpr std::array<std::pair<std::string_view, BoundMetric>, 4> kMetrics = {{{"rms", BoundMetric::kRms},
+    "METRIC_UNIT<=NUMBER or METRIC<=NUMBERUNIT (rms_m<=9000, cep50_nmi<=2, 2drms<=3nmi; METRIC rms, cep50, cep95 "
+    "(or p95) or 2drms, UNIT m, ft or nmi, NUMBER >= 0)";
+constexpr std::array<std::pair<std::string_view, BoundMetric>, 5> kMetrics = {{{"rms", BoundMetric::kRms},
                                                                               {"cep50", BoundMetric::kCep50},
                                                                               {"p95", BoundMetric::kCep95},
-                                                                              {"cep95", BoundMetric::kCep95}}};
+                                                                              {"cep95", BoundMetric::kCep95},
+                                                                              {"2drms", BoundMetric::k2drms}}};
 // The units a limit's key may carry (rms_ft): factor to metres.
 constexpr std::array<std::pair<std::string_view, double>, 3> kKeyUnits = {
     {{"m", 1.0}, {"ft", kFtToM}, {"nmi", kNmiToM}}};
@@ -137,9 +139,11 @@ class BoundsParser {
     b.system = parse_system_token(kv.at("system"));
     b.axis = parse_axis_token(kv.at("axis"));
     if (b.metric != BoundMetric::kRms && b.axis != Axis::kHorizontal)
-      fail(limit->column, fmt::format("limit {}: {} is a percentile of the horizontal radial error; it needs "
+      fail(limit->column, fmt::format("limit {}: {} is {} of the horizontal radial error; it needs "
                                       "axis=horizontal, not axis={}",
-                                      quote(limit->text), names_of(b.metric).key, axis_name(b.axis)));
+                                      quote(limit->text), names_of(b.metric).key,
+                                      b.metric == BoundMetric::k2drms ? "twice the RMS" : "a percentile",
+                                      axis_name(b.axis)));
     const Token& t_min = kv.at("t_min");
     const double minutes = number(t_min, "t_min");
     if (!(minutes >= 0 && minutes <= 360))
@@ -148,7 +152,12 @@ class BoundsParser {
     time_column_ = t_min.column;
     if (const auto c = kv.find("confidence"); c != kv.end()) {
       const double v = number(c->second, "confidence");
-      if (!(v > 0 && v < 1)) fail(c->second.column, fmt::format("confidence = {}: must lie in (0, 1)", quote(c->second.text)));
+      // The range of --confidence (kConfidenceRange): above it the normal
+      // quantile of the upper limit leaves double precision.
+      if (!kConfidenceRange.contains(v))
+        fail(c->second.column, fmt::format("confidence = {}: must lie in [{:g}, {:g}] (a one-sided upper confidence "
+                                           "level, as --confidence)",
+                                           quote(c->second.text), kConfidenceRange.min_si, kConfidenceRange.max_si));
       b.confidence = v;
     }
     return b;
@@ -228,6 +237,7 @@ class BoundsParser {
 BoundMetricNames names_of(BoundMetric m) {
   if (m == BoundMetric::kCep50) return {"cep50", "CEP50"};
   if (m == BoundMetric::kCep95) return {"p95", "CEP95"};
+  if (m == BoundMetric::k2drms) return {"2drms", "2DRMS"};
   return {"rms", "RMS"};
 }
 

@@ -3,8 +3,10 @@
 ///   scheme=none system=2 axis=horizontal t_min=84 rms_m<=9000 [confidence=0.95]
 /// `#` starts a comment. The limit is METRIC_UNIT<=NUMBER or
 /// METRIC<=NUMBER UNIT (no space: `cep50<=3nmi`): METRIC rms, or on
-/// axis=horizontal cep50 or p95 (= cep95, the 95th percentile of the radial
-/// error); UNIT m, ft or nmi (and km with the number). Every mistake is an
+/// axis=horizontal cep50, cep95 (= p95, the 95th percentile of the radial
+/// error) or 2drms (twice the horizontal RMS); UNIT m, ft or nmi (and km
+/// with the number). `confidence=` is a one-sided level in [0.5, 0.999999],
+/// the range of --confidence. Every mistake is an
 /// InputError whose one-line message starts `FILE:LINE:COLUMN: ` (1-based).
 #include <cstddef>
 #include <cstdint>
@@ -32,9 +34,9 @@ inline constexpr std::size_t kMaxBounds = 2'000;
 inline constexpr std::size_t kMaxBoundsReportTimes = 100;
 
 /// What a bound limits (docs/outputs.md, "Accuracy metrics").
-enum class BoundMetric { kRms, kCep50, kCep95 };
-/// Its key in a bounds file ("rms", "cep50", "p95") and the name check
-/// prints ("RMS", "CEP50", "CEP95").
+enum class BoundMetric { kRms, kCep50, kCep95, k2drms };
+/// Its key in a bounds file ("rms", "cep50", "p95", "2drms") and the name
+/// check prints ("RMS", "CEP50", "CEP95", "2DRMS").
 struct BoundMetricNames {
   std::string_view key, label;
 };

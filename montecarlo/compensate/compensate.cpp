@@ -51,7 +51,81 @@ LimitCheck check_limit(const SchemePrediction& p, const PositionLimit& limit, do
   return c;
 }
 
+/// Without limits: the least horizontal RMS at the flight time, with the
+/// runner-up and its margin.
+void choose_by_flight_time(UnitResult& u, const CompensateOptions& options) {
+  std::vector<std::pair<double, std::size_t>> at_flight;
+  for (std::size_t i = 0; i < u.schemes.size(); ++i)
+    at_flight.emplace_back(at_time(u.schemes[i], options.flight_time_s).unit_horizontal_rms_m(), i);
+  std::stable_sort(at_flight.begin(), at_flight.end());
+  u.choice = SchemeChoice::kLeastRmsAtFlightTime;
+  u.recommended = u.schemes[at_flight.front().second].scheme;
+  u.recommended_rms_m = at_flight.front().first;
+  if (at_flight.size() > 1) {
+    u.runner_up = u.schemes[at_flight[1].second].scheme;
+    u.margin_m = at_flight[1].first - at_flight.front().first;
+  }
+}
+
+/// With limits: every scheme against every limit; among those meeting them
+/// all, the one whose worst limit has the most margin (the largest ratio
+/// limit / RMS: unlike P(exceed), it does not underflow to 0 for several
+/// schemes at once); when none meets them, the one coming closest (least
+/// worst P(exceed)), and no-go.
+void choose_by_limits(UnitResult& u, const CompensateOptions& options) {
+  for (const SchemePrediction& p : u.schemes) {
+    SchemeAgainstLimits a;
+    a.scheme = p.scheme;
+    for (const PositionLimit& l : options.limits) a.checks.push_back(check_limit(p, l, options.risk));
+    u.against_limits.push_back(std::move(a));
+  }
+  std::optional<std::size_t> best;
+  for (std::size_t i = 0; i < u.against_limits.size(); ++i)
+    if (u.against_limits[i].meets_every_limit() &&
+        (!best || u.against_limits[i].worst().ratio() > u.against_limits[*best].worst().ratio()))
+      best = i;
+  u.choice = best ? SchemeChoice::kMostMarginOverLimits : SchemeChoice::kNoneMeetsTheLimits;
+  if (!best) {
+    best = 0;
+    for (std::size_t i = 1; i < u.against_limits.size(); ++i)
+      if (u.against_limits[i].worst_probability() < u.against_limits[*best].worst_probability()) best = i;
+  }
+  u.recommended = u.against_limits[*best].scheme;
+  u.recommended_rms_m = at_time(u.schemes[*best], options.flight_time_s).unit_horizontal_rms_m();
+  u.checks = u.against_limits[*best].checks;
+  u.go = u.choice == SchemeChoice::kMostMarginOverLimits;
+}
+
+/// The scheme to use (docs/compensate.md, "The scheme to use"). Rows the
+/// model does not describe leave nothing to rest a choice or a go on, with
+/// or without limits: a bench script reads the exit code alone.
+void choose_scheme(UnitResult& u, const CompensateOptions& options) {
+  if (!u.fits_model()) {
+    u.choice = SchemeChoice::kNotChosen;
+    u.go = false;
+    return;
+  }
+  if (options.limits.empty()) choose_by_flight_time(u, options);
+  else choose_by_limits(u, options);
+}
+
 }  // namespace
+
+bool SchemeAgainstLimits::meets_every_limit() const {
+  return std::all_of(checks.begin(), checks.end(), [](const LimitCheck& c) { return c.within(); });
+}
+
+const LimitCheck& SchemeAgainstLimits::worst() const {
+  INSMC_ASSERT(!checks.empty(), "no limit");
+  return *std::min_element(checks.begin(), checks.end(),
+                           [](const LimitCheck& a, const LimitCheck& b) { return a.ratio() < b.ratio(); });
+}
+
+double SchemeAgainstLimits::worst_probability() const {
+  double p = 0.0;
+  for (const LimitCheck& c : checks) p = std::max(p, c.probability);
+  return p;
+}
 
 std::string_view to_string(PositionLimit::Component c) {
   switch (c) {
@@ -114,24 +188,7 @@ CompensateResult compensate(const RecordFile& file, const CompensateOptions& opt
     u.consistency_dof = posterior.consistency_dof;
     u.consistency_p = posterior.consistency_p;
     for (const SchemeModel& m : scheme_models[L]) u.schemes.push_back(predict_scheme(out.records, run, posterior, m));
-    std::vector<std::pair<double, std::size_t>> at_flight;
-    for (std::size_t i = 0; i < u.schemes.size(); ++i)
-      at_flight.emplace_back(at_time(u.schemes[i], options.flight_time_s).unit_horizontal_rms_m(), i);
-    std::stable_sort(at_flight.begin(), at_flight.end());
-    const SchemePrediction& best = u.schemes[at_flight.front().second];
-    u.recommended = best.scheme;
-    u.recommended_rms_m = at_flight.front().first;
-    if (at_flight.size() > 1) {
-      u.runner_up = u.schemes[at_flight[1].second].scheme;
-      u.margin_m = at_flight[1].first - at_flight.front().first;
-    }
-    for (const PositionLimit& l : options.limits) {
-      u.checks.push_back(check_limit(best, l, options.risk));
-      u.go = u.go && u.checks.back().within();
-    }
-    // Rows the model does not describe leave nothing to rest a go on, with
-    // or without limits: a bench script reads the exit code alone.
-    if (!u.fits_model()) u.go = false;
+    choose_scheme(u, options);
     out.units.push_back(std::move(u));
   }
   return out;

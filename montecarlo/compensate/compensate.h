@@ -3,6 +3,7 @@
 /// file), its estimates, each scheme's compensation and the position error
 /// after it (this unit's and the population's), the scheme to use at the
 /// flight time, and go / no-go against the user's limits.
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -49,12 +50,34 @@ struct LimitCheck {
   double probability = 0.0;         ///< of exceeding the limit
   bool within() const;              ///< probability ≤ risk (set by compensate)
   double risk = 0.0;
+  /// The limit over the RMS: how far the limit lies beyond the error's
+  /// spread (a dimensionless margin, comparable across limits).
+  double ratio() const { return limit.limit_m / std::max(rms_m, 1e-300); }
+};
+
+/// One scheme held against every limit.
+struct SchemeAgainstLimits {
+  Scheme scheme = Scheme::kNone;
+  std::vector<LimitCheck> checks;  ///< one per --limit, in their order
+  bool meets_every_limit() const;
+  /// The check with the least ratio limit / RMS: this scheme's worst limit.
+  const LimitCheck& worst() const;
+  /// The largest probability of exceeding over the limits.
+  double worst_probability() const;
 };
 
 /// Below this probability the unit's test rows are taken not to fit the
 /// model (UnitPosterior::consistency_p): its predictions are then not to be
 /// trusted and no verdict can be go.
 inline constexpr double kInconsistentP = 1e-6;
+
+/// How the scheme to use was chosen (docs/compensate.md, "The scheme to use").
+enum class SchemeChoice {
+  kLeastRmsAtFlightTime,  ///< no --limit: the least horizontal RMS at --flight-time
+  kMostMarginOverLimits,  ///< with --limit: among the schemes meeting every limit, the largest worst ratio limit/RMS
+  kNoneMeetsTheLimits,    ///< with --limit, none meets them all: the one coming closest (least worst P(exceed))
+  kNotChosen,             ///< the test rows do not fit the model: no scheme's RMS means anything
+};
 
 struct UnitResult {
   std::int64_t run = 0;
@@ -63,10 +86,14 @@ struct UnitResult {
   bool fits_model() const { return consistency_p >= kInconsistentP; }
   std::vector<UnitEstimate> estimates;
   std::vector<SchemePrediction> schemes;
-  Scheme recommended;              ///< least horizontal RMS at the flight time
-  double recommended_rms_m = 0.0;
-  std::optional<Scheme> runner_up;
+  SchemeChoice choice = SchemeChoice::kNotChosen;
+  Scheme recommended;              ///< by `choice` (meaningless under kNotChosen)
+  double recommended_rms_m = 0.0;  ///< horizontal, at the flight time
+  std::optional<Scheme> runner_up;  ///< without limits: the next least RMS at the flight time
   double margin_m = 0.0;           ///< the runner-up's RMS less the recommended's
+  /// With limits (and rows that fit): every scheme against every limit, in
+  /// the schemes' order.
+  std::vector<SchemeAgainstLimits> against_limits;
   std::vector<LimitCheck> checks;  ///< for the recommended scheme
   bool go = true;
 };

@@ -254,9 +254,11 @@ std::vector<UnitEstimate> estimate_unit(const UnitRecords& records, const UnitPo
     const Vec3* report;
   };
   const TestRunEstimates& crew = c.crew_estimates;
-  const Coefficient coefficients[] = {{"U2", &paper.u2, "1", &crew.u2},
-                                      {"U3", &paper.u3, "1", &crew.u3},
-                                      {"U4", &paper.u4, "1", nullptr},
+  // Every term of (3.29b-d) is an angle: a tilt, δf/g (a tilt's
+  // equivalent), a drift over ω_ie (the angle it turns per earth-rate radian).
+  const Coefficient coefficients[] = {{"U2", &paper.u2, "rad", &crew.u2},
+                                      {"U3", &paper.u3, "rad", &crew.u3},
+                                      {"U4", &paper.u4, "rad", nullptr},
                                       {"df_T", &df_at_end, "m/s^2", &crew.df_at_test_end_mps2}};
   const UncertaintyVector x_var = prior.variance();
   std::vector<UnitEstimate> out;

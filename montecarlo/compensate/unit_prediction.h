@@ -34,7 +34,7 @@ namespace insmc::mc {
 /// One coefficient of the report for this unit.
 struct UnitEstimate {
   std::string name;        ///< "U2_x", ..., "df_T_z"
-  std::string unit;        ///< SI unit ("1" for the dimensionless U)
+  std::string unit;        ///< SI unit ("rad" for U2..U4: angles, (3.29b-d))
   double value = 0.0;      ///< this unit's best linear estimate (conditioned mean)
   double sigma = 0.0;      ///< its error's standard deviation
   double prior_sigma = 0.0;  ///< the population's spread before the test run

@@ -15,18 +15,22 @@ namespace {
 
 std::string t_min_text(double t_s) { return format_number(t_s / 60.0); }
 
-/// An assumption's value in the unit a navigation engineer reads it in,
-/// with its SI value where that is another unit.
+/// An assumption's value in the unit a navigation engineer reads it in
+/// (a reset's errors in the lengths of --units: m and m/s, ft and ft/s, or
+/// nmi and kt), with its SI value where that is another unit.
 struct DisplayUnit {
   double per_si;
   std::string unit;
 };
 
-DisplayUnit display_unit(Assumption a) {
+DisplayUnit display_unit(Assumption a, LengthUnit length) {
+  const double per_m = length_factor(length);
+  const std::string l = length_suffix(length);
   switch (a) {
     case Assumption::kAlignDriftError: return {1.0 / kMeruToRadps, "meru"};  // 1 meru = 1e-3 ω_ie
-    case Assumption::kResetVelocityError: return {1.0 / kFtpsToMps, "ft/s"};
-    case Assumption::kResetPositionError: return {1.0 / kFtToM, "ft"};
+    case Assumption::kResetVelocityError:
+      return length == LengthUnit::kNauticalMile ? DisplayUnit{3600.0 * per_m, "kt"} : DisplayUnit{per_m, l + "/s"};
+    case Assumption::kResetPositionError: return {per_m, l};
     case Assumption::kRealignAzimuthError: return {1.0 / kMradToRad, "mrad"};
     case Assumption::kRandomFraction: return {1.0, ""};
     case Assumption::kTestDuration: return {1.0 / 60.0, "min"};
@@ -34,22 +38,40 @@ DisplayUnit display_unit(Assumption a) {
   return {1.0, ""};
 }
 
-std::string value_text(Assumption a, double si, const StudyConfig& config) {
+std::string value_text(Assumption a, double si, const StudyConfig& config, LengthUnit length) {
   if (std::isnan(si)) return "—";
-  const DisplayUnit d = display_unit(a);
+  const DisplayUnit d = display_unit(a, length);
   const std::string shown = fmt::format("{:.3g}{}{}", si * d.per_si, d.unit.empty() ? "" : " ", d.unit);
   if (a == Assumption::kAlignDriftError)
     return fmt::format("{} ({:.3g} ω_ie, {:.3g} rad/s)", shown, si / config.model.earth_rate_radps, si);
+  if (d.per_si == 1.0) return shown;  // already SI
   if (a == Assumption::kResetVelocityError) return fmt::format("{} ({:.3g} m/s)", shown, si);
   if (a == Assumption::kResetPositionError) return fmt::format("{} ({:.3g} m)", shown, si);
   if (a == Assumption::kRealignAzimuthError) return fmt::format("{} ({:.3g} rad)", shown, si);
   return shown;
 }
 
+/// The values an assumption's crossings were searched over: a bound's
+/// catalogue range (solved exactly there; its curve in the figure spans
+/// less), F's [0, 1], the test durations scanned (the curve's first and
+/// last point).
+std::string searched_range(const BreakEven& even, Assumption a, LengthUnit length) {
+  const DisplayUnit d = display_unit(a, length);
+  const std::string unit = d.unit.empty() ? "" : " " + d.unit;
+  if (const int slot = bound_slot(a); slot >= 0)
+    return fmt::format("0 to {:.3g}{}", bound_range(catalogue()[static_cast<std::size_t>(slot)]).max_si * d.per_si, unit);
+  if (a == Assumption::kRandomFraction) return "0 to 1";
+  for (const AssumptionCurve& c : even.curves)
+    if (c.assumption == a && !c.values_si.empty())
+      return fmt::format("{:.3g} to {:.3g}{}", c.values_si.front() * d.per_si, c.values_si.back() * d.per_si, unit);
+  return "—";
+}
+
 /// "5.4 stays first while E4 < 1.1 meru (then 5.1.2)": the nearest
 /// crossings below and above the study's value.
-std::string limits_sentence(const StudyConfig& config, System system, double t_s, Assumption a,
-                            const std::vector<Crossing>& crossings, Scheme leader) {
+std::string limits_sentence(const StudyConfig& config, System system, double t_s, Assumption a, const BreakEven& even,
+                            Scheme leader, LengthUnit length) {
+  const std::vector<Crossing>& crossings = even.crossings;
   const double now = study_value(config, a);
   const Crossing* below = nullptr;
   const Crossing* above = nullptr;
@@ -62,12 +84,18 @@ std::string limits_sentence(const StudyConfig& config, System system, double t_s
     }
   }
   const std::string name(to_string(a));
-  if (!below && !above) return fmt::format("{} stays first over the whole searched range of {}", to_string(leader), name);
+  if (!below && !above)
+    return fmt::format("{} stays first over the whole searched range of {} ({})", to_string(leader), name,
+                       searched_range(even, a, length));
   std::string s = fmt::format("{} stays first while ", to_string(leader));
-  if (below) s += fmt::format("{} > {} (below: {})", name, value_text(a, below->value_si, config), to_string(below->challenger));
+  if (below)
+    s += fmt::format("{} > {} (below: {})", name, value_text(a, below->value_si, config, length),
+                     to_string(below->challenger));
   if (below && above) s += " and ";
-  if (above) s += fmt::format("{} < {} (beyond: {})", name, value_text(a, above->value_si, config), to_string(above->challenger));
-  return s;
+  if (above)
+    s += fmt::format("{} < {} (beyond: {})", name, value_text(a, above->value_si, config, length),
+                     to_string(above->challenger));
+  return s + fmt::format(" (searched: {})", searched_range(even, a, length));
 }
 
 /// "RMS ± half its interval" in the printed unit.
@@ -204,13 +232,17 @@ std::string rank_markdown(const StudyConfig& config, const std::vector<SchemeOrd
     if (!o.paired) continue;
     md += fmt::format("## System {}, {} min ({} paired samples)\n\n", system_number(o.system), t_min_text(o.t_s),
                       o.paired_samples);
-    Table t({"rank", "scheme", fmt::format("RMS [{}] ± half-width", u), "order against the next"});
+    Table t({"rank", "scheme", fmt::format("RMS [{}] ± half-width", u), "order against the next, and by how much"});
     for (std::size_t r = 0; r < o.schemes.size(); ++r) {
       const RankedScheme& s = o.schemes[r];
+      // The z says whether the order is real; the difference says whether
+      // it matters (a 0.001 nmi lead can be significant with many samples).
       const std::string against =
-          r + 1 == o.schemes.size() ? ""
-                                    : fmt::format("{} (z = {:.3g})", s.order_significant ? "significant" : "not significant",
-                                                  s.paired_z);
+          r + 1 == o.schemes.size()
+              ? ""
+              : fmt::format("{} (z = {:.3g}), the next {} {} larger",
+                            s.order_significant ? "significant" : "not significant", s.paired_z,
+                            format_significant(length_factor(unit) * (o.schemes[r + 1].rms_m - s.rms_m), 3), u);
       t.add_row({std::to_string(r + 1), std::string(to_string(s.scheme)), rms_text(s, unit), against});
     }
     md += render_markdown(t) + "\n";
@@ -220,7 +252,7 @@ std::string rank_markdown(const StudyConfig& config, const std::vector<SchemeOrd
   for (Assumption a : kAllAssumptions)
     if (const int slot = bound_slot(a); slot >= 0)
       ranges += fmt::format("{}{} up to {}", ranges.empty() ? "" : ", ", to_string(a),
-                            value_text(a, bound_range(catalogue()[static_cast<std::size_t>(slot)]).max_si, config));
+                            value_text(a, bound_range(catalogue()[static_cast<std::size_t>(slot)]).max_si, config, unit));
   md += "## The first place's limits (covariance level, exact)\n\n"
         "Each assumption moved alone, the others at the study's values: a scheme measurement error as uniform ±b "
         "on each of its axes (alignment_drift_error is ω_ie E4 of (5.15); the reset errors act at T in (5.8); realignment_azimuth_error is system 1's theodolite re-sighting at the "
@@ -228,7 +260,7 @@ std::string rank_markdown(const StudyConfig& config, const std::vector<SchemeOrd
         "fraction F of ζ and ∂f drawn anew at each alignment, the test duration on whole filter intervals "
         "(1 min to 40 min). A bound is searched over its catalogue range (" + ranges + "), F over 0 to 1. "
         "breakeven.csv lists every crossing of the first scheme with another.\n\n";
-  Table limits({"system", "t [min]", "first", "assumption", "in the study", "limits of the first place"});
+  Table limits({"system", "t [min]", "first", "assumption", "in the study", "searched", "limits of the first place"});
   for (std::size_t j = 0; j < even.at_study.size(); ++j)
     for (std::size_t k = 0; k < even.at_study[j].size(); ++k) {
       const auto& rms = even.at_study[j][k];
@@ -237,9 +269,9 @@ std::string rank_markdown(const StudyConfig& config, const std::vector<SchemeOrd
         if (applies_to(a, config.systems[j]))
           limits.add_row({std::to_string(system_number(config.systems[j])), t_min_text(config.report_times_s[k]),
                         std::string(to_string(config.schemes[leader])), std::string(to_string(a)),
-                        value_text(a, study_value(config, a), config),
-                        limits_sentence(config, config.systems[j], config.report_times_s[k], a, even.crossings,
-                                        config.schemes[leader])});
+                        value_text(a, study_value(config, a), config, unit), searched_range(even, a, unit),
+                        limits_sentence(config, config.systems[j], config.report_times_s[k], a, even,
+                                        config.schemes[leader], unit)});
     }
   md += render_markdown(limits);
   return md;
@@ -262,8 +294,8 @@ std::string rank_summary(const StudyConfig& config, const std::vector<SchemeOrde
     for (Assumption a : kAllAssumptions)
       if (applies_to(a, config.systems[j]))
         text += fmt::format("system {}, {} min: {}\n", system_number(config.systems[j]), t_min_text(config.report_times_s[last_k]),
-                          limits_sentence(config, config.systems[j], config.report_times_s[last_k], a, even.crossings,
-                                          config.schemes[leader]));
+                          limits_sentence(config, config.systems[j], config.report_times_s[last_k], a, even,
+                                          config.schemes[leader], unit));
   }
   return text;
 }
@@ -284,7 +316,7 @@ PanelFigure rank_plot(const StudyConfig& config, const BreakEven& even, const st
   // of six assumptions, or two of twelve, runs past an A4 page's height.
   plot.columns = config.systems.size() > 1 ? 3 : 2;
   for (const AssumptionCurve& c : even.curves) {
-    const DisplayUnit d = display_unit(c.assumption);
+    const DisplayUnit d = display_unit(c.assumption, unit);
     for (std::size_t j = 0; j < config.systems.size(); ++j) {
       if (!applies_to(c.assumption, config.systems[j])) continue;
       PlotPanel panel;

@@ -158,6 +158,71 @@ void add_to_plot(mc::PanelFigure& plot, const mc::OutputSpec& spec, int scheme_i
   line->marks.push_back({x_axis.x[idx[0]], k * s.rms, k * s.rms_lo, k * s.rms_hi});  // the studied points
 }
 
+/// Where the terms the estimators fit change between neighbouring points
+/// of the first swept quantity (the others held): from and to are the
+/// point names before and after, at_index the first quantity's index after.
+struct EstimatorSwitch {
+  System system;
+  std::string before, after, from, to;
+  std::size_t at_index;
+};
+
+std::string point_label(const std::vector<SweepAxis>& axes, const std::vector<std::size_t>& idx) {
+  std::string name;
+  for (std::size_t i = 0; i < axes.size(); ++i)
+    name += fmt::format("{}{}={}", i ? " " : "", quantity_name(axes[i].column), axes[i].texts[idx[i]]);
+  return name;
+}
+
+std::vector<EstimatorSwitch> estimator_switches(const mc::StudyConfig& base, const std::vector<SweepAxis>& axes,
+                                                const std::vector<std::vector<std::size_t>>& idx,
+                                                const std::vector<std::vector<std::string>>& fitted) {
+  std::vector<EstimatorSwitch> out;
+  for (std::size_t p = 0; p < idx.size(); ++p) {
+    if (idx[p][0] == 0) continue;
+    std::vector<std::size_t> prev = idx[p];
+    --prev[0];
+    for (std::size_t q = 0; q < idx.size(); ++q) {
+      if (idx[q] != prev) continue;
+      for (std::size_t j = 0; j < base.systems.size() && j < fitted[p].size() && j < fitted[q].size(); ++j)
+        if (fitted[p][j] != fitted[q][j])
+          out.push_back({base.systems[j], fitted[q][j], fitted[p][j], point_label(axes, idx[q]),
+                         point_label(axes, idx[p]), idx[p][0]});
+    }
+  }
+  return out;
+}
+
+/// sweep.json's `estimator_switches`; each switch marked on the figure's x axis.
+mc::Json switches_json(const std::vector<EstimatorSwitch>& switches, const AxisInUserUnits& x_axis,
+                       mc::PanelFigure& plot) {
+  mc::Json list = mc::Json::array();
+  for (const EstimatorSwitch& w : switches) {
+    mc::Json j = mc::Json::object();
+    j["system"] = system_number(w.system);
+    j["before"] = w.before;
+    j["after"] = w.after;
+    j["from"] = w.from;
+    j["to"] = w.to;
+    list.push_back(j);
+    if (std::find(plot.marked_x.begin(), plot.marked_x.end(), x_axis.x[w.at_index]) == plot.marked_x.end())
+      plot.marked_x.push_back(x_axis.x[w.at_index]);
+  }
+  return list;
+}
+
+std::string switches_markdown(const mc::StudyConfig& base, const std::vector<EstimatorSwitch>& switches) {
+  if (switches.empty()) return "";
+  std::string md = fmt::format(
+      "\nThe estimators change along the sweep{}: a step in the RMS at these points is the estimator's, not the swept "
+      "quantity's (the figure marks them; `--fit-u4 no` or `yes` holds the estimator fixed):\n\n",
+      base.test.fit_u4 == FitU4::kAuto ? " (--fit-u4 auto, the default: U4 is fitted once the test run resolves it)"
+                                        : "");
+  for (const EstimatorSwitch& w : switches)
+    md += fmt::format("- system {}: fits {} at {}, {} at {}\n", system_number(w.system), w.before, w.from, w.after, w.to);
+  return md;
+}
+
 }  // namespace
 
 void check_sweep_size(const std::vector<SweepAxis>& axes) {
@@ -236,6 +301,11 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
   for (const auto& a : axes) points *= a.texts.size();
   mc::Json point_list = mc::Json::array();
   std::vector<std::size_t> idx;
+  // Each point's indices and the terms its estimators fit, per system: a
+  // default that changes the estimator along the sweep (--fit-u4 auto fits
+  // U4 once the test run resolves it) is said where it switches.
+  std::vector<std::vector<std::size_t>> point_idx;
+  std::vector<std::vector<std::string>> point_fitted;
   // Every point is checked before the first is run: a value out of range
   // late in the list must not cost the points before it.
   for (std::size_t p = 0; p < points; ++p) point_config(base, axes, p, idx);
@@ -244,6 +314,9 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
     const mc::StudyLayout layout = mc::make_layout(c);
     const mc::StudyMap map(c, layout);
     const mc::StudyAccumulator acc = run ? run(c, map) : mc::run_blocks(c, map, 0, mc::block_count(c.samples));
+    point_idx.push_back(idx);
+    point_fitted.emplace_back();
+    for (std::size_t j = 0; j < c.systems.size(); ++j) point_fitted.back().push_back(map.fitted_terms(static_cast<int>(j)));
     std::string point_name;
     mc::Json point = mc::Json::object(), values = mc::Json::object(), rows = mc::Json::array();
     for (std::size_t i = 0; i < axes.size(); ++i) {
@@ -326,12 +399,17 @@ SweepFiles run_sweep(const mc::StudyConfig& base, const std::vector<SweepAxis>& 
   }
   f.json["axes"] = swept;
   f.json["points"] = point_list;
+  const std::vector<EstimatorSwitch> switches = estimator_switches(base, axes, point_idx, point_fitted);
+  f.json["estimator_switches"] = switches_json(switches, x_axis, plot);
   f.sweep_csv = mc::render_csv(table);
-  f.summary_md = mc::render_markdown(summary);
+  f.summary_md = mc::render_markdown(summary) + switches_markdown(base, switches);
   plot.stem = "sweep";
-  plot.title = fmt::format("Horizontal RMS at {} min against {} (shaded: {}% confidence interval)",
+  plot.title = fmt::format("Horizontal RMS at {} min against {} (shaded: {}% confidence interval){}",
                            mc::format_number(base.report_times_s.back() / 60), x_axis.label,
-                           mc::format_number(100 * base.confidence));
+                           mc::format_number(100 * base.confidence),
+                           switches.empty() ? ""
+                                            : "; dotted verticals: where the estimators start fitting other terms "
+                                              "(sweep.md), a step in the RMS there is the estimator's");
   plot.band_name = fmt::format("{}% interval", mc::format_number(100 * base.confidence));
   plot.x_label = x_axis.label;
   plot.y_label = fmt::format("RMS horizontal error [{}]", u);

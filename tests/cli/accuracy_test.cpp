@@ -1,8 +1,9 @@
 // End-to-end tests of the accuracy metrics (docs/outputs.md, "Accuracy
 // metrics"): envelope.csv's and run.json's CEP50, CEP95, 2DRMS and radial
 // rate filled on the horizontal rows and empty elsewhere, the same bytes for
-// any thread count, the summary's columns, --units nmi, and check's cep50
-// and p95 bounds (pass, fail with exit 1, bad input with exit 2).
+// any thread count, the summary's columns, --units nmi, and check's cep50,
+// p95 and 2drms bounds (pass, fail with exit 1, bad input with exit 2)
+// judged by one-sided upper confidence limits.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -148,6 +149,71 @@ TEST(Accuracy, CheckRefusesBadPercentileBoundsWithOneLine) {
     EXPECT_EQ(r.exit_code, 2) << c.text;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_TRUE(has(r.err, path + c.message)) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
+}
+
+/// The estimate and the one-sided upper limit of check's line for `label`
+/// ("RMS", "2DRMS"): "...: RMS 12345 m, one-sided upper 95% confidence limit 12500 m <= ...".
+std::pair<double, double> check_numbers(const std::string& out, const std::string& line_no, const std::string& label) {
+  for (const std::string& line : lines_of(out)) {
+    if (line.find(" line " + line_no + ":") == std::string::npos) continue;
+    const std::size_t at = line.find(": " + label + " ");
+    const std::size_t limit = line.find("confidence limit ");
+    if (at == std::string::npos || limit == std::string::npos) break;
+    return {std::stod(line.substr(at + label.size() + 3)), std::stod(line.substr(limit + 17))};
+  }
+  ADD_FAILURE() << "no line " << line_no << " with " << label << " in\n" << out;
+  return {0, 0};
+}
+
+TEST(Accuracy, CheckTakes2drmsAndJudgesByOneSidedUpperLimits) {
+  TempDir dir;
+  const std::string h = "scheme=none system=2 axis=horizontal t_min=84 ";
+  const std::string path = write_file(dir, "b.txt", h + "rms_m<=1e7\n" + h + "2drms_m<=1e7\n" + h +
+                                                       "rms_m<=1e7 confidence=0.5\n");
+  const auto r = run_insmc("check --samples 2000 --units si --bounds " + path);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_TRUE(has(r.out, "one-sided upper 95% confidence limit")) << r.out;
+  const auto [rms, rms_limit] = check_numbers(r.out, "1", "RMS");
+  const auto [drms2, drms2_limit] = check_numbers(r.out, "2", "2DRMS");
+  // Each number is rounded to the second figure of its limit's distance
+  // (at most a twentieth of it off); 2DRMS is twice the RMS, its limit too.
+  const double slack = (rms_limit - rms) / 10 + (drms2_limit - drms2) / 20;
+  EXPECT_NEAR(drms2, 2 * rms, slack) << r.out;
+  EXPECT_NEAR(drms2_limit, 2 * rms_limit, 2 * slack) << r.out;
+  // At c = 0.5 the one-sided limit is the estimate itself.
+  const auto [half, half_limit] = check_numbers(r.out, "3", "RMS");
+  EXPECT_EQ(half, half_limit) << r.out;
+  // The one-sided 95 % limit is the two-sided 90 % interval's upper end
+  // (z = 1.645), not the two-sided 95 % one's (z = 1.96): `run` on the same
+  // samples gives both.
+  double hi90 = 0, hi95 = 0, run_rms = 0;
+  for (const char* conf : {"0.9", "0.95"}) {
+    const auto run = run_insmc(std::string("run --samples 2000 --system 2 --scheme none --format csv --confidence ") + conf);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    for (const std::string& line : lines_of(run.out)) {
+      const auto c = cells_of(line);
+      if (c.size() > 8 && c[0] == "none" && c[3] == "horizontal" && c[4] == "84") {
+        run_rms = std::stod(c[6]);
+        (conf == std::string("0.9") ? hi90 : hi95) = std::stod(c[8]);
+      }
+    }
+  }
+  ASSERT_GT(hi95, hi90);
+  ASSERT_NEAR(run_rms, rms, (rms_limit - rms) / 10) << "the same samples";
+  EXPECT_LT(std::abs(rms_limit - hi90), std::abs(rms_limit - hi95)) << r.out << hi90 << " " << hi95;
+}
+
+TEST(Accuracy, CheckRefusesAConfidenceOutsideTheOptionsRange) {
+  TempDir dir;
+  const std::string h = "scheme=none system=2 axis=horizontal t_min=84 rms_m<=9000 ";
+  for (const char* c : {"0.9999999999999999", "1e-300", "0.4", "1"}) {
+    const std::string path = write_file(dir, "c.txt", h + "confidence=" + c + "\n");
+    const auto r = run_insmc("check --samples 2000 --bounds " + path);
+    EXPECT_EQ(r.exit_code, 2) << c << "\n" << r.out << r.err;
+    EXPECT_TRUE(has(r.err, path + ":1:70: confidence = '" + c + "': must lie in [0.5, 0.999999]")) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_TRUE(r.out.empty()) << r.out;
   }
 }

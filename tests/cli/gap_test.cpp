@@ -60,6 +60,24 @@ TEST(Gap, AWithheldAccelerometerBiasInstabilityIsFoundAndNamed) {
   EXPECT_GE(plotted_points_inside(read_file(std::filesystem::path(out) / "gap_allan.svg"), "gap_allan"), 3u * 4);
 }
 
+// The finding as `insmc simulate` options reproduces the site too: an
+// effect alone would be simulated at simulate's default latitude (45 deg).
+TEST(Gap, TheFindingsSimulateCommandCarriesTheSite) {
+  TempDir dir;
+  const std::string records =
+      simulate(dir, "abi30.csv", "--seed 12 --latitude 30deg --effect accel_bias_instability:sigma=150ug");
+  const std::string out = (dir.path() / "report").string();
+  const auto r = run_insmc("gap --records " + records + " --out " + out + " --max-effects 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string md = read_file(std::filesystem::path(out) / "gap.md");
+  const auto at = md.find("`insmc simulate --effect ");
+  ASSERT_NE(at, std::string::npos) << md;
+  const std::string command = md.substr(at, md.find('`', at + 1) - at);
+  for (const char* option : {" --latitude 30deg", " --system 1", " --test-duration 900s", " --dv-pulse 0.03048mps"})
+    EXPECT_TRUE(has(command, option)) << option << " in " << command;
+  EXPECT_TRUE(has(read_file(std::filesystem::path(out) / "gap.json"), "\"simulate_site_options\": \" --latitude 30deg"));
+}
+
 TEST(Gap, RecordsOfOtherSoftwareAreDiagnosed) {
   // Header keys in another order with unknown keys, numbers as 45.000, f every
   // 20 s with a gap, runs of unequal length, arbitrary run numbers, no truth keys.

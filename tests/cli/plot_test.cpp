@@ -225,5 +225,29 @@ TEST(Plots, CompensateDrawsItsLimitInTheUnitsAsked) {
   EXPECT_GE(plotted_points_inside(svg, "compensate"), 4u);
 }
 
+// --fit-u4 auto (the default) starts fitting U4 along a test-duration
+// sweep of system 1 between 15 and 20 min, and 5.1.2's RMS steps up there:
+// the summary, sweep.md, sweep.json and the figure say where the estimator
+// changes; with the estimator held (--fit-u4 no) nothing is said.
+TEST(Plots, ASweepSaysWhereADefaultChangesTheEstimator) {
+  TempDir out;
+  const ProgramResult r =
+      run_insmc("run --samples 300 --scheme 5.1.2 --system 1 --test-duration 15min,20min --out " + out.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string said = "The estimators change along the sweep (--fit-u4 auto";
+  EXPECT_TRUE(has(r.out, said)) << r.out;
+  EXPECT_TRUE(has(r.out, "at test_duration=15min, ")) << r.out;
+  EXPECT_TRUE(has(r.out, "U4 at test_duration=20min")) << r.out;
+  EXPECT_TRUE(has(read_file(out.path() / "sweep.md"), said));
+  EXPECT_TRUE(has(read_file(out.path() / "sweep.json"), "\"estimator_switches\""));
+  const std::string gp = read_file(out.path() / "sweep.gp");
+  EXPECT_TRUE(has(gp, "set arrow from 20, graph 0 to 20, graph 1")) << "the switch marked at 20 min";
+  EXPECT_TRUE(has(gp, "where the estimators start fitting other terms"));
+  const ProgramResult held =
+      run_insmc("run --samples 300 --scheme 5.1.2 --system 1 --test-duration 15min,20min --fit-u4 no");
+  ASSERT_EQ(held.exit_code, 0) << held.err;
+  EXPECT_FALSE(has(held.out, "The estimators change")) << held.out;
+}
+
 }  // namespace
 }  // namespace insmc::testing

@@ -145,5 +145,30 @@ TEST(Rank, EachOptionThatCannotApplyIsRefusedWithExit2) {
   }
 }
 
+// Under --units nmi every length is in nautical miles: the reset errors'
+// axes in nmi and kt (not ft and ft/s), each adjacent difference's size
+// beside its z, and each assumption's searched range stated.
+TEST(Rank, NauticalMilesEverywhereWithEachDifferencesSizeAndTheSearchedRanges) {
+  TempDir out;
+  const ProgramResult r = run_insmc("rank --samples 2000 --system 1 --scheme none,5.3,5.4 --grid-step 42min --quiet "
+                                    "--units nmi --out " + out.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string gp = read_file(out.path() / "rank.gp");
+  EXPECT_EQ(gp.find("[ft"), std::string::npos) << "an axis in feet";
+  EXPECT_NE(gp.find("reset_position_error [nmi]"), std::string::npos);
+  EXPECT_NE(gp.find("reset_velocity_error [kt]"), std::string::npos);
+  const std::string md = read_file(out.path() / "rank.md");
+  EXPECT_NE(md.find("(z = "), std::string::npos);
+  EXPECT_NE(md.find(" nmi larger"), std::string::npos) << md.substr(0, 3000);
+  EXPECT_NE(md.find("| searched "), std::string::npos);
+  // The test duration is scanned over 1 to 40 min (whole filter intervals).
+  EXPECT_NE(md.find("1 to 40 min"), std::string::npos) << md;
+  for (const char* sentence : {"stays first over the whole searched range of", "stays first while"})
+    for (std::size_t at = md.find(sentence); at != std::string::npos; at = md.find(sentence, at + 1)) {
+      const std::string rest = md.substr(at, md.find('\n', at) - at);
+      EXPECT_NE(rest.find(" to "), std::string::npos) << "no range in: " << rest;
+    }
+}
+
 }  // namespace
 }  // namespace insmc::testing

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "lib/truth/effect.h"
+#include "lib/units/quantity_display.h"
 
 namespace insmc::gap {
 
@@ -71,10 +72,11 @@ std::vector<Candidate> limit_candidates(const std::vector<Candidate>& candidates
         p.grid = grid;
         p.upper_si = std::min(p.upper_si, cap);
         p.lower_si = std::min(p.lower_si, cap);
-        c.description += fmt::format(" ({} limited by the raw stage to {:.3g} SI)", p.name, cap);
-        statements.push_back(fmt::format("{}: {} limited to the raw outputs' {:.3g} (SI; the upper end of the raw "
+        const std::string limit = format_quantity_rounded(cap, p.dimension);
+        c.description += fmt::format(" ({} limited by the raw stage to {})", p.name, limit);
+        statements.push_back(fmt::format("{}: {} limited to the raw outputs' {} (the upper end of the raw "
                                          "stage's interval)",
-                                         c.name, p.name, cap));
+                                         c.name, p.name, limit));
       }
     }
   }

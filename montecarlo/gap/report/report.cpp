@@ -14,6 +14,23 @@
 namespace insmc::gap {
 namespace {
 
+/// The options of `insmc simulate` that reproduce the records' site (system,
+/// latitude, test run, pulse weight, position resolution): an effect alone
+/// would be simulated at simulate's defaults (45 deg), not at this site.
+std::string simulate_site_options(const std::vector<runs::SiteValue>& site) {
+  std::string out;
+  for (const runs::SiteValue& v : site) {
+    const std::string x = fmt::format("{:.10g}", v.value);
+    if (v.key == "system") out += " --system " + x;
+    else if (v.key == "latitude_deg") out += " --latitude " + x + "deg";
+    else if (v.key == "test_duration_s") out += " --test-duration " + x + "s";
+    else if (v.key == "filter_interval_s") out += " --filter-interval " + x + "s";
+    else if (v.key == "dv_pulse_mps") out += " --dv-pulse " + x + "mps";
+    else if (v.key == "position_resolution_m") out += " --position-resolution " + x + "m";
+  }
+  return out;
+}
+
 mc::Json shares_json(const std::vector<Share>& shares) {
   mc::Json j = mc::Json::object();
   for (const Share& s : shares) j[s.name] = s.share;
@@ -197,6 +214,7 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
     e["shrink"] = c.shrink;
     e["null_shrink"] = std::isfinite(c.null_shrink) ? mc::Json(c.null_shrink) : mc::Json(nullptr);
     e["as_effect"] = c.as_effect.empty() ? mc::Json(nullptr) : mc::Json(c.as_effect);
+    e["simulate_site_options"] = simulate_site_options(d.site);
     mc::Json kept = mc::Json::array();
     for (const std::string& k : c.as_effect_kept) kept.push_back(k);
     e["as_effect_kept"] = kept;
@@ -317,8 +335,8 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                       d.top.find('|') != std::string::npos ? " — within two standard errors: reported as one class" : "");
     if (!d.ranking.front().as_effect.empty()) {
       const CandidateResult& top = d.ranking.front();
-      md += fmt::format("The first-ranked finding as an effect, to simulate and compare (`insmc simulate --effect "
-                        "{}`){}.\n\n", top.as_effect,
+      md += fmt::format("The first-ranked finding as an effect, to simulate and compare at this site (`insmc "
+                        "simulate --effect {}{}`){}.\n\n", top.as_effect, simulate_site_options(d.site),
                         top.as_effect_kept.empty() ? ""
                                                    : fmt::format("; not fitted from the records: {}",
                                                                  fmt::join(top.as_effect_kept, "; ")));

@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "lib/noise/noise_budget.h"
+#include "lib/units/quantity_display.h"
 #include "tests/unit/montecarlo/runs/raw_stage_header.h"
 
 namespace insmc::gap {
@@ -53,6 +56,15 @@ TEST(RawStage, LimitsTheNoiseCandidatesToWhatTheRawOutputsAllow) {
   EXPECT_NEAR(cap_of("gyro_drift_instability", "sigma"), 3e-7, 1e-18);
   EXPECT_NEAR(cap_of("velocity_random_walk", "velocity_1h"), 0.02, 1e-15);
   EXPECT_NEAR(cap_of("accel_bias_instability", "sigma"), 5e-5, 1e-15);
+  // Each limit is stated in its unit (the quantity's display unit), not as "SI".
+  for (const std::string& s : statements) EXPECT_EQ(s.find("SI"), std::string::npos) << s;
+  const auto stated = [&](double si, Dimension d) {
+    const std::string text = format_quantity_rounded(si, d);
+    return std::any_of(statements.begin(), statements.end(),
+                       [&](const std::string& s) { return s.find("raw outputs' " + text + " (") != std::string::npos; });
+  };
+  EXPECT_TRUE(stated(0.02, Dimension::kVelocity));
+  EXPECT_TRUE(stated(5e-5, Dimension::kAcceleration));
   // Every other candidate is the registry's.
   EXPECT_EQ(limited.size(), gap::candidate_registry().size());
   for (std::size_t i = 0; i < limited.size(); ++i) {
