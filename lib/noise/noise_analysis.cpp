@@ -66,8 +66,9 @@ NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& opti
         first_part_s > 0 ? overlapping_allan(y, rec.dt_s, rest) : std::vector<AllanLevel>{};
     if (rest_levels.size() >= 2) {
       const NoiseFit rest_fit = fit_noise(rest_levels, fit_options);
-      ch.stationarity =
-          test_first_part(y, rec.dt_s, rec.runs, kept, rest_fit.model, first_part_s, options.alpha);
+      const bool constant = std::all_of(y.begin(), y.end(), [&](double v) { return v == y.front(); });
+      if (!constant)
+        ch.stationarity = test_first_part(y, rec.dt_s, rec.runs, kept, rest_fit.model, first_part_s, options.alpha);
     }
     ch.first_part_excluded = ch.stationarity.tested && !ch.stationarity.stationary;
     const std::vector<Segment>& used = ch.first_part_excluded ? rest : kept;
@@ -86,7 +87,11 @@ NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& opti
     }
     for (const Segment& s : used)
       ch.longest_stretch_s = std::max(ch.longest_stretch_s, static_cast<double>(s.size()) * rec.dt_s);
-    ch.stuck = std::none_of(levels.begin(), levels.end(), [](const AllanLevel& l) { return l.avar > 0; });
+    // Stuck: every sample the fit uses holds one value (its Allan variance is
+    // rounding in the running sums, not noise).
+    ch.stuck = true;
+    for (const Segment& s : used)
+      for (std::size_t k = s.begin; k < s.end && ch.stuck; ++k) ch.stuck = y[k] == y[used.front().begin];
     ch.fit = fit_noise(levels, fit_options);
     ch.allan = allan_rows(levels, ch.fit, options.confidence);
     ch.readings = read_slopes(ch.allan);

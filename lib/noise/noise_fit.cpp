@@ -274,6 +274,9 @@ NoiseModel select_terms(const Problem& P, std::vector<NoiseTerm>& selected, std:
   NoiseModel model = fit_terms(P, selected);
   double value = score(P, model);
   while (selected.size() > 1) {
+    // Under a weighting that no model of these terms passes yet, the fit
+    // test cannot tell simplifications apart: the likelihood-ratio test alone.
+    const bool current_passes = passes(P, model, selected, options.selection_alpha);
     double best_margin = std::numeric_limits<double>::infinity(), best_stat = 0;
     std::optional<Simplification> best;
     NoiseModel best_model;
@@ -281,7 +284,7 @@ NoiseModel select_terms(const Problem& P, std::vector<NoiseTerm>& selected, std:
       const NoiseModel m = fit_terms(P, s.terms);
       const double stat = std::max(0.0, score(P, m) - value);
       const double margin = stat - chi2_quantile(s.df, 1 - 2 * options.selection_alpha);
-      if (margin < best_margin && passes(P, m, s.terms, options.selection_alpha)) best_margin = margin, best = s, best_model = m, best_stat = stat;
+      if (margin < best_margin && (!current_passes || passes(P, m, s.terms, options.selection_alpha))) best_margin = margin, best = s, best_model = m, best_stat = stat;
     }
     if (!best || !(best_margin < 0)) break;
     dropped.push_back({best->removed, 0, 0, 0, best_stat});
