@@ -117,8 +117,9 @@ RenderedFigure render_stationarity_figure(const noise::SensorRecording& rec, con
   const double alpha = a.alpha;
   PanelFigure f;
   f.stem = "stationarity";
-  f.title = "Block means of each recording minus its mean after the first part (shaded: the first part; thick: the "
-            "first part's mean, the test's statistic; band: where it stays if the first part is like the rest)";
+  f.title = "Block means of each recording minus its mean after the first part (shaded: the first part; the level "
+            "across it: the first part's mean, the test's statistic; dark band: where it stays if the first part is "
+            "like the rest)";
   f.x_label = "time in the recording [h]";
   f.signed_y = true;
   f.columns = 2;
