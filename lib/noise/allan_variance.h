@@ -36,6 +36,14 @@ struct AllanLevel {
   std::vector<std::size_t> segment_samples;  ///< N_s of each segment that holds a window
 };
 
+/// One level as the report gives it: the deviation, its interval, the
+/// degrees of freedom under the fitted model, and the model's deviation
+/// (0 where the model was not fitted).
+struct AllanRow {
+  double tau_s = 0, adev = 0, lower = 0, upper = 0, edf = 0, model_adev = 0;
+  std::size_t windows = 0;
+};
+
 /// Overlapping Allan variance of y (one value per sample, spacing dt_s) over
 /// the given segments, at m = 1, 2, 4, ... while 3m ≤ the longest segment
 /// (and m ≤ max_cluster). Segments shorter than 3 samples are skipped.

@@ -18,6 +18,7 @@ constexpr std::size_t kRunningMedianHalfWidth = 15;  ///< 31 blocks
 
 struct Flag {
   bool variance = false, mean = false;
+  std::array<bool, 2> sensor{};  ///< flagged by a gyro, by an accelerometer
   double excess = 0;
   std::string channels;
 };
@@ -27,8 +28,36 @@ struct Flag {
 DisturbanceMask no_mask(const SensorRecording& rec) {
   DisturbanceMask m;
   m.kept = rec.runs;
+  m.kept_by_sensor = {rec.runs, rec.runs};
   return m;
 }
+
+namespace {
+
+/// The run with the masked blocks (of n samples) cut out, appended to
+/// `kept`; returns the samples masked. The last block also takes the
+/// samples after it (fewer than a block).
+std::size_t cut(const Segment& run, const std::vector<bool>& masked, std::size_t n, std::vector<Segment>& kept) {
+  const std::size_t blocks = masked.size();
+  std::size_t kept_from = run.begin, lost = 0;
+  for (std::size_t i = 0; i < blocks;) {
+    if (!masked[i]) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < blocks && masked[j]) ++j;
+    const std::size_t end_sample = j == blocks ? run.size() : j * n;
+    if (run.begin + i * n > kept_from) kept.push_back({kept_from, run.begin + i * n});
+    kept_from = run.begin + end_sample;
+    lost += end_sample - i * n;
+    i = j;
+  }
+  if (run.end > kept_from) kept.push_back({kept_from, run.end});
+  return lost;
+}
+
+}  // namespace
 
 DisturbanceMask find_disturbances(const SensorRecording& rec, double alpha) {
   DisturbanceMask out;
@@ -93,6 +122,7 @@ DisturbanceMask find_disturbances(const SensorRecording& rec, double alpha) {
           f.mean = f.mean || m_excess > 1;
           f.excess = std::max({f.excess, v_excess, m_excess});
           f.channels += (f.channels.empty() ? "" : ",") + channel_name(c);
+          f.sensor[static_cast<std::size_t>(channel_kind(c))] = true;
         }
       }
   }
@@ -100,11 +130,17 @@ DisturbanceMask find_disturbances(const SensorRecording& rec, double alpha) {
   for (std::size_t r = 0; r < rec.runs.size(); ++r) {
     const Segment run = rec.runs[r];
     const std::size_t blocks = flags[r].size();
+    // A flagged block and one on each side: in the flagging sensor's channels
+    // (per sensor), in the union for the report's intervals.
     std::vector<bool> masked(blocks, false);
+    std::array<std::vector<bool>, 2> by_sensor{std::vector<bool>(blocks, false), std::vector<bool>(blocks, false)};
     for (std::size_t i = 0; i < blocks; ++i)
-      if (!flags[r][i].channels.empty())
-        for (std::size_t j = i > 0 ? i - 1 : 0; j <= std::min(blocks - 1, i + 1); ++j) masked[j] = true;
-    std::size_t kept_from = run.begin;
+      for (std::size_t j = i > 0 ? i - 1 : 0; !flags[r][i].channels.empty() && j <= std::min(blocks - 1, i + 1); ++j) {
+        masked[j] = true;
+        for (std::size_t k = 0; k < 2; ++k) by_sensor[k][j] = by_sensor[k][j] || flags[r][i].sensor[k];
+      }
+    out.masked_samples += cut(run, masked, n, out.kept);
+    for (std::size_t k = 0; k < 2; ++k) out.masked_by_sensor[k] += cut(run, by_sensor[k], n, out.kept_by_sensor[k]);
     for (std::size_t i = 0; i < blocks;) {
       if (!masked[i]) {
         ++i;
@@ -114,10 +150,12 @@ DisturbanceMask find_disturbances(const SensorRecording& rec, double alpha) {
       MaskedInterval mi;
       mi.run = r;
       bool var = false, mean = false;
+      std::array<bool, 2> sensor{};
       std::vector<std::string> chans;
       for (; j < blocks && masked[j]; ++j) {
         const Flag& f = flags[r][j];
         var = var || f.variance, mean = mean || f.mean;
+        for (std::size_t k = 0; k < 2; ++k) sensor[k] = sensor[k] || by_sensor[k][j];
         mi.excess = std::max(mi.excess, f.excess);
         std::size_t p = 0;
         while (p < f.channels.size()) {
@@ -129,17 +167,12 @@ DisturbanceMask find_disturbances(const SensorRecording& rec, double alpha) {
       }
       for (const std::string& ch : chans) mi.channels += (mi.channels.empty() ? "" : ",") + ch;
       mi.test = var && mean ? "variance,mean" : var ? "variance" : "mean";
+      mi.sensors = sensor[0] && sensor[1] ? "gyros,accelerometers" : sensor[0] ? "gyros" : "accelerometers";
       mi.start_s = static_cast<double>(i * n) * rec.dt_s;
-      // The last block of a run also takes the samples after it (fewer than a block).
-      const std::size_t end_sample = j == blocks ? run.size() : j * n;
-      mi.end_s = static_cast<double>(end_sample) * rec.dt_s;
-      if (run.begin + i * n > kept_from) out.kept.push_back({kept_from, run.begin + i * n});
-      kept_from = run.begin + end_sample;
-      out.masked_samples += end_sample - i * n;
+      mi.end_s = static_cast<double>(j == blocks ? run.size() : j * n) * rec.dt_s;
       out.intervals.push_back(mi);
       i = j;
     }
-    if (run.end > kept_from) out.kept.push_back({kept_from, run.end});
   }
   return out;
 }

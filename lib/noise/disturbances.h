@@ -12,7 +12,10 @@
 ///   absolute departure of the channel),
 /// with α' = α / (blocks × channels) (Bonferroni: a clean recording has
 /// probability ≤ α of losing any block). A disturbed block and one block on
-/// each side are masked in every channel.
+/// each side are masked in the channels of the sensor that flagged it (the
+/// three gyros, or the three accelerometers): a bump that only the
+/// accelerometers felt costs the gyros nothing.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -25,14 +28,20 @@ struct MaskedInterval {
   double start_s = 0, end_s = 0;  ///< from the start of the run
   std::string channels;           ///< the channels that flagged it, e.g. "gyro_x,accel_z"
   std::string test;               ///< "variance", "mean" or both
+  std::string sensors;            ///< the sensors it is cut from: "gyros", "accelerometers" or both
   double excess = 0;              ///< largest statistic as a multiple of its threshold
 };
 
 struct DisturbanceMask {
   double block_s = 0;
   std::vector<MaskedInterval> intervals;
-  std::vector<Segment> kept;      ///< the runs with the masked intervals cut out
+  std::vector<Segment> kept;      ///< the runs with every masked interval cut out (all channels)
   std::size_t masked_samples = 0;
+  /// Per sensor (SensorKind: gyros, accelerometers): the runs with that
+  /// sensor's own masked blocks cut out, and how many samples it lost.
+  std::array<std::vector<Segment>, 2> kept_by_sensor;
+  std::array<std::size_t, 2> masked_by_sensor{};
+  const std::vector<Segment>& kept_for(SensorKind kind) const { return kept_by_sensor[static_cast<std::size_t>(kind)]; }
 };
 
 /// Finds the disturbed blocks at family-wise false-alarm probability alpha.

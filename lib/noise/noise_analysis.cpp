@@ -18,7 +18,9 @@ std::vector<AllanRow> allan_rows(const std::vector<AllanLevel>& levels, const No
     r.edf = fit.edf[j];
     const DeviationInterval ci = adev_interval(levels[j].avar, r.edf, confidence);
     r.lower = ci.lo, r.upper = ci.hi;
-    r.model_adev = std::sqrt(fit.model.avar(r.tau_s));
+    // The model only where it was fitted (the levels before first_level lie
+    // outside every model that passes, docs/noise.md §3).
+    r.model_adev = j >= fit.first_level ? std::sqrt(fit.model.avar(r.tau_s)) : 0.0;
     r.windows = levels[j].windows;
     rows.push_back(r);
   }
@@ -36,6 +38,8 @@ std::size_t total(std::span<const Segment> s) {
 NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& options) {
   NoiseAnalysis out;
   out.dt_s = rec.dt_s;
+  out.alpha = options.alpha;
+  out.confidence = options.confidence;
   const auto tell = [&](std::string_view stage, std::size_t done) {
     if (options.progress) options.progress(stage, done, kChannels);
   };
@@ -49,22 +53,25 @@ NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& opti
   NoiseFitOptions fit_options;
   fit_options.selection_alpha = options.alpha;
   fit_options.confidence = options.confidence;
-  const std::vector<Segment> rest = after_first_part(rec.runs, out.mask.kept, rec.dt_s, first_part_s);
   for (std::size_t c = 0; c < kChannels; ++c) {
     tell("Allan deviation and fit per channel", c);
     ChannelNoise& ch = out.channels[c];
     ch.name = channel_name(c);
     ch.kind = channel_kind(c);
+    // Masked where this channel's own sensor was disturbed.
+    const std::vector<Segment>& kept = out.mask.kept_for(ch.kind);
+    const std::vector<Segment> rest = after_first_part(rec.runs, kept, rec.dt_s, first_part_s);
     const std::vector<double>& y = rec.channel[c];
     const std::vector<AllanLevel> rest_levels =
         first_part_s > 0 ? overlapping_allan(y, rec.dt_s, rest) : std::vector<AllanLevel>{};
     if (rest_levels.size() >= 2) {
       const NoiseFit rest_fit = fit_noise(rest_levels, fit_options);
-      ch.stationarity =
-          test_first_part(y, rec.dt_s, rec.runs, out.mask.kept, rest_fit.model, first_part_s, options.alpha);
+      const bool constant = std::all_of(y.begin(), y.end(), [&](double v) { return v == y.front(); });
+      if (!constant)
+        ch.stationarity = test_first_part(y, rec.dt_s, rec.runs, kept, rest_fit.model, first_part_s, options.alpha);
     }
     ch.first_part_excluded = ch.stationarity.tested && !ch.stationarity.stationary;
-    const std::vector<Segment>& used = ch.first_part_excluded ? rest : out.mask.kept;
+    const std::vector<Segment>& used = ch.first_part_excluded ? rest : kept;
     const std::vector<AllanLevel> levels = overlapping_allan(y, rec.dt_s, used);
     if (levels.size() < 2) {
       // A property of the data, not a defect: say what was left and why.
@@ -78,8 +85,16 @@ NoiseAnalysis analyse_noise(const SensorRecording& rec, const NoiseOptions& opti
                       ch.first_part_excluded ? " and leaving out the warm-up" : "", longest_kept, kept,
                       options.mask ? ", or give --mask off" : ""));
     }
+    for (const Segment& s : used)
+      ch.longest_stretch_s = std::max(ch.longest_stretch_s, static_cast<double>(s.size()) * rec.dt_s);
+    // Stuck: every sample the fit uses holds one value (its Allan variance is
+    // rounding in the running sums, not noise).
+    ch.stuck = true;
+    for (const Segment& s : used)
+      for (std::size_t k = s.begin; k < s.end && ch.stuck; ++k) ch.stuck = y[k] == y[used.front().begin];
     ch.fit = fit_noise(levels, fit_options);
     ch.allan = allan_rows(levels, ch.fit, options.confidence);
+    ch.readings = read_slopes(ch.allan);
   }
   tell("Allan deviation and fit per channel", kChannels);
   return out;

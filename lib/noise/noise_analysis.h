@@ -2,8 +2,8 @@
 /// The raw-sensor noise stage (docs/noise.md): for each of the six channels
 /// of a static recording, the overlapping Allan deviation with its
 /// confidence intervals, the fitted noise terms with their intervals, and
-/// the stationarity of the first part; for the assembly, the masked
-/// disturbances. Steps: mask disturbances → fit the rest of each run (after
+/// the stationarity of the first part, the IEEE slope readings; for the
+/// assembly, the masked disturbances (each cut from the sensor that felt it). Steps: mask disturbances → fit the rest of each run (after
 /// the first part) → test the first part against it → if it is like the
 /// rest, fit everything kept; if not, leave the first part out and say so.
 #include <array>
@@ -16,6 +16,7 @@
 #include <string_view>
 
 #include "lib/noise/recording.h"
+#include "lib/noise/slope_readings.h"
 #include "lib/noise/stationarity.h"
 
 namespace insmc::noise {
@@ -30,11 +31,6 @@ struct NoiseOptions {
   std::function<void(std::string_view stage, std::size_t done, std::size_t total)> progress;
 };
 
-struct AllanRow {
-  double tau_s = 0, adev = 0, lower = 0, upper = 0, edf = 0, model_adev = 0;
-  std::size_t windows = 0;
-};
-
 struct ChannelNoise {
   std::string name;
   SensorKind kind{};
@@ -42,11 +38,15 @@ struct ChannelNoise {
   bool first_part_excluded = false;
   std::vector<AllanRow> allan;  ///< of the samples the fit used
   NoiseFit fit;
+  SlopeReadings readings;       ///< IEEE Std 952's slope readings of the same levels
+  bool stuck = false;           ///< the output never changes: no noise to measure
+  double longest_stretch_s = 0; ///< the longest stretch of consecutive samples the fit used
 };
 
 struct NoiseAnalysis {
   double dt_s = 0;
-  double used_s = 0;   ///< time the fit of a stationary channel uses (all runs, masked samples out)
+  double alpha = 0.01, confidence = 0.95;  ///< the options the analysis ran with
+  double used_s = 0;   ///< time every channel keeps (all runs, every masked interval out)
   DisturbanceMask mask;
   std::array<ChannelNoise, kChannels> channels;
 };

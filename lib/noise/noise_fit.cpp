@@ -220,6 +220,20 @@ NoiseModel fit_terms(const Problem& P, const std::vector<NoiseTerm>& terms, std:
 
 double chi2_quantile(double df, double p) { return boost::math::quantile(boost::math::chi_squared(df), p); }
 
+/// The parameters a model fits: its powers, and T_c with a Gauss–Markov term.
+double parameters(const std::vector<NoiseTerm>& terms) {
+  return static_cast<double>(terms.size()) + (has(terms, NoiseTerm::kGaussMarkov) ? 1.0 : 0.0);
+}
+
+/// Does the model pass the fit test? The pilot's (N.2) treats the levels as
+/// independent and is no goodness-of-fit statistic: it never rules a
+/// simplification out. (N.5) is, with χ²(levels − parameters).
+bool passes(const Levels&, const NoiseModel&, const std::vector<NoiseTerm>&, double) { return true; }
+bool passes(const Weighted& W, const NoiseModel& m, const std::vector<NoiseTerm>& terms, double alpha) {
+  const double dof = static_cast<double>(W.tau.size()) - parameters(terms);
+  return dof < 1 || objective(W, m) <= chi2_quantile(dof, 1 - alpha);
+}
+
 /// The simplifications of a term set tried by the backward elimination,
 /// each with the parameters it removes: every term dropped (two parameters
 /// for the Gauss–Markov term, one if a white rate or a random walk remains
@@ -260,6 +274,9 @@ NoiseModel select_terms(const Problem& P, std::vector<NoiseTerm>& selected, std:
   NoiseModel model = fit_terms(P, selected);
   double value = score(P, model);
   while (selected.size() > 1) {
+    // Under a weighting that no model of these terms passes yet, the fit
+    // test cannot tell simplifications apart: the likelihood-ratio test alone.
+    const bool current_passes = passes(P, model, selected, options.selection_alpha);
     double best_margin = std::numeric_limits<double>::infinity(), best_stat = 0;
     std::optional<Simplification> best;
     NoiseModel best_model;
@@ -267,7 +284,7 @@ NoiseModel select_terms(const Problem& P, std::vector<NoiseTerm>& selected, std:
       const NoiseModel m = fit_terms(P, s.terms);
       const double stat = std::max(0.0, score(P, m) - value);
       const double margin = stat - chi2_quantile(s.df, 1 - 2 * options.selection_alpha);
-      if (margin < best_margin) best_margin = margin, best = s, best_model = m, best_stat = stat;
+      if (margin < best_margin && (!current_passes || passes(P, m, s.terms, options.selection_alpha))) best_margin = margin, best = s, best_model = m, best_stat = stat;
     }
     if (!best || !(best_margin < 0)) break;
     dropped.push_back({best->removed, 0, 0, 0, best_stat});
@@ -314,15 +331,10 @@ double crossing(F&& excess, double inside, double outside) {
 
 }  // namespace
 
-NoiseFit fit_noise(std::span<const AllanLevel> levels, const NoiseFitOptions& options) {
-  if (levels.size() < 2) throw std::invalid_argument("fit_noise: at least two Allan levels are needed");
-  // A channel that never changes (a constant or synthetic output): no noise
-  // to fit, every term absent.
-  if (std::none_of(levels.begin(), levels.end(), [](const AllanLevel& l) { return l.avar > 0; })) {
-    NoiseFit none;
-    none.edf.assign(levels.size(), 1.0);
-    return none;
-  }
+namespace {
+
+/// The fit over all the given levels (docs/noise.md §3), with its fit test.
+NoiseFit fit_levels(std::span<const AllanLevel> levels, const NoiseFitOptions& options) {
   // Pilot: (N.2) with the degrees of freedom of each level's dominant noise
   // type, every allowed term (its model weights the fit below).
   Levels L;
@@ -392,6 +404,49 @@ NoiseFit fit_noise(std::span<const AllanLevel> levels, const NoiseFitOptions& op
     const double x0 = std::log(tc);
     fit.correlation_time_lower_s = excess(std::log(lo)) <= 0 ? lo : std::exp(crossing(excess, x0, std::log(lo)));
     fit.correlation_time_upper_s = excess(std::log(hi)) <= 0 ? hi : std::exp(crossing(excess, x0, std::log(hi)));
+  }
+  // The fit test under the model's own covariance.
+  const Weighted own = weighted_problem(levels, model);
+  fit.fit_statistic = objective(own, model);
+  fit.fit_dof = static_cast<double>(levels.size()) - parameters(selected);
+  fit.fit_p_value = fit.fit_dof >= 1 ? boost::math::cdf(boost::math::complement(boost::math::chi_squared(fit.fit_dof),
+                                                                                 fit.fit_statistic))
+                                     : 1.0;
+  fit.fits = fit.fit_p_value >= options.selection_alpha;
+  return fit;
+}
+
+}  // namespace
+
+NoiseFit fit_noise(std::span<const AllanLevel> levels, const NoiseFitOptions& options) {
+  if (levels.size() < 2) throw std::invalid_argument("fit_noise: at least two Allan levels are needed");
+  // A channel that never changes (a constant or synthetic output): no noise
+  // to fit, every term absent.
+  if (std::none_of(levels.begin(), levels.end(), [](const AllanLevel& l) { return l.avar > 0; })) {
+    NoiseFit none;
+    none.edf.assign(levels.size(), 1.0);
+    return none;
+  }
+  NoiseFit fit = fit_levels(levels, options);
+  // Leave out the shortest levels one at a time until a model passes.
+  for (std::size_t first = 1; !fit.fits && levels.size() - first >= kMinFitLevels; ++first) {
+    NoiseFit trimmed = fit_levels(levels.subspan(first), options);
+    trimmed.first_level = first;
+    const bool done = trimmed.fits;
+    if (done) fit = std::move(trimmed);
+    if (done) break;
+  }
+  if (fit.first_level > 0) {
+    // The degrees of freedom of the levels left out, under the model (the
+    // data's interval there), in front of those of the fitted levels.
+    const double dt = levels.front().tau_s / static_cast<double>(levels.front().cluster);
+    const Eigen::MatrixXd cov = allan_covariance(levels.first(fit.first_level), dt, fit.model);
+    std::vector<double> edf;
+    for (std::size_t j = 0; j < fit.first_level; ++j) {
+      const double nu = fit.model.avar(levels[j].tau_s), var = cov(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j));
+      edf.push_back(var > 0 ? std::max(1.0, 2 * nu * nu / var) : allan_edf(levels[j], fit.model.dominant_type(levels[j].tau_s)));
+    }
+    fit.edf.insert(fit.edf.begin(), edf.begin(), edf.end());
   }
   return fit;
 }

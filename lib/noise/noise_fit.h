@@ -23,8 +23,18 @@
 /// limit), or the Gauss–Markov term replaced by its limit T_c → 0 (white
 /// rate) or T_c → ∞ (random walk) (df 1), so that a random walk is not
 /// reported as a Gauss–Markov process with a long T_c.
+/// A simplification is taken only if the simpler model still passes the fit
+/// test below, so every term the data need stays.
 /// Intervals: profile of J, ΔJ ≤ χ²₁ at the confidence (T_c refitted in the
 /// profile of the Gauss–Markov σ).
+/// Fit test: J = rᵀ S⁻¹ r with S the covariance of the levels under the
+/// fitted model itself is χ² with (levels − fitted parameters) degrees of
+/// freedom when the model is the process's (GMWM, Guerrier et al. 2013); the
+/// model fails when J is above its 1 − α quantile. A model that fails is not
+/// the fit: the shortest levels (where a sensor's own filtering and
+/// sampling bend the curve away from every standard term) are left out one
+/// at a time until a model passes on the rest, and if none does on at least
+/// kMinFitLevels levels the fit says so (fits = false).
 #include <array>
 #include <span>
 #include <string>
@@ -74,7 +84,15 @@ struct NoiseFit {
   double objective = 0;        ///< (N.5) at the fit
   /// Terms tried and dropped, with their statistic (for the report).
   std::vector<TermFit> dropped;
+  /// The fit test over the levels [first_level, end): J under the model's
+  /// own covariance, its degrees of freedom and p-value.
+  double fit_statistic = 0, fit_dof = 0, fit_p_value = 1;
+  bool fits = true;
+  std::size_t first_level = 0;  ///< the levels before it are outside every model that passes
 };
+
+/// The fewest levels a fit is tried on when the shortest are left out.
+inline constexpr std::size_t kMinFitLevels = 6;
 
 /// Fits the levels (at least 2); throws std::invalid_argument on fewer.
 NoiseFit fit_noise(std::span<const AllanLevel> levels, const NoiseFitOptions& options = {});

@@ -7,18 +7,47 @@
 namespace insmc::noise {
 namespace {
 
-/// Mean of y over [from, to) counting only kept samples; NaN if none.
-double kept_mean(std::span<const double> y, std::span<const Segment> kept, std::size_t from, std::size_t to) {
-  double sum = 0;
-  std::size_t count = 0;
+/// The kept stretches of [from, to), as sample index ranges.
+std::vector<Segment> kept_within(std::span<const Segment> kept, std::size_t from, std::size_t to) {
+  std::vector<Segment> out;
   for (const Segment& s : kept) {
     const std::size_t a = std::max(from, s.begin), b = std::min(to, s.end);
-    for (std::size_t k = a; k < b; ++k) sum += y[k], ++count;
+    if (b > a) out.push_back({a, b});
   }
-  return count ? sum / static_cast<double>(count) : std::nan("");
+  return out;
+}
+
+/// Mean of y over the stretches, and the points of θ that make it:
+/// ȳ = Σ_s (θ(e_s) − θ(b_s)) / T with T the stretches' total length.
+double add_mean(std::span<const double> y, const std::vector<Segment>& parts, double dt_s, double sign,
+                std::vector<std::pair<double, double>>& points) {
+  double sum = 0;
+  std::size_t count = 0;
+  for (const Segment& s : parts) {
+    for (std::size_t k = s.begin; k < s.end; ++k) sum += y[k];
+    count += s.size();
+  }
+  const double length_s = static_cast<double>(count) * dt_s;
+  for (const Segment& s : parts) {
+    points.push_back({static_cast<double>(s.end) * dt_s, sign / length_s});
+    points.push_back({static_cast<double>(s.begin) * dt_s, -sign / length_s});
+  }
+  return sum / static_cast<double>(count);
 }
 
 }  // namespace
+
+double combination_variance(const NoiseModel& model, std::span<const std::pair<double, double>> points) {
+  double v = 0;
+  for (const auto& [ti, ci] : points)
+    for (const auto& [tj, cj] : points) {
+      double d = 0;
+      for (NoiseTerm t : kAllNoiseTerms)
+        if (model[t] > 0) d += model[t] * structure_shape(t, ti - tj, model.correlation_time_s);
+      v += ci * cj * d;
+    }
+  return -0.5 * v;  // (N.6)
+}
 
 std::vector<Segment> after_first_part(std::span<const Segment> runs, std::span<const Segment> kept, double dt_s,
                                       double first_part_s) {
@@ -39,27 +68,27 @@ StationarityTest test_first_part(std::span<const double> y, double dt_s, std::sp
                                  double alpha) {
   StationarityTest t;
   t.first_part_s = first_part_s;
-  t.block_s = first_part_s / 6;
   const auto part = static_cast<std::size_t>(std::llround(first_part_s / dt_s));
-  const auto block = static_cast<std::size_t>(std::llround(t.block_s / dt_s));
-  if (block < 1) return t;
-  const double var = rest_model.mean_difference_variance(t.block_s, t.first_part_s - t.block_s);  // (N.1)
-  if (!(var > 0)) return t;
-  t.expected_sd = std::sqrt(var);
-  double sum_d = 0;
+  if (part < 1) return t;
+  double sum_d = 0, sum_var = 0;
   for (const Segment& r : runs) {
     if (r.size() < 2 * part) continue;
-    const double a = kept_mean(y, kept, r.begin, r.begin + block);
-    const double b = kept_mean(y, kept, r.begin + part - block, r.begin + part);
-    if (!std::isfinite(a) || !std::isfinite(b)) continue;
-    const double d = b - a;
+    const std::vector<Segment> first = kept_within(kept, r.begin, r.begin + part);
+    const std::vector<Segment> rest = kept_within(kept, r.begin + part, r.end);
+    if (first.empty() || rest.empty()) continue;
+    std::vector<std::pair<double, double>> points;
+    const double d = add_mean(y, first, dt_s, 1, points) - add_mean(y, rest, dt_s, -1, points);
+    const double var = combination_variance(rest_model, points);
+    if (!(var > 0)) continue;
     sum_d += d;
+    sum_var += var;
     t.statistic += d * d / var;
     ++t.runs;
   }
   if (t.runs == 0) return t;
   t.tested = true;
   t.mean_change = sum_d / static_cast<double>(t.runs);
+  t.expected_sd = std::sqrt(sum_var / static_cast<double>(t.runs));
   t.p_value = boost::math::cdf(boost::math::complement(boost::math::chi_squared(static_cast<double>(t.runs)), t.statistic));
   t.stationary = t.p_value >= alpha;
   return t;

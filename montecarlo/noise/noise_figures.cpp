@@ -1,6 +1,7 @@
 #include "montecarlo/noise/noise_figures.h"
 
 #include <algorithm>
+#include <boost/math/distributions/normal.hpp>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -113,17 +114,21 @@ RenderedFigure render_noise_allan_figure(const noise::NoiseAnalysis& a, const st
 }
 
 RenderedFigure render_stationarity_figure(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a) {
+  const double alpha = a.alpha;
   PanelFigure f;
   f.stem = "stationarity";
-  f.title = "Block means of each recording minus its mean after the first part (shaded: the first part)";
+  f.title = "Block means of each recording minus its mean after the first part (shaded: the first part; the level "
+            "across it: the first part's mean, the test's statistic; dark band: where it stays if the first part is "
+            "like the rest)";
   f.x_label = "time in the recording [h]";
   f.signed_y = true;
   f.columns = 2;
+  const double z = boost::math::quantile(boost::math::normal(), 1 - alpha / 2);
   for (std::size_t c = 0; c < noise::kChannels; ++c) {
     const noise::ChannelNoise& ch = a.channels[c];
     const DisplayRate rate = display_rate(ch.kind);
     const double part_s = ch.stationarity.first_part_s;
-    const auto block = static_cast<std::size_t>(std::llround(ch.stationarity.block_s / rec.dt_s));
+    const auto block = static_cast<std::size_t>(std::llround(part_s / 6 / rec.dt_s));
     const auto part = static_cast<std::size_t>(std::llround(part_s / rec.dt_s));
     PlotPanel panel;
     panel.title = ch.name + (ch.stationarity.tested ? (ch.stationarity.stationary ? ": stationary" : ": NOT stationary")
@@ -131,14 +136,29 @@ RenderedFigure render_stationarity_figure(const noise::SensorRecording& rec, con
     panel.y_label = fmt::format("block mean − rest mean [{}]", rate.unit);
     panel.shade_x0 = 0;
     panel.shade_x1 = part_s / 3600;
+    if (ch.stationarity.tested) {
+      // The band of a stationary first part's mean: ± z_{1−α/2} of (N.6).
+      PlotLine band;
+      band.name = fmt::format("first part like the rest: ±{:.2g} sd ({:g} % level)", z, 100 * alpha);
+      band.x = {0, part_s / 3600};
+      band.y = {0, 0};
+      const double half = z * ch.stationarity.expected_sd / rate.si;
+      band.lo = {-half, -half};
+      band.hi = {half, half};
+      band.colour = 6;
+      band.thin = true;
+      panel.lines.push_back(std::move(band));
+    }
     for (std::size_t r = 0; r < rec.runs.size() && block > 0; ++r) {
       const noise::Segment& run = rec.runs[r];
       const std::vector<double>& y = rec.channel[c];
       const std::size_t rest_n = run.size() > part ? run.size() - part : 0;
       if (rest_n == 0) continue;
-      double rest = 0;
+      double rest = 0, first = 0;
       for (std::size_t k = run.begin + part; k < run.end; ++k) rest += y[k];
       rest /= static_cast<double>(rest_n);
+      for (std::size_t k = run.begin; k < run.begin + part; ++k) first += y[k];
+      first /= static_cast<double>(part);
       PlotLine line;
       line.name = r < rec.run_names.size() ? std::filesystem::path(rec.run_names[r]).filename().string()
                                            : fmt::format("recording {}", r + 1);
@@ -151,7 +171,18 @@ RenderedFigure render_stationarity_figure(const noise::SensorRecording& rec, con
         line.y.push_back((m / static_cast<double>(block) - rest) / rate.si);
         line.marks.push_back({line.x.back(), line.y.back(), line.y.back(), line.y.back()});
       }
-      if (!line.x.empty()) panel.lines.push_back(std::move(line));
+      if (line.x.empty()) continue;
+      const int colour = line.colour;
+      const std::string name = line.name;
+      panel.lines.push_back(std::move(line));
+      if (ch.stationarity.tested && run.size() >= 2 * part) {
+        PlotLine mean;
+        mean.name = name + ": first part's mean";
+        mean.x = {0, part_s / 3600};
+        mean.y = {(first - rest) / rate.si, (first - rest) / rate.si};
+        mean.colour = colour;
+        panel.lines.push_back(std::move(mean));
+      }
     }
     f.panels.push_back(std::move(panel));
   }

@@ -25,7 +25,9 @@ struct SheetLevels {
 RenderedFigure render_noise_allan_figure(const noise::NoiseAnalysis& a, const std::array<SheetLevels, 2>& sheet);
 
 /// `stationarity`: per channel, each recording's block means minus its
-/// mean after the first part, against time; the first part shaded.
+/// mean after the first part, against time; the first part shaded, its
+/// mean drawn across it (the stationarity test's statistic) inside the band
+/// a first part like the rest stays in at the test's level (docs/noise.md §5).
 RenderedFigure render_stationarity_figure(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a);
 
 }  // namespace insmc::mc

@@ -9,6 +9,7 @@
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 #include "lib/noise/noise_budget.h"
+#include "lib/noise/table31_reading.h"
 #include "lib/units/physical_range.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
@@ -131,6 +132,18 @@ std::string datasheet_section(const noise::NoiseAnalysis& a, const Datasheet& sh
       if (!given) continue;
       const auto [sheet_value, unit] = spec_value(term, ch.kind, *given);
       const double f = spec_value(term, ch.kind, 1.0).first;  // SI to the sheet's unit
+      if (term == NoiseTerm::kBiasInstability && ch.readings.instability.found) {
+        const double floor = ch.readings.instability.value_si;
+        md += fmt::format("| {} | bias_instability (IEEE floor reading, min σ / 0.664 at τ = {:.3g} s) | {} {} | | {} "
+                          "{} | {:.3g} | |\n",
+                          ch.name, ch.readings.instability.tau_from_s, g3(floor * f), unit, g3(sheet_value), unit,
+                          floor / *given);
+      }
+      if (!ch.fit.fits || ch.stuck) {
+        md += fmt::format("| {} | {} | no model passes its fit test | | {} {} | | |\n", ch.name,
+                          noise::term_name(term, ch.kind), g3(sheet_value), unit);
+        continue;
+      }
       const auto fit = std::find_if(ch.fit.terms.begin(), ch.fit.terms.end(),
                                     [term = term](const noise::TermFit& t) { return t.term == term; });
       if (fit == ch.fit.terms.end()) {
@@ -156,6 +169,83 @@ std::string datasheet_section(const noise::NoiseAnalysis& a, const Datasheet& sh
   return md;
 }
 
+/// The fit test of each channel's model (docs/noise.md §3).
+std::string fit_test_section(const noise::NoiseAnalysis& a) {
+  std::string md = fmt::format(
+      "\n## Fit test of each model\n\nJ = rᵀS⁻¹r over the Allan levels the model is fitted to, S their covariance "
+      "under the model itself (docs/noise.md §3), against χ²(levels − parameters) at α = {:g}: a model that fails is "
+      "not reported as the fit. Where the shortest levels bend away from every standard term (a sensor's own "
+      "filtering), they are left out one at a time until a model passes.\n\n"
+      "| channel | levels | from τ [s] | J | degrees of freedom | p | verdict |\n|---|---:|---:|---:|---:|---:|---|\n",
+      a.alpha);
+  for (const noise::ChannelNoise& ch : a.channels) {
+    if (ch.stuck) {
+      md += fmt::format("| {} | - | - | - | - | - | stuck: nothing to fit |\n", ch.name);
+      continue;
+    }
+    const noise::NoiseFit& f = ch.fit;
+    const std::size_t from = std::min(f.first_level, ch.allan.size() - 1);
+    md += fmt::format("| {} | {} of {} | {:.3g} | {:.3g} | {:g} | {:.2g} | {} |\n", ch.name, ch.allan.size() - from,
+                      ch.allan.size(), ch.allan[from].tau_s, f.fit_statistic, f.fit_dof, f.fit_p_value,
+                      f.fits ? (f.first_level > 0 ? fmt::format("passes (τ < {:.3g} s left out)", ch.allan[from].tau_s)
+                                                  : std::string("passes"))
+                             : std::string("**fails**: no model of the standard terms fits these levels; the IEEE "
+                                           "readings stand in for it"));
+  }
+  return md;
+}
+
+/// A fitted term's value in the engineers' unit, "not selected" when the
+/// passing model has none, "-" when no model passes.
+std::string fitted_text(const noise::ChannelNoise& ch, NoiseTerm term) {
+  if (!ch.fit.fits || ch.stuck) return "-";
+  for (const noise::TermFit& t : ch.fit.terms)
+    if (t.term == term) {
+      const auto [v, unit] = spec_value(term, ch.kind, t.value_si);
+      const double f = t.value_si > 0 ? v / t.value_si : 0;
+      return fmt::format("{} [{}, {}]", g3(v), g3(t.lower_si * f), g3(t.upper_si * f));
+    }
+  return "not selected";
+}
+
+std::string reading_text(const noise::SlopeReading& r, NoiseTerm term, SensorKind kind, const char* none) {
+  if (!r.found) return none;
+  const auto [v, unit] = spec_value(term, kind, r.value_si);
+  return r.tau_from_s == r.tau_to_s ? fmt::format("{} {} (τ = {:.3g} s)", g3(v), unit, r.tau_from_s)
+                                    : fmt::format("{} {} (τ {:.3g}–{:.3g} s)", g3(v), unit, r.tau_from_s, r.tau_to_s);
+}
+
+/// The IEEE Std 952 slope readings beside the fit (lib/noise/slope_readings.h).
+std::string readings_section(const noise::NoiseAnalysis& a, const Datasheet& sheet) {
+  std::string md =
+      "\n## IEEE Std 952 slope readings beside the fit\n\nRead off the Allan deviation (Annex C): the white noise "
+      "from the −½ line at τ = 1 s, the bias instability from the floor (min σ / 0.664), the rate random walk from "
+      "the +½ line at τ = 3 s where the curve ends on a +½ slope; the fitted value (its interval) beside each.\n\n"
+      "| channel | white noise: reading | fit | bias instability: floor | fit | random walk: +½ reading | fit |\n"
+      "|---|---|---|---|---|---|---|\n";
+  for (const noise::ChannelNoise& ch : a.channels) {
+    if (ch.stuck) {
+      md += fmt::format("| {} | stuck | | | | | |\n", ch.name);
+      continue;
+    }
+    const noise::SlopeReadings& r = ch.readings;
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", ch.name,
+                      reading_text(r.white, NoiseTerm::kWhiteRate, ch.kind, "no −½ slope"),
+                      fitted_text(ch, NoiseTerm::kWhiteRate),
+                      reading_text(r.instability, NoiseTerm::kBiasInstability, ch.kind, "-"),
+                      fitted_text(ch, NoiseTerm::kBiasInstability),
+                      reading_text(r.walk, NoiseTerm::kRateRandomWalk, ch.kind, "no +½ slope"),
+                      fitted_text(ch, NoiseTerm::kRateRandomWalk));
+  }
+  for (const SensorKind kind : {SensorKind::kGyro, SensorKind::kAccelerometer})
+    if (const std::optional<double> given = sheet.instability(kind)) {
+      const auto [v, unit] = spec_value(NoiseTerm::kBiasInstability, kind, *given);
+      md += fmt::format("\nThe data sheet's {} bias instability: {} {} (the floor readings above beside it).\n",
+                        kind == SensorKind::kGyro ? "gyro" : "accelerometer", g3(v), unit);
+    }
+  return md;
+}
+
 std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
                      const Datasheet& sheet, const std::vector<RecordingCalibration>& calibrations) {
   std::string md = "# Sensor noise: overlapping Allan deviation and fitted terms\n\n";
@@ -166,30 +256,42 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
 
   md += fmt::format("## Against Table 3.1\n\nEach term as a constant error over one Schuler period ({:.1f} min), "
                     "root-sum-square over the terms, against Table 3.1's bound (gyros: drift ω_do < {}; "
-                    "accelerometers: bias change ∂f < {}).\n\n",
-                    schuler_period_s() / 60, noise::table31_bound_text(SensorKind::kGyro), noise::table31_bound_text(SensorKind::kAccelerometer));
-  md += "| channel | equivalent | bound | ratio | largest term |\n|---|---:|---:|---:|---|\n";
+                    "accelerometers: bias change ∂f < {}). The terms are the fitted model's where it passes its fit "
+                    "test, else the IEEE slope readings (column \"from\"). A verdict only where the data hold a "
+                    "stretch of one Schuler period; over shorter data the ratio is an extrapolation and says how "
+                    "far.\n\n",
+                    schuler_period_s() / 60, noise::table31_bound_text(SensorKind::kGyro),
+                    noise::table31_bound_text(SensorKind::kAccelerometer));
+  md += "| channel | equivalent | bound | ratio | verdict | from | largest term |\n|---|---:|---:|---:|---|---|---|\n";
   for (const noise::ChannelNoise& ch : a.channels) {
-    double rss = 0, biggest = 0;
-    std::string name = "-";
-    for (const noise::TermFit& t : ch.fit.terms) {
-      const double e = equivalent_constant(t.term, t.value_si, ch.fit.model.correlation_time_s);
-      rss += e * e;
-      if (e > biggest) biggest = e, name = std::string(noise::term_name(t.term, ch.kind));
-    }
-    const double bound = table31_bound_si(ch.kind);
+    const noise::Table31Reading t = noise::table31_reading(ch);
     const bool gyro = ch.kind == SensorKind::kGyro;
-    md += fmt::format("| {} | {} {} | {} | {} | {} |\n", ch.name,
-                      g3(std::sqrt(rss) / (gyro ? kMeruToRadps : kMgToMps2)), gyro ? "meru" : "mg", noise::table31_bound_text(ch.kind),
-                      std::sqrt(rss) > bound ? fmt::format("**{:.3g}× above**", std::sqrt(rss) / bound)
-                                             : fmt::format("{:.2g} (within)", std::sqrt(rss) / bound),
-                      name);
+    if (t.source == noise::Table31Source::kStuck) {
+      md += fmt::format("| {} | - | {} | - | **stuck: the output never changes**, no noise measured (a dead or "
+                        "saturated channel, or a constant column) | - | - |\n",
+                        ch.name, noise::table31_bound_text(ch.kind));
+      continue;
+    }
+    const std::string verdict =
+        t.extrapolated ? fmt::format("no verdict: extrapolated {:.3g}× beyond the longest stretch of data ({:.3g} s; "
+                                     "longest τ {:.3g} s)",
+                                     t.extrapolation, ch.longest_stretch_s, ch.allan.empty() ? 0.0 : ch.allan.back().tau_s)
+        : t.ratio > 1 ? "**above**"
+                      : "within";
+    md += fmt::format("| {} | {} {} | {} | {:.3g}× | {} | {} | {} |\n", ch.name,
+                      g3(t.equivalent_si / (gyro ? kMeruToRadps : kMgToMps2)), gyro ? "meru" : "mg",
+                      noise::table31_bound_text(ch.kind), t.ratio, verdict,
+                      t.source == noise::Table31Source::kFit ? "fit" : "IEEE readings", t.largest_term);
   }
 
+  md += readings_section(a, sheet);
   if (!sheet.empty()) md += datasheet_section(a, sheet);
 
-  md += "\n## Fitted terms\n\n| channel | term | value | interval | unit | value (SI) | unit (SI) |\n|---|---|---:|---|---|---:|---|\n";
+  md += fit_test_section(a);
+  md += "\n## Fitted terms\n\nThe models that pass their fit test (above), each term with its interval.\n\n"
+        "| channel | term | value | interval | unit | value (SI) | unit (SI) |\n|---|---|---:|---|---|---:|---|\n";
   for (const noise::ChannelNoise& ch : a.channels) {
+    if (!ch.fit.fits || ch.stuck) continue;
     for (const noise::TermFit& t : ch.fit.terms) {
       const auto [v, unit] = spec_value(t.term, ch.kind, t.value_si);
       const double f = t.value_si > 0 ? v / t.value_si : 0;
@@ -218,6 +320,7 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
   }
   md += "\nTerms tried and not needed (their likelihood-ratio statistic below the test's critical value):\n";
   for (const noise::ChannelNoise& ch : a.channels) {
+    if (!ch.fit.fits || ch.stuck) continue;
     std::string dropped;
     for (const noise::TermFit& t : ch.fit.dropped)
       dropped += fmt::format("{}{} ({:.2g})", dropped.empty() ? "" : ", ", noise::term_name(t.term, ch.kind), t.drop_statistic);
@@ -225,7 +328,9 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
   }
 
   md += "\n## Stationarity: the first part of each run against the rest\n\n";
-  md += "| channel | first part | change of the mean | expected sd | runs | χ² | p | verdict |\n|---|---:|---:|---:|---:|---:|---:|---|\n";
+  md += "The mean over the first part minus the mean over the rest of the run, against its standard deviation under "
+        "the rest's noise model ((N.6), docs/noise.md §5), Σ z² over the runs against χ²(runs).\n\n";
+  md += "| channel | first part | first part − rest | expected sd | runs | χ² | p | verdict |\n|---|---:|---:|---:|---:|---:|---:|---|\n";
   for (const noise::ChannelNoise& ch : a.channels) {
     const noise::StationarityTest& s = ch.stationarity;
     if (!s.tested) {
@@ -244,12 +349,15 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
   if (a.mask.intervals.empty()) {
     md += fmt::format("None found (blocks of {:g} s tested for excess variance and for jumps of the mean).\n", a.mask.block_s);
   } else {
-    md += fmt::format("{} interval(s), {:.1f} s in all, left out of every channel:\n\n| recording | from [s] | to [s] | "
-                      "channels | test | excess |\n|---|---:|---:|---|---|---:|\n",
-                      a.mask.intervals.size(), static_cast<double>(a.mask.masked_samples) * rec.dt_s);
+    md += fmt::format("{} interval(s), {:.1f} s in all, each left out of the channels of the sensor that felt it (the "
+                      "gyros lose {:.1f} s, the accelerometers {:.1f} s):\n\n| recording | from [s] | to [s] | "
+                      "channels | test | excess | cut from |\n|---|---:|---:|---|---|---:|---|\n",
+                      a.mask.intervals.size(), static_cast<double>(a.mask.masked_samples) * rec.dt_s,
+                      static_cast<double>(a.mask.masked_by_sensor[0]) * rec.dt_s,
+                      static_cast<double>(a.mask.masked_by_sensor[1]) * rec.dt_s);
     for (const noise::MaskedInterval& m : a.mask.intervals)
-      md += fmt::format("| {} | {:.1f} | {:.1f} | {} | {} | {:.3g}× |\n", rec.run_names[m.run], m.start_s, m.end_s,
-                        m.channels, m.test, m.excess);
+      md += fmt::format("| {} | {:.1f} | {:.1f} | {} | {} | {:.3g}× | {} |\n", rec.run_names[m.run], m.start_s,
+                        m.end_s, m.channels, m.test, m.excess, m.sensors);
   }
   md += "\n## What these data can identify\n\n" + identifiability(orientations(rec, a), calibrations);
   md += calibration_markdown(calibrations, confidence);
@@ -335,6 +443,24 @@ mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysi
       terms.push_back(std::move(x));
     }
     c["terms"] = std::move(terms);
+    c["stuck"] = ch.stuck;
+    mc::Json test = mc::Json::object();
+    test["statistic"] = ch.fit.fit_statistic, test["dof"] = ch.fit.fit_dof, test["p_value"] = ch.fit.fit_p_value;
+    test["passes"] = ch.fit.fits && !ch.stuck;
+    test["first_tau_s"] = ch.allan.empty() ? 0.0 : ch.allan[std::min(ch.fit.first_level, ch.allan.size() - 1)].tau_s;
+    c["fit_test"] = std::move(test);
+    mc::Json readings = mc::Json::object();
+    for (const auto& [name, r] : {std::pair{"white_si", &ch.readings.white},
+                                  std::pair{"bias_instability_si", &ch.readings.instability},
+                                  std::pair{"rate_random_walk_si", &ch.readings.walk}})
+      if (r->found) readings[name] = r->value_si;
+    c["ieee_readings"] = std::move(readings);
+    const noise::Table31Reading t31 = noise::table31_reading(ch);
+    mc::Json table31 = mc::Json::object();
+    table31["from"] = std::string(noise::table31_source_text(t31.source));
+    table31["equivalent_si"] = t31.equivalent_si, table31["ratio"] = t31.ratio;
+    table31["extrapolated"] = t31.extrapolated, table31["extrapolation"] = t31.extrapolation;
+    c["table31"] = std::move(table31);
     if (const auto n_eff = white_noise_effective(ch)) c["white_noise_effective_si"] = *n_eff;
     mc::Json st = mc::Json::object();
     st["tested"] = ch.stationarity.tested;
@@ -360,7 +486,7 @@ mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysi
   for (const noise::MaskedInterval& m : a.mask.intervals) {
     mc::Json x = mc::Json::object();
     x["recording"] = rec.run_names[m.run], x["start_s"] = m.start_s, x["end_s"] = m.end_s;
-    x["channels"] = m.channels, x["test"] = m.test, x["excess"] = m.excess;
+    x["channels"] = m.channels, x["test"] = m.test, x["excess"] = m.excess, x["sensors"] = m.sensors;
     masked.push_back(std::move(x));
   }
   j["masked"] = std::move(masked);
