@@ -50,7 +50,7 @@ stage_done "suite"
 sanitizer_skip='^(GapValidate[.]|RealDataDocs[.]|RawRanking[.]|NoiseFit[.](WhiteAndRandomWalk|GaussMarkovCorrelationTime)|GapLinearNull[.]|GapImportedNull[.]|GapImportedNoise[.]|GapLikelihood[.]|Outputs[.](ASigkill|OfTwoRuns)'
 sanitizer_skip+='|HostileFiles[.]InputsLarger|Rank[.]|Plots[.]Rank|Checkpoint[.]Sigterm|SchemeErrorsGolden[.]'
 sanitizer_skip+='|Cli[.](TruthFidelity|BenchJson)|Compensate[.]TheVerdict|HostileInput[.]ValuesAtTheEdges'
-sanitizer_skip+='|Gap[.]FilterWindows|FigureGallery[.]Every|Progress[.]'
+sanitizer_skip+='|Gap[.]FilterWindows|FigureGallery[.]Every|Progress[.]|WorkBudget[.](TheGreedySearch|TheNullCalibration)'
 sanitizer_skip+='|Gap[.](AnEffectAfterAScheme|RecordsOfOtherSoftware|AWithheld|RecordsOfTheModelItself|ScreeningWithout))'
 bash scripts/build-sanitize.sh
 stage_done "build (clang, sanitizers)"

@@ -46,10 +46,10 @@ constexpr bool kLimitMemory = true;
 /// insmc with `args` under `timeout` and a 4 GB address-space limit (a
 /// runaway allocation fails fast), waited for with wait4: exit code (128 +
 /// signal when killed), stdout, stderr and the peak resident size.
-ProgramResult run_budgeted(const std::string& args) {
+ProgramResult run_budgeted(const std::string& args, int max_seconds = kMaxSeconds) {
   TempDir io;
   const std::string cmd = std::string(kLimitMemory ? "ulimit -v 4194304; " : "") + "exec timeout -s KILL " +
-                          std::to_string(kMaxSeconds) + " " + insmc_path() + " " + args + " >" +
+                          std::to_string(max_seconds) + " " + insmc_path() + " " + args + " >" +
                           (io.path() / "out").string() + " 2>" + (io.path() / "err").string() + " </dev/null";
   const char* argv[] = {"/bin/sh", "-c", cmd.c_str(), nullptr};
   pid_t pid = -1;
@@ -66,8 +66,8 @@ ProgramResult run_budgeted(const std::string& args) {
 }
 
 /// Exit 0 within the limits.
-ProgramResult expect_done(const std::string& args) {
-  const ProgramResult r = run_budgeted(args);
+ProgramResult expect_done(const std::string& args, int max_seconds = kMaxSeconds) {
+  const ProgramResult r = run_budgeted(args, max_seconds);
   EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
   EXPECT_LT(r.peak_rss_kb, kMaxRssKb) << args;
   return r;
@@ -174,7 +174,9 @@ TEST(WorkBudget, TheGreedySearchStopsOnDataFarOutsideTheModel) {
       text += fmt::format("{},{},nav,,,,{:.6g},{:.6g},{:.6g}\n", run, t, 1000 * std::sin(t / 800 + run),
                           500 * std::cos(t / 800), -t / 100);
   }
-  const ProgramResult r = expect_done("gap --records " + write(dir, "long.csv", text) + " --format json");
+  // 45 s of CPU: the kill at 60 s would judge the machine's load, not the
+  // search (a time belongs in a benchmark); what is tested is that it stops.
+  const ProgramResult r = expect_done("gap --records " + write(dir, "long.csv", text) + " --format json", 600);
   // The first step closes most of the gap; the next candidate (nonlinearity
   // at the edge of its grid) a quarter of what is left, and the third
   // (switch_transient) 7 %: the search stops before the third ranking.
