@@ -104,6 +104,7 @@ RecordFile simulate_foreign_file(TruthOptions truth, const mc::Sampler& sampler,
       row.run = run.id;
       if (!on_grid(row.t_s, layout.f_every_s) || (!layout.f_in_nav && row.phase != Phase::kTest)) row.f_mps2 = {};
       if (dropout > 0 && stream.uniform01() < dropout) row.f_mps2 = {};
+      // r is on every row of a record (docs/records.md): a lost r sample is a lost row.
       if (dropout > 0 && stream.uniform01() < dropout) row.r_ap_m.reset();
       for (OptionalValue& f : row.f_mps2)
         if (f) f = nine_digits(*f);
@@ -112,7 +113,7 @@ RecordFile simulate_foreign_file(TruthOptions truth, const mc::Sampler& sampler,
         row.r_ap_m = Eigen::Vector3d(nine_digits(p[0]), nine_digits(p[1]), nine_digits(p[2]));
       }
     }
-    std::erase_if(run.rows, [](const RecordRow& row) { return !row.has_f() && !row.r_ap_m; });
+    std::erase_if(run.rows, [](const RecordRow& row) { return !row.r_ap_m; });
     file.runs.push_back(std::move(run));
   }
   return file;

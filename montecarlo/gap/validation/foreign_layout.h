@@ -29,9 +29,9 @@ struct ForeignLayout {
   bool zero_row = false; ///< a row at t = 0 (r only)
   // What the layout fuzzer draws besides (fuzzed_layout_of); the defaults
   // are the foreign writer's fixed conventions.
-  /// Each run loses a share of its f records and of its r records, drawn
-  /// in [0, dropout_max] for the run, at times of its own (a logger
-  /// dropping samples); a row left with neither is not written.
+  /// Each run loses a share of its f records and of its rows, drawn in
+  /// [0, dropout_max] for the run, at times of its own (a logger dropping
+  /// samples; r is on every row, so a lost r sample is a lost row).
   double dropout_max = 0.0;
   bool f_in_nav = true;          ///< f recorded after the test run too
   double resolution_m = -1.0;    ///< r rounded to this (< 0: ForeignRuns::position_resolution_m)

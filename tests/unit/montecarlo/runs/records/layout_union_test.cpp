@@ -115,9 +115,12 @@ TEST(LayoutUnion, ALayoutsFitCutFromTheLatticesIsItsOwn) {
   // The lattice's fit downdated by the test rows a layout lacks (Woodbury,
   // run_analysis.h) against the layout's fit made anew; and a layout that
   // lacks most of the test run, fitted on its own rows.
+  // Pulses of 0.1 ft/s: the f rows' counting noise. (A continuous f has
+  // only the 0.1 µg floor, and a test residual's normalizer σ² − h P⁺ hᵀ
+  // then cancels to a part in 10⁴ of σ²: two fits that agree to 10⁻⁸ in P⁺
+  // differ there by 10⁻⁴, whichever way each is made.)
   const Layout full = testing::test_layout(3600.0);
-  RecordSite s = testing::test_site();
-  s.dv_pulse_mps = 0.0;  // the model of each row its own (as above)
+  const RecordSite s = testing::test_site();
   const UncertaintyVector x_var = UncertaintyModel{}.variance();
   const GaussianModel on_lattice = combine(make_base_model(full, s, x_var), {});
   const LatticeAnalysis shared(full, on_lattice);
@@ -134,6 +137,7 @@ TEST(LayoutUnion, ALayoutsFitCutFromTheLatticesIsItsOwn) {
     const auto rows = rows_within(l, full);
     ASSERT_TRUE(rows.has_value());
     const GaussianModel own_model = select_rows(on_lattice, *rows);
+    SCOPED_TRACE(::testing::Message() << l.test_rows << " of " << full.test_rows << " test rows");
     expect_same_sums(RunAnalyser(l, shared, *rows), RunAnalyser(l, own_model), own_model, seed++);
   }
 }
