@@ -107,11 +107,12 @@ std::uint64_t read_count(const po::variables_map& vm, const std::string& name) {
   return parse_count(vm[name].as<std::string>(), "--" + name);
 }
 
-RecordLayout read_record_layout(const po::variables_map& vm) {
+gap::RecordLayout read_record_layout(const po::variables_map& vm) {
   const std::string& text = vm["layout"].as<std::string>();
-  if (text == "own") return RecordLayout::kOwn;
-  if (text == "foreign") return RecordLayout::kForeign;
-  throw InputError("--layout", text, "must be own or foreign");
+  if (text == "own") return gap::RecordLayout::kOwn;
+  if (text == "foreign") return gap::RecordLayout::kForeign;
+  if (text == "fuzzed") return gap::RecordLayout::kFuzzed;
+  throw InputError("--layout", text, "must be own, foreign or fuzzed");
 }
 
 po::options_description model_options_description() {

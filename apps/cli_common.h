@@ -14,6 +14,7 @@
 #include "apps/subcommands.h"
 #include "lib/common/input_text.h"
 #include "lib/common/model_options.h"
+#include "montecarlo/gap/validation/foreign_layout.h"
 
 namespace insmc::app {
 
@@ -44,11 +45,9 @@ std::uint64_t parse_count(const std::string& text, const std::string& field);
 /// The count of option `name` (its value or default).
 std::uint64_t read_count(const po::variables_map& vm, const std::string& name);
 
-/// How simulated records are written (`--layout`): as insmc writes them,
-/// or in another recorder's conventions (montecarlo/gap/validation/foreign_layout.h).
-enum class RecordLayout { kOwn, kForeign };
-/// The value of option "layout": own or foreign (else an InputError).
-RecordLayout read_record_layout(const po::variables_map& vm);
+/// The value of option "layout": own, foreign or fuzzed (else an InputError;
+/// montecarlo/gap/validation/foreign_layout.h).
+gap::RecordLayout read_record_layout(const po::variables_map& vm);
 
 /// --latitude and the loop gains: the ModelOptions every model command takes.
 po::options_description model_options_description();

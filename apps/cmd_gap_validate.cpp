@@ -26,7 +26,9 @@ int run_gap_validate(const Args& args) {
       "magnitudes", po::value<std::string>(), "factors on the effects' defaults, comma list (default 1,3,10,30; quick 30)")(
       "layout", po::value<std::string>()->default_value("own"),
       "own (the records as insmc simulate writes them) or foreign (each file in another recorder's conventions: "
-      "f and r on grids of their own, runs of unequal length, no pulse-weight key; docs/gap-method.md section 5)");
+      "f and r on grids of their own, runs of unequal length, no pulse-weight key) or fuzzed (conventions drawn at "
+      "random per file: spacings 1-60 s, each run's own dropouts, resolution, short runs, header keys; "
+      "docs/gap-method.md section 5)");
   const auto vm = parse_args(args, "gap-validate", "[--quick] [--out DIR]", opts);
   if (!vm) return 0;
   gap::ValidationOptions options = vm->count("quick") ? gap::ValidationOptions::quick_subset() : gap::ValidationOptions{};
@@ -34,7 +36,7 @@ int run_gap_validate(const Args& args) {
   if (vm->count("null-files")) options.null_files = (*vm)["null-files"].as<int>();
   if (vm->count("seeds")) options.seeds = (*vm)["seeds"].as<int>();
   if (vm->count("effect")) options.effects = (*vm)["effect"].as<std::vector<std::string>>();
-  options.foreign_layouts = read_record_layout(*vm) == RecordLayout::kForeign;
+  options.layout = read_record_layout(*vm);
   if (vm->count("magnitudes")) {
     const std::string text = (*vm)["magnitudes"].as<std::string>();
     options.magnitudes.clear();

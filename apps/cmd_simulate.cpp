@@ -77,7 +77,10 @@ int run_simulate(const Args& args) {
       "layout", po::value<std::string>()->default_value("own"),
       "own, or foreign: the runs written as another recorder would (f every 5, 10 or 20 s and r every 10, 30 or "
       "60 s by the seed, a third of the runs stopping 60-80 min into the navigation, other run numbers and header "
-      "keys, no pulse-weight, filter-interval or resolution key, no truth keys; scheme none; docs/gap-method.md section 5)");
+      "keys, no pulse-weight, filter-interval or resolution key, no truth keys; scheme none), or fuzzed: conventions "
+      "drawn at random from the seed (f and r every 1-60 s, each run's own dropouts up to 10 %, f after the test or "
+      "not, r resolution 0.1 mm to 3 ft, short runs, optional header keys or not; scheme none; docs/gap-method.md "
+      "section 5)");
   opts.add(model_options_description());
   opts.add(test_run_options_description());
   opts.add(uncertainty_options_description());
@@ -108,11 +111,15 @@ int run_simulate(const Args& args) {
     for (const auto& e : (*vm)["effect"].as<std::vector<std::string>>()) truth.effects.push_back(parse_effect(e, "--effect"));
   if (const auto err = truth_latitude_error(model.latitude_rad, "--latitude")) throw *err;
   validate(truth);
-  const bool foreign = read_record_layout(*vm) == RecordLayout::kForeign;
+  const gap::RecordLayout layout = read_record_layout(*vm);
+  const bool foreign = layout != gap::RecordLayout::kOwn;
   if (foreign && scheme != Scheme::kNone)
-    throw InputError("--layout", "foreign", "writes the runs without a scheme; give --scheme none");
-  check_simulated_rows(*vm, runs, test, nav_s, foreign ? std::optional(gap::foreign_layout_of(seed, needs_pulses(truth)))
-                                                       : std::nullopt);
+    throw InputError("--layout", (*vm)["layout"].as<std::string>(), "writes the runs without a scheme; give --scheme none");
+  const std::optional<gap::ForeignLayout> conventions =
+      layout == gap::RecordLayout::kFuzzed  ? std::optional(gap::fuzzed_layout_of(seed, needs_pulses(truth), test.duration_s))
+      : layout == gap::RecordLayout::kForeign ? std::optional(gap::foreign_layout_of(seed, needs_pulses(truth)))
+                                              : std::nullopt;
+  check_simulated_rows(*vm, runs, test, nav_s, conventions);
   const OutputFileOption out("--out", (*vm)["out"].as<std::string>(), input_files(*vm));  // checked and locked before the work
   if (foreign) {
     gap::ForeignRuns spec;
@@ -120,8 +127,7 @@ int run_simulate(const Args& args) {
     spec.nav_duration_s = nav_s;
     spec.position_resolution_m = test.position_resolution_m;
     spec.runs = runs;
-    out.write(write_record_file(
-        gap::simulate_foreign_file(truth, mc::Sampler(uncertainties), seed, spec, gap::foreign_layout_of(seed, needs_pulses(truth)))));
+    out.write(write_record_file(gap::simulate_foreign_file(truth, mc::Sampler(uncertainties), seed, spec, *conventions)));
     return 0;
   }
   // The scheme's estimators: the same resolvable terms as `insmc run` fits.

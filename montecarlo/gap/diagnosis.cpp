@@ -25,15 +25,11 @@ namespace insmc::gap {
 namespace {
 
 
-/// Every run under base + extensions (built per layout by `build`).
-template <class Build>
-EvaluatedRuns evaluate_under(const runs::PreparedRuns& p, const Build& build, std::vector<std::optional<runs::RunAnalyser>>& analysers) {
-  analysers.assign(p.layouts.size(), std::nullopt);
+/// Every run under the base model of its layout.
+EvaluatedRuns evaluate_under_base(const runs::PreparedRuns& p, std::vector<std::optional<runs::RunAnalyser>>& analysers) {
+  analysers = runs::layout_analysers(p, {});
   std::vector<const runs::RunAnalyser*> pointers(p.layouts.size(), nullptr);
-  for (std::size_t L = 0; L < p.layouts.size(); ++L) {
-    analysers[L].emplace(p.layouts[L], runs::combine(p.bases[L], build(static_cast<int>(L))));
-    pointers[L] = &*analysers[L];
-  }
+  for (std::size_t L = 0; L < p.layouts.size(); ++L) pointers[L] = &*analysers[L];
   return evaluate_runs(p.runs, p.layout_of, pointers, p.keys);
 }
 
@@ -88,7 +84,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   }
   const ModelNull null = calibrate(p, records.file, options, ncal, null_z, null_layout);
   std::vector<std::optional<runs::RunAnalyser>> analysers;
-  const EvaluatedRuns base = evaluate_under(p, [](int) { return std::vector<const runs::Extension*>{}; }, analysers);
+  const EvaluatedRuns base = evaluate_under_base(p, analysers);
   const Pooled observed = pool(base.set(p.keys), all_runs(p.runs.size()));
   const LogRatios observed_ratios =
       log_ratios(observed, null.calibration, CoherentReference::kAtLeastModelScatter);

@@ -6,8 +6,10 @@
 #include <fmt/format.h>
 #include <optional>
 
+#include "lib/common/assert.h"
 #include "lib/common/input_error.h"
 #include "montecarlo/runs/records/filter_windows.h"
+#include "montecarlo/runs/records/layout_union.h"
 #include "montecarlo/runs/records/site_values.h"
 
 namespace insmc::runs {
@@ -106,6 +108,9 @@ PreparedRuns prepare(const Records& records, const RecordReading& options) {
   p.site = records.site;
   p.x_var = options.prior.variance();
   p.runs = extract_runs(records.file, p.site, options.extraction);
+  std::vector<const Layout*> all;
+  for (const RunData& run : p.runs) all.push_back(&run.layout);
+  if (!all.empty()) p.add_lattice(all);
   // The layouts no other run extends come first (in file order); a run that
   // stops early is then analysed under the layout of a longer run it is the
   // beginning of: its cost is that run's, not a layout of its own.
@@ -124,11 +129,37 @@ PreparedRuns prepare(const Records& records, const RecordReading& options) {
   return p;
 }
 
+void PreparedRuns::add_lattice(std::span<const Layout* const> of) {
+  std::size_t largest = 0;
+  for (const Layout* l : of) {
+    largest = std::max(largest, l->rows.size());
+    if (l->nav != of.front()->nav || l->nav_start_s != of.front()->nav_start_s) return;
+  }
+  Layout lattice = layout_union(of);
+  if (static_cast<double>(lattice.rows.size()) > kLatticeGrowth * static_cast<double>(largest)) return;
+  lattice_bases.push_back(make_base_model(lattice, site, x_var));
+  lattices.push_back(std::move(lattice));
+}
+
 int PreparedRuns::layout_index(const Layout& layout) {
   for (std::size_t i = 0; i < layouts.size(); ++i)
     if (layouts[i] == layout) return static_cast<int>(i);
+  std::optional<std::vector<Eigen::Index>> rows;
+  std::size_t lattice = 0;
+  for (; lattice < lattices.size() && !rows; ++lattice) rows = rows_within(layout, lattices[lattice]);
+  if (rows) {
+    --lattice;
+  } else {
+    // A layout of its own: its lattice is itself.
+    lattices.push_back(layout);
+    lattice_bases.push_back(make_base_model(layout, site, x_var));
+    rows.emplace(layout.rows.size());
+    for (std::size_t i = 0; i < rows->size(); ++i) (*rows)[i] = static_cast<Eigen::Index>(i);
+  }
   layouts.push_back(layout);
-  bases.push_back(make_base_model(layout, site, x_var));
+  bases.push_back(select_rows(lattice_bases[lattice], *rows));
+  lattice_of.push_back(static_cast<int>(lattice));
+  lattice_rows.push_back(std::move(*rows));
   keys.add_layout(layout);
   return static_cast<int>(layouts.size() - 1);
 }
@@ -144,6 +175,23 @@ int PreparedRuns::place(RunData& run) {
     return static_cast<int>(i);
   }
   return layout_index(run.layout);
+}
+
+std::vector<std::optional<RunAnalyser>> layout_analysers(const PreparedRuns& p,
+                                                         const std::vector<std::vector<const Extension*>>& extensions,
+                                                         const std::vector<bool>& used) {
+  INSMC_ASSERT(extensions.empty() || extensions.size() == p.lattices.size(), "extensions for {} lattices, {} expected",
+               extensions.size(), p.lattices.size());
+  std::vector<std::optional<RunAnalyser>> out(p.layouts.size());
+  for (std::size_t l = 0; l < p.lattices.size(); ++l) {
+    std::optional<LatticeAnalysis> shared;
+    for (std::size_t L = 0; L < p.layouts.size(); ++L) {
+      if (static_cast<std::size_t>(p.lattice_of[L]) != l || (!used.empty() && !used[L])) continue;
+      if (!shared) shared.emplace(p.lattices[l], combine(p.lattice_bases[l], extensions.empty() ? std::vector<const Extension*>{} : extensions[l]));
+      out[L].emplace(p.layouts[L], *shared, p.lattice_rows[L]);
+    }
+  }
+  return out;
 }
 
 Eigen::VectorXd run_values(const RunData& run) {

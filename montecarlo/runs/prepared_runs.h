@@ -4,6 +4,8 @@
 /// own test rows) and its runs placed on their layouts, each layout with its
 /// base model: what the diagnosis, its null and `compensate` start from.
 #include <Eigen/Core>
+#include <span>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,11 +14,16 @@
 #include "lib/units/units.h"
 #include "montecarlo/runs/model/gaussian_model.h"
 #include "montecarlo/runs/model/key_space.h"
+#include "montecarlo/runs/model/run_analysis.h"
 #include "montecarlo/runs/model/scheme_rows.h"
 #include "montecarlo/runs/records/layout.h"
 #include "montecarlo/runs/records/site_values.h"
 
 namespace insmc::runs {
+
+/// How much larger than the largest layout a union of layouts may be to
+/// serve as their lattice (PreparedRuns::add_lattice).
+inline constexpr double kLatticeGrowth = 1.5;
 
 /// How records are read into the run model.
 struct RecordReading {
@@ -59,14 +66,29 @@ Records read_records(const RecordFile& file, const RecordReading& options, std::
 void take_off_estimates(RunData& run, const BaseModel& base, const SchemeEstimates& estimates);
 
 /// The runs, their layouts and the base model of each layout.
+///
+/// Every layout takes its rows from a lattice (layout_union.h): the union of
+/// the records' layouts when it is not much larger than they are, else the
+/// layout itself. Models are built on the lattices, once, and each layout's
+/// are its rows of its lattice's (select_rows), so a file whose runs each
+/// miss other records costs about what one layout costs.
 struct PreparedRuns {
   RecordSite site;
   std::vector<RunData> runs;
   std::vector<Layout> layouts;
   std::vector<int> layout_of;  // per run
-  std::vector<BaseModel> bases;
+  std::vector<BaseModel> bases;  // per layout
+  std::vector<Layout> lattices;
+  std::vector<BaseModel> lattice_bases;  // per lattice
+  std::vector<int> lattice_of;           // per layout
+  std::vector<std::vector<Eigen::Index>> lattice_rows;  // per layout: its rows in its lattice
   UncertaintyVector x_var;
   KeySpace keys;  // over every layout
+
+  /// Adds the union of `layouts` as a lattice when it holds at most
+  /// kLatticeGrowth times the rows of the largest of them (a union of
+  /// layouts that share few rows would cost more than they do).
+  void add_lattice(std::span<const Layout* const> layouts);
 
   /// Index of `layout`, added (with its base model and keys) when new.
   int layout_index(const Layout& layout);
@@ -79,6 +101,14 @@ struct PreparedRuns {
 /// The records' runs on their layouts, each layout with its base model, the
 /// scheme's estimates taken off.
 PreparedRuns prepare(const Records& records, const RecordReading& options);
+
+/// The analyser of every layout of `p` under its lattice's base model with
+/// `extensions[l]` (built on lattice l; empty: none), the lattice's fit made
+/// once and each layout's cut from it (run_analysis.h). Layouts no run uses
+/// (`used[L]` false, when `used` is given) are left empty.
+std::vector<std::optional<RunAnalyser>> layout_analysers(const PreparedRuns& p,
+                                                         const std::vector<std::vector<const Extension*>>& extensions,
+                                                         const std::vector<bool>& used = {});
 
 /// A run's row values as a vector.
 Eigen::VectorXd run_values(const RunData& run);

@@ -1,5 +1,7 @@
 #include "montecarlo/gap/fit/candidate_fit.h"
 
+#include "montecarlo/gap/candidates/layout_extensions.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -18,16 +20,13 @@ std::vector<const runs::Extension*> pointers(const std::vector<runs::Extension>&
   return e;
 }
 
-bool used(const runs::PreparedRuns& p, std::size_t L) {
-  return std::find(p.layout_of.begin(), p.layout_of.end(), static_cast<int>(L)) != p.layout_of.end();
-}
-
 CandidateSums evaluate_on_grid(const runs::PreparedRuns& p, const Candidate& c,
                                const std::vector<std::vector<runs::Extension>>& selected,
-                               std::vector<LayoutContext>& ctx, const NullCalibration& m0,
+                               LayoutExtensions& build, const NullCalibration& m0,
                                std::vector<std::vector<int>> groups) {
   CandidateSums out;
   out.keys = &p.keys;
+  const std::vector<bool> used = used_layouts(p);
   const int K = c.grid_size();
   out.at.resize(static_cast<std::size_t>(K));
   out.sets.resize(static_cast<std::size_t>(K));
@@ -42,20 +41,15 @@ CandidateSums evaluate_on_grid(const runs::PreparedRuns& p, const Candidate& c,
     ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
     std::erase_if(ks, [&](int k) { return out.evaluated[static_cast<std::size_t>(k)]; });
     std::vector<std::vector<std::optional<runs::Extension>>> extensions(ks.size());
-    for (std::size_t b = 0; b < ks.size(); ++b) {
-      const std::vector<double> theta = c.grid_point(ks[b]);
-      extensions[b].resize(p.layouts.size());
-      for (std::size_t L = 0; L < p.layouts.size(); ++L)
-        if (used(p, L)) extensions[b][L].emplace(c.build(ctx[L], theta));
-    }
+    for (std::size_t b = 0; b < ks.size(); ++b) extensions[b] = build.build(c, c.grid_point(ks[b]), used);
     tbb::parallel_for(std::size_t{0}, ks.size(), [&](std::size_t b) {
-      std::vector<std::optional<runs::RunAnalyser>> analysers(p.layouts.size());
+      std::vector<std::vector<const runs::Extension*>> on_lattice(p.lattices.size());
+      for (std::size_t l = 0; l < p.lattices.size(); ++l)
+        if (extensions[b][l]) on_lattice[l] = pointers(selected[l], &*extensions[b][l]);
+      const std::vector<std::optional<runs::RunAnalyser>> analysers = runs::layout_analysers(p, on_lattice, used);
       std::vector<const runs::RunAnalyser*> pointers_to(p.layouts.size(), nullptr);
-      for (std::size_t L = 0; L < p.layouts.size(); ++L) {
-        if (!extensions[b][L]) continue;
-        analysers[L].emplace(p.layouts[L], runs::combine(p.bases[L], pointers(selected[L], &*extensions[b][L])));
-        pointers_to[L] = &*analysers[L];
-      }
+      for (std::size_t L = 0; L < p.layouts.size(); ++L)
+        if (analysers[L]) pointers_to[L] = &*analysers[L];
       const auto k = static_cast<std::size_t>(ks[b]);
       out.at[k] = evaluate_runs(p.runs, p.layout_of, pointers_to, p.keys);
       out.sets[k] = out.at[k].set(p.keys);
@@ -90,14 +84,15 @@ CandidateSums evaluate_on_grid(const runs::PreparedRuns& p, const Candidate& c,
 
 CandidateSums evaluate_amplitudes(const runs::PreparedRuns& p, const Candidate& c,
                                   const std::vector<std::vector<runs::Extension>>& selected,
-                                  std::vector<LayoutContext>& ctx) {
+                                  LayoutExtensions& build) {
   CandidateSums out;
+  const std::vector<bool> used = used_layouts(p);
   out.amplitudes = true;
   out.keys = &p.keys;
   out.layout_of = p.layout_of;
-  out.fit.resize(p.layouts.size());
-  for (std::size_t L = 0; L < p.layouts.size(); ++L)
-    if (used(p, L)) out.fit[L].emplace(p.layouts[L], runs::combine(p.bases[L], pointers(selected[L], nullptr)));
+  std::vector<std::vector<const runs::Extension*>> on_lattice(p.lattices.size());
+  for (std::size_t l = 0; l < p.lattices.size(); ++l) on_lattice[l] = pointers(selected[l], nullptr);
+  out.fit = runs::layout_analysers(p, on_lattice, used);
   for (std::size_t r = 0; r < p.runs.size(); ++r)
     out.normalized.push_back(out.fit[static_cast<std::size_t>(p.layout_of[r])]->normalized(run_values(p.runs[r])));
   const std::vector<int> amp = c.amplitude_indices();
@@ -106,16 +101,18 @@ CandidateSums evaluate_amplitudes(const runs::PreparedRuns& p, const Candidate& 
     out.amplitude_limit[static_cast<Eigen::Index>(j)] = c.parameters[static_cast<std::size_t>(amp[j])].grid.front();
   out.signature.resize(static_cast<std::size_t>(c.grid_size()));
   for (int k = 0; k < c.grid_size(); ++k) {
-    out.signature[static_cast<std::size_t>(k)].resize(p.layouts.size());
-    for (std::size_t L = 0; L < p.layouts.size(); ++L) {
-      if (!used(p, L)) continue;
-      Eigen::MatrixXd& Z = out.signature[static_cast<std::size_t>(k)][L];
-      for (std::size_t j = 0; j < amp.size(); ++j) {
-        // The signature of amplitude j alone, at unit size (SI).
-        std::vector<double> theta = c.grid_point(k);
-        theta[static_cast<std::size_t>(amp[j])] = 1.0;
-        const runs::Extension e = c.build(ctx[L], theta);
-        const Eigen::VectorXd z = out.fit[L]->normalized_linear(e.mean);
+    std::vector<Eigen::MatrixXd>& signature = out.signature[static_cast<std::size_t>(k)];
+    signature.resize(p.layouts.size());
+    for (std::size_t j = 0; j < amp.size(); ++j) {
+      // The signature of amplitude j alone, at unit size (SI).
+      std::vector<double> theta = c.grid_point(k);
+      theta[static_cast<std::size_t>(amp[j])] = 1.0;
+      const std::vector<std::optional<runs::Extension>> e = build.build(c, theta, used);
+      for (std::size_t L = 0; L < p.layouts.size(); ++L) {
+        if (!used[L]) continue;
+        const runs::Extension& on_lattice_e = *e[static_cast<std::size_t>(p.lattice_of[L])];
+        const Eigen::VectorXd z = out.fit[L]->normalized_linear(runs::select_rows(on_lattice_e, p.lattice_rows[L]).mean);
+        Eigen::MatrixXd& Z = signature[L];
         if (Z.size() == 0) Z.resize(z.size(), static_cast<Eigen::Index>(amp.size()));
         Z.col(static_cast<Eigen::Index>(j)) = z;
       }
@@ -162,10 +159,9 @@ Eigen::VectorXd least_squares_amplitudes(const CandidateSums& s, int k, const st
 CandidateSums evaluate_candidate(const runs::PreparedRuns& p, const Candidate& c,
                                  const std::vector<std::vector<runs::Extension>>& selected,
                                  const NullCalibration& m0, const std::vector<std::vector<int>>& groups) {
-  std::vector<LayoutContext> ctx(p.layouts.size());
-  for (std::size_t L = 0; L < p.layouts.size(); ++L) ctx[L] = {&p.layouts[L], &p.site, &p.bases[L], {}};
-  return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, ctx, m0, groups)
-                                       : evaluate_amplitudes(p, c, selected, ctx);
+  LayoutExtensions build(p);
+  return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, build, m0, groups)
+                                       : evaluate_amplitudes(p, c, selected, build);
 }
 
 RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices) {

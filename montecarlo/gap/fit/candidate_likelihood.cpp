@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "lib/common/assert.h"
+#include "montecarlo/gap/candidates/layout_extensions.h"
 #include "montecarlo/runs/model/likelihood.h"
 
 namespace insmc::gap {
@@ -16,11 +17,13 @@ namespace {
 /// Every run's log-likelihood under per-layout models (`extension(L)`: the
 /// extensions added for layout L, none for the null). Each layout's
 /// model is built and factorized once, and only for layouts some run uses.
-template <class ExtensionOf>
 std::vector<double> per_run(const runs::PreparedRuns& p, const std::vector<std::vector<runs::Extension>>& selected,
-                            const ExtensionOf& extension) {
+                            const std::vector<std::vector<runs::Extension>>& added) {
   // Keyed by layout and the run's rows: a run that stops early has the
   // marginal likelihood of the layout's first rows.
+  // Each lattice's model combined and factorized once, each layout's cut
+  // from it (likelihood.h).
+  std::map<std::size_t, runs::LatticeLikelihood> on_lattice;
   std::map<std::pair<std::size_t, std::size_t>, runs::RunLikelihood> models;
   std::vector<double> out(p.runs.size());
   for (std::size_t r = 0; r < p.runs.size(); ++r) {
@@ -28,11 +31,17 @@ std::vector<double> per_run(const runs::PreparedRuns& p, const std::vector<std::
     const std::pair<std::size_t, std::size_t> key{L, p.runs[r].values.size()};
     auto it = models.find(key);
     if (it == models.end()) {
-      std::vector<const runs::Extension*> extensions;
-      for (const runs::Extension& e : selected[L]) extensions.push_back(&e);
-      const std::vector<runs::Extension> added = extension(L);
-      for (const runs::Extension& e : added) extensions.push_back(&e);
-      it = models.emplace(key, runs::first_rows(runs::combine(p.bases[L], extensions), key.second)).first;
+      const auto l = static_cast<std::size_t>(p.lattice_of[L]);
+      auto lattice = on_lattice.find(l);
+      if (lattice == on_lattice.end()) {
+        std::vector<const runs::Extension*> extensions;
+        for (const runs::Extension& e : selected[l]) extensions.push_back(&e);
+        for (const runs::Extension& e : added[l]) extensions.push_back(&e);
+        lattice = on_lattice.emplace(l, runs::LatticeLikelihood(runs::combine(p.lattice_bases[l], extensions))).first;
+      }
+      // A run that stops early: the layout's first rows (their marginal).
+      const std::span<const Eigen::Index> rows(p.lattice_rows[L].data(), key.second);
+      it = models.emplace(key, runs::RunLikelihood(lattice->second, rows)).first;
     }
     out[r] = it->second.log_likelihood(run_values(p.runs[r]));
   }
@@ -50,15 +59,14 @@ std::vector<int> likelihood_parameters(const Candidate& c) {
 
 RunLogLikelihoods joint_evaluation(const runs::PreparedRuns& p, std::vector<HeldCandidate> candidates,
                                    const std::vector<std::vector<runs::Extension>>& selected) {
-  INSMC_ASSERT(selected.size() == p.layouts.size(), "selected effects for {} layouts, expected {}", selected.size(),
-               p.layouts.size());
+  INSMC_ASSERT(selected.size() == p.lattices.size(), "selected effects for {} lattices, expected {}", selected.size(),
+               p.lattices.size());
   // Each candidate's layout contexts live as long as the function: candidates
   // cache unit responses in them, which every later evaluation reuses.
-  auto contexts = std::make_shared<std::vector<std::vector<LayoutContext>>>();
+  auto contexts = std::make_shared<std::vector<LayoutExtensions>>();
   std::size_t searched = 0;
   for (const HeldCandidate& h : candidates) {
-    auto& ctx = contexts->emplace_back(p.layouts.size());
-    for (std::size_t L = 0; L < p.layouts.size(); ++L) ctx[L] = {&p.layouts[L], &p.site, &p.bases[L], {}};
+    contexts->emplace_back(p);
     searched += likelihood_parameters(*h.candidate).size();
   }
   return [&p, &selected, contexts, candidates = std::move(candidates), searched](std::span<const double> values) {
@@ -74,12 +82,14 @@ RunLogLikelihoods joint_evaluation(const runs::PreparedRuns& p, std::vector<Held
       for (std::size_t j = 0; j < h.amplitudes.size() && j < amp.size(); ++j)
         t[static_cast<std::size_t>(amp[j])] = h.amplitudes[j];
     }
-    return per_run(p, selected, [&](std::size_t L) {
-      std::vector<runs::Extension> added;
-      for (std::size_t i = 0; i < candidates.size(); ++i)
-        added.push_back(candidates[i].candidate->build((*contexts)[i][L], theta[i]));
-      return added;
-    });
+    const std::vector<bool> used = used_layouts(p);
+    std::vector<std::vector<runs::Extension>> added(p.lattices.size());
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      std::vector<std::optional<runs::Extension>> built = (*contexts)[i].build(*candidates[i].candidate, theta[i], used);
+      for (std::size_t l = 0; l < p.lattices.size(); ++l)
+        if (built[l]) added[l].push_back(std::move(*built[l]));
+    }
+    return per_run(p, selected, added);
   };
 }
 
@@ -90,7 +100,7 @@ RunLogLikelihoods candidate_evaluation(const runs::PreparedRuns& p, const Candid
 
 std::vector<double> null_log_likelihoods(const runs::PreparedRuns& p,
                                          const std::vector<std::vector<runs::Extension>>& selected) {
-  return per_run(p, selected, [](std::size_t) { return std::vector<runs::Extension>(); });
+  return per_run(p, selected, std::vector<std::vector<runs::Extension>>(p.lattices.size()));
 }
 
 }  // namespace insmc::gap

@@ -78,17 +78,13 @@ void check_null_budget(const runs::PreparedRuns& p, int runs, bool automatic, in
 ModelNull calibrate(runs::PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
                std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of, const ImportNull* import) {
   std::vector<runs::RunData> sim = simulate_like_records(p, file, options, runs, 0, {}, layout_of, import);
-  std::vector<runs::RunAnalyser> analysers;
+  const std::vector<std::optional<runs::RunAnalyser>> analysers = runs::layout_analysers(p, {});
   std::vector<const runs::RunAnalyser*> pointers;
-  analysers.reserve(p.layouts.size());
-  for (std::size_t L = 0; L < p.layouts.size(); ++L) {
-    analysers.emplace_back(p.layouts[L], runs::combine(p.bases[L], {}));
-    pointers.push_back(&analysers.back());
-  }
+  for (const std::optional<runs::RunAnalyser>& a : analysers) pointers.push_back(&*a);
   const RunSet set = evaluate_runs(sim, layout_of, pointers, p.keys).set(p.keys);
   z.resize(sim.size());
   tbb::parallel_for(std::size_t{0}, sim.size(), [&](std::size_t j) {
-    analysers[static_cast<std::size_t>(layout_of[j])].analyse(run_values(sim[j]), z[j]);
+    analysers[static_cast<std::size_t>(layout_of[j])]->analyse(run_values(sim[j]), z[j]);
   });
   ModelNull null;
   null.calibration = NullCalibration::from_null(set);

@@ -86,7 +86,7 @@ void check_finding(Diagnosis& d, const runs::PreparedRuns& p, const RecordFile& 
     std::iota(files[f].begin(), files[f].end(), static_cast<int>(f * n));
   }
   const NullCalibration& m0 = null.calibration;
-  const CandidateSums sums = evaluate_candidate(q, *c, std::vector<std::vector<runs::Extension>>(q.layouts.size()), m0, files);
+  const CandidateSums sums = evaluate_candidate(q, *c, std::vector<std::vector<runs::Extension>>(q.lattices.size()), m0, files);
   std::vector<std::vector<double>> fitted(c->parameters.size());
   for (const std::vector<int>& runs : files) {
     const RunsUnderChoice under(sums, runs);

@@ -7,6 +7,7 @@
 
 #include "lib/units/quantity.h"
 #include "lib/units/quantity_display.h"
+#include "montecarlo/gap/candidates/layout_extensions.h"
 #include "montecarlo/gap/null/bootstrap.h"
 #include "montecarlo/gap/ranking/ranking.h"
 
@@ -37,7 +38,7 @@ double share_closed(double before, double after, double critical) {
 
 void rank_and_select(Diagnosis& d, const runs::PreparedRuns& p, const ModelNull& null, const DiagnosisOptions& options) {
   const auto& registry = candidates_of(options);
-  std::vector<std::vector<runs::Extension>> selected(p.layouts.size());
+  std::vector<std::vector<runs::Extension>> selected(p.lattices.size());  // per lattice
   std::vector<std::string> taken;
   double before = d.heldout_gap_before;
   for (int step = 0; step < std::max(1, options.max_selected); ++step) {
@@ -64,10 +65,9 @@ void rank_and_select(Diagnosis& d, const runs::PreparedRuns& p, const ModelNull&
     d.selected.push_back(step == 0 ? d.top : c.name);
     taken.push_back(c.name);
     const std::vector<double> theta = parameter_values(c, best.full_fit);
-    for (std::size_t L = 0; L < p.layouts.size(); ++L) {
-      const LayoutContext ctx{&p.layouts[L], &p.site, &p.bases[L], {}};
-      selected[L].push_back(c.build(ctx, theta));
-    }
+    std::vector<std::optional<runs::Extension>> built = LayoutExtensions(p).build(c, theta);
+    for (std::size_t l = 0; l < p.lattices.size(); ++l)
+      if (built[l]) selected[l].push_back(std::move(*built[l]));
     before = best.heldout_gap;
     if (g.p_value >= options.alpha) break;  // no significant gap remains
     if (step + 1 == options.max_selected) {

@@ -151,7 +151,7 @@ void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const ru
   const auto& registry = candidates_of(options);
   const std::size_t top = std::min(ranked.size(), static_cast<std::size_t>(std::max(0, options.likelihood_candidates)));
   if (top == 0) return;
-  const Selected none(p.layouts.size());
+  const Selected none(p.lattices.size());
   const std::vector<double> null_ll = null_log_likelihoods(p, none);
 
   // Models: the top candidates alone, then the pairs of the first few.

@@ -138,7 +138,7 @@ std::vector<double> null_shrinks(const runs::PreparedRuns& p, const ModelNull& n
     before.push_back(gap_value(null.set, file_runs.back(), m0));
   }
   std::atomic<std::uint64_t> done{0};
-  const std::vector<std::vector<runs::Extension>> none(p.layouts.size());
+  const std::vector<std::vector<runs::Extension>> none(p.lattices.size());
   tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
     const CandidateSums sums = evaluate_candidate(q, registry[c], none, m0, file_runs);
     std::vector<double> shrink;

@@ -28,8 +28,10 @@ struct ValidationOptions {
   /// subset reproduces the full study's files.
   std::vector<std::string> effects;
   /// The files as gap-validate's own simulator writes them, or rewritten in
-  /// another recorder's conventions (foreign_layout.h), each file its own.
-  bool foreign_layouts = false;
+  /// another recorder's conventions (foreign_layout.h: the foreign
+  /// writer's, or the layout fuzzer's), each file its own.
+  RecordLayout layout = RecordLayout::kOwn;
+  bool foreign_layouts() const { return layout != RecordLayout::kOwn; }
   DiagnosisProgress progress;  ///< files diagnosed; may be empty
   /// The quick CI subset: 10-run files, one dominant magnitude (30x), one seed, 4 null files.
   static ValidationOptions quick_subset();

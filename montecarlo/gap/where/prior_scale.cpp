@@ -16,7 +16,7 @@ PriorScale fit_prior_scale(const runs::PreparedRuns& p, const NullCalibration& m
   std::vector<double>& grid = c.parameters.front().grid;
   grid.clear();
   for (int k = -16; k <= 16; ++k) grid.push_back(std::pow(10.0, k / 8.0));
-  const std::vector<std::vector<runs::Extension>> none(p.layouts.size());
+  const std::vector<std::vector<runs::Extension>> none(p.lattices.size());
   const CandidateSums sums = evaluate_candidate(p, c, none, m0);
   const std::size_t n = p.runs.size();
   const std::vector<int> runs = all_runs(n);

@@ -85,6 +85,60 @@ GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>
   return m;
 }
 
+namespace {
+
+Eigen::VectorXd rows_of(const Eigen::VectorXd& v, std::span<const Eigen::Index> rows) {
+  if (v.size() == 0) return v;
+  Eigen::VectorXd out(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) out[static_cast<Eigen::Index>(i)] = v[rows[i]];
+  return out;
+}
+
+Eigen::MatrixXd rows_of(const Eigen::MatrixXd& m, std::span<const Eigen::Index> rows) {
+  if (m.rows() == 0) return m;  // none (e.g. no scheme's estimates)
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(rows.size()), m.cols());
+  for (std::size_t i = 0; i < rows.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = m.row(rows[i]);
+  return out;
+}
+
+PulseCounting rows_of(const PulseCounting& c, std::span<const Eigen::Index> rows) {
+  return {rows_of(c.columns, rows), rows_of(c.noise_var, rows)};
+}
+
+}  // namespace
+
+BaseModel select_rows(const BaseModel& base, std::span<const Eigen::Index> rows) {
+  BaseModel out = base;
+  out.H_x = rows_of(base.H_x, rows);
+  out.noise_var = rows_of(base.noise_var, rows);
+  out.actual_noise_var = rows_of(base.actual_noise_var, rows);
+  out.prior_std = rows_of(base.prior_std, rows);
+  out.counting = rows_of(base.counting, rows);
+  out.scheme_columns = rows_of(base.scheme_columns, rows);
+  out.estimate_map = rows_of(base.estimate_map, rows);
+  return out;
+}
+
+Extension select_rows(const Extension& e, std::span<const Eigen::Index> rows) {
+  Extension out = e;
+  if (e.columns.cols() > 0) out.columns = rows_of(e.columns, rows);
+  else out.columns.resize(static_cast<Eigen::Index>(rows.size()), 0);
+  out.noise_var_add = rows_of(e.noise_var_add, rows);
+  out.mean = rows_of(e.mean, rows);
+  if (e.counting) out.counting = rows_of(*e.counting, rows);
+  return out;
+}
+
+GaussianModel select_rows(const GaussianModel& model, std::span<const Eigen::Index> rows) {
+  GaussianModel out;
+  out.mean = rows_of(model.mean, rows);
+  out.H = rows_of(model.H, rows);
+  out.prior_var = model.prior_var;
+  out.noise_var = rows_of(model.noise_var, rows);
+  out.actual_noise_var = rows_of(model.actual_noise_var, rows);
+  return out;
+}
+
 GaussianModel first_rows(GaussianModel model, Eigen::Index rows) {
   if (rows == model.H.rows()) return model;
   if (model.mean.size() > 0) model.mean.conservativeResize(rows);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <optional>
+#include <span>
 
 #include "lib/uncertainty/uncertainty_vector.h"
 #include "montecarlo/runs/model/pulse_counting.h"
@@ -86,6 +87,13 @@ struct Extension {
            (x_var_add.array() == 0.0).all() && !counting;
   }
 };
+
+/// The base model or an extension of a layout's union (layout_union.h) on
+/// the rows `rows` of it: each row's model is its own, so the result is the
+/// model of the layout those rows make.
+BaseModel select_rows(const BaseModel& base, std::span<const Eigen::Index> rows);
+Extension select_rows(const Extension& extension, std::span<const Eigen::Index> rows);
+GaussianModel select_rows(const GaussianModel& model, std::span<const Eigen::Index> rows);
 
 /// The base model with every extension applied.
 GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>& extensions);

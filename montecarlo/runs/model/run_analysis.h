@@ -27,6 +27,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <array>
+#include <span>
 #include <vector>
 
 #include "montecarlo/runs/model/gaussian_model.h"
@@ -52,9 +53,44 @@ struct GroupSums {
 /// removes at least this share of its prior variance.
 inline constexpr double kResolvedShare = 0.1;
 
+/// What every layout cut from one lattice (layout_union.h) shares of its
+/// analysis: the lattice model's fit over all its test rows. A layout that
+/// lacks k of those test rows has the information of the lattice less a
+/// rank-k term, so its posterior and each row's expected squares follow
+/// from the lattice's by Woodbury's identity at O(rows × causes × k)
+/// instead of O(rows × causes²) (docs/gap-method.md §1, "Runs that miss
+/// records").
+class LatticeAnalysis {
+ public:
+  LatticeAnalysis(const Layout& lattice, const GaussianModel& model);
+
+ private:
+  friend class RunAnalyser;
+  /// The analysis of `layout`, the rows `rows` of `lattice`'s, fitted anew.
+  LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows);
+  void fit();
+
+  const Layout* layout_;
+  Eigen::VectorXd mean_;              // rows
+  Eigen::MatrixXd H_;                 // rows × active causes
+  Eigen::VectorXd prior_, s_;         // active: prior variance and its root (the scaling)
+  std::vector<Eigen::Index> active_;  // the model's column of each active cause
+  Eigen::VectorXd noise_var_, actual_noise_var_;  // rows
+  int test_rows_ = 0;
+  // Scaled (c = S u): Π = (I + S Hₜᵀ R⁻¹ Hₜ S)⁻¹, the spread I + J of the
+  // actual test noise through the fit, and Π (I + J) Π.
+  Eigen::MatrixXd pi_, spread_, around_;
+  Eigen::MatrixXd HS_pi_;             // rows × active: H S Π
+  Eigen::VectorXd q_, ab_;            // rows: h Π hᵀ and h Π (I + J) Π hᵀ (scaled)
+};
+
 class RunAnalyser {
  public:
   RunAnalyser(const Layout& layout, const GaussianModel& model);
+  /// The analyser of `layout`, whose rows are the rows `rows` of the lattice
+  /// `shared` was made on (rows_within): the same values as one made on the
+  /// lattice model's rows `rows`, to round-off.
+  RunAnalyser(const Layout& layout, const LatticeAnalysis& shared, std::span<const Eigen::Index> rows);
 
   /// Group sums of one run's values (layout order). A run may hold the
   /// first rows of the layout only (it stopped early; at least the test
@@ -82,6 +118,11 @@ class RunAnalyser {
   const std::vector<int>& estimate_x_columns() const { return estimate_x_; }
 
  private:
+  /// The rest of the analysis from the fit's scaled posterior Π, each
+  /// row's q and ab (as LatticeAnalysis), and the diagonal of Π (I + J) Π.
+  void finish(const LatticeAnalysis& a, std::span<const Eigen::Index> rows, const Eigen::MatrixXd& pi,
+              const Eigen::VectorXd& q, const Eigen::VectorXd& ab, const Eigen::VectorXd& around_diagonal);
+
   const Layout* layout_;
   Eigen::VectorXd mean_;          // rows
   Eigen::MatrixXd H_;             // rows × active columns

@@ -16,6 +16,26 @@ constexpr std::array<const char*, 3> kAxis = {"x", "y", "z"};
 constexpr std::array<const char*, kNavWindows> kWindow = {"0-42 min", "42-63 min", "63-84 min",
                                                           "after 84 min"};
 
+/// Rows kept at a spacing: a time is due when it lies a spacing or more
+/// after the anchor, which then moves on by whole spacings. On a regular
+/// grid whose step divides the spacing the anchor is the last time kept;
+/// a record one run lacks delays that run's next row only, not every row
+/// after it, so runs that each miss other records keep their rows in common
+/// (layout_union.h).
+struct Spaced {
+  double anchor_s = -1e300;
+  /// `tolerance`: the share of the spacing a time may fall short by.
+  bool due(double t_s, double spacing_s, double tolerance) {
+    if (anchor_s < -1e299) {
+      anchor_s = t_s;
+      return true;
+    }
+    if (t_s - anchor_s < spacing_s * (1 - tolerance)) return false;
+    anchor_s += spacing_s * std::floor((t_s - anchor_s) / spacing_s + tolerance);
+    return true;
+  }
+};
+
 }  // namespace
 
 int group_of(Stage stage, Quantity quantity, int axis, int window) {
@@ -184,6 +204,8 @@ std::vector<RunData> extract_runs(const RecordFile& file, const RecordSite& site
     std::vector<double> test_values, nav_values;
     std::array<double, 3> last_f = {-1e300, -1e300, -1e300};
     double last_r = -1e300;
+    std::array<Spaced, 3> f_spaced;
+    Spaced r_spaced;
     const RecordRow* last_r_row = nullptr;
     const auto window_of = [&](double t) {
       return segment == NavSegment::kRestart ? nav_window(t - site.nav_start_s + T, T) : nav_window(t, T);
@@ -205,14 +227,16 @@ std::vector<RunData> extract_runs(const RecordFile& file, const RecordSite& site
       for (int k = 0; k < 3 && f_modelled; ++k) {
         // A window must lie after switch-over and not overlap the last one.
         const double spacing = test ? tau : std::max(tau, options.nav_f_spacing_s);
-        if (!row.f_mps2[k] || row.t_s < tau * (1 - 1e-9) || row.t_s - last_f[k] < spacing * (1 - 1e-6)) continue;
+        if (!row.f_mps2[k] || row.t_s < tau * (1 - 1e-9) || row.t_s - last_f[k] < tau * (1 - 1e-6) ||
+            !f_spaced[k].due(row.t_s, spacing, 1e-6))
+          continue;
         last_f[k] = row.t_s;
         rows.push_back({row.t_s, Quantity::kF, k, group_of(stage, Quantity::kF, k, window)});
         values.push_back(*row.f_mps2[k]);
       }
       last_r_row = &row;
       const double r_spacing = test ? options.r_spacing_s : options.nav_r_spacing_s;
-      if (!row.r_ap_m || row.t_s - last_r < r_spacing * (1 - 1e-9)) continue;
+      if (!row.r_ap_m || !r_spaced.due(row.t_s, r_spacing, 1e-9)) continue;
       last_r = row.t_s;
       for (int k = 0; k < 3; ++k) {
         rows.push_back({row.t_s, Quantity::kR, k, group_of(stage, Quantity::kR, k, window)});
