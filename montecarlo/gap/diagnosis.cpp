@@ -95,7 +95,7 @@ void name_inside_priors(Diagnosis& d) {
       t.min_p, t.family_p, t.named, t.told_apart_by.empty() ? "" : " (" + t.told_apart_by + ")", d.top,
       rows_see_it ? "the estimates tell apart effects that act inside the priors"
                   : "the rows' scatter alone is within the null"));
-  d.estimate_test.reason = "named the top";
+  d.estimate_test.replaced_top = d.top.empty() ? "(none)" : d.top;
   d.top = t.named;
 }
 

@@ -201,7 +201,8 @@ struct EstimateTest {
   std::vector<EstimateScore> scores;  ///< candidates that act inside the priors, by held-out gain
   std::string named;                  ///< the first, or a class "a|b" within 1.92 nats
   std::string told_apart_by;          ///< for a class: the test that would split it
-  std::string reason;                 ///< why not measured, or how the naming entered the top
+  std::string reason;                 ///< why not measured
+  std::string replaced_top;           ///< the ranking's top when the estimates' name replaced it
 };
 
 struct Diagnosis {

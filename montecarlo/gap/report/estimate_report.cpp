@@ -44,6 +44,7 @@ mc::Json estimate_test_json(const EstimateTest& t) {
   }
   j["scores"] = scores;
   j["named"] = t.named.empty() ? mc::Json(nullptr) : mc::Json(t.named);
+  j["replaced_top"] = t.replaced_top.empty() ? mc::Json(nullptr) : mc::Json(t.replaced_top);
   j["told_apart_by"] = t.told_apart_by.empty() ? mc::Json(nullptr) : mc::Json(t.told_apart_by);
   j["test"] = "per estimate of x the test run resolves (normalized, run_analysis.h): the share of runs beyond the "
               "null runs' 99 % point of |estimate|, the variance over runs over the null runs', |mean − null mean| "
