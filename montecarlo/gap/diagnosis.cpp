@@ -20,6 +20,8 @@
 #include "montecarlo/runs/prepared_runs.h"
 #include "montecarlo/gap/where/locate.h"
 #include "montecarlo/gap/where/prior_scale.h"
+#include "montecarlo/gap/where/estimate_test.h"
+#include "montecarlo/gap/ranking/estimate_naming.h"
 
 namespace insmc::gap {
 namespace {
@@ -44,6 +46,55 @@ void add_raw_stage(Diagnosis& d, const RecordFile& file) {
     d.raw_accel_ratio = raw->accel_ratio;
   }
 }
+/// The per-run estimates against the prior (where/estimate_test.h): tested
+/// jointly with G₊ over the same null files, so that the file is
+/// significant at alpha by either; when they stand beyond it, the
+/// candidates acting inside the priors are scored on them.
+RunEstimates test_run_estimates(Diagnosis& d, const runs::PreparedRuns& p,
+                                const std::vector<std::optional<runs::RunAnalyser>>& analysers, const ModelNull& null,
+                                const DiagnosisOptions& options) {
+  std::vector<const runs::RunAnalyser*> pointers;
+  for (const auto& a : analysers) pointers.push_back(&*a);
+  RunEstimates e = run_estimates(p, pointers, null);
+  d.estimate_test = test_estimates(e, null, options, d.p_value);
+  if (!d.estimate_test.measured) return e;
+  d.significant = d.estimate_test.combined_p < options.alpha;
+  if (d.estimate_test.significant) {
+    const int L = p.layout_of.front();
+    name_from_estimates(d.estimate_test, e, p, *analysers[static_cast<std::size_t>(L)], L,
+                        options.candidates ? *options.candidates : candidate_registry());
+  }
+  return e;
+}
+
+/// The estimates name the effect when the rows' scatter does not see it
+/// (G₊ alone not significant), or when every member of the ranking's top
+/// acts inside the priors too: among effects the same in every run or
+/// priors widened, the direction the estimates move in is what tells them
+/// apart, and G pools it with the rows over each axis.
+void name_inside_priors(Diagnosis& d) {
+  const EstimateTest& t = d.estimate_test;
+  if (!d.ranked || !t.significant || t.named.empty() || t.named == d.top) return;
+  const auto scored = [&](const std::string& name) {
+    return std::any_of(t.scores.begin(), t.scores.end(), [&](const EstimateScore& s) { return s.effect == name; });
+  };
+  bool inside = !d.top.empty();
+  for (std::size_t b = 0, e; b <= d.top.size(); b = e + 1) {
+    e = std::min(d.top.find('|', b), d.top.size());
+    inside = inside && scored(d.top.substr(b, e - b));
+  }
+  const bool rows_see_it = d.p_value < d.alpha;
+  if (rows_see_it && !inside) return;
+  d.statements.push_back(fmt::format(
+      "the test run's estimates stand beyond the prior (least p {:.3g}, over the table {:.3g}) and name {}{} where "
+      "the ranking by held-out G named {}: {}",
+      t.min_p, t.family_p, t.named, t.told_apart_by.empty() ? "" : " (" + t.told_apart_by + ")", d.top,
+      rows_see_it ? "the estimates tell apart effects that act inside the priors"
+                  : "the rows' scatter alone is within the null"));
+  d.estimate_test.replaced_top = d.top.empty() ? "(none)" : d.top;
+  d.top = t.named;
+}
+
 }  // namespace
 
 Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
@@ -134,6 +185,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
         d.against_model.significant ? "significant" : "not significant",
         d.against_model.significant ? " (the candidates below explain the gap against the model)" : ""));
   }
+  if (!d.against_model.reported) test_run_estimates(d, p, analysers, null, options);
   if (n < 20)
     d.statements.push_back(fmt::format("{} runs: the gap's power is reduced (a null file of {} runs scatters "
                                        "up to G = {:.3g} at alpha = {})", n, n, d.null_gap_critical, options.alpha));
@@ -150,7 +202,10 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   }
   if (!d.model_gap_significant()) {
     d.statements.push_back(fmt::format("no significant gap (p = {:.3g} >= alpha = {}): no effect is selected",
-                                       d.against_model.reported ? d.against_model.p_value : d.p_value, options.alpha));
+                                       d.against_model.reported  ? d.against_model.p_value
+                                       : d.estimate_test.measured ? d.estimate_test.combined_p
+                                                                  : d.p_value,
+                                       options.alpha));
   }
   if (options.rank == RankWhen::kNever || (options.rank == RankWhen::kIfSignificant && !d.model_gap_significant())) {
     d.statements.push_back("candidate effects not fitted (--rank)");
@@ -158,6 +213,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
     return d;
   }
   rank_and_select(d, p, null, options);
+  name_inside_priors(d);
   if (d.model_gap_significant()) check_finding(d, p, records.file, null, options);
   honest_statements(d);
   add_raw_stage(d, file);

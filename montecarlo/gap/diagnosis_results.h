@@ -170,6 +170,41 @@ struct ModelOnlyVerdict {
   double gap = 0, null_gap_critical = 0;        ///< G and its critical value
 };
 
+/// One estimate of the test run against the prior (where/estimate_test.h):
+/// its three statistics over the runs, each with the null files' critical
+/// value at alpha (no correction for the table's many tests) and its p.
+struct EstimateStatistics {
+  std::string name;        ///< catalogue name of the x column (`insmc params`)
+  double reach = 0;        ///< the prior's reach: the null runs' 99 % point of |ĉ| (normalized)
+  double beyond = 0, beyond_critical = 0, beyond_p = 1;  ///< share of runs beyond the reach
+  double spread = 0, spread_critical = 0, spread_p = 1;  ///< variance over runs / the null runs'
+  double mean = 0, mean_critical = 0, mean_p = 1;        ///< |mean over runs − null mean| in null standard errors
+};
+
+/// A candidate scored on the estimates alone: the per-run estimates' Gaussian
+/// log-likelihood with the candidate's mean shift and added covariance,
+/// fitted on one half of the runs and scored on the other (2-fold), less the
+/// null's on the same runs [nats].
+struct EstimateScore {
+  std::string effect;
+  double heldout_gain = 0;
+};
+
+/// The test of the per-run estimates against the prior (docs/gap-method.md §2).
+struct EstimateTest {
+  bool measured = false;
+  std::vector<EstimateStatistics> estimates;
+  double min_p = 1;       ///< least p of the table
+  double family_p = 1;    ///< of min_p against the null files' own least p
+  bool significant = false;
+  double combined_p = 1;  ///< of min(p of G+, min_p) against the same of the null files
+  std::vector<EstimateScore> scores;  ///< candidates that act inside the priors, by held-out gain
+  std::string named;                  ///< the first, or a class "a|b" within 1.92 nats
+  std::string told_apart_by;          ///< for a class: the test that would split it
+  std::string reason;                 ///< why not measured
+  std::string replaced_top;           ///< the ranking's top when the estimates' name replaced it
+};
+
 struct Diagnosis {
   int runs = 0;
   std::string scheme = "none";  ///< the records' scheme (header)
@@ -202,6 +237,7 @@ struct Diagnosis {
   std::vector<PairResult> pairs;          ///< of the top candidates, by held-out log-likelihood gain
   std::vector<GreedyStep> greedy;         ///< the effects added, in order
   std::vector<std::string> selected;
+  EstimateTest estimate_test;
 
   /// The gap the candidates explain: against the model alone (the main
   /// verdict unless the null goes through the import).

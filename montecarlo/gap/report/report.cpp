@@ -7,6 +7,7 @@
 
 #include "lib/units/quantity.h"
 #include "lib/units/quantity_display.h"
+#include "montecarlo/gap/report/estimate_report.h"
 #include "montecarlo/gap/report/gap_plots.h"
 #include "montecarlo/gap/report/likelihood_report.h"
 #include "montecarlo/write/markdown.h"
@@ -153,6 +154,7 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
     pessimistic["prior_scale"] = scale;
   }
   g["pessimistic"] = pessimistic;
+  g["estimates"] = estimate_test_json(d.estimate_test);
   g["null"] = d.null_kind;
   if (d.against_model.reported) {
     mc::Json m = mc::Json::object();
@@ -283,6 +285,7 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                                       fmt::join(d.pessimistic.where, ", ")) +
                               prior_scale_sentence(d.pessimistic)
                         : ": not beyond the null");
+  md += estimate_test_markdown(d.estimate_test, d.alpha);
   md += "Site values (the null is simulated with them):\n\n";
   mc::Table site({"value", "used", "source", "why"});
   for (const runs::SiteValue& v : d.site) site.add_row({v.key, fmt::format("{:.6g}", v.value), v.source, v.reason});

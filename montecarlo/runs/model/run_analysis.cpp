@@ -236,6 +236,15 @@ Eigen::VectorXd RunAnalyser::normalized_linear(const Eigen::VectorXd& y) const {
   return v;
 }
 
+Eigen::MatrixXd RunAnalyser::estimate_map() const {
+  const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
+  Eigen::MatrixXd W(m, test_rows_);
+  for (Eigen::Index k = 0; k < m; ++k)
+    W.row(k) = (weighted_test_ * posterior_.row(estimate_columns_[static_cast<std::size_t>(k)]).transpose()).transpose() /
+               std::sqrt(estimate_var_[k]);
+  return W;
+}
+
 GroupSums RunAnalyser::sums_of(const Eigen::VectorXd& v) const {
   GroupSums sums;
   const auto m = static_cast<Eigen::Index>(estimate_columns_.size());

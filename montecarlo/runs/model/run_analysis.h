@@ -116,6 +116,12 @@ class RunAnalyser {
   /// The x column (catalogue index) of each resolved estimate, in the order
   /// the normalized values list them after the rows.
   const std::vector<int>& estimate_x_columns() const { return estimate_x_; }
+  /// The linear map from the test rows (less the model's mean) to the
+  /// resolved estimates over their expected std, the tail of
+  /// normalized_linear (estimates × test rows): what a signature or a
+  /// covariance added to the test rows does to the estimates.
+  Eigen::MatrixXd estimate_map() const;
+  int test_rows() const { return test_rows_; }
 
  private:
   /// The rest of the analysis from the fit's scaled posterior Π, each
