@@ -5,6 +5,7 @@
 
 #include "lib/common/input_error.h"
 #include "lib/truth/simulator.h"
+#include "lib/units/units.h"
 
 namespace insmc::mc {
 
@@ -22,6 +23,10 @@ void validate(const StudyConfig& c) {
     throw InputError("--grid-end", fmt::format("{}s", c.grid_end_s), "must lie in (0, 6h]");
   if (c.grid_end_s / c.grid_step_s > 10000)
     throw InputError("--grid-step", fmt::format("{}s", c.grid_step_s), "gives more than 10000 grid points");
+  // Every latitude, one value or a sweep's point (point_config validates
+  // each), meets the single value's check (apps/cli_common.cpp) whatever the systems.
+  if (!(std::abs(c.model.latitude_rad) <= 90.0 * kDegToRad))
+    throw InputError("--latitude", fmt::format("{:.12g}deg", c.model.latitude_rad / kDegToRad), "must lie within ±90deg");
   bool uses_system2 = false;
   for (System s : c.systems) uses_system2 |= s == System::kGyrocompass;
   if (uses_system2 && !(std::abs(c.model.latitude_rad) < M_PI / 2 - 1e-9))
