@@ -196,7 +196,18 @@ Outcome checkpoint(std::string_view data) {
 }
 
 Outcome run_json(std::string_view data) {
-  return guarded([&] { mc::run_arguments_from_json(data, "fuzz.json"); });
+  namespace po = boost::program_options;
+  po::options_description opts("Options");
+  opts.add(app::study_options_description(true));
+  return guarded([&] {
+    // Each element an option by name through the one check of files of
+    // options (apps/option_sources.h), then stored as run --from stores it.
+    const po::parsed_options kept = app::run_file_options(mc::run_arguments_from_json(data, "fuzz.json"), opts,
+                                                          "--from", "fuzz.json", "settings.arguments");
+    po::variables_map vm;
+    po::store(kept, vm);
+    po::notify(vm);
+  });
 }
 
 Outcome options(std::string_view data) {

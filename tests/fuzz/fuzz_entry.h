@@ -31,7 +31,8 @@ Outcome checkpoint(std::string_view data);
 /// parse_quantity; the first byte chooses the dimension (or parse_rate_hz).
 Outcome quantity(std::string_view data);
 /// run.json's settings.arguments (montecarlo/study/run_file.h), as `run --from`
-/// reads them.
+/// reads them: each element through the check of files of options
+/// (apps/option_sources.h) with the study's options, then stored.
 Outcome run_json(std::string_view data);
 /// The option parser: lines of the input as the arguments of `insmc run`
 /// (no --config, which would read a file), parsed, checked and turned into
