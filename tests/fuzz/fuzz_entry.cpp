@@ -204,9 +204,13 @@ Outcome run_json(std::string_view data) {
     // options (apps/option_sources.h), then stored as run --from stores it.
     const po::parsed_options kept = app::run_file_options(mc::run_arguments_from_json(data, "fuzz.json"), opts,
                                                           "--from", "fuzz.json", "settings.arguments");
-    po::variables_map vm;
-    po::store(kept, vm);
-    po::notify(vm);
+    try {
+      po::variables_map vm;
+      po::store(kept, vm);
+      po::notify(vm);
+    } catch (const po::error& e) {
+      throw InputError(app::parse_error_message(e));  // main's one line, exit 2
+    }
   });
 }
 
