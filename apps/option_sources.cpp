@@ -127,7 +127,7 @@ po::parsed_options run_file_options(const std::vector<std::string>& elements, co
                : fmt::format("= '{}' is not an option by name (each element is --NAME=VALUE, or --NAME for a "
                              "switch, never a command line)",
                              echo_input(elements[i], 60));
-    if (!why.empty()) throw InputError(field, echo_input(file), fmt::format("{}[{}] {}", list, i, why));
+    if (!why.empty()) throw InputError(field, echo_input(file, 256), fmt::format("{}[{}] {}", list, i, why));
   }
   return check.parsed();
 }

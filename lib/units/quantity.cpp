@@ -161,6 +161,9 @@ double parse_quantity(std::string_view text, Dimension dimension, std::string_vi
                                  kMaxQuantityTextBytes, allowed));
   const std::string shown = echo_input(text);
   if (text.empty()) throw InputError(std::string(field), "''", "expected " + allowed);
+  // A NUL byte would end the text for C functions downstream: no value holds one.
+  if (text.find('\0') != std::string_view::npos)
+    throw InputError(std::string(field), shown, "not a number; expected " + allowed);
   const std::optional<QuantityText> q = split_quantity(text);
   if (!q) throw InputError(std::string(field), shown, "not a number; expected " + allowed);
   if (!std::isfinite(q->number)) throw InputError(std::string(field), shown, "must be finite; expected " + allowed);

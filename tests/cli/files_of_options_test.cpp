@@ -51,17 +51,18 @@ TEST(FilesOfOptions, RunJsonArgumentsAreOptionsByNameNotACommandLine) {
     return write(dir, name, "{\"settings\": {\"arguments\": " + json_array(arguments) + "}}");
   };
   // After a `--` every option was once taken as typed: --out wrote there.
-  for (const std::string& smuggled :
-       {"--out=" + elsewhere, "--checkpoint=" + elsewhere, "--config=" + elsewhere, "--replay=0", "--format=csv",
-        "--threads=1", "--from=" + elsewhere, "--resume=" + elsewhere, "--help"}) {
+  const std::vector<std::string> smuggled_options = {
+      "--out=" + elsewhere, "--checkpoint=" + elsewhere, "--config=" + elsewhere, "--replay=0", "--format=csv",
+      "--threads=1",        "--from=" + elsewhere,       "--resume=" + elsewhere, "--help"};
+  for (const std::string& smuggled : smuggled_options) {
     const std::string file = run_json("dashes.json", {"--samples=2048", "--", smuggled});
     expect_refused("run --quiet --from " + file, file + ": settings.arguments[1] = '--' is not an option by name");
   }
   // Nor a short option, an abbreviation, a bare word, an empty name, a value
   // for a switch or an option given twice.
-  expect_refused("run --from " + run_json("short.json", {"-h"}), "settings.arguments[0] = '-h' is not an option by name");
+  expect_refused("run --from " + run_json("short.json", {"-h"}), "settings.arguments[0] must be an option");
   expect_refused("run --from " + run_json("abbrev.json", {"--samp=2048"}), "settings.arguments[0] names an unknown option 'samp'");
-  expect_refused("run --from " + run_json("word.json", {"--samples=2048", "--", "x"}), "settings.arguments[1] = '--'");
+  expect_refused("run --from " + run_json("word.json", {"--samples=2048", "--", "x"}), "settings.arguments[2] must be an option");
   expect_refused("run --from " + run_json("empty.json", {"--=5"}), "settings.arguments[0] = '--=5'");
   expect_refused("run --from " + run_json("twice.json", {"--samples=2048", "--samples=4096"}),
                  "settings.arguments[1] gives --samples twice (first in [0])");

@@ -67,7 +67,7 @@ TEST(RunFile, ArgumentsAreOptionsByNameNeverACommandLine) {
   EXPECT_EQ(error_of({"--out=/x"}),
             "--from = d/run.json: settings.arguments[0] holds --out, which names where insmc writes: a file of "
             "options may not; give it on the command line");
-  for (const std::string& e : {"-h", "x", "---out=/x", "--=1", ""})
+  for (const char* e : {"-h", "x", "---out=/x", "--=1", ""})
     EXPECT_NE(error_of({e}).find("is not an option by name"), std::string::npos) << e;
   EXPECT_NE(error_of({"--sam=5"}).find("names an unknown option 'sam'"), std::string::npos);
   EXPECT_NE(error_of({"--quick=yes"}).find("gives --quick a value; it is a switch"), std::string::npos);
