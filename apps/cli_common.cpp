@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 #include <fstream>
 #include <iostream>
+#include <set>
 
 #include "apps/config_options.h"
 #include "apps/help_examples.h"
@@ -80,12 +81,30 @@ std::optional<po::variables_map> parse_args(const Args& args, const std::string&
   return vm;
 }
 
-po::variables_map parse_args_again(const Args& args, const po::options_description& options) {
+po::variables_map parse_args_with_file(const Args& args, const std::string& own, const po::parsed_options& kept,
+                                       const po::options_description& options, const std::vector<po::option>& added) {
   const po::options_description all = with_generic(options);
-  const po::variables_map vm = store_all(args, all);
-  // The caller refused --help from its file; one typed beside --from or
-  // --resume was answered by the first parse.
-  if (vm.count("help")) throw InputError("--help", "(in the options read again)", "cannot be combined with them");
+  po::parsed_options typed(&all), from_file(&all);
+  std::set<std::string> given;
+  for (const po::option& o : po::command_line_parser(args).options(all).run().options) {
+    if (o.string_key == own) continue;
+    given.insert(o.string_key);
+    typed.options.push_back(o);
+  }
+  for (const po::option& o : added) {
+    given.insert(o.string_key);
+    typed.options.push_back(o);
+  }
+  for (const po::option& o : kept.options)
+    if (!given.count(o.string_key)) from_file.options.push_back(o);
+  po::variables_map vm;
+  po::store(typed, vm);
+  po::store(from_file, vm);
+  if (vm.count("config")) store_config_file(vm["config"].as<std::string>(), all, vm);
+  po::notify(vm);
+  // The file cannot hold --help (apps/option_sources.h); one typed beside
+  // --from or --resume was answered by the first parse.
+  if (vm.count("help")) throw InputError("--help", "(with the options of a file)", "cannot be combined with them");
   return vm;
 }
 

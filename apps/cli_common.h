@@ -33,9 +33,14 @@ enum class Lists { kOneValue, kSweeps };
 std::optional<po::variables_map> parse_args(const Args& args, const std::string& subcommand,
                                             const std::string& synopsis, const po::options_description& options,
                                             Lists lists = Lists::kOneValue);
-/// Parses once more the options a file gave with those typed beside it
-/// (`run --from`, `run --resume`): as parse_args, but --help is an error.
-po::variables_map parse_args_again(const Args& args, const po::options_description& options);
+/// The options of a run given again by a file (`run --from`, `run
+/// --resume`): those of this command line but `own` (the option naming the
+/// file), with `added`; then those the file kept (`kept`, each checked by
+/// apps/option_sources.h, never parsed as a command line) that the command
+/// line does not give; then --config's. As parse_args, but --help is an error.
+po::variables_map parse_args_with_file(const Args& args, const std::string& own, const po::parsed_options& kept,
+                                       const po::options_description& options,
+                                       const std::vector<po::option>& added = {});
 
 /// A count (samples, seed, runs) as an integer ("100000") or in exponent
 /// form when that is a whole number ("1e5"), up to 2^53 there; a sign, a

@@ -165,38 +165,6 @@ mc::StudyProgress restore_progress(const mc::Checkpoint& ck, const std::string& 
   return p;
 }
 
-/// The options a file kept (`kept`: a run.json's or a checkpoint's
-/// arguments), with those this command line gives (but `own`, the option
-/// naming the file) in place of theirs, as if typed again.
-Args with_given_options(const std::vector<GivenOption>& kept, const Args& args, const po::options_description& opts,
-                        const std::string& own) {
-  std::vector<std::string> overrides;
-  Args override_tokens;
-  for (const GivenOption& o : given_options(args, opts)) {
-    if (o.name == own) continue;
-    overrides.push_back(o.name);
-    override_tokens.insert(override_tokens.end(), o.tokens.begin(), o.tokens.end());
-  }
-  Args out = without_options(kept, overrides);
-  out.insert(out.end(), override_tokens.begin(), override_tokens.end());
-  return out;
-}
-
-/// --from: the arguments of DIR/run.json, with this command line's options
-/// in place of theirs.
-Args arguments_from_run_file(const Args& args, const po::options_description& opts, const std::string& from) {
-  std::vector<GivenOption> kept;
-  try {
-    kept = given_options(mc::read_run_arguments(from), opts);
-  } catch (const po::error& e) {
-    throw InputError("--from", echo_input(from), "settings.arguments: " + parse_error_message(e));
-  }
-  for (const GivenOption& o : kept)
-    if (const std::string why = refused_from(o.name, OptionSource::kRunFile); !why.empty())
-      throw InputError("--from", echo_input(from), fmt::format("settings.arguments holds --{}, which {}", o.name, why));
-  return with_given_options(kept, args, opts, "from");
-}
-
 /// --resume restores every setting: only --out, --format, ... may be given beside it.
 void refuse_options_beside_resume(const Args& args, const po::options_description& opts, const std::string& resume_path) {
   for (const GivenOption& o : given_options(args, opts))
@@ -206,17 +174,6 @@ void refuse_options_beside_resume(const Args& args, const po::options_descriptio
                                    "--out, --format, --quiet, --full, --threads, --checkpoint and "
                                    "--checkpoint-every can)",
                                    o.name));
-}
-
-/// --resume: the checkpoint's own arguments, with this command line's
-/// --out, --format, ... in place of theirs.
-Args arguments_from_checkpoint(const Args& args, const po::options_description& opts, const std::string& resume_path,
-                               const mc::Checkpoint& resumed) {
-  const std::vector<GivenOption> kept = given_options(resumed.args, opts);
-  for (const GivenOption& o : kept)
-    if (const std::string why = refused_from(o.name, OptionSource::kRunFile); !why.empty())
-      throw InputError("--resume", resume_path, fmt::format("the checkpoint holds --{}, which {}", o.name, why));
-  return with_given_options(kept, args, opts, "resume");
 }
 
 /// A sweep: each point's study split over the ranks, then sweep.csv,
@@ -359,27 +316,30 @@ int run_command(const Args& args, Ranks& ranks) {
   // from the options once they are rebuilt from it): no output may be one.
   std::vector<InputFile> inputs = input_files(*vm);
 
-  // --from: a run.json's arguments, with this command line's options in
-  // place of theirs, parsed as if typed again.
-  Args run_args = args;
+  // --from: the options a run.json kept (values by name, each checked as
+  // every file of options is: apps/option_sources.h), under this command
+  // line's.
   if (vm->count("from")) {
     const std::string from = (*vm)["from"].as<std::string>();
     if (vm->count("resume"))
       throw InputError("--from", echo_input(from), "cannot be given with --resume (a checkpoint restores its own run)");
-    run_args = arguments_from_run_file(args, opts, from);
-    vm = parse_args_again(run_args, opts);
+    const po::parsed_options kept =
+        run_file_options(mc::read_run_arguments(from), opts, "--from", from, "settings.arguments");
+    vm = parse_args_with_file(args, "from", kept, opts);
   }
 
-  // --resume: the checkpoint's own arguments, with this command line's
-  // --out, --format, ... in place of theirs, parsed as if typed again.
+  // --resume: the options the checkpoint kept, checked likewise, under this
+  // command line's --out, --format, ...
   std::optional<mc::Checkpoint> resumed;
   const std::string resume_path = vm->count("resume") ? (*vm)["resume"].as<std::string>() : "";
   if (vm->count("resume")) {
     refuse_options_beside_resume(args, opts, resume_path);
     resumed = load_checkpoint(resume_path, ranks);
-    run_args = arguments_from_checkpoint(args, opts, resume_path, *resumed);
-    if (!vm->count("checkpoint")) run_args.insert(run_args.end(), {"--checkpoint", resume_path});
-    vm = parse_args_again(run_args, opts);
+    const po::parsed_options kept =
+        run_file_options(resumed->args, opts, "--resume", resume_path, "the checkpoint's arguments");
+    std::vector<po::option> added;
+    if (!vm->count("checkpoint")) added.emplace_back("checkpoint", std::vector<std::string>{resume_path});
+    vm = parse_args_with_file(args, "resume", kept, opts, added);
   }
 
   const mc::StudyConfig config = read_study_config(*vm, true);

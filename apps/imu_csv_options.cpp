@@ -1,5 +1,6 @@
 #include "apps/imu_csv_options.h"
 
+#include <optional>
 #include <sstream>
 
 #include "lib/common/input_error.h"
@@ -50,12 +51,10 @@ ImuCsvOptions read_imu_csv_options(const po::variables_map& vm) {
   if (vm.count("rate")) csv.rate_hz = parse_rate_hz(vm["rate"].as<std::string>(), "--rate");
   // The time unit is checked even without a time column: a typo is refused, not ignored.
   const std::string unit = vm["time-unit"].as<std::string>();
-  double time_unit_s = 1.0;
-  try {  // the time units of parse_quantity, named without a number
-    time_unit_s = parse_quantity("1" + unit, Dimension::kTime, "--time-unit");
-  } catch (const InputError&) {
-    throw InputError("--time-unit", echo_input(unit), "must be one of: s, min, h, ms");
-  }
+  // A unit alone, read whole: "0s" or "e3s" is not a unit.
+  const std::optional<double> time_unit = unit_factor(unit, Dimension::kTime);
+  if (!time_unit) throw InputError("--time-unit", echo_input(unit), "must be one of: s, min, h, ms");
+  const double time_unit_s = *time_unit;
   if (vm.count("time-column")) {
     csv.time_column = vm["time-column"].as<std::string>();
     csv.time_unit_s = time_unit_s;

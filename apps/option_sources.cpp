@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <stdexcept>
 
+#include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 
 namespace insmc::app {
@@ -61,6 +62,76 @@ const std::vector<std::string>& not_in_run_files() {
   return names;
 }
 
+FileOptions::FileOptions(const po::options_description& options, OptionSource source)
+    : options_(options), source_(source), parsed_(&options) {}
+
+std::string FileOptions::take(const FileOption& option, std::size_t place) {
+  const bool ini = source_ == OptionSource::kConfigFile;
+  const std::string& name = option.name;
+  // Refused by name first, whether or not the subcommand has the option.
+  if (const std::string why = refused_from(name, source_); !why.empty())
+    return ini ? fmt::format("{}: {}", name, why) : fmt::format("holds --{}, which {}", name, why);
+  // Exact long names only: Boost would also match a short name ("-h") or,
+  // on a command line, an abbreviation.
+  const po::option_description* d = options_.find_nothrow(name, /*approx=*/false);
+  if (d == nullptr || d->long_name() != name)
+    return ini ? fmt::format("unknown option '{}' (the keys are the long option names, without --)", echo_input(name))
+               : fmt::format("names an unknown option '{}' (the long option names of insmc run)", echo_input(name));
+  const po::value_semantic& semantic = *d->semantic();
+  std::vector<std::string> tokens;
+  if (option.value) {
+    if (!ini && semantic.max_tokens() == 0) return fmt::format("gives --{} a value; it is a switch, kept bare", name);
+    tokens.push_back(*option.value);
+  } else if (semantic.min_tokens() > 0) {
+    return fmt::format("gives --{} no value (--{}=VALUE)", name, name);
+  }
+  if (!semantic.is_composing()) {
+    const auto [it, inserted] = first_place_.emplace(name, place);
+    if (!inserted)
+      return ini ? fmt::format("{} given twice (first on line {})", name, it->second)
+                 : fmt::format("gives --{} twice (first in [{}])", name, it->second);
+  }
+  // Each value on its own first, so that a bad one is named where it is.
+  po::parsed_options one(&options_);
+  one.options.emplace_back(name, tokens);
+  try {
+    po::variables_map scratch;
+    po::store(one, scratch);
+  } catch (const po::error&) {
+    const std::string value = echo_input(option.value.value_or(""));
+    return ini ? fmt::format("{} = '{}': not a value this option takes (see --help)", name, value)
+               : fmt::format("gives --{} the value '{}', which it does not take (see --help)", name, value);
+  }
+  parsed_.options.emplace_back(name, std::move(tokens));
+  return {};
+}
+
+std::optional<FileOption> option_of_element(std::string_view element) {
+  if (!element.starts_with("--")) return std::nullopt;
+  element.remove_prefix(2);
+  const std::size_t eq = element.find('=');
+  const std::string_view name = element.substr(0, eq);
+  if (name.empty() || name.front() == '-') return std::nullopt;
+  FileOption option{std::string(name), std::nullopt};
+  if (eq != std::string_view::npos) option.value = std::string(element.substr(eq + 1));
+  return option;
+}
+
+po::parsed_options run_file_options(const std::vector<std::string>& elements, const po::options_description& options,
+                                    const std::string& field, const std::string& file, std::string_view list) {
+  FileOptions check(options, OptionSource::kRunFile);
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const std::optional<FileOption> option = option_of_element(elements[i]);
+    const std::string why =
+        option ? check.take(*option, i)
+               : fmt::format("= '{}' is not an option by name (each element is --NAME=VALUE, or --NAME for a "
+                             "switch, never a command line)",
+                             echo_input(elements[i], 60));
+    if (!why.empty()) throw InputError(field, echo_input(file, 256), fmt::format("{}[{}] {}", list, i, why));
+  }
+  return check.parsed();
+}
+
 Args explicit_arguments(const po::variables_map& vm, const po::options_description& options,
                         const std::vector<std::string>& drop) {
   Args out;
@@ -92,14 +163,6 @@ std::vector<GivenOption> given_options(const Args& args, const po::options_descr
   const po::parsed_options parsed = po::command_line_parser(args).options(all).run();
   std::vector<GivenOption> out;
   for (const po::option& o : parsed.options) out.push_back({o.string_key, o.original_tokens});
-  return out;
-}
-
-Args without_options(const std::vector<GivenOption>& given, const std::vector<std::string>& drop) {
-  Args out;
-  for (const GivenOption& o : given)
-    if (std::find(drop.begin(), drop.end(), o.name) == drop.end())
-      out.insert(out.end(), o.tokens.begin(), o.tokens.end());
   return out;
 }
 

@@ -72,6 +72,10 @@ std::vector<SweepAxis> find_sweeps(const po::variables_map& vm) {
     a.apply = [values, field](mc::StudyConfig& c, std::size_t i) {
       if (field) c.test.*field = values[i];
       else c.model.latitude_rad = values[i];
+      // The loops average over --alignment-average as the single value does
+      // (apps/study_options.cpp), and their own check sees each point's.
+      if (field == &TestRunOptions::alignment_average_s && c.test.alignment_loops)
+        c.test.alignment_loops->average_s = values[i];
     };
     axes.push_back(std::move(a));
   }

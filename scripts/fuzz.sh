@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Fuzzes every input reader and the option parser (tests/fuzz: records,
-# imu, bounds, config, checkpoint with its accumulator state, quantity,
-# run_json, options) for SECONDS each with libFuzzer, AddressSanitizer and
+# Fuzzes every input reader, the option parser and the commands that write
+# records (tests/fuzz: records, imu, bounds, config, checkpoint with its
+# accumulator state, quantity, run_json, options, import_imu, simulate) for
+# SECONDS each with libFuzzer, AddressSanitizer and
 # UndefinedBehaviorSanitizer. Quiet on success (a line of executions per
 # target with -v); on a crash prints the crash input (kept under
 # build/sanitize/crashes/<target>/) and exits 1.
@@ -15,7 +16,7 @@ set -euo pipefail
 seconds=${1:?usage: scripts/fuzz.sh SECONDS [-v]}
 verbose=${2:-}
 root=$(cd "$(dirname "$0")/.." && pwd)
-targets=(records imu bounds config checkpoint quantity run_json options)
+targets=(records imu bounds config checkpoint quantity run_json options import_imu simulate)
 # INSMC_FUZZ_TARGETS="records imu" fuzzes those alone (a long campaign split over cores).
 if [[ -n ${INSMC_FUZZ_TARGETS:-} ]]; then read -r -a targets <<<"$INSMC_FUZZ_TARGETS"; fi
 

@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -14,6 +13,7 @@
 
 #include "lib/common/input_text.h"
 #include "lib/records/number_text.h"
+#include "lib/units/quantity.h"
 #include "lib/units/units.h"
 
 namespace insmc {
@@ -58,11 +58,13 @@ struct WantedColumn {
 
 class Parser {
  public:
-  Parser(std::string_view text, std::string_view source, const ImuCsvOptions& o)
-      : text_(text), source_(echo_input(source, 256)), options_(o) {}
+  /// Reads the lines of `bytes` as they come: memory holds one line (and
+  /// the samples), never the file, so an endless stream (/dev/zero) stops at
+  /// the line cap and a long one at its byte or sample cap.
+  Parser(ByteSource bytes, std::string_view source, const ImuCsvOptions& o)
+      : lines_(std::move(bytes), kMaxImuLineBytes), source_(echo_input(source, 256)), options_(o) {}
 
   ImuSamples parse() {
-    if (text_.starts_with("\xEF\xBB\xBF")) text_.remove_prefix(3);  // UTF-8 byte-order mark
     std::string_view line;
     bool have_header = false;
     ImuSamples out;
@@ -191,16 +193,15 @@ class Parser {
   }
 
   bool next_line(std::string_view& line) {
-    if (pos_ >= text_.size()) return false;
-    const std::size_t end = text_.find('\n', pos_);
-    const std::size_t stop = end == std::string_view::npos ? text_.size() : end;
+    const bool got = lines_.next(line, [&](std::size_t length, bool measured_all) {
+      ++line_number_;
+      fail(kMaxImuLineBytes + 1, fmt::format("line of {}{} bytes: an IMU CSV line may hold at most {} bytes",
+                                             measured_all ? "" : "more than ", length, kMaxImuLineBytes));
+    });
+    if (!got) return false;
     ++line_number_;
-    if (stop - pos_ > kMaxImuLineBytes)
-      fail(kMaxImuLineBytes + 1, fmt::format("line of {} bytes: an IMU CSV line may hold at most {} bytes",
-                                             stop - pos_, kMaxImuLineBytes));
-    line = text_.substr(pos_, stop - pos_);
+    if (line_number_ == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);  // UTF-8 byte-order mark
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    pos_ = stop + 1;
     return true;
   }
 
@@ -208,10 +209,10 @@ class Parser {
     throw InputError(fmt::format("{}:{}:{}: {}", source_, line_number_, column, message));
   }
 
-  std::string_view text_;
+  LineReader lines_;
   std::string source_;  ///< the file name, escaped for messages
   const ImuCsvOptions& options_;
-  std::size_t pos_ = 0, line_number_ = 0;
+  std::size_t line_number_ = 0;
   std::size_t header_line_ = 0, header_count_ = 0;
   std::vector<WantedColumn> wanted_;
   std::vector<std::size_t> index_;  ///< header index of each wanted column
@@ -254,21 +255,18 @@ double to_si(AccelUnit u) { return u == AccelUnit::kG ? kGravityMps2 : 1.0; }
 double parse_rate_hz(std::string_view text, std::string_view field) {
   const std::string s(text);
   constexpr std::string_view allowed = "a sample rate > 0 with the unit Hz or kHz (e.g. 100Hz)";
-  const char* begin = s.c_str();
-  char* end = nullptr;
-  errno = 0;
-  const double number = std::strtod(begin, &end);
-  if (s.empty() || end == begin || s.find('\0') != std::string::npos)
-    throw InputError(std::string(field), echo_input(s), fmt::format("not a number; expected {}", allowed));
-  std::string_view unit(end);
-  while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
+  // The number and the unit each read whole (lib/units/quantity.h).
+  const std::optional<QuantityText> q = split_quantity(text);
+  if (!q) throw InputError(std::string(field), echo_input(s), fmt::format("not a number; expected {}", allowed));
+  const double number = q->number;
+  const std::string_view unit = q->unit;
   double factor = 0.0;
   if (unit == "Hz") factor = 1.0;
   else if (unit == "kHz") factor = 1e3;
   else if (unit.empty()) throw InputError(std::string(field), echo_input(s), fmt::format("a unit is required; expected {}", allowed));
   else throw InputError(std::string(field), echo_input(s), fmt::format("unknown unit '{}'; expected {}", echo_input(unit), allowed));
   const double rate = number * factor;
-  if (errno == ERANGE || !std::isfinite(rate) || !(rate > 0))
+  if (!std::isfinite(rate) || !(rate > 0))
     throw InputError(std::string(field), echo_input(s), fmt::format("must be finite and > 0; expected {}", allowed));
   if (!(rate >= kMinImuRateHz && rate <= kMaxImuRateHz))
     throw InputError(std::string(field), echo_input(s),
@@ -310,7 +308,7 @@ void validate(const ImuCsvOptions& o) {
 
 ImuSamples parse_imu_csv(std::string_view text, std::string_view source_name, const ImuCsvOptions& options) {
   validate(options);
-  return Parser(text, source_name, options).parse();
+  return Parser(text_source(text), source_name, options).parse();
 }
 
 std::optional<InputError> hole_problem(const ImuSamples& s) {
@@ -331,12 +329,20 @@ std::optional<InputError> hole_problem(const ImuSamples& s) {
 
 ImuSamples read_imu_csv(const std::filesystem::path& path, const ImuCsvOptions& options) {
   validate(options);
-  const std::string text = read_file_capped(path, kMaxImuFileBytes, "IMU file");
-  if (text.size() >= 2 && static_cast<unsigned char>(text[0]) == 0x1f && static_cast<unsigned char>(text[1]) == 0x8b)
-    throw InputError(fmt::format("{}: gzip-compressed; import-imu reads plain CSV: unpack it first "
-                                 "(gzip -dc {} > FILE.csv) and give FILE.csv",
-                                 echo_input(path.string(), 256), echo_input(path.string(), 256)));
-  return parse_imu_csv(text, path.string(), options);
+  // Read as parsed, a chunk at a time (the byte cap of read_file_capped);
+  // the first chunk tells a gzip file by its magic bytes.
+  ByteSource file = capped_file_source(path, kMaxImuFileBytes, "IMU file");
+  ByteSource checked = [file = std::move(file), path, first = true](char* buffer, std::size_t size) mutable {
+    const std::size_t got = file(buffer, size);
+    if (first && got >= 2 && static_cast<unsigned char>(buffer[0]) == 0x1f &&
+        static_cast<unsigned char>(buffer[1]) == 0x8b)
+      throw InputError(fmt::format("{}: gzip-compressed; import-imu reads plain CSV: unpack it first "
+                                   "(gzip -dc {} > FILE.csv) and give FILE.csv",
+                                   echo_input(path.string(), 256), echo_input(path.string(), 256)));
+    first = false;
+    return got;
+  };
+  return Parser(std::move(checked), path.string(), options).parse();
 }
 
 }  // namespace insmc

@@ -121,8 +121,11 @@ struct ImuSamples {
 /// `source_name` stands for the file name in messages.
 ImuSamples parse_imu_csv(std::string_view text, std::string_view source_name, const ImuCsvOptions& options);
 
-/// Reads the file and parses it as parse_imu_csv does. A gzip file (magic
-/// bytes 1f 8b) is refused with the command that unpacks it.
+/// Reads the file and parses it as parse_imu_csv does, a chunk at a time as
+/// it parses: memory holds one line and the samples, never the file, so an
+/// endless stream stops at a cap (/dev/zero at the line cap, within 1 MiB
+/// past it). A gzip file (magic bytes 1f 8b) is refused with the command
+/// that unpacks it.
 ImuSamples read_imu_csv(const std::filesystem::path& path, const ImuCsvOptions& options);
 
 /// A step between samples longer than this many times the file's median

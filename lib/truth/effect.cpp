@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -138,10 +139,12 @@ namespace {
 /// A parameter "after 1 h" of a random walk (angle_1h, velocity_1h) also
 /// takes the walk's data-sheet value: 0.005degprth is 0.005 deg after 1 h.
 double parse_effect_value(std::string_view value, const EffectParameter& p, const std::string& field) {
-  const bool walk_unit = value.ends_with("prth") || value.ends_with("prts");
-  if (p.name.ends_with("_1h") && walk_unit && (p.dimension == Dimension::kAngle || p.dimension == Dimension::kVelocity)) {
+  // A random walk's value after 1 h takes the walk's units in every spelling
+  // (0.03mpsprth, 0.03m/s/√h): the unit, read whole, decides.
+  if (p.name.ends_with("_1h") && (p.dimension == Dimension::kAngle || p.dimension == Dimension::kVelocity)) {
     const Dimension walk = p.dimension == Dimension::kAngle ? Dimension::kAngleRandomWalk : Dimension::kVelocityRandomWalk;
-    return parse_quantity(value, walk, field) * std::sqrt(kHourToS);
+    const std::optional<QuantityText> q = split_quantity(value);
+    if (q && unit_factor(q->unit, walk)) return parse_quantity(value, walk, field) * std::sqrt(kHourToS);
   }
   return parse_quantity(value, p.dimension, field);
 }

@@ -533,10 +533,10 @@ std::vector<double> uniform_times(double end_s, double interval_s, bool include_
   if (include_zero) t.push_back(0.0);
   for (long k = 1;; ++k) {
     const double tk = static_cast<double>(k) * interval_s;
-    if (tk > end_s + 1e-9) break;
-    t.push_back(tk);
+    if (tk > end_s + kLatticeTolS) break;
+    t.push_back(std::abs(tk - end_s) <= kLatticeTolS ? end_s : tk);
   }
-  if (t.empty() || end_s - t.back() > 1e-9) t.push_back(end_s);
+  if (t.empty() || t.back() < end_s) t.push_back(end_s);
   return t;
 }
 

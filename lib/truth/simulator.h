@@ -197,8 +197,15 @@ TruthRun simulate_truth(const TruthOptions& options, const UncertaintyVector& x,
 /// Precondition: |f^a_h| < |f^{a'}|.
 Mat3 switchover_attitude(const Vec3& c_prime, const Vec3& f_ap);
 
+/// Times closer than this are the same instant of a lattice: k × interval
+/// carries a round-off of a few ulp (3e-11 s at 48 h), far below it, and
+/// intervals are at least 0.1 ms, far above it.
+inline constexpr double kLatticeTolS = 1e-9;
+
 /// t = interval, 2 interval, … up to `end` (and `end` itself) [s]; with
-/// include_zero also t = 0.
+/// include_zero also t = 0. Every time lies in [0, end]: the lattice point
+/// within kLatticeTolS of `end` is `end` exactly (4608 ms × 37500 is
+/// 172800.00000000003 s in doubles, past a 48 h record's last instant).
 std::vector<double> uniform_times(double end_s, double interval_s, bool include_zero = true);
 
 }  // namespace insmc

@@ -1,9 +1,8 @@
 #include "lib/units/quantity.h"
 #include "lib/units/quantity_display.h"
 
-#include <cerrno>
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <span>
@@ -112,37 +111,69 @@ std::vector<std::string> accepted_units(Dimension d) {
   return out;
 }
 
+std::optional<QuantityText> split_quantity(std::string_view text) {
+  const auto digit = [&](std::size_t i) { return i < text.size() && text[i] >= '0' && text[i] <= '9'; };
+  std::size_t i = 0;
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+  const std::size_t first_digit = i;
+  std::size_t digits = 0;
+  for (; digit(i); ++i) ++digits;
+  if (i < text.size() && text[i] == '.')
+    for (++i; digit(i); ++i) ++digits;
+  if (digits == 0) return std::nullopt;  // "", "-", ".", "e3", "x5"
+  // An exponent only when digits follow it ("5e3"); "5e" is 5 with the unit "e".
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    std::size_t j = i + 1;
+    if (j < text.size() && (text[j] == '+' || text[j] == '-')) ++j;
+    if (digit(j)) {
+      for (i = j; digit(i); ++i) {
+      }
+    }
+  }
+  // from_chars reads no leading '+'; the sign is applied here.
+  QuantityText out;
+  const std::string_view body = text.substr(first_digit, i - first_digit);
+  const auto [ptr, ec] = std::from_chars(body.data(), body.data() + body.size(), out.number, std::chars_format::general);
+  if (ec == std::errc::result_out_of_range) {
+    out.number = HUGE_VAL;  // beyond a double (or below its smallest): refused as not finite
+  } else if (ec != std::errc() || ptr != body.data() + body.size()) {
+    return std::nullopt;
+  }
+  if (text[0] == '-') out.number = -out.number;
+  std::size_t unit_start = i;
+  while (unit_start < text.size() && text[unit_start] == ' ') ++unit_start;
+  out.unit = text.substr(unit_start);
+  return out;
+}
+
+std::optional<double> unit_factor(std::string_view unit, Dimension dimension) {
+  const std::string_view name = unit_name_of(unit);
+  for (const auto& u : units_of(dimension))
+    if (name == u.name) return u.to_si;
+  return std::nullopt;
+}
+
 double parse_quantity(std::string_view text, Dimension dimension, std::string_view field) {
   const std::string allowed = accepted_list(dimension);
   if (text.size() > kMaxQuantityTextBytes)
     throw InputError(std::string(field), echo_input(text),
                      fmt::format("{} bytes: a value holds at most {} bytes; expected {}", text.size(),
                                  kMaxQuantityTextBytes, allowed));
-  const std::string s(text);
   const std::string shown = echo_input(text);
-  if (s.empty()) throw InputError(std::string(field), "''", "expected " + allowed);
-  // strtod stops at a NUL byte, which would hide what follows it.
-  if (s.find('\0') != std::string::npos) throw InputError(std::string(field), shown, "not a number; expected " + allowed);
-  const char* begin = s.c_str();
-  char* end = nullptr;
-  errno = 0;
-  const double number = std::strtod(begin, &end);
-  if (end == begin) throw InputError(std::string(field), shown, "not a number; expected " + allowed);
-  if (errno == ERANGE || !std::isfinite(number))
-    throw InputError(std::string(field), shown, "must be finite; expected " + allowed);
-  std::string unit(end);
-  while (!unit.empty() && unit.front() == ' ') unit.erase(unit.begin());
-  const std::string_view name = unit_name_of(unit);
-  for (const auto& u : units_of(dimension)) {
-    if (name == u.name) {
-      const double si = number * u.to_si;
-      if (!std::isfinite(si)) throw InputError(std::string(field), shown, "must be finite; expected " + allowed);
-      return si;
-    }
+  if (text.empty()) throw InputError(std::string(field), "''", "expected " + allowed);
+  // A NUL byte would end the text for C functions downstream: no value holds one.
+  if (text.find('\0') != std::string_view::npos)
+    throw InputError(std::string(field), shown, "not a number; expected " + allowed);
+  const std::optional<QuantityText> q = split_quantity(text);
+  if (!q) throw InputError(std::string(field), shown, "not a number; expected " + allowed);
+  if (!std::isfinite(q->number)) throw InputError(std::string(field), shown, "must be finite; expected " + allowed);
+  if (const std::optional<double> factor = unit_factor(q->unit, dimension)) {
+    const double si = q->number * *factor;
+    if (!std::isfinite(si)) throw InputError(std::string(field), shown, "must be finite; expected " + allowed);
+    return si;
   }
-  if (unit.empty())
-    throw InputError(std::string(field), shown, "a unit is required; expected " + allowed);
-  throw InputError(std::string(field), shown, "unknown unit '" + echo_input(unit) + "'; expected " + allowed);
+  if (q->unit.empty()) throw InputError(std::string(field), shown, "a unit is required; expected " + allowed);
+  throw InputError(std::string(field), shown, "unknown unit '" + echo_input(q->unit) + "'; expected " + allowed);
 }
 
 std::string format_quantity_rounded(double value_si, Dimension dimension, int significant_digits) {

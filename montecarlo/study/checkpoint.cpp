@@ -126,7 +126,23 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& path) {
 }
 
 std::string read_checkpoint_file(const std::string& path) {
-  return read_file_capped(path, kMaxCheckpointFileBytes, "checkpoint");
+  const ByteSource file = capped_file_source(path, kMaxCheckpointFileBytes, "checkpoint");
+  std::string bytes;
+  const auto read_more = [&](std::size_t want) {
+    const std::size_t old = bytes.size();
+    bytes.resize(old + want);
+    const std::size_t got = file(bytes.data() + old, want);
+    bytes.resize(old + got);
+    return got;
+  };
+  // The magic line first: anything else (/dev/zero, a text) is not read on,
+  // never held up to the cap; decode_checkpoint says what it is not.
+  while (bytes.size() < kMagic.size() && read_more(kMagic.size() - bytes.size()) > 0) {
+  }
+  if (bytes != kMagic) return bytes;
+  while (read_more(std::size_t{1} << 16) > 0) {
+  }
+  return bytes;
 }
 
 }  // namespace insmc::mc

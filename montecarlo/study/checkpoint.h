@@ -1,6 +1,7 @@
 #pragma once
 /// The checkpoint file of `insmc run --checkpoint FILE`: every setting of
-/// the run (its argument list, re-parsed on --resume) and the merged
+/// the run (its options as `--name=value`, each checked by name on --resume
+/// as every file of options is: apps/option_sources.h) and the merged
 /// aggregator state of the finished blocks. Written atomically
 /// (montecarlo/write/atomic_file.h), so a reader sees the previous
 /// checkpoint or the new one, never a mix.
@@ -51,7 +52,10 @@ std::string encode_checkpoint(const Checkpoint& checkpoint);
 Checkpoint decode_checkpoint(std::string_view bytes, const std::string& path);
 
 /// The bytes of checkpoint file `path`, at most kMaxCheckpointFileBytes; a
-/// directory, an unreadable file or a read error is an InputError.
+/// directory, an unreadable file or a read error is an InputError. A file
+/// that does not start with the magic line is not read past it (its first
+/// bytes are returned, which decode_checkpoint refuses): `--resume
+/// /dev/zero` holds 17 bytes, not the cap.
 std::string read_checkpoint_file(const std::string& path);
 
 /// 64-bit FNV-1a over the bytes (the checksum and fingerprint: detects

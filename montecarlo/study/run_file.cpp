@@ -1,7 +1,10 @@
 #include "montecarlo/study/run_file.h"
 
+#include <array>
 #include <fmt/format.h>
+#include <istream>
 #include <nlohmann/json.hpp>
+#include <streambuf>
 
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
@@ -103,21 +106,49 @@ class ArgumentsReader final : public nlohmann::json_sax<nlohmann::json> {
   bool under_settings_ = false, under_settings_next_ = false;
 };
 
-}  // namespace
+/// The bytes of a ByteSource as a stream buffer, a chunk at a time.
+class SourceBuffer final : public std::streambuf {
+ public:
+  explicit SourceBuffer(ByteSource source) : source_(std::move(source)) {}
 
-std::vector<std::string> run_arguments_from_json(std::string_view text, std::string_view source) {
-  const std::string where(source);
+ protected:
+  int_type underflow() override {
+    const std::size_t got = source_(chunk_.data(), chunk_.size());
+    if (got == 0) return traits_type::eof();
+    setg(chunk_.data(), chunk_.data(), chunk_.data() + got);
+    return traits_type::to_int_type(chunk_[0]);
+  }
+
+ private:
+  ByteSource source_;
+  std::array<char, 1 << 16> chunk_{};
+};
+
+/// settings.arguments as `parse` (one of nlohmann's sax_parse) reads them.
+template <class Parse>
+std::vector<std::string> arguments_read_by(Parse&& parse, std::string_view source) {
   ArgumentsReader reader;
-  const bool parsed = nlohmann::json::sax_parse(text.begin(), text.end(), &reader);
+  const bool parsed = parse(reader);
   if (!parsed || !reader.found)
-    throw InputError("--from", echo_input(where),
+    throw InputError("--from", echo_input(std::string(source)),
                      !reader.problem.empty() ? reader.problem
                                              : "has no settings.arguments array (a run.json of insmc run 0.1.0 or later)");
   return std::move(reader.arguments);
 }
 
+}  // namespace
+
+std::vector<std::string> run_arguments_from_json(std::string_view text, std::string_view source) {
+  return arguments_read_by(
+      [&](ArgumentsReader& reader) { return nlohmann::json::sax_parse(text.begin(), text.end(), &reader); }, source);
+}
+
 std::vector<std::string> read_run_arguments(const std::string& path) {
-  return run_arguments_from_json(read_file_capped(path, kMaxRunJsonBytes, "--from file"), path);
+  // Parsed as it is read: memory follows the arguments (and the longest
+  // token, within the cap), never the file; /dev/zero stops at its first byte.
+  SourceBuffer buffer(capped_file_source(path, kMaxRunJsonBytes, "--from file"));
+  std::istream in(&buffer);
+  return arguments_read_by([&](ArgumentsReader& reader) { return nlohmann::json::sax_parse(in, &reader); }, path);
 }
 
 }  // namespace insmc::mc

@@ -23,7 +23,8 @@ inline constexpr std::size_t kMaxRunArgumentBytes = 64 * 1024;
 /// string starting with "--" (or breaks a cap).
 std::vector<std::string> run_arguments_from_json(std::string_view text, std::string_view source);
 
-/// The same from a file, read with the size cap.
+/// The same from a file, parsed as it is read (never held whole), with the
+/// size cap.
 std::vector<std::string> read_run_arguments(const std::string& path);
 
 }  // namespace insmc::mc

@@ -5,6 +5,7 @@
 
 #include "lib/common/input_error.h"
 #include "lib/truth/simulator.h"
+#include "lib/units/units.h"
 
 namespace insmc::mc {
 
@@ -27,6 +28,10 @@ void validate(const StudyConfig& c) {
   if (uses_system2 && !(std::abs(c.model.latitude_rad) < M_PI / 2 - 1e-9))
     throw InputError("--latitude", fmt::format("{}rad", c.model.latitude_rad),
                      "must lie strictly between -90deg and 90deg for system 2 (2.16 divides by cos L0)");
+  // Every latitude, one value or a sweep's point (point_config validates
+  // each), meets the single value's check (apps/cli_common.cpp) whatever the systems.
+  if (!(std::abs(c.model.latitude_rad) <= 90.0 * kDegToRad))
+    throw InputError("--latitude", fmt::format("{:.12g}deg", c.model.latitude_rad / kDegToRad), "must lie within ±90deg");
   if (c.fidelity == Fidelity::kTruth)
     if (const auto err = truth_latitude_error(c.model.latitude_rad, "--latitude")) throw *err;
   if (c.test.alignment_loops && c.fidelity != Fidelity::kTruth)

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "apps/option_sources.h"
+#include "lib/common/input_error.h"
 
 namespace insmc::app {
 namespace {
@@ -37,6 +38,41 @@ TEST(RunFile, AnOptionTypeRunJsonCannotKeepIsRefused) {
   po::options_description opts;
   opts.add_options()("size", po::value<unsigned long>());
   EXPECT_THROW(explicit_arguments(parse(opts, {"--size", "3"}), opts, {}), std::logic_error);
+}
+
+TEST(RunFile, ArgumentsAreOptionsByNameNeverACommandLine) {
+  po::options_description opts;
+  opts.add_options()("samples", po::value<std::string>())("bound", po::value<std::vector<std::string>>()->composing())(
+      "quick", po::bool_switch())("out", po::value<std::string>())("help,h", "");
+  const auto error_of = [&](const std::vector<std::string>& elements) -> std::string {
+    try {
+      run_file_options(elements, opts, "--from", "d/run.json", "settings.arguments");
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  const po::parsed_options kept = run_file_options({"--samples=5", "--bound=a=1", "--bound=b=2", "--quick"}, opts,
+                                                   "--from", "d/run.json", "settings.arguments");
+  po::variables_map vm;
+  po::store(kept, vm);
+  EXPECT_EQ(vm["samples"].as<std::string>(), "5");
+  EXPECT_EQ(vm["bound"].as<std::vector<std::string>>(), (std::vector<std::string>{"a=1", "b=2"}));
+  EXPECT_TRUE(vm["quick"].as<bool>());
+  // A `--` ends the options of a command line; in a file it is refused, so
+  // what follows it is never taken as typed.
+  EXPECT_EQ(error_of({"--samples=5", "--", "--out=/x"}),
+            "--from = d/run.json: settings.arguments[1] = '--' is not an option by name (each element is "
+            "--NAME=VALUE, or --NAME for a switch, never a command line)");
+  EXPECT_EQ(error_of({"--out=/x"}),
+            "--from = d/run.json: settings.arguments[0] holds --out, which names where insmc writes: a file of "
+            "options may not; give it on the command line");
+  for (const char* e : {"-h", "x", "---out=/x", "--=1", ""})
+    EXPECT_NE(error_of({e}).find("is not an option by name"), std::string::npos) << e;
+  EXPECT_NE(error_of({"--sam=5"}).find("names an unknown option 'sam'"), std::string::npos);
+  EXPECT_NE(error_of({"--quick=yes"}).find("gives --quick a value; it is a switch"), std::string::npos);
+  EXPECT_NE(error_of({"--samples"}).find("gives --samples no value"), std::string::npos);
+  EXPECT_NE(error_of({"--samples=1", "--samples=2"}).find("[1] gives --samples twice (first in [0])"), std::string::npos);
 }
 
 }  // namespace

@@ -56,6 +56,28 @@ TEST(ParseQuantity, RefusesMissingWrongOrNonFiniteValues) {
   }
 }
 
+TEST(ParseQuantity, TheNumberAndTheUnitAreEachReadWhole) {
+  // strtod read hexadecimal and blanks into the number ("0x10s" was 16 s).
+  for (const char* text : {"0x10s", " 5s", "\t5s", "5s ", "0s5", "1e", "e3s", ".s", "-s", "+-5s", "5 e3s"})
+    EXPECT_THROW(parse_quantity(text, Dimension::kTime, "f"), InputError) << text;
+  EXPECT_EQ(parse_quantity("+5s", Dimension::kTime, "f"), 5.0);
+  EXPECT_EQ(parse_quantity(".5s", Dimension::kTime, "f"), 0.5);
+  EXPECT_EQ(parse_quantity("5.s", Dimension::kTime, "f"), 5.0);
+  EXPECT_EQ(parse_quantity("1e3s", Dimension::kTime, "f"), 1000.0);
+  EXPECT_EQ(parse_quantity("2E-3 s", Dimension::kTime, "f"), 2e-3);
+  EXPECT_THROW(parse_quantity("1e999s", Dimension::kTime, "f"), InputError);
+  const auto q = split_quantity("-2.5e1mg");
+  ASSERT_TRUE(q);
+  EXPECT_EQ(q->number, -25.0);
+  EXPECT_EQ(q->unit, "mg");
+  EXPECT_FALSE(split_quantity("mg"));
+  // A unit alone: no number is read out of it.
+  EXPECT_EQ(unit_factor("min", Dimension::kTime), 60.0);
+  EXPECT_EQ(unit_factor("hr", Dimension::kTime), 3600.0);
+  for (const char* unit : {"0s", ".5s", "e3s", "1s", " s", "", "mg"})
+    EXPECT_FALSE(unit_factor(unit, Dimension::kTime)) << unit;
+}
+
 TEST(ParseQuantity, ErrorNamesFieldValueAndAcceptedUnits) {
   try {
     parse_quantity("10", Dimension::kAngularRate, "gyro_drift_x");
@@ -114,6 +136,11 @@ TEST(SensorSpecUnits, EffectsTakeTheWalkForTheirValueAfterOneHour) {
   EXPECT_NEAR(by_walk.values_si[0], by_angle.values_si[0], 1e-15);
   const EffectSpec v = parse_effect("velocity_random_walk:velocity_1h=0.03mpsprth");
   EXPECT_NEAR(v.values_si[0], 0.03, 1e-12);
+  // Every spelling of the walk's unit (README.md), not only the suffixes.
+  for (const char* spelled : {"0.03m/s/√h", "0.03m/s/sqrt(h)"})
+    EXPECT_EQ(parse_effect(std::string("velocity_random_walk:velocity_1h=") + spelled).values_si[0], v.values_si[0])
+        << spelled;
+  EXPECT_EQ(parse_effect("angle_random_walk:angle_1h=0.005deg/√h").values_si[0], by_walk.values_si[0]);
 }
 
 TEST(UnitSpellings, TheUsualSpellingsOfDataSheetsAndThePaperAreTheirUnits) {
