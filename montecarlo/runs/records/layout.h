@@ -113,14 +113,14 @@ struct RunData {
 };
 
 struct ExtractionOptions {
-  /// r rows closer than this to the last kept one are skipped: r is smooth,
-  /// and the model's cost grows with the rows [s].
+  /// One r row per slot of this (extract_runs): r is smooth, and the
+  /// model's cost grows with the rows [s].
   double r_spacing_s = 30.0;
   /// The same for the navigation r rows: 72 per Schuler period still
   /// resolve what is smooth on that scale [s].
   double nav_r_spacing_s = 60.0;
-  /// Navigation f rows closer than this to the last kept one are skipped
-  /// (the test-run f rows are all kept: the fit uses them) [s].
+  /// One navigation f row per slot of this (the test-run f rows are all
+  /// kept at spacings ≥ τ: the fit uses them) [s].
   double nav_f_spacing_s = 30.0;
 };
 
@@ -128,9 +128,9 @@ struct ExtractionOptions {
 /// header has no dv_pulse_mps.
 RecordSite read_site(const RecordHeader& header, double default_pulse_mps);
 
-/// The runs' observations. f rows are kept where the record has them and at
-/// spacings ≥ τ (overlapping windows would be correlated), r rows at
-/// spacings ≥ r_spacing_s. Runs are returned in file order.
+/// The runs' observations: f where the record has it at spacings ≥ τ (overlapping windows correlate), f after the
+/// test and r one per slot of their spacing counted from the first kept (a record one run lacks moves one row, not
+/// every row after it; on a grid whose step divides the spacing, every spacing). Runs are returned in file order.
 std::vector<RunData> extract_runs(const RecordFile& file, const RecordSite& site,
                                   const ExtractionOptions& options = {});
 
