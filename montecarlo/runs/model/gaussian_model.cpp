@@ -97,6 +97,7 @@ Eigen::VectorXd rows_of(const Eigen::VectorXd& v, std::span<const Eigen::Index> 
 Eigen::MatrixXd rows_of(const Eigen::MatrixXd& m, std::span<const Eigen::Index> rows) {
   if (m.rows() == 0) return m;  // none (e.g. no scheme's estimates)
   Eigen::MatrixXd out(static_cast<Eigen::Index>(rows.size()), m.cols());
+  if (m.cols() == 0) return out;  // no columns: no data to take a row of (a null pointer)
   for (std::size_t i = 0; i < rows.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = m.row(rows[i]);
   return out;
 }

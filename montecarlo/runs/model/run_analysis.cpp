@@ -27,6 +27,7 @@ Eigen::MatrixXd inverse_of_information(const Eigen::MatrixXd& info) {
 template <class Vector>
 Vector rows_of(const Vector& v, std::span<const Eigen::Index> rows) {
   Vector out(static_cast<Eigen::Index>(rows.size()), v.cols());
+  if (v.cols() == 0) return out;  // no data to take a row of (a null pointer)
   for (std::size_t i = 0; i < rows.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = v.row(rows[i]);
   return out;
 }
