@@ -47,7 +47,7 @@ stage_done "suite"
 # terminal); the code each drives runs under the
 # sanitizers in the unit tests and the short end-to-end cases of the same
 # commands.
-sanitizer_skip='^(GapValidate[.]|RealDataDocs[.]|RawRanking[.]|NoiseFit[.](WhiteAndRandomWalk|GaussMarkovCorrelationTime)|GapLinearNull[.]|GapImportedNull[.]|GapImportedNoise[.]|GapLikelihood[.]|Outputs[.](ASigkill|OfTwoRuns)'
+sanitizer_skip='^(GapValidate[.]|RealDataDocs[.]|RawRanking[.]|NoiseFit[.](WhiteAndRandomWalk|GaussMarkovCorrelationTime|WhiteGaussMarkov)|GapLinearNull[.]|GapImportedNull[.]|GapImportedNoise[.]|GapLikelihood[.]|Outputs[.](ASigkill|OfTwoRuns)'
 sanitizer_skip+='|HostileFiles[.]InputsLarger|Rank[.]|Plots[.]Rank|Checkpoint[.]Sigterm|SchemeErrorsGolden[.]'
 sanitizer_skip+='|Cli[.](TruthFidelity|BenchJson)|Compensate[.]TheVerdict|HostileInput[.]ValuesAtTheEdges'
 sanitizer_skip+='|Gap[.]FilterWindows|FigureGallery[.]Every|Progress[.]|WorkBudget[.](TheGreedySearch|TheNullCalibration)'

@@ -12,8 +12,8 @@
 /// with n_ab(h) the number of window pairs at lag h; segments are independent.
 /// A rate ramp R adds 4 μ_a μ_b C_ab(h) to each term (μ_a = R τ_a², the mean
 /// of Δ_a).
-/// The sum runs over the lags where C_ab is not negligible, on every integer
-/// lag up to 4001 of them and by the trapezoid rule on 4001 points beyond.
+/// The sum runs over the lags where C_ab is not negligible: every whole lag up
+/// to 4001 of them, beyond by the trapezoid rule on ≥ 4001 points (D tabulated).
 #include <Eigen/Dense>
 #include <span>
 

@@ -97,6 +97,7 @@ double neg_log_likelihood(const Levels& L, const NoiseModel& m) {
 struct Weighted {
   std::vector<double> tau, nu_hat, pilot;
   Eigen::MatrixXd whiten;  ///< L⁻¹
+  std::span<const AllanLevel> levels;  ///< the levels fitted (for a model's own covariance)
 };
 
 double objective(const Weighted& W, const NoiseModel& m) {
@@ -229,9 +230,16 @@ double parameters(const std::vector<NoiseTerm>& terms) {
 /// independent and is no goodness-of-fit statistic: it never rules a
 /// simplification out. (N.5) is, with χ²(levels − parameters).
 bool passes(const Levels&, const NoiseModel&, const std::vector<NoiseTerm>&, double) { return true; }
+/// The test is the one the fit is judged by at the end: J under the
+/// candidate's own covariance. Under the pilot's weighting a model without
+/// the pilot's long-τ term passes wrongly: the pilot's large variance there
+/// makes any residual at long τ cheap (a Gauss–Markov model without the
+/// random walk passed with J = 9.6 under a random-walk pilot and gave
+/// J = 7,400 under its own covariance).
+Weighted weighted_problem(std::span<const AllanLevel> levels, const NoiseModel& pilot);
 bool passes(const Weighted& W, const NoiseModel& m, const std::vector<NoiseTerm>& terms, double alpha) {
   const double dof = static_cast<double>(W.tau.size()) - parameters(terms);
-  return dof < 1 || objective(W, m) <= chi2_quantile(dof, 1 - alpha);
+  return dof < 1 || objective(weighted_problem(W.levels, m), m) <= chi2_quantile(dof, 1 - alpha);
 }
 
 /// The simplifications of a term set tried by the backward elimination,
@@ -268,29 +276,39 @@ std::vector<Simplification> simplifications(const std::vector<NoiseTerm>& select
 
 /// Backward elimination: take the simplification with the smallest margin
 /// (rise of the score minus χ²_df at 1 − 2α) while that margin is negative.
+/// The fit test (a model's own covariance, the costly part) is computed for
+/// the candidates in order of margin until one passes, not for all of them.
 template <class Problem>
 NoiseModel select_terms(const Problem& P, std::vector<NoiseTerm>& selected, std::vector<TermFit>& dropped,
                         const NoiseFitOptions& options) {
   NoiseModel model = fit_terms(P, selected);
   double value = score(P, model);
+  bool current_passes = passes(P, model, selected, options.selection_alpha);
+  struct Tried {
+    Simplification simplification;
+    NoiseModel model;
+    double stat, margin;
+  };
   while (selected.size() > 1) {
-    // Under a weighting that no model of these terms passes yet, the fit
-    // test cannot tell simplifications apart: the likelihood-ratio test alone.
-    const bool current_passes = passes(P, model, selected, options.selection_alpha);
-    double best_margin = std::numeric_limits<double>::infinity(), best_stat = 0;
-    std::optional<Simplification> best;
-    NoiseModel best_model;
+    std::vector<Tried> tried;
     for (const Simplification& s : simplifications(selected, options.allowed)) {
       const NoiseModel m = fit_terms(P, s.terms);
       const double stat = std::max(0.0, score(P, m) - value);
       const double margin = stat - chi2_quantile(s.df, 1 - 2 * options.selection_alpha);
-      if (margin < best_margin && (!current_passes || passes(P, m, s.terms, options.selection_alpha))) best_margin = margin, best = s, best_model = m, best_stat = stat;
+      if (margin < 0) tried.push_back({s, m, stat, margin});
     }
-    if (!best || !(best_margin < 0)) break;
-    dropped.push_back({best->removed, 0, 0, 0, best_stat});
-    selected = best->terms;
-    model = best_model;
+    std::stable_sort(tried.begin(), tried.end(), [](const Tried& a, const Tried& b) { return a.margin < b.margin; });
+    // Under a weighting that no model of these terms passes yet, the fit
+    // test cannot tell simplifications apart: the likelihood-ratio test alone.
+    const auto best = std::find_if(tried.begin(), tried.end(), [&](const Tried& t) {
+      return !current_passes || passes(P, t.model, t.simplification.terms, options.selection_alpha);
+    });
+    if (best == tried.end()) break;
+    dropped.push_back({best->simplification.removed, 0, 0, 0, best->stat});
+    selected = best->simplification.terms;
+    model = best->model;
     value = score(P, model);
+    if (!current_passes) current_passes = passes(P, model, selected, options.selection_alpha);
   }
   return model;
 }
@@ -298,6 +316,7 @@ NoiseModel select_terms(const Problem& P, std::vector<NoiseTerm>& selected, std:
 /// The weighted problem under a pilot model: S from (N.4), relative to ν̃.
 Weighted weighted_problem(std::span<const AllanLevel> levels, const NoiseModel& pilot) {
   Weighted W;
+  W.levels = levels;
   const double dt = levels.front().tau_s / static_cast<double>(levels.front().cluster);
   const Eigen::MatrixXd cov = allan_covariance(levels, dt, pilot);
   const auto J = static_cast<Eigen::Index>(levels.size());

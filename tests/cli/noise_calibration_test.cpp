@@ -14,6 +14,7 @@
 
 #include "tests/cli/run_program.h"
 #include "tests/unit/lib/calibration/multiposition_recording.h"
+#include "tests/ordered_draws.h"
 
 namespace insmc::testing {
 namespace {
@@ -73,9 +74,11 @@ TEST(NoiseCalibration, OneOrientationIsNotCalibratedAndBadGravityExitsTwo) {
     std::mt19937_64 rng(2);
     std::normal_distribution<double> n(0, 1);
     f << "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g\n";
-    for (int k = 0; k < 6000; ++k)
-      f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", 0.01 * n(rng), 0.01 * n(rng), 0.01 * n(rng),
-                       1e-3 * n(rng), 1e-3 * n(rng), -1 + 1e-3 * n(rng));
+    for (int k = 0; k < 6000; ++k) {
+      const auto z = ordered_draws<6>(n, rng);
+      f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", 0.01 * z[0], 0.01 * z[1], 0.01 * z[2],
+                       1e-3 * z[3], 1e-3 * z[4], -1 + 1e-3 * z[5]);
+    }
   }
   const ProgramResult r = run_insmc(fmt::format("noise --input {} --rate 10Hz --out {}", input, out));
   ASSERT_EQ(r.exit_code, 0) << r.err;

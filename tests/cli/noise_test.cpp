@@ -11,6 +11,7 @@
 
 #include "tests/cli/run_program.h"
 #include "tests/cli/svg_figure.h"
+#include "tests/ordered_draws.h"
 
 namespace insmc::testing {
 namespace {
@@ -26,8 +27,9 @@ std::string write_recording(const TempDir& dir, bool bump) {
   const double dt = 0.1, arw_dps = 0.3 / 60 / std::sqrt(dt), vrw_g = 0.05 / 60 / std::sqrt(dt) / 9.80665;
   for (int k = 0; k < 18000; ++k) {
     const double shake = bump && k >= 9000 && k < 9030 ? 0.05 : 0.0;
-    f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", 0.01 + arw_dps * e(rng), arw_dps * e(rng),
-                     arw_dps * e(rng), shake * std::sin(k) + vrw_g * e(rng), vrw_g * e(rng), -1.0 + vrw_g * e(rng));
+    const auto z = ordered_draws<6>(e, rng);
+    f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", 0.01 + arw_dps * z[0], arw_dps * z[1],
+                     arw_dps * z[2], shake * std::sin(k) + vrw_g * z[3], vrw_g * z[4], -1.0 + vrw_g * z[5]);
   }
   return path;
 }
@@ -97,8 +99,9 @@ TEST(Noise, TheSheetsWhiteNoiseIsComparedWithWhatTheNoteSaysTheSensorHas) {
     double y = 0;
     for (int k = 0; k < 200000; ++k) {
       y = phi * y + sigma * std::sqrt(1 - phi * phi) * e(rng);
-      f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", n * e(rng) + y, n * e(rng), n * e(rng),
-                       1e-4 * e(rng), 1e-4 * e(rng), -1 + 1e-4 * e(rng));
+      const auto z = ordered_draws<6>(e, rng);
+      f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", n * z[0] + y, n * z[1], n * z[2],
+                       1e-4 * z[3], 1e-4 * z[4], -1 + 1e-4 * z[5]);
     }
   }
   const std::string out = (dir.path() / "out").string();

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "tests/cli/run_program.h"
+#include "tests/ordered_draws.h"
 
 namespace insmc::testing {
 namespace {
@@ -42,8 +43,9 @@ TEST(NoiseTrust, EveryTermTheDataSupportIsKeptAndTheModelPassesItsFitTest) {
     const double phi = std::exp(-dt / tc), step = 8 * kDegphInDps / 60 * std::sqrt(dt);
     double gm = sigma * e(rng), walk = 0;
     for (int k = 0; k < 72000; ++k) {
-      f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", white * e(rng) + gm + walk, white * e(rng),
-                       white * e(rng), 1e-4 * e(rng), 1e-4 * e(rng), -1 + 1e-4 * e(rng));
+      const auto z = ordered_draws<6>(e, rng);
+      f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", white * z[0] + gm + walk, white * z[1],
+                       white * z[2], 1e-4 * z[3], 1e-4 * z[4], -1 + 1e-4 * z[5]);
       gm = phi * gm + sigma * std::sqrt(1 - phi * phi) * e(rng);
       walk += step * e(rng);
     }
@@ -78,9 +80,11 @@ TEST(NoiseTrust, AHorizonBeyondTheDataIsAnExtrapolationNotAVerdict) {
     f << "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g\n";
     std::mt19937_64 rng(7);
     std::normal_distribution<double> e(0.0, 1.0);
-    for (int k = 0; k < 6000; ++k)
-      f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", 1e-3 * e(rng), 1e-3 * e(rng), 1e-3 * e(rng),
-                       1e-5 * e(rng), 1e-5 * e(rng), -1 + 1e-5 * e(rng));
+    for (int k = 0; k < 6000; ++k) {
+      const auto z = ordered_draws<6>(e, rng);
+      f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", 1e-3 * z[0], 1e-3 * z[1], 1e-3 * z[2],
+                       1e-5 * z[3], 1e-5 * z[4], -1 + 1e-5 * z[5]);
+    }
   }
   const std::string out = (dir.path() / "out").string();
   const ProgramResult r = run_insmc(fmt::format("noise --input {} --rate 10Hz --out {}", input, out));
@@ -111,8 +115,9 @@ TEST(NoiseTrust, TheWarmUpIsTheFirstPartAgainstTheRestAndMasksAndStuckChannelsAr
     for (int k = 0; k < 108000; ++k) {
       const double warm = k < 36000 ? 10 * sd : 0.0;
       const double bump = k >= 26210 && k < 26240 ? 0.05 * std::sin(k) : 0.0;
-      f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", white * e(rng), warm + white * e(rng), 0.25,
-                       bump + 1e-5 * e(rng), 1e-5 * e(rng), -1 + 1e-5 * e(rng));
+      const auto z = ordered_draws<5>(e, rng);
+      f << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", white * z[0], warm + white * z[1], 0.25,
+                       bump + 1e-5 * z[2], 1e-5 * z[3], -1 + 1e-5 * z[4]);
     }
   }
   const std::string out = (dir.path() / "out").string();

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "tests/cli/run_program.h"
+#include "tests/ordered_draws.h"
 
 namespace insmc::testing {
 namespace {
@@ -59,9 +60,11 @@ TEST(Progress, NoiseNamesItsStagesOnATerminal) {
     f << "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g\n";
     std::mt19937_64 rng(5);
     std::normal_distribution<double> e(0.0, 1.0);
-    for (int k = 0; k < 400000; ++k)
-      f << fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", 0.01 * e(rng), 0.01 * e(rng), 0.01 * e(rng),
-                       1e-4 * e(rng), 1e-4 * e(rng), -1 + 1e-4 * e(rng));
+    for (int k = 0; k < 400000; ++k) {
+      const auto z = ordered_draws<6>(e, rng);
+      f << fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", 0.01 * z[0], 0.01 * z[1], 0.01 * z[2],
+                       1e-4 * z[3], 1e-4 * z[4], -1 + 1e-4 * z[5]);
+    }
   }
   const ProgramResult r = on_a_terminal("noise --input " + input + " --rate 100Hz --format json");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "tests/cli/run_program.h"
+#include "tests/ordered_draws.h"
 
 namespace insmc::testing {
 namespace {
@@ -38,10 +39,12 @@ TEST(RealDataDocs, TheCommandBlockRunsAsPasted) {
     std::mt19937_64 rng(21);
     std::normal_distribution<double> e(0.0, 1.0);
     for (int run = 1; run <= 6; ++run)
-      for (int k = 0; k < 6700; ++k)
-        f << fmt::format("{},{:.3f},{:.6f},{:.6f},{:.6f},{:.7f},{:.7f},{:.7f}\n", run, k + 0.495, 0.4 + 0.04 * e(rng),
-                         -0.4 + 0.04 * e(rng), -0.3 + 0.04 * e(rng), -0.004 + 4e-4 * e(rng), -0.002 + 4e-4 * e(rng),
-                         -1.0 + 4e-4 * e(rng));
+      for (int k = 0; k < 6700; ++k) {
+        const auto z = ordered_draws<6>(e, rng);
+        f << fmt::format("{},{:.3f},{:.6f},{:.6f},{:.6f},{:.7f},{:.7f},{:.7f}\n", run, k + 0.495, 0.4 + 0.04 * z[0],
+                         -0.4 + 0.04 * z[1], -0.3 + 0.04 * z[2], -0.004 + 4e-4 * z[3], -0.002 + 4e-4 * z[4],
+                         -1.0 + 4e-4 * z[5]);
+      }
   }
   std::istringstream lines(block);
   std::string script = "set -e -o pipefail\n", line;

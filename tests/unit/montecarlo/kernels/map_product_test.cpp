@@ -25,7 +25,8 @@ constexpr ProductKernel kKernels[] = {ProductKernel::Generic, ProductKernel::Avx
 double spread_value(std::mt19937_64& g) {
   std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
   std::uniform_int_distribution<int> decade(-8, 8);
-  return mantissa(g) * std::pow(10.0, decade(g));
+  const double m = mantissa(g);  // drawn first in every compiler (operand order is unspecified)
+  return m * std::pow(10.0, decade(g));
 }
 
 /// The definition, element by element.
