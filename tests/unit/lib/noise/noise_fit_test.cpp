@@ -93,7 +93,7 @@ TEST(NoiseFit, WhiteGaussMarkovAndRandomWalkAreKeptTogether) {
   // it, and failed its own (J in the thousands); the selection now judges
   // every simpler model by its own covariance. Measured on these 20 files:
   // before, the three kept together in 8; now in 14, with the walk taken as a
-  // ramp in 4 more (over 2 h one realization of a walk can bend like one).
+  // ramp in 5 more (over 2 h one realization of a walk can bend like one).
   constexpr double kDegph = 3.14159265358979323846 / 180 / 3600;  // rad/s
   const test::SyntheticNoise truth{.white = 9 * kDegph, .random_walk = 8 * kDegph / 60, .gm_sigma = 3 * kDegph,
                                    .gm_time_s = 20};
