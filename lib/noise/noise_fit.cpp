@@ -152,7 +152,7 @@ NoiseModel fit_powers(const Levels& L, const std::vector<NoiseTerm>& terms, doub
   std::vector<double> nu_weight = L.nu_hat;
   NoiseModel best = m;
   double best_nll = std::numeric_limits<double>::infinity(), previous = best_nll;
-  for (int iter = 0; iter < 200; ++iter) {
+  for (int iter = 0; iter < 50; ++iter) {
     Eigen::MatrixXd A(J, K);
     Eigen::VectorXd b(J);
     for (Eigen::Index j = 0; j < J; ++j) {
@@ -237,9 +237,11 @@ bool passes(const Levels&, const NoiseModel&, const std::vector<NoiseTerm>&, dou
 /// random walk passed with J = 9.6 under a random-walk pilot and gave
 /// J = 7,400 under its own covariance).
 Weighted weighted_problem(std::span<const AllanLevel> levels, const NoiseModel& pilot);
+/// A model with as many parameters as levels (no degree of freedom left)
+/// cannot be tested, so it does not pass.
 bool passes(const Weighted& W, const NoiseModel& m, const std::vector<NoiseTerm>& terms, double alpha) {
   const double dof = static_cast<double>(W.tau.size()) - parameters(terms);
-  return dof < 1 || objective(weighted_problem(W.levels, m), m) <= chi2_quantile(dof, 1 - alpha);
+  return dof >= 1 && objective(weighted_problem(W.levels, m), m) <= chi2_quantile(dof, 1 - alpha);
 }
 
 /// The simplifications of a term set tried by the backward elimination,
@@ -428,9 +430,13 @@ NoiseFit fit_levels(std::span<const AllanLevel> levels, const NoiseFitOptions& o
   const Weighted own = weighted_problem(levels, model);
   fit.fit_statistic = objective(own, model);
   fit.fit_dof = static_cast<double>(levels.size()) - parameters(selected);
-  fit.fit_p_value = fit.fit_dof >= 1 ? boost::math::cdf(boost::math::complement(boost::math::chi_squared(fit.fit_dof),
-                                                                                 fit.fit_statistic))
-                                     : 1.0;
+  // A model without a degree of freedom left, or whose own covariance is
+  // singular (a rate ramp alone has no variance: S = 0), cannot be tested,
+  // so it does not pass.
+  const bool testable = std::isfinite(fit.fit_statistic) && fit.fit_dof >= 1;
+  fit.fit_p_value = testable ? boost::math::cdf(boost::math::complement(boost::math::chi_squared(fit.fit_dof),
+                                                                        fit.fit_statistic))
+                             : 0.0;
   fit.fits = fit.fit_p_value >= options.selection_alpha;
   return fit;
 }
