@@ -339,6 +339,17 @@ Weighted weighted_problem(std::span<const AllanLevel> levels, const NoiseModel& 
   return W;
 }
 
+/// The degrees of freedom that match a level's variance under the model,
+/// 2ν²/Var ν̂, within [1, the level's windows]: no more independent squares
+/// than second differences were summed. (Where the model's variance there is
+/// almost nothing, as under a rate ramp alone, the ratio is any number: an
+/// interval from 10³⁰ degrees of freedom would be no interval.)
+double model_edf(const AllanLevel& level, const NoiseModel& m, double var) {
+  const double nu = m.avar(level.tau_s);
+  const double edf = var > 0 ? 2 * nu * nu / var : allan_edf(level, m.dominant_type(level.tau_s));
+  return std::isfinite(edf) ? std::clamp(edf, 1.0, std::max(1.0, static_cast<double>(level.windows))) : 1.0;
+}
+
 /// Bisection on a monotone profile: the point between `inside` (profile
 /// below the target) and `outside` where it crosses the target.
 template <class F>
@@ -388,8 +399,8 @@ NoiseFit fit_levels(std::span<const AllanLevel> levels, const NoiseFitOptions& o
   const double dt = levels.front().tau_s / static_cast<double>(levels.front().cluster);
   const Eigen::MatrixXd cov = allan_covariance(levels, dt, model);
   for (std::size_t j = 0; j < levels.size(); ++j) {
-    const double nu = model.avar(levels[j].tau_s), var = cov(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j));
-    fit.edf.push_back(var > 0 ? std::max(1.0, 2 * nu * nu / var) : allan_edf(levels[j], model.dominant_type(levels[j].tau_s)));
+    const double var = cov(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j));
+    fit.edf.push_back(model_edf(levels[j], model, var));
   }
   const double crit = chi2_quantile(1, options.confidence);
   const double tc = model.correlation_time_s;
@@ -468,8 +479,8 @@ NoiseFit fit_noise(std::span<const AllanLevel> levels, const NoiseFitOptions& op
     const Eigen::MatrixXd cov = allan_covariance(levels.first(fit.first_level), dt, fit.model);
     std::vector<double> edf;
     for (std::size_t j = 0; j < fit.first_level; ++j) {
-      const double nu = fit.model.avar(levels[j].tau_s), var = cov(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j));
-      edf.push_back(var > 0 ? std::max(1.0, 2 * nu * nu / var) : allan_edf(levels[j], fit.model.dominant_type(levels[j].tau_s)));
+      const double var = cov(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j));
+      edf.push_back(model_edf(levels[j], fit.model, var));
     }
     fit.edf.insert(fit.edf.begin(), edf.begin(), edf.end());
   }

@@ -4,6 +4,7 @@
 #include "lib/noise/noise_fit.h"
 
 #include <boost/math/distributions/binomial.hpp>
+#include <cmath>
 #include <gtest/gtest.h>
 
 #include "tests/unit/lib/noise/synthetic_noise.h"
@@ -126,6 +127,22 @@ TEST(NoiseFit, WhiteGaussMarkovAndRandomWalkAreKeptTogether) {
   // intervals of a file are not independent: the bound is the binomial's
   // 0.001 quantile over the files, applied to the mean count per term).
   EXPECT_GE(covered / 4.0, boost::math::quantile(boost::math::binomial(together, confidence), 0.001));
+}
+
+TEST(NoiseFit, ARecordingNoModelFitsIsReportedAsSuchNotAnError) {
+  // A pattern of 23 samples repeated (a logger replaying its buffer): its
+  // Allan variance falls as τ⁻² beyond the period, like no standard term.
+  // The selection could end on a model with no degree of freedom left or a
+  // singular covariance, and the fit test's chi-square of a NaN statistic
+  // threw (an internal error of `insmc noise` and `import-imu`).
+  std::vector<double> y(59999);
+  for (std::size_t k = 0; k < y.size(); ++k) y[k] = 1e-6 * static_cast<double>((7 * k) % 23);
+  const Segment all{0, y.size()};
+  NoiseFit fit;
+  ASSERT_NO_THROW(fit = fit_noise(overlapping_allan(y, 0.01, std::span(&all, 1))));
+  EXPECT_FALSE(fit.fits);
+  EXPECT_TRUE(std::isfinite(fit.fit_p_value));
+  EXPECT_GE(fit.fit_dof, 1.0);
 }
 
 TEST(NoiseFit, QuantizationAndRamp) {
