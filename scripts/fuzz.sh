@@ -57,14 +57,13 @@ for t in "${targets[@]}"; do
     if [[ -d $src ]] && compgen -G "$src/*" >/dev/null; then cp "$src"/* "$corpus"/; fi
   done
   # A crash is anything but a normal return: a sanitizer report, an abort,
-  # an exception other than InputError, more than 5 s on one input (120 s
-  # for import_imu: its raw-noise stage fits every channel of up to 196,607
-  # samples, 35-40 s under the sanitizers and the fuzzer's instrumentation
-  # on its 100 Hz seed whose periodic "noise" no model fits, so that every
-  # shorter range of levels is tried; 10 s without them) or more than 2 GB
-  # of memory.
+  # an exception other than InputError, more than 5 s on one input (600 s
+  # for import_imu: with its raw-noise stage on, the fit of six channels on a
+  # recording no model fits, as a periodic byte pattern is, tries every
+  # shorter range of levels, 90 s under the fuzzer's comparison tracing on
+  # its 100 Hz seed, 2 s without it) or more than 2 GB of memory.
   timeout=5
-  [[ $t == import_imu ]] && timeout=120
+  [[ $t == import_imu ]] && timeout=600
   if ! "$build/fuzz_$t" "$corpus" -max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=2048 \
        -artifact_prefix="$work/$t/artifacts/" -print_final_stats=1 >"$work/$t/log" 2>&1; then
     kept=$build/crashes/$t
