@@ -1,42 +1,23 @@
 // MPI ranks for `insmc run` (compiled only with -DINSMC_MPI=ON): the block
 // range is split into contiguous rank shares by
 // montecarlo/study/study_runner.cpp; here the ranks' accumulator states are
-// merged by an MPI reduction whose operation deserializes two states, merges
-// them (exactly: the sums are fixed-point, so any reduction tree gives the
-// same bits) and serializes the result back.
+// gathered at rank 0 with their sizes (a sparse histogram's state differs in
+// size between ranks, so a fixed-size MPI reduction cannot carry them),
+// merged there in rank order (exactly: the sums are fixed-point, so any
+// order gives the same bits) and broadcast when every rank needs the result.
 #include <algorithm>
 #include <climits>
+#include <cstdint>
 #include <cstdio>
-#include <cstring>
-#include <exception>
 #include <mpi.h>
 #include <string_view>
+#include <vector>
 
 #include "apps/ranks.h"
 #include "lib/common/assert.h"
 
 namespace insmc::app {
 namespace {
-
-extern "C" void merge_serialized_states(void* in, void* inout, int* len, MPI_Datatype* type) {
-  int bytes = 0;
-  MPI_Type_size(*type, &bytes);
-  const auto n = static_cast<std::size_t>(bytes);
-  for (int i = 0; i < *len; ++i) {
-    const char* a = static_cast<const char*>(in) + static_cast<std::size_t>(i) * n;
-    char* b = static_cast<char*>(inout) + static_cast<std::size_t>(i) * n;
-    std::string merged;
-    try {
-      mc::StudyAccumulator acc = mc::StudyAccumulator::deserialize(std::string_view(b, n));
-      acc.merge(mc::StudyAccumulator::deserialize(std::string_view(a, n)));
-      merged = acc.serialize();
-    } catch (const std::exception& e) {
-      INSMC_ASSERT(false, "MPI merge of accumulator states: {}", e.what());
-    }
-    INSMC_ASSERT(merged.size() == n, "merged state of {} bytes, expected {}", merged.size(), n);
-    std::memcpy(b, merged.data(), n);
-  }
-}
 
 class MpiRanks final : public Ranks {
  public:
@@ -80,25 +61,30 @@ class MpiRanks final : public Ranks {
 
   mc::StudyAccumulator merge(const mc::StudyAccumulator& local, bool everywhere) override {
     const std::string bytes = local.serialize();
-    const auto n = static_cast<std::int64_t>(bytes.size());
-    const std::vector<std::int64_t> extremes = max_all({n, -n});
-    INSMC_ASSERT(extremes[0] == n && extremes[1] == -n, "ranks hold states of different sizes ({} to {} bytes)",
-                 -extremes[1], extremes[0]);
-    INSMC_ASSERT(n < INT_MAX, "an accumulator state of {} bytes exceeds one MPI element (2 GiB)", n);
-    MPI_Datatype state;
-    MPI_Type_contiguous(static_cast<int>(n), MPI_BYTE, &state);
-    MPI_Type_commit(&state);
-    MPI_Op op;
-    MPI_Op_create(merge_serialized_states, /*commute=*/1, &op);
-    std::string out(bytes.size(), '\0');
-    if (everywhere)
-      MPI_Allreduce(bytes.data(), out.data(), 1, state, op, MPI_COMM_WORLD);
-    else
-      MPI_Reduce(bytes.data(), out.data(), 1, state, op, 0, MPI_COMM_WORLD);
-    MPI_Op_free(&op);
-    MPI_Type_free(&state);
-    if (!everywhere && rank_ != 0) return {};
-    return mc::StudyAccumulator::deserialize(out);
+    INSMC_ASSERT(bytes.size() < INT_MAX, "an accumulator state of {} bytes exceeds one MPI message (2 GiB)", bytes.size());
+    int count = static_cast<int>(bytes.size());
+    std::vector<int> counts(rank_ == 0 ? static_cast<std::size_t>(size_) : 0), starts(counts.size());
+    MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    std::string all;
+    if (rank_ == 0) {
+      std::int64_t total = 0;
+      for (std::size_t r = 0; r < counts.size(); ++r) starts[r] = static_cast<int>(total), total += counts[r];
+      INSMC_ASSERT(total < INT_MAX, "the ranks' accumulator states, {} bytes, exceed one MPI message (2 GiB)", total);
+      all.resize(static_cast<std::size_t>(total));
+    }
+    MPI_Gatherv(bytes.data(), count, MPI_BYTE, all.data(), counts.data(), starts.data(), MPI_BYTE, 0, MPI_COMM_WORLD);
+    std::string merged;
+    if (rank_ == 0) {
+      const auto state_of = [&](std::size_t r) {
+        return std::string_view(all).substr(static_cast<std::size_t>(starts[r]), static_cast<std::size_t>(counts[r]));
+      };
+      mc::StudyAccumulator acc = mc::StudyAccumulator::deserialize(state_of(0));
+      for (std::size_t r = 1; r < counts.size(); ++r) acc.merge(mc::StudyAccumulator::deserialize(state_of(r)));
+      merged = acc.serialize();
+    }
+    if (everywhere) merged = broadcast(std::move(merged));
+    else if (rank_ != 0) return {};
+    return mc::StudyAccumulator::deserialize(merged);
   }
 
   void barrier() override { MPI_Barrier(MPI_COMM_WORLD); }
