@@ -152,6 +152,9 @@ NoiseModel fit_powers(const Levels& L, const std::vector<NoiseTerm>& terms, doub
   std::vector<double> nu_weight = L.nu_hat;
   NoiseModel best = m;
   double best_nll = std::numeric_limits<double>::infinity(), previous = best_nll;
+  // The pilot only weights the fit below; 50 iterations reach its fixed
+  // point on every recording tried, and bound the cost where none exists
+  // (a recording no model fits: the reweighting then cycles).
   for (int iter = 0; iter < 50; ++iter) {
     Eigen::MatrixXd A(J, K);
     Eigen::VectorXd b(J);
