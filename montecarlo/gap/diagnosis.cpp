@@ -158,32 +158,31 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   if (d.pessimistic.significant)
     d.pessimistic.prior_scale = fit_prior_scale(p, null.calibration, d.pessimistic.critical, options.seed);
   // Records from import-imu with its raw stage: the main verdict is against
-  // the null through the import; the model's own stays beside it and is
-  // what the candidates explain.
+  // the null through the import; the model's own stays beside it (the
+  // report gives it first) and is what the candidates explain.
+  std::optional<OwnNoiseRuns> own_noise;
   if (const std::optional<ImportNull> import = import_null_for(records.file, d.statements)) {
     d.against_model = {true, d.unmodelled_gap, d.unmodelled_critical, d.p_value, d.significant, d.gap,
-                       d.null_gap_critical};
-    std::vector<Eigen::VectorXd> through_z;
-    std::vector<int> through_layout;
-    const ModelNull through = calibrate(p, records.file, options, ncal, through_z, through_layout, &*import);
+                       d.null_gap_critical, d.null_gap_median};
+    own_noise.emplace();
+    const ModelNull through = calibrate(p, records.file, options, ncal, own_noise->z, own_noise->layout_of, &*import);
+    own_noise->log_ratios = null_file_log_ratios(through.set, null.calibration, options, n);
     const LogRatios through_ratios =
         log_ratios(observed, through.calibration, CoherentReference::kAtLeastModelScatter);
     d.gap = gap_value(through_ratios);
     d.null_gap_median = quantile(through.gaps, 0.5);
     d.null_gap_critical = quantile(through.gaps, 1.0 - options.alpha);
-    d.unmodelled_gap = gap::signed_gap(through_ratios).unmodelled;
+    const SignedGap through_signed = gap::signed_gap(through_ratios);
+    d.unmodelled_gap = through_signed.unmodelled;
     d.unmodelled_critical = quantile(through.unmodelled, 1.0 - options.alpha);
     d.p_value = p_value_of(d.unmodelled_gap, through.unmodelled);
     d.significant = d.p_value < options.alpha;
+    d.own_noise_less.value = through_signed.pessimistic;
+    d.own_noise_less.critical = quantile(through.pessimistic, 1.0 - options.alpha);
+    d.own_noise_less.p_value = p_value_of(through_signed.pessimistic, through.pessimistic);
+    d.own_noise_less.significant = through_signed.pessimistic > 0 && d.own_noise_less.p_value < options.alpha;
     d.null_kind = "the model and the sensor's noise through the import";
-    d.statements.push_back(fmt::format(
-        "{}. Against it: G+ = {:.3g}, p = {:.3g}: {}. Against the model alone (a perfect sensor through the import): "
-        "G+ = {:.3g}, p = {:.3g}: {}{}",
-        import->description, d.unmodelled_gap, d.p_value,
-        d.significant ? "an effect beyond the sensor's own noise" : "nothing beyond the sensor's own noise",
-        d.against_model.value, d.against_model.p_value,
-        d.against_model.significant ? "significant" : "not significant",
-        d.against_model.significant ? " (the candidates below explain the gap against the model)" : ""));
+    d.statements.push_back(import->description);
   }
   if (!d.against_model.reported) test_run_estimates(d, p, analysers, null, options);
   if (n < 20)
@@ -191,7 +190,8 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
                                        "up to G = {:.3g} at alpha = {})", n, n, d.null_gap_critical, options.alpha));
 
   // Where it lies.
-  locate_gap(d, p, analysers, observed, null, null_z, null_layout, options.alpha);
+  locate_gap(d, p, analysers, observed, null, null_z, null_layout, options.alpha, own_noise ? &*own_noise : nullptr);
+  own_noise.reset();
 
   // Which effect, and how far the gap shrinks.
   if (n < options.minimum_runs) {
@@ -201,7 +201,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
     return d;
   }
   if (!d.model_gap_significant()) {
-    d.statements.push_back(fmt::format("no significant gap (p = {:.3g} >= alpha = {}): no effect is selected",
+    d.statements.push_back(fmt::format("no significant gap against the model (p = {:.3g} >= alpha = {}): no effect is selected",
                                        d.against_model.reported  ? d.against_model.p_value
                                        : d.estimate_test.measured ? d.estimate_test.combined_p
                                                                   : d.p_value,

@@ -23,6 +23,11 @@ struct GroupResult {
   double p_value = 1;      ///< of |ℓ| against the null files
   double share = 0;        ///< ℓ² / Σ ℓ²
   double null_low = 0, null_high = 0;  ///< the null files' ℓ, quantiles α/2 and 1 − α/2
+  /// Where the sensor's own noise through the import puts ℓ (the same
+  /// expectation, the model's): its null files' quantiles α/2 and 1 − α/2;
+  /// NaN without that null (null/import_null.h).
+  double own_noise_low = std::numeric_limits<double>::quiet_NaN();
+  double own_noise_high = std::numeric_limits<double>::quiet_NaN();
   /// The scatter group whose stage, axis and window this group reports.
   int representative() const { return coherent ? runs::coherent_representative(group) : group; }
   std::string name() const { return coherent ? runs::coherent_group_name(group) : runs::group_name(group); }
@@ -44,6 +49,9 @@ struct AllanPoint {
   double null = 0;      ///< the same of the null runs
   /// 5–95 % of the same over null files of the records' size (the null band).
   double null_low = 0, null_high = 0;
+  /// The same three of null runs with the sensor's own noise through the
+  /// import; 0 without that null.
+  double own_noise = 0, own_noise_low = 0, own_noise_high = 0;
 };
 
 struct AllanCurve {
@@ -162,12 +170,20 @@ struct PessimisticFinding {
 
 /// The verdict against the model alone when the main one is against the
 /// null through the import (null/import_null.h): G₊ of the data against
-/// null files of the model with a perfect sensor.
+/// null files of the model with a perfect sensor. The report gives it first.
 struct ModelOnlyVerdict {
   bool reported = false;
   double value = 0, critical = 0, p_value = 1;  ///< G₊, its critical value, p
   bool significant = false;
   double gap = 0, null_gap_critical = 0;        ///< G and its critical value
+  double null_gap_median = 0;                   ///< G's median on the null files
+};
+
+/// G₋ against the null through the import: the data scatter less than the
+/// sensor's own fitted noise makes them (a raw stage that overstates it).
+struct OwnNoiseLess {
+  double value = 0, critical = 0, p_value = 1;  ///< G₋, its critical value, p
+  bool significant = false;
 };
 
 /// One estimate of the test run against the prior (where/estimate_test.h):
@@ -225,6 +241,7 @@ struct Diagnosis {
   /// What the null is: "the model" or "the model and the sensor's noise through the import".
   std::string null_kind = "the model";
   ModelOnlyVerdict against_model;
+  OwnNoiseLess own_noise_less;  ///< measured when against_model.reported
   std::vector<GroupResult> groups;
   std::vector<Share> by_kind, by_axis, by_stage, by_window;
   std::vector<TimeFunctionShares> time_functions;

@@ -22,6 +22,8 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <iterator>
+#include <utility>
 #include <string>
 
 #include "tests/cli/gap_null_files.h"
@@ -59,12 +61,32 @@ noise::test::SyntheticNoise accel_noise() {
   return n;
 }
 
+/// A navigation-grade unit, well inside Table 3.1 over a Schuler period:
+/// gyros ARW 0.001 deg/√h and 0.005 deg/h over 600 s; accelerometers VRW
+/// 0.001 m/s/√h and 5 µg over 600 s.
+noise::test::SyntheticNoise navigation_gyro_noise() {
+  noise::test::SyntheticNoise n;
+  n.white = 0.001 / 60 * kDegToRad;
+  n.gm_sigma = 0.005 / 3600 * kDegToRad;
+  n.gm_time_s = 600;
+  return n;
+}
+noise::test::SyntheticNoise navigation_accel_noise() {
+  noise::test::SyntheticNoise n;
+  n.white = 0.001 / 60;
+  n.gm_sigma = 5e-6 * kGravityMps2;
+  n.gm_time_s = 600;
+  return n;
+}
+
 /// One run's CSV (deg/s and g, 10 significant digits: far below the noise).
-void write_run(const std::filesystem::path& path, const SyntheticSite& site, std::uint64_t seed) {
+void write_run(const std::filesystem::path& path, const SyntheticSite& site, std::uint64_t seed,
+               const noise::test::SyntheticNoise& gyro = gyro_noise(),
+               const noise::test::SyntheticNoise& accel = accel_noise()) {
   const auto n = static_cast<std::size_t>(std::lround(kDurationS * kRateHz));
   std::array<std::vector<double>, 6> noise;
   for (std::size_t c = 0; c < 6; ++c)
-    noise[c] = noise::test::synthetic_series(c < 3 ? gyro_noise() : accel_noise(), n, 1 / kRateHz, seed * 8 + c);
+    noise[c] = noise::test::synthetic_series(c < 3 ? gyro : accel, n, 1 / kRateHz, seed * 8 + c);
   const ImuSamples s = synthetic_samples(site, kRateHz, kDurationS);
   std::ofstream f(path);
   f << "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g\n";
@@ -76,6 +98,52 @@ void write_run(const std::filesystem::path& path, const SyntheticSite& site, std
                      (a.x() + noise[3][k]) / kGravityMps2, (a.y() + noise[4][k]) / kGravityMps2,
                      (a.z() + noise[5][k]) / kGravityMps2);
   }
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream f(path);
+  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+/// Records through the import carry two verdicts, stated once each and in
+/// one order: against the model, then against the unit's own noise; each
+/// as significant as its p says; the figures name their null and draw the
+/// band of the one they are judged against.
+void expect_verdicts_in_order(const std::string& json, const std::string& out) {
+  const std::string md = read_file(out + "/gap.md");
+  const auto first = md.find("1. **Against the model**");
+  const auto second = md.find("2. **Against the unit's own noise**");
+  ASSERT_NE(first, std::string::npos) << md.substr(0, 3000);
+  ASSERT_NE(second, std::string::npos) << md.substr(0, 3000);
+  EXPECT_LT(first, second);
+  const auto headline_model = md.find("Against the model: ");
+  const auto headline_own = md.find("against the unit's own noise through the import: ");
+  EXPECT_LT(headline_model, first);
+  EXPECT_LT(headline_model, headline_own);
+  // The JSON's verdicts in the same order, and each verdict's words as its p.
+  const auto model_at = json.find("\"against\": \"the model\"");
+  const auto own_at = json.find("\"against\": \"the unit's own noise\"");
+  ASSERT_NE(model_at, std::string::npos);
+  ASSERT_NE(own_at, std::string::npos);
+  EXPECT_LT(model_at, own_at);
+  const std::string alpha_text = "alpha = 0.01";  // the default level
+  for (const auto& [at, end] : {std::pair{first, second}, std::pair{second, md.find("\n\n", second)}}) {
+    const std::string line = md.substr(at, end - at);
+    const auto p_at = line.find("G+ = ");
+    ASSERT_NE(p_at, std::string::npos) << line;
+    const double p_value = std::strtod(line.c_str() + line.find(", p = ", p_at) + 6, nullptr);
+    ASSERT_NE(line.find(alpha_text), std::string::npos) << line;
+    EXPECT_EQ(line.find("**significant gap**") != std::string::npos, p_value < 0.01) << line;
+  }
+  // Section 2 says which null its table shows; the groups figure draws both bands, the Allan figure a panel each.
+  EXPECT_NE(md.find("Against the model (verdict 1): each group's"), std::string::npos);
+  EXPECT_NE(md.find("own-noise band"), std::string::npos);
+  const std::string groups = read_file(out + "/gap_groups.gp");
+  EXPECT_NE(groups.find("the model's null files: band"), std::string::npos);
+  EXPECT_NE(groups.find("the sensor's own noise through the import: band"), std::string::npos);
+  const std::string allan = read_file(out + "/gap_allan.gp");
+  EXPECT_NE(allan.find("against the model (verdict 1)"), std::string::npos);
+  EXPECT_NE(allan.find("against the unit's own noise (verdict 2)"), std::string::npos);
 }
 
 TEST(GapImportedNoise, ASensorThatMatchesItsOwnNoiseIsNotAnUnmodelledEffect) {
@@ -101,8 +169,11 @@ TEST(GapImportedNoise, ASensorThatMatchesItsOwnNoiseIsNotAnUnmodelledEffect) {
                                                 inputs, kRateHz, site.latitude_rad / kDegToRad,
                                                 site.heading_rad / kDegToRad, records));
     ASSERT_EQ(imported.exit_code, 0) << imported.err;
-    const auto r = run_insmc(fmt::format("gap --records {} --format json --seed {} --rank never", records, 1 + file));
+    const std::string out = (dir.path() / "gap").string();
+    const auto r = run_insmc(
+        fmt::format("gap --records {} --format json --seed {} --rank never --out {}", records, 1 + file, out));
     ASSERT_EQ(r.exit_code, 0) << r.err;
+    expect_verdicts_in_order(r.out, out);
     ASSERT_TRUE(r.out.find("\"null\": \"the model and the sensor's noise through the import\"") != std::string::npos)
         << r.out.substr(0, 4000);
     const bool u = significant_after(r.out, "gap"), m = significant_after(r.out, "against_model");
@@ -119,6 +190,42 @@ TEST(GapImportedNoise, ASensorThatMatchesItsOwnNoiseIsNotAnUnmodelledEffect) {
   EXPECT_LE(unmodelled, bound);
   // The sensor is far outside Table 3.1: against the model alone every file is a gap.
   EXPECT_EQ(against_model, files);
+}
+
+// A navigation-grade unit well inside Table 3.1, through the import: the
+// first sentence says its noise is within the bounds and never names an
+// unmodelled effect the second verdict does not find; it agrees with both
+// verdicts printed beside it.
+TEST(GapImportedNoise, AUnitWithinThePriorsIsSaidToBeAndItsHeadlineAgreesWithBothVerdicts) {
+  TempDir dir;
+  SyntheticSite site;
+  site.latitude_rad = 45.0 * kDegToRad;
+  site.heading_rad = 30.0 * kDegToRad;
+  std::string inputs;
+  for (int run = 0; run < kRuns; ++run) {
+    const auto path = dir.path() / fmt::format("run{}.csv", run);
+    write_run(path, site, 7000 + static_cast<std::uint64_t>(run), navigation_gyro_noise(), navigation_accel_noise());
+    inputs += " --input " + path.string();
+  }
+  const std::string records = (dir.path() / "records.csv").string();
+  const auto imported = run_insmc(fmt::format("import-imu{} --rate {}Hz --latitude 45deg --azimuth 30deg --out {}",
+                                              inputs, kRateHz, records));
+  ASSERT_EQ(imported.exit_code, 0) << imported.err;
+  const std::string out = (dir.path() / "gap").string();
+  const auto r = run_insmc(fmt::format("gap --records {} --format json --seed 3 --rank never --out {}", records, out));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  expect_verdicts_in_order(r.out, out);
+  const std::string finding = r.out.substr(r.out.find("\"finding\": "), 1200);
+  fmt::print("{}\n", finding.substr(0, finding.find("\",\n")));
+  const bool model = significant_after(r.out, "against_model"), own = significant_after(r.out, "gap");
+  EXPECT_NE(finding.find("Table 3.1's bounds (raw-sensor stage: within them)"), std::string::npos) << finding;
+  EXPECT_EQ(finding.find("An unmodelled effect"), std::string::npos) << finding;
+  if (!own) {
+    EXPECT_NE(finding.find(model ? "The gap against the model is the unit's own sensor noise"
+                                 : "The data agree with the model and with the unit's own noise"),
+              std::string::npos)
+        << finding;
+  }
 }
 
 }  // namespace

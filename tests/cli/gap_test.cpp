@@ -56,7 +56,7 @@ TEST(Gap, AWithheldAccelerometerBiasInstabilityIsFoundAndNamed) {
   EXPECT_EQ(frames_of(groups).size(), 1u);
   EXPECT_GE(plotted_points_inside(groups, "gap_groups"), 22u);
   EXPECT_TRUE(has(groups, "common test f_x")) << groups.substr(0, 400);
-  EXPECT_TRUE(has(groups, "above the band: more than the model")) << "the colours' legend";
+  EXPECT_TRUE(has(groups, "above the model's band: more than the model")) << "the colours' legend";
   EXPECT_GE(plotted_points_inside(read_file(std::filesystem::path(out) / "gap_allan.svg"), "gap_allan"), 3u * 4);
 }
 

@@ -75,6 +75,17 @@ void check_null_budget(const runs::PreparedRuns& p, int runs, bool automatic, in
                                          : ""));
 }
 
+std::vector<LogRatios> null_file_log_ratios(const RunSet& set, const NullCalibration& calibration,
+                                            const DiagnosisOptions& options, int file_runs) {
+  std::vector<LogRatios> out(static_cast<std::size_t>(options.bootstrap));
+  const int runs = static_cast<int>(set.size());
+  tbb::parallel_for(0, options.bootstrap, [&](int b) {
+    const Pooled s = pool(set, resample(options.seed, static_cast<std::uint64_t>(b), file_runs, runs));
+    out[static_cast<std::size_t>(b)] = log_ratios(s, calibration, CoherentReference::kAtLeastModelScatter);
+  });
+  return out;
+}
+
 ModelNull calibrate(runs::PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
                std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of, const ImportNull* import) {
   std::vector<runs::RunData> sim = simulate_like_records(p, file, options, runs, 0, {}, layout_of, import);
@@ -93,11 +104,9 @@ ModelNull calibrate(runs::PreparedRuns& p, const RecordFile& file, const Diagnos
   null.gaps.resize(B);
   null.unmodelled.resize(B);
   null.pessimistic.resize(B);
-  null.log_ratios.resize(B);
+  null.log_ratios = null_file_log_ratios(set, null.calibration, options, n);
   tbb::parallel_for(0, options.bootstrap, [&](int b) {
     const auto i = static_cast<std::size_t>(b);
-    const Pooled s = pool(set, resample(options.seed, static_cast<std::uint64_t>(b), n, runs));
-    null.log_ratios[i] = log_ratios(s, null.calibration, CoherentReference::kAtLeastModelScatter);
     null.gaps[i] = gap_value(null.log_ratios[i]);
     const SignedGap signed_gap = gap::signed_gap(null.log_ratios[i]);
     null.unmodelled[i] = signed_gap.unmodelled;

@@ -66,4 +66,11 @@ void check_null_budget(const runs::PreparedRuns& p, int runs, bool automatic, in
 ModelNull calibrate(runs::PreparedRuns& p, const RecordFile& file, const DiagnosisOptions& options, int runs,
                std::vector<Eigen::VectorXd>& z, std::vector<int>& layout_of, const ImportNull* import = nullptr);
 
+/// ℓ of options.bootstrap null files of `file_runs` runs drawn from `set`
+/// (options.seed's resampling streams, as calibrate draws them), against
+/// `calibration`: the null files of one null read with another's
+/// expectations (the sensor's own noise on the model's scale).
+std::vector<LogRatios> null_file_log_ratios(const RunSet& set, const NullCalibration& calibration,
+                                            const DiagnosisOptions& options, int file_runs);
+
 }  // namespace insmc::gap

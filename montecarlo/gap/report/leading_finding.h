@@ -5,7 +5,10 @@
 /// weight or position resolution far from the report's 0.1 ft/s and 3 ft),
 /// its errors outside the model's priors (`bounds` chosen), an unmodelled
 /// effect (which, how much of the gap it closes), the model is pessimistic,
-/// or the data agree with the model.
+/// or the data agree with the model. Records that came through the import
+/// with its raw stage also get the unit's noise against Table 3.1 and the two
+/// verdicts (report/verdicts_report.h): against the model, then against the
+/// unit's own noise.
 #include <string>
 
 #include "montecarlo/gap/diagnosis.h"

@@ -10,6 +10,7 @@
 #include "montecarlo/gap/report/estimate_report.h"
 #include "montecarlo/gap/report/gap_plots.h"
 #include "montecarlo/gap/report/likelihood_report.h"
+#include "montecarlo/gap/report/verdicts_report.h"
 #include "montecarlo/write/markdown.h"
 
 namespace insmc::gap {
@@ -97,21 +98,6 @@ std::string params_text(const std::vector<ParameterEstimate>& ps) {
 
 std::string pct(double v) { return fmt::format("{:.1f} %", 100.0 * v); }
 
-/// The priors' scale that fits the runs, read for what it says.
-std::string prior_scale_sentence(const PessimisticFinding& f) {
-  const PriorScale& s = f.prior_scale;
-  if (!s.measured) return "";
-  const std::string value =
-      s.at_limit ? fmt::format("{:.3g} or beyond (the end of its range, 0.01 to 100)", s.scale)
-                 : fmt::format("{:.3g} (16–84 % of resampled fits {:.3g}–{:.3g}, on a grid of step ×1.33)", s.scale, s.low, s.high);
-  return fmt::format(". Table 3.1's priors scaled by s = {} fit these runs best; with them G- = {:.3g}, {}", value,
-                     s.pessimistic_after,
-                     s.explains ? "within the null: priors that wide account for it"
-                                : fmt::format("still beyond the null's {:.3g}: the priors alone do not account for "
-                                              "it, another assumption is coarser than the data",
-                                              f.critical));
-}
-
 }  // namespace
 
 mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_files) {
@@ -155,6 +141,7 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
   }
   g["pessimistic"] = pessimistic;
   g["estimates"] = estimate_test_json(d.estimate_test);
+  g["verdicts"] = verdicts_json(d);
   g["null"] = d.null_kind;
   if (d.against_model.reported) {
     mc::Json m = mc::Json::object();
@@ -187,6 +174,10 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
     e["log_ratio"] = r.log_ratio;
     e["p_value"] = r.p_value;
     e["share"] = r.share;
+    if (std::isfinite(r.own_noise_low)) {
+      e["own_noise_low"] = r.own_noise_low;
+      e["own_noise_high"] = r.own_noise_high;
+    }
     groups.push_back(e);
   }
   where["groups"] = groups;
@@ -201,6 +192,7 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
       e["cluster_s"] = p.cluster_s;
       e["observed_mps2"] = p.observed;
       e["null_mps2"] = p.null;
+      if (p.own_noise > 0) e["own_noise_mps2"] = p.own_noise;
       a.push_back(e);
     }
     allan[std::string(1, "xyz"[c.axis])] = a;
@@ -260,50 +252,47 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
 std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosis& d,
                                                                   const std::vector<std::string>& record_files) {
   std::string md = "# Sim-to-real gap diagnosis\n\n**" + leading_finding(d) + "**\n\n";
-  md += fmt::format("Records: {} ({} runs, scheme {}). Null: {} truth-level runs of the model itself at the "
+  md += fmt::format("Records: {} ({} runs, scheme {}). Null files are drawn from {} truth-level runs at the "
                     "records' times, pulse weight, site and scheme{}.\n\n",
                     fmt::join(record_files, ", "), d.runs, d.scheme, d.calibration_runs,
-                    d.against_model.reported
-                        ? fmt::format("; the verdict below is against the same runs with the sensor's own noise "
-                                      "through the import (against the model alone: G+ = {:.3g}, p = {:.3g}, {}; "
-                                      "the candidates explain that gap)",
-                                      d.against_model.value, d.against_model.p_value,
-                                      d.against_model.significant ? "significant" : "not significant")
-                        : "");
+                    has_own_noise_verdict(d) ? " (and as many again with the sensor's own noise through the import)" : "");
   md += "## 1. The gap\n\n";
-  md += fmt::format("G = **{:.3g}** (null files of {} runs: median {:.3g}, critical {:.3g}). More than the model "
-                    "(an unmodelled effect): G+ = {:.3g}, p = {:.3g}, alpha = {}: **{}**. Less than the model: G- = "
-                    "{:.3g}, p = {:.3g} (critical {:.3g}){}.\n\n",
-                    d.gap, d.runs, d.null_gap_median, d.null_gap_critical, d.unmodelled_gap, d.p_value, d.alpha,
-                    d.significant ? "significant gap" : "no significant gap", d.pessimistic.value,
-                    d.pessimistic.p_value, d.pessimistic.critical,
-                    d.pessimistic.significant
-                        ? fmt::format(": **the model is pessimistic about {}**: the data scatter or share less there "
-                                      "than it predicts, so an assumption is wider than the data (a declared pulse "
-                                      "weight or resolution coarser than the data show, priors wider than this "
-                                      "system); no effect is sought for it",
-                                      fmt::join(d.pessimistic.where, ", ")) +
-                              prior_scale_sentence(d.pessimistic)
-                        : ": not beyond the null");
+  md += verdicts_markdown(d);
   md += estimate_test_markdown(d.estimate_test, d.alpha);
   md += "Site values (the null is simulated with them):\n\n";
   mc::Table site({"value", "used", "source", "why"});
   for (const runs::SiteValue& v : d.site) site.add_row({v.key, fmt::format("{:.6g}", v.value), v.source, v.reason});
   md += mc::render_markdown(site) + "\n";
-  md += "G is the RMS over report groups of ln(observed / expected): per run, how the data scatter about the "
+  md += fmt::format("G is the RMS over report groups of ln(observed / expected): per run, how the data scatter about the "
         "model's prediction (scatter groups), and what all runs share (coherent groups: a design or site effect, "
         "one-sided); 0 when the data match the model, 1 for a factor e ≈ 2.7 in power (too much or too little). "
         "G² = G+² + G-²: G+ from the groups above the model (what an effect would add), G- from those below it; "
         "each is tested one-sided against its own null distribution. The expectations are the model's own, "
-        "calibrated on its null runs.\n\n";
+        "calibrated on its null runs{}.\n\n",
+        has_own_noise_verdict(d) ? " (for the verdict against the unit's own noise: on its null runs through the import)"
+                                 : "");
   for (const std::string& s : d.statements) md += "- " + s + "\n";
   if (!d.statements.empty()) md += "\n";
   md += "## 2. Where it lies\n\n";
-  mc::Table t({"group", "terms", "observed", "null", "ln ratio", "p", "share"});
-  for (const GroupResult& r : d.groups)
-    t.add_row({r.name(), fmt::format("{:.0f}", r.count), fmt::format("{:.3g}", r.power),
-               fmt::format("{:.3g}", r.null_power), fmt::format("{:+.3f}", r.log_ratio), fmt::format("{:.3g}", r.p_value),
-               pct(r.share)});
+  const bool own_noise = has_own_noise_verdict(d);
+  md += own_noise ? "Against the model (verdict 1): each group's observed power, the model's expectation, their ln "
+                    "ratio and its p on the model's null files. The last column is the band (alpha/2 to 1 - alpha/2) "
+                    "the sensor's own noise through the import puts that ln ratio in (verdict 2's null files read "
+                    "with the model's expectation): a group inside it is the sensor's noise.\n\n"
+                  : "Against the model: each group's observed power, the model's expectation, their ln ratio and its "
+                    "p on the model's null files.\n\n";
+  std::vector<std::string> columns{"group", "terms", "observed", "null", "ln ratio", "p", "share"};
+  if (own_noise) columns.push_back("own-noise band");
+  mc::Table t(columns);
+  for (const GroupResult& r : d.groups) {
+    std::vector<std::string> row{r.name(), fmt::format("{:.0f}", r.count), fmt::format("{:.3g}", r.power),
+                                 fmt::format("{:.3g}", r.null_power), fmt::format("{:+.3f}", r.log_ratio),
+                                 fmt::format("{:.3g}", r.p_value), pct(r.share)};
+    if (own_noise)
+      row.push_back(std::isfinite(r.own_noise_low) ? fmt::format("[{:+.2f}, {:+.2f}]", r.own_noise_low, r.own_noise_high)
+                                                   : std::string("—"));
+    t.add_row(row);
+  }
   md += mc::render_markdown(t) + "\n";
   const auto share_line = [](const char* title, const std::vector<Share>& s) {
     std::string line = std::string("- ") + title + ": ";
@@ -322,8 +311,9 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
   if (!d.ranked) {
     md += "Not ranked (see the statements above).\n\n";
   } else {
-    md += fmt::format("Held-out G before: {:.3g}. Each candidate fitted on one half of the runs, scored on the "
-                      "other (2-fold), ranked by held-out G after.\n\n", d.heldout_gap_before);
+    md += fmt::format("Held-out G before: {:.3g} (against the model{}). Each candidate fitted on one half of the "
+                      "runs, scored on the other (2-fold), ranked by held-out G after.\n\n",
+                      d.heldout_gap_before, own_noise ? ", verdict 1" : "");
     mc::Table r({"rank", "effect", "held-out G after", "shrink", "shrink on null files", "parameters (16–84 % of resampled fits)"});
     for (std::size_t i = 0; i < d.ranking.size(); ++i)
       r.add_row({std::to_string(i + 1), d.ranking[i].effect, fmt::format("{:.3g}", d.ranking[i].heldout_gap_after),
@@ -355,7 +345,7 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
     for (std::size_t i = 0; i < d.greedy.size(); ++i)
       g.add_row({std::to_string(i + 1), d.greedy[i].effect, params_text(d.greedy[i].parameters),
                  fmt::format("{:.3g}", d.greedy[i].heldout_gap), fmt::format("{:.3g}", d.greedy[i].p_value)});
-    md += fmt::format("From held-out G = {:.3g}:\n\n", d.heldout_gap_before) + mc::render_markdown(g);
+    md += fmt::format("From held-out G = {:.3g} (against the model):\n\n", d.heldout_gap_before) + mc::render_markdown(g);
   }
   return {{"gap.md", md}};
 }

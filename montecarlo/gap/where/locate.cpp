@@ -6,8 +6,9 @@ namespace insmc::gap {
 
 void locate_gap(Diagnosis& d, const runs::PreparedRuns& p, const std::vector<std::optional<runs::RunAnalyser>>& analysers,
                 const Pooled& observed, const ModelNull& null, const std::vector<Eigen::VectorXd>& null_z,
-                const std::vector<int>& null_layout, double alpha) {
+                const std::vector<int>& null_layout, double alpha, const OwnNoiseRuns* own_noise) {
   d.groups = group_results(observed, null.calibration, null.log_ratios, alpha);
+  if (own_noise) add_own_noise_bands(d.groups, own_noise->log_ratios, alpha);
   if (d.pessimistic.significant) d.pessimistic.where = pessimistic_groups(d.groups, null.log_ratios, alpha);
   d.by_kind = shares_by(d.groups, [](const GroupResult& g) {
     return std::string(g.coherent ? "common to all runs" : "run-to-run scatter");
@@ -37,6 +38,23 @@ void locate_gap(Diagnosis& d, const runs::PreparedRuns& p, const std::vector<std
   }
   d.time_functions = time_function_shares(layouts, z, p.site);
   d.allan = allan_curves(layouts, z, expected, null_layouts, null_z, null_expected, p.site.filter_interval_s);
+  if (!own_noise) return;
+  std::vector<const runs::Layout*> own_layouts;
+  std::vector<const Eigen::VectorXd*> own_expected;
+  for (const int l : own_noise->layout_of) {
+    own_layouts.push_back(&p.layouts[static_cast<std::size_t>(l)]);
+    own_expected.push_back(&analysers[static_cast<std::size_t>(l)]->expected_square());
+  }
+  const std::vector<AllanCurve> own =
+      allan_curves(layouts, z, expected, own_layouts, own_noise->z, own_expected, p.site.filter_interval_s);
+  for (std::size_t axis = 0; axis < d.allan.size() && axis < own.size(); ++axis)
+    for (AllanPoint& point : d.allan[axis].points)
+      for (const AllanPoint& o : own[axis].points)
+        if (o.cluster_s == point.cluster_s) {
+          point.own_noise = o.null;
+          point.own_noise_low = o.null_low;
+          point.own_noise_high = o.null_high;
+        }
 }
 
 }  // namespace insmc::gap

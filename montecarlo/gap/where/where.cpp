@@ -4,8 +4,38 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <tuple>
+#include <utility>
 
 namespace insmc::gap {
+namespace {
+
+/// The null files' ℓ of a group, its α/2 and 1 − α/2 quantiles (the band
+/// the groups plot draws); none when no null file has the group.
+template <class Pick>
+std::optional<std::pair<double, double>> group_band(const std::vector<LogRatios>& null_log_ratios, const Pick& pick,
+                                                    double alpha) {
+  std::vector<double> v;
+  for (const LogRatios& nl : null_log_ratios)
+    if (const double x = pick(nl); std::isfinite(x)) v.push_back(x);
+  if (v.empty()) return std::nullopt;
+  std::sort(v.begin(), v.end());
+  const auto at = [&](double q) { return v[static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)))]; };
+  return std::pair{at(0.5 * alpha), at(1 - 0.5 * alpha)};
+}
+
+}  // namespace
+
+void add_own_noise_bands(std::vector<GroupResult>& groups, const std::vector<LogRatios>& own_noise_log_ratios,
+                         double alpha) {
+  for (GroupResult& r : groups) {
+    const auto k = static_cast<std::size_t>(r.group);
+    const auto b = r.coherent ? group_band(own_noise_log_ratios, [k](const LogRatios& nl) { return nl.coherent[k]; }, alpha)
+                              : group_band(own_noise_log_ratios, [k](const LogRatios& nl) { return nl.scatter[k]; }, alpha);
+    if (b) std::tie(r.own_noise_low, r.own_noise_high) = *b;
+  }
+}
 
 std::vector<GroupResult> group_results(const Pooled& observed, const NullCalibration& calibration,
                                        const std::vector<LogRatios>& null_log_ratios, double alpha) {
@@ -28,17 +58,8 @@ std::vector<GroupResult> group_results(const Pooled& observed, const NullCalibra
     }
     return (1.0 + static_cast<double>(above)) / (1.0 + static_cast<double>(null_log_ratios.size()));
   };
-  // The null files' ℓ of a group, its α/2 and 1 − α/2 quantiles (the band
-  // the groups plot draws).
   const auto band = [&](const auto& pick, GroupResult& r) {
-    std::vector<double> v;
-    for (const LogRatios& nl : null_log_ratios)
-      if (const double x = pick(nl); std::isfinite(x)) v.push_back(x);
-    if (v.empty()) return;
-    std::sort(v.begin(), v.end());
-    const auto at = [&](double q) { return v[static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)))]; };
-    r.null_low = at(0.5 * alpha);
-    r.null_high = at(1 - 0.5 * alpha);
+    if (const auto b = group_band(null_log_ratios, pick, alpha)) std::tie(r.null_low, r.null_high) = *b;
   };
   std::vector<GroupResult> out;
   for (int g = 0; g < runs::kGroupCount; ++g) {

@@ -16,6 +16,12 @@ namespace insmc::gap {
 std::vector<GroupResult> group_results(const Pooled& observed, const NullCalibration& calibration,
                                        const std::vector<LogRatios>& null_log_ratios, double alpha);
 
+/// Each group's band of ℓ over null files of the sensor's own noise
+/// through the import, read with the model's expectations
+/// (null_file_log_ratios): where that noise alone puts the group.
+void add_own_noise_bands(std::vector<GroupResult>& groups, const std::vector<LogRatios>& own_noise_log_ratios,
+                         double alpha);
+
 /// The groups where the data show less than the model (ℓ < 0) beyond what
 /// the null files show there (lower-tail p < alpha), most negative first;
 /// when none is beyond alone, the most negative one.

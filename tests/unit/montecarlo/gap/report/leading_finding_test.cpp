@@ -72,5 +72,66 @@ TEST(LeadingFinding, APessimisticModelIsSaidWhenNoGapIsAbove) {
   EXPECT_TRUE(has(leading_finding(d), "pessimistic")) << leading_finding(d);
 }
 
+/// Records through the import: significant against the model alone (G+
+/// 20.6), not beyond the unit's own noise (G+ 0.445, p 0.131).
+Diagnosis imported(double gyro_ratio, double accel_ratio) {
+  Diagnosis d = agreeing();
+  d.raw_gyro_ratio = gyro_ratio;
+  d.raw_accel_ratio = accel_ratio;
+  d.against_model = {true, 20.6, 0.9, 0.0005, true, 20.6, 0.9, 0.4};
+  d.unmodelled_gap = 0.445;
+  d.p_value = 0.131;
+  d.significant = false;
+  return d;
+}
+
+TEST(LeadingFinding, AUnitWithinThePriorsWhoseGapIsItsOwnNoiseIsSaidToBe) {
+  const std::string f = leading_finding(imported(0.04, 0.02));
+  EXPECT_TRUE(has(f, "The gap against the model is the unit's own sensor noise")) << f;
+  EXPECT_TRUE(has(f, "(raw-sensor stage: within them)")) << f;
+  EXPECT_FALSE(has(f, "An unmodelled effect")) << f;
+  // Both verdicts, the model's first.
+  const auto model = f.find("Against the model: a significant gap (G+ = 20.6, p = 0.0005)");
+  const auto own = f.find("against the unit's own noise through the import: no significant gap (G+ = 0.445, p = 0.131)");
+  ASSERT_NE(model, std::string::npos) << f;
+  ASSERT_NE(own, std::string::npos) << f;
+  EXPECT_LT(model, own);
+  // Between 1 and the "far" factor: the ratio, not "within".
+  EXPECT_FALSE(has(leading_finding(imported(1.5, 0.5)), "within them")) << leading_finding(imported(1.5, 0.5));
+}
+
+TEST(LeadingFinding, AnImportedUnitThatAgreesWithBothNullsIsSaidToAgreeWithBoth) {
+  Diagnosis d = imported(0.04, 0.02);
+  d.against_model.significant = false;
+  d.against_model.p_value = 0.3;
+  const std::string f = leading_finding(d);
+  EXPECT_TRUE(has(f, "agree with the model and with the unit's own noise")) << f;
+  EXPECT_TRUE(has(f, "Against the model: no significant gap")) << f;
+}
+
+TEST(LeadingFinding, AnEffectBeyondTheUnitsOwnNoiseIsNamedWithBothVerdicts) {
+  Diagnosis d = imported(0.04, 0.02);
+  d.p_value = 0.002;
+  d.significant = true;
+  d.ranked = true;
+  d.top = "thermal_transient";
+  CandidateResult c;
+  c.effect = "thermal_transient";
+  c.shrink = 0.7;
+  d.ranking.push_back(c);
+  const std::string f = leading_finding(d);
+  EXPECT_TRUE(has(f, "An unmodelled effect: thermal_transient")) << f;
+  EXPECT_TRUE(has(f, "against the unit's own noise through the import: a significant gap (G+ = 0.445, p = 0.002)")) << f;
+}
+
+TEST(LeadingFinding, AUnitOutsideThePriorsGivesBothVerdictsAfterItsRatios) {
+  const std::string f = leading_finding(imported(618, 3.8));
+  const auto ratios = f.find("gyros' noise is 618 times");
+  const auto model = f.find("Against the model:");
+  ASSERT_NE(ratios, std::string::npos) << f;
+  ASSERT_NE(model, std::string::npos) << f;
+  EXPECT_LT(ratios, model);
+}
+
 }  // namespace
 }  // namespace insmc::gap
