@@ -88,18 +88,16 @@ mc::Json verdict_json(const Verdict& v) {
   j["value"] = v.gap;
   j["null_median"] = v.median;
   j["null_critical"] = v.gap_critical;
-  mc::Json more = mc::Json::object();
-  more["value"] = v.more_value;
-  more["critical"] = v.more_critical;
-  more["p_value"] = v.more_p;
-  more["significant"] = v.more_significant;
-  j["more"] = more;
-  mc::Json less = mc::Json::object();
-  less["value"] = v.less_value;
-  less["critical"] = v.less_critical;
-  less["p_value"] = v.less_p;
-  less["significant"] = v.less_significant;
-  j["less"] = less;
+  const auto one_sided = [](double value, double critical, double p_value, bool significant) {
+    mc::Json side = mc::Json::object();
+    side["value"] = value;
+    side["critical"] = critical;
+    side["p_value"] = p_value;
+    side["significant"] = significant;
+    return side;
+  };
+  j["more"] = one_sided(v.more_value, v.more_critical, v.more_p, v.more_significant);
+  j["less"] = one_sided(v.less_value, v.less_critical, v.less_p, v.less_significant);
   return j;
 }
 
