@@ -5,6 +5,7 @@
 
 #include <boost/math/distributions/binomial.hpp>
 #include <cmath>
+#include <cstdio>
 #include <gtest/gtest.h>
 
 #include "tests/unit/lib/noise/synthetic_noise.h"
@@ -128,6 +129,40 @@ TEST(NoiseFit, WhiteGaussMarkovAndRandomWalkAreKeptTogether) {
   // 0.001 quantile of each.
   const double lo = boost::math::quantile(boost::math::binomial(together, confidence), 0.001);
   for (int t = 0; t < 4; ++t) EXPECT_GE(covered[t], lo) << "interval " << t << " (N, σ, K, T_c)";
+}
+
+TEST(NoiseFit, NavigationGradeWhiteNoiseAndRandomWalkCoverAtTheirRate) {
+  // A navigation-grade gyro, 2 h at 10 Hz: white noise 0.18 deg/h/√Hz
+  // (0.003 deg/√h), a rate random walk of 0.1 deg/h/√h and a Gauss–Markov
+  // bias of 0.01 deg/h over 300 s (the grade of
+  // tests/statistical/noise_warmup_false_alarm_test.cpp). The white noise and
+  // the walk each dominate decades of τ and must be kept and cover; the
+  // Gauss–Markov term is at its peak 6 % of the Allan variance under the walk
+  // while a level's estimate there scatters about 30 %, so 2 h cannot show it
+  // and it is not asked for (docs/noise.md §7).
+  constexpr double kDegph = 3.14159265358979323846 / 180 / 3600;  // rad/s
+  const test::SyntheticNoise truth{.white = 0.18 * kDegph, .random_walk = 0.1 / 60 * kDegph,
+                                   .gm_sigma = 0.01 * kDegph, .gm_time_s = 300};
+  const int files = 12;
+  const double confidence = 0.9;
+  int white_kept = 0, walk_kept = 0, white_cov = 0, walk_cov = 0;
+  for (int f = 0; f < files; ++f) {
+    const NoiseFit fit = fit_series(truth, 72000, 0.1, 5000 + static_cast<std::uint64_t>(f), confidence);
+    if (const TermFit* w = find(fit, NoiseTerm::kWhiteRate)) {
+      ++white_kept;
+      white_cov += w->lower_si <= truth.white && truth.white <= w->upper_si;
+    }
+    if (const TermFit* k = find(fit, NoiseTerm::kRateRandomWalk)) {
+      ++walk_kept;
+      walk_cov += k->lower_si <= truth.random_walk && truth.random_walk <= k->upper_si;
+    }
+  }
+  EXPECT_EQ(white_kept, files);
+  EXPECT_GE(walk_kept, files - 1);
+  EXPECT_GE(white_cov, boost::math::quantile(boost::math::binomial(white_kept, confidence), 0.001)) << white_cov;
+  EXPECT_GE(walk_cov, boost::math::quantile(boost::math::binomial(walk_kept, confidence), 0.001)) << walk_cov;
+  std::printf("navigation grade, %d files: white kept %d covering %d, walk kept %d covering %d\n", files, white_kept,
+              white_cov, walk_kept, walk_cov);
 }
 
 TEST(NoiseFit, ARecordingNoModelFitsIsReportedAsSuchNotAnError) {
