@@ -19,6 +19,7 @@
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
 #include "montecarlo/runs/simulation/record_simulation.h"
+#include "montecarlo/gap/diagnosis_options.h"
 #include "montecarlo/gap/validation/foreign_layout.h"
 #include "montecarlo/sampler/sampler.h"
 
@@ -66,7 +67,7 @@ void check_simulated_rows(const po::variables_map& vm, int runs, const TestRunOp
 int run_simulate(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("out", po::value<std::string>(), "record file to write (required)")(
-      "runs", po::value<int>()->default_value(20), "number of runs (alignment, test run, navigation), >= 1")(
+      "runs", po::value<int>()->default_value(20), "number of runs (alignment, test run, navigation), 1 to 200 (the runs one gap diagnosis takes)")(
       "seed", po::value<std::string>()->default_value("1"), "seed; run i is a pure function of (seed, i)")(
       "system", po::value<std::string>()->default_value("1"), "alignment system: 1 or 2")(
       "scheme", po::value<std::string>()->default_value("none"), "compensation scheme (none: uncompensated)")(
@@ -88,9 +89,13 @@ int run_simulate(const Args& args) {
   if (!vm) return 0;
   if (!vm->count("out")) throw InputError("--out", "(missing)", "give the record file to write");
   const int runs = (*vm)["runs"].as<int>();
-  // The record reader's own cap: every file simulate writes can be read back.
-  if (runs < 1 || static_cast<std::size_t>(runs) > kMaxRecordRuns)
-    throw InputError("--runs", std::to_string(runs), fmt::format("must lie in [1, {}]", kMaxRecordRuns));
+  // Every file simulate writes can be read back by every command that reads
+  // records: the diagnosis takes the fewest runs (the record reader 10,000).
+  static_assert(gap::kMaxDiagnosedRuns <= kMaxRecordRuns);
+  if (runs < 1 || static_cast<std::size_t>(runs) > gap::kMaxDiagnosedRuns)
+    throw InputError("--runs", std::to_string(runs),
+                     fmt::format("must lie in [1, {}]: a record file for insmc gap holds at most {} runs",
+                                 gap::kMaxDiagnosedRuns, gap::kMaxDiagnosedRuns));
   const std::uint64_t seed = read_count(*vm, "seed");
   const System system = parse_system((*vm)["system"].as<std::string>(), "--system");
   const Scheme scheme = parse_scheme((*vm)["scheme"].as<std::string>());

@@ -95,6 +95,8 @@ TEST(HostileInput, HugeAndTinyValuesAreRefusedBeforeAnyWork) {
       {"simulate --effect gyro_drift_instability:tau=1e300s" + rec, "gyro_drift_instability.tau"},
       {"simulate --step 1e-300s" + rec, "step"},
       {"simulate --runs 1000000000" + rec, "--runs"},
+      // one more than gap diagnoses at once: the file would be refused by its reader
+      {"simulate --runs 201" + rec, "--runs"},
       {"bench --samples 18446744073709551615", "--samples"},
       {"bench --threads 100000", "--threads"},
       {"gap-validate --quick --effect sway --magnitudes 1000", "sway.accel_rms"},

@@ -99,7 +99,7 @@ TEST(Outputs, DevicesAndFifosAreRefusedBeforeTheWorkAndLeftAlone) {
   const std::string args = "run --samples 100000000 --checkpoint " + fifo;
   expect_refused(run_insmc(args), "--checkpoint", fifo, args);
   EXPECT_TRUE(fs::is_fifo(fifo));
-  const std::string sim = "simulate --runs 2000 --out /dev/null";
+  const std::string sim = "simulate --runs 200 --out /dev/null";
   expect_refused(run_insmc(sim), "--out", "/dev/null", sim);
 }
 
@@ -118,9 +118,9 @@ TEST(Outputs, PathsThatCannotBeWrittenExitTwoBeforeTheWork) {
       {"covariance --out " + under_file, "--out", under_file},
       {"tables --out " + under_file, "--out", under_file},
       {"gap-validate --out " + under_file, "--out", under_file},
-      {"simulate --runs 2000 --out " + dir.str() + "/existing_dir", "--out", dir.str() + "/existing_dir"},
-      {"simulate --runs 2000 --out " + dir.str() + "/new.csv/", "--out", dir.str() + "/new.csv/"},
-      {"simulate --runs 2000 --out " + under_file + "/runs.csv", "--out", under_file + "/runs.csv"},
+      {"simulate --runs 200 --out " + dir.str() + "/existing_dir", "--out", dir.str() + "/existing_dir"},
+      {"simulate --runs 200 --out " + dir.str() + "/new.csv/", "--out", dir.str() + "/new.csv/"},
+      {"simulate --runs 200 --out " + under_file + "/runs.csv", "--out", under_file + "/runs.csv"},
       {"run --samples 100000000 --checkpoint " + dir.str() + "/existing_dir", "--checkpoint",
        dir.str() + "/existing_dir"},
       {"run --samples 100000000 --checkpoint " + under_file + "/x.ck", "--checkpoint", under_file + "/x.ck"},
