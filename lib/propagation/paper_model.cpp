@@ -46,16 +46,6 @@ ShortRunMatrices paper_short_run_matrices(System system, const ModelOptions& o) 
   return m;
 }
 
-ShortRunMatrices short_run_matrices_from_k(const KMatrices& k, const ShortRunMatrices& printed,
-                                           const ModelOptions& o) {
-  ShortRunMatrices m = printed;
-  m.u2 = k[0] - printed.initial_position_m / o.radius_m;
-  m.u3 = k[1] + k[2];
-  m.u4 = k[3] + 2 * k[4];
-  m.u5 = -k[2] + 3 * k[5] + k[6] + 3 * k[7];
-  return m;
-}
-
 Sensitivity3 short_run_position_map(const ShortRunMatrices& m, double t, const ModelOptions& o) {
   const ShortRunFunctions f = short_run_functions_3_29(t, o);
   const double r0 = o.radius_m;

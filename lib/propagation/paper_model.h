@@ -19,11 +19,6 @@ struct ShortRunMatrices {
 
 ShortRunMatrices paper_short_run_matrices(System system, const ModelOptions& options);
 
-/// The U matrices as the exact sums of the K matrices that (3.29b–e) name:
-/// U2 = K1 − δr(0)/r0, U3 = K2 + K3, U4 = K4 + 2K5, U5 = −K3 + 3K6 + K7 + 3K8.
-ShortRunMatrices short_run_matrices_from_k(const KMatrices& k, const ShortRunMatrices& printed,
-                                           const ModelOptions& options);
-
 /// S(t), the position error δr^{a'}(t) per unit of each uncertainty by (3.29). [m]
 Sensitivity3 short_run_position_map(const ShortRunMatrices& m, double t_s,
                                     const ModelOptions& options);

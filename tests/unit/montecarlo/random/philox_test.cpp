@@ -283,10 +283,14 @@ TEST(FillUniform01, DrawMajorIsTheTransposeOfSampleMajor) {
 }
 
 TEST(FillUniform01, EmptyRequestWritesNothing) {
-  std::vector<double> none;
+  // An empty span at the front of a guarded buffer: nothing past it changes.
+  std::vector<double> guarded(64, -7.0);
+  const std::span<double> none(guarded.data(), 0);
   fill_uniform01(1, Stream::Sway, 0, 0, 10, none);
   fill_uniform01(1, Stream::Sway, 0, 10, 0, none);
-  SUCCEED();
+  fill_uniform01_draw_major(1, Stream::Sway, 0, 0, 10, none);
+  fill_uniform01_draw_major(1, Stream::Sway, 0, 10, 0, none);
+  for (const double v : guarded) EXPECT_EQ(v, -7.0);
 }
 
 // ---------------------------------------------------------------- uniform transforms
