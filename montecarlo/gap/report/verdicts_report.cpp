@@ -118,7 +118,7 @@ std::string verdicts_markdown(const Diagnosis& d) {
                         fmt::join(d.pessimistic.where, ", "))
           : ": not beyond the null";
   if (!has_own_noise_verdict(d))
-    return fmt::format("Against {}, judged on null files of {}.\n\n", model.name, model.null) +
+    return fmt::format("**Against {}**, judged on null files of {}. ", model.name, model.null) +
            verdict_line(model, d.runs, d.alpha) + pessimistic + prior_scale_sentence(d.pessimistic) + ".\n\n";
   const Verdict own = against_own_noise(d);
   std::string md = fmt::format(

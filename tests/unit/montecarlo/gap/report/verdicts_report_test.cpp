@@ -46,7 +46,7 @@ TEST(Verdicts, RecordsOfTheModelItselfHaveOneVerdictAgainstTheModel) {
   d.p_value = 0.0005;
   d.significant = true;
   const std::string md = verdicts_markdown(d);
-  EXPECT_TRUE(has(md, "Against the model, judged on null files of truth-level runs of the model itself")) << md;
+  EXPECT_TRUE(has(md, "**Against the model**, judged on null files of truth-level runs of the model itself")) << md;
   EXPECT_FALSE(has(md, "own noise")) << md;
   EXPECT_TRUE(has(md, "**significant gap**")) << md;
   const std::string j = verdicts_json(d).dump(-1);
