@@ -16,26 +16,9 @@ namespace {
 
 int line_count(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
 
-// AddressSanitizer reserves terabytes of address space: the memory limit
-// applies to the plain build only (the sanitizer build checks the rest).
-#if defined(__SANITIZE_ADDRESS__)  // g++
-constexpr bool kLimitMemory = false;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)  // clang
-constexpr bool kLimitMemory = false;
-#else
-constexpr bool kLimitMemory = true;
-#endif
-#else
-constexpr bool kLimitMemory = true;
-#endif
-
 /// Runs insmc under `timeout` (and a 4 GB address-space limit) so that a
 /// hang or runaway allocation fails the test instead of the whole suite.
-ProgramResult run_bounded(const std::string& args, int seconds = 120) {
-  const std::string limit = kLimitMemory ? "ulimit -v 4194304; " : "";
-  return run_shell(limit + "exec timeout -s KILL " + std::to_string(seconds) + " " + insmc_path() + " " + args);
-}
+ProgramResult run_bounded(const std::string& args, int seconds = 120) { return run_limited(args, seconds, true); }
 
 struct Refusal {
   std::string args;

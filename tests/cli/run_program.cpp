@@ -52,10 +52,25 @@ ProgramResult run_insmc(const std::string& args) {
   return run_shell(command);
 }
 
-ProgramResult run_limited(const std::string& args, int seconds) {
+bool address_space_limit_applies() {
+#if defined(__SANITIZE_ADDRESS__)  // g++
+  return false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)  // clang
+  return false;
+#else
+  return true;
+#endif
+#else
+  return true;
+#endif
+}
+
+ProgramResult run_limited(const std::string& args, int seconds, bool limit_4gb) {
   TempDir io;
-  const std::string cmd = "exec timeout -s KILL " + std::to_string(seconds) + " " + insmc_path() + " " + args + " >" +
-                          (io.path() / "out").string() + " 2>" + (io.path() / "err").string() + " </dev/null";
+  const std::string limit = limit_4gb && address_space_limit_applies() ? "ulimit -v 4194304; " : "";
+  const std::string cmd = limit + "exec timeout -s KILL " + std::to_string(seconds) + " " + insmc_path() + " " + args +
+                          " >" + (io.path() / "out").string() + " 2>" + (io.path() / "err").string() + " </dev/null";
   const char* argv[] = {"/bin/sh", "-c", cmd.c_str(), nullptr};
   pid_t pid = -1;
   if (posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0)

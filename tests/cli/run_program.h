@@ -25,10 +25,17 @@ inline bool has(const std::string& text, const std::string& what) { return text.
 /// A whole /bin/sh command line (e.g. insmc under mpirun), run to the end.
 ProgramResult run_shell(const std::string& command);
 
+/// Whether run_limited's address-space limit applies: not under
+/// AddressSanitizer, which reserves terabytes of address space (the
+/// sanitizer build checks the rest).
+bool address_space_limit_applies();
+
 /// insmc with `args` (through /bin/sh), killed after `seconds`; the exit
 /// code is 128 + the signal when a signal ended it, and peak_rss_kb the
-/// largest resident size it reached (getrusage of the waited child).
-ProgramResult run_limited(const std::string& args, int seconds);
+/// largest resident size it reached (getrusage of the waited child). With
+/// `limit_4gb`, under a 4 GB address-space limit where it applies, so that a
+/// runaway allocation fails fast instead of taking the machine.
+ProgramResult run_limited(const std::string& args, int seconds, bool limit_4gb = false);
 
 /// A fresh empty folder under the system temp dir, removed by the destructor.
 class TempDir {

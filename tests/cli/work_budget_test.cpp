@@ -6,22 +6,14 @@
 // of resident memory (wait4), under a 4 GB address-space limit.
 #include <gtest/gtest.h>
 
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
-#include <stdexcept>
 #include <string>
 
 #include "tests/cli/run_program.h"
-
-extern char** environ;
 
 namespace insmc::testing {
 namespace {
@@ -31,38 +23,10 @@ namespace fs = std::filesystem;
 constexpr long kMaxRssKb = 1L << 20;  // 1 GB
 constexpr int kMaxSeconds = 60;
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kLimitMemory = false;  // the sanitizer reserves terabytes of address space
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kLimitMemory = false;
-#else
-constexpr bool kLimitMemory = true;
-#endif
-#else
-constexpr bool kLimitMemory = true;
-#endif
-
 /// insmc with `args` under `timeout` and a 4 GB address-space limit (a
-/// runaway allocation fails fast), waited for with wait4: exit code (128 +
-/// signal when killed), stdout, stderr and the peak resident size.
+/// runaway allocation fails fast), waited for with wait4.
 ProgramResult run_budgeted(const std::string& args, int max_seconds = kMaxSeconds) {
-  TempDir io;
-  const std::string cmd = std::string(kLimitMemory ? "ulimit -v 4194304; " : "") + "exec timeout -s KILL " +
-                          std::to_string(max_seconds) + " " + insmc_path() + " " + args + " >" +
-                          (io.path() / "out").string() + " 2>" + (io.path() / "err").string() + " </dev/null";
-  const char* argv[] = {"/bin/sh", "-c", cmd.c_str(), nullptr};
-  pid_t pid = -1;
-  if (posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0)
-    throw std::runtime_error("posix_spawn failed: " + cmd);
-  int status = 0;
-  struct rusage usage {};
-  while (wait4(pid, &status, 0, &usage) < 0)
-    if (errno != EINTR) throw std::runtime_error("wait4 failed");
-  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
-  ProgramResult r{code, read_file(io.path() / "out"), read_file(io.path() / "err")};
-  r.peak_rss_kb = usage.ru_maxrss;
-  return r;
+  return run_limited(args, max_seconds, true);
 }
 
 /// Exit 0 within the limits.
