@@ -42,8 +42,12 @@ void locate_gap(Diagnosis& d, const runs::PreparedRuns& p, const std::vector<std
   std::vector<const runs::Layout*> own_layouts;
   std::vector<const Eigen::VectorXd*> own_expected;
   for (const int l : own_noise->layout_of) {
-    own_layouts.push_back(&p.layouts[static_cast<std::size_t>(l)]);
-    own_expected.push_back(&analysers[static_cast<std::size_t>(l)]->expected_square());
+    // A null run placed in a layout the base analysers predate has no
+    // expectation here: no own-noise Allan band rather than a guess.
+    const auto k = static_cast<std::size_t>(l);
+    if (k >= analysers.size() || !analysers[k]) return;
+    own_layouts.push_back(&p.layouts[k]);
+    own_expected.push_back(&analysers[k]->expected_square());
   }
   const std::vector<AllanCurve> own =
       allan_curves(layouts, z, expected, own_layouts, own_noise->z, own_expected, p.site.filter_interval_s);
