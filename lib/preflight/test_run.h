@@ -67,7 +67,9 @@ inline constexpr PhysicalRange kFilterInterval{0.1, 2 * 3600.0};
 inline constexpr PhysicalRange kDvPulse{0.0, 1.0};
 /// A position computer's least count: from exact (0) to a kilometre.
 inline constexpr PhysicalRange kPositionResolution{0.0, 1000.0};
-inline constexpr PhysicalRange kRealignmentDuration{0.0, 6 * 3600.0};
+/// A realignment takes time: at least a second (a record file's navigation
+/// starts after it, nav_start_s > T; a duration of 1e-300 s left them equal).
+inline constexpr PhysicalRange kRealignmentDuration{1.0, 6 * 3600.0};
 inline constexpr PhysicalRange kAlignmentAverage{0.0, 6 * 3600.0, true};
 /// One torquer pulse: from exact (0) to 1 mrad (≈ 206 arcsec; real ones are about 1 arcsec).
 inline constexpr PhysicalRange kTorquerPulse{0.0, 1e-3};

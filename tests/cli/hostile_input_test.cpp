@@ -80,6 +80,8 @@ TEST(HostileInput, HugeAndTinyValuesAreRefusedBeforeAnyWork) {
       {"simulate --runs 1000000000" + rec, "--runs"},
       // one more than gap diagnoses at once: the file would be refused by its reader
       {"simulate --runs 201" + rec, "--runs"},
+      // a realignment of no duration: the records' navigation would start at the test's end
+      {"simulate --system 2 --scheme 5.1.1 --realignment-duration 1e-300s" + rec, "--realignment-duration"},
       {"bench --samples 18446744073709551615", "--samples"},
       {"bench --threads 100000", "--threads"},
       {"gap-validate --quick --effect sway --magnitudes 1000", "sway.accel_rms"},
