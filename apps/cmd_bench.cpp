@@ -15,10 +15,10 @@
 #include "apps/progress.h"
 #include "lib/common/input_error.h"
 #include "lib/common/version.h"
-#include "montecarlo/bench/pipeline_throughput.h"
-#include "montecarlo/bench/throughput.h"
-#include "montecarlo/bench/truth_throughput.h"
-#include "montecarlo/write/json.h"
+#include "montecarlo/study/bench/pipeline_throughput.h"
+#include "montecarlo/study/bench/throughput.h"
+#include "montecarlo/study/bench/truth_throughput.h"
+#include "montecarlo/report/json.h"
 
 namespace insmc::app {
 namespace {

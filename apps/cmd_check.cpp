@@ -11,10 +11,10 @@
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
 #include "lib/units/units.h"
-#include "montecarlo/check/bounds_file.h"
-#include "montecarlo/write/interval_format.h"
-#include "montecarlo/engine/engine.h"
-#include "montecarlo/write/csv.h"
+#include "montecarlo/study/check/bounds_file.h"
+#include "montecarlo/report/interval_format.h"
+#include "montecarlo/study/engine/engine.h"
+#include "montecarlo/report/csv.h"
 
 namespace insmc::app {
 namespace {

@@ -16,7 +16,7 @@
 #include "lib/preflight/test_run.h"
 #include "lib/records/record_io.h"
 #include "lib/units/physical_range.h"
-#include "montecarlo/compensate/compensate_report.h"
+#include "montecarlo/records/compensate/compensate_report.h"
 
 namespace insmc::app {
 namespace {

@@ -8,8 +8,8 @@
 #include "apps/stdout_choice.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
-#include "montecarlo/study/study_map.h"
-#include "montecarlo/write/sensitivity_table.h"
+#include "montecarlo/study/model/study_map.h"
+#include "montecarlo/study/write/sensitivity_table.h"
 
 namespace insmc::app {
 namespace {

@@ -6,8 +6,8 @@
 #include "lib/common/input_error.h"
 #include "lib/truth/effect.h"
 #include "lib/units/quantity.h"
-#include "montecarlo/write/csv.h"
-#include "montecarlo/write/markdown.h"
+#include "montecarlo/report/csv.h"
+#include "montecarlo/report/markdown.h"
 
 namespace insmc::app {
 

@@ -10,9 +10,9 @@
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 #include "lib/records/record_io.h"
-#include "montecarlo/gap/diagnosis.h"
-#include "montecarlo/gap/report/report.h"
-#include "montecarlo/runs/records/merge_records.h"
+#include "montecarlo/records/gap/diagnosis.h"
+#include "montecarlo/records/gap/report/report.h"
+#include "montecarlo/records/runs/files/merge_records.h"
 
 namespace insmc::app {
 

@@ -6,12 +6,12 @@
 
 #include "apps/cli_common.h"
 #include "apps/output_paths.h"
-#include "montecarlo/write/plot/matrix_figure.h"
+#include "montecarlo/report/plot/matrix_figure.h"
 #include "apps/progress.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
 #include "lib/truth/effect.h"
-#include "montecarlo/gap/validation/validation.h"
+#include "montecarlo/records/gap/validation/validation.h"
 
 namespace insmc::app {
 

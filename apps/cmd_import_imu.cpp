@@ -25,7 +25,7 @@
 #include "lib/records/record_io.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
-#include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/records/gap/diagnosis.h"
 
 namespace insmc::app {
 namespace {

@@ -12,7 +12,7 @@
 #include "lib/common/input_text.h"
 #include "lib/noise/noise_analysis.h"
 #include "lib/units/quantity.h"
-#include "montecarlo/noise/noise_report.h"
+#include "montecarlo/records/noise/noise_report.h"
 
 namespace insmc::app {
 
@@ -92,7 +92,7 @@ int run_noise(const Args& args) {
   }
   // The sample grid is checked first (a refusal costs no fit); then each
   // recording's still attitudes, and its multi-position calibration when it
-  // holds enough of them (montecarlo/noise/calibration_report.h).
+  // holds enough of them (montecarlo/records/noise/calibration_report.h).
   const noise::SensorRecording rec = noise::make_recording(recordings);
   std::vector<RecordingCalibration> calibrations;
   for (const ImuSamples& r : recordings)

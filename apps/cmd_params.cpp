@@ -6,9 +6,9 @@
 #include "apps/cli_common.h"
 #include "apps/study_options.h"
 #include "lib/uncertainty/catalogue.h"
-#include "montecarlo/write/csv.h"
-#include "montecarlo/write/json.h"
-#include "montecarlo/write/markdown.h"
+#include "montecarlo/report/csv.h"
+#include "montecarlo/report/json.h"
+#include "montecarlo/report/markdown.h"
 
 namespace insmc::app {
 

@@ -3,7 +3,7 @@
 // order (paired Monte Carlo on the same samples), and the values of the
 // decisive assumptions at which the first place changes (the covariance
 // level, exact). Writes ranking.csv, breakeven.csv, rank.md, rank.json and
-// rank.gp/.svg/.png (montecarlo/rank/).
+// rank.gp/.svg/.png (montecarlo/study/rank/).
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -14,8 +14,8 @@
 #include "apps/study_options.h"
 #include "apps/sweep.h"
 #include "lib/common/input_error.h"
-#include "montecarlo/engine/engine.h"
-#include "montecarlo/rank/rank_files.h"
+#include "montecarlo/study/engine/engine.h"
+#include "montecarlo/study/rank/rank_files.h"
 
 namespace insmc::app {
 namespace {

@@ -1,8 +1,8 @@
 // insmc run: the Monte Carlo study. Prints a summary of the envelope
 // (apps/stdout_choice.h), writes the output files of the README's contract
 // into --out DIR. With --checkpoint it saves its progress
-// (montecarlo/study/checkpoint.h) and --resume continues it; under MPI the
-// ranks share the blocks (montecarlo/study/study_runner.h, apps/ranks.h).
+// (montecarlo/study/run/checkpoint.h) and --resume continues it; under MPI the
+// ranks share the blocks (montecarlo/study/run/study_runner.h, apps/ranks.h).
 #include <algorithm>
 #include <chrono>
 #include <fmt/ranges.h>
@@ -28,13 +28,13 @@
 #include "lib/common/version.h"
 #include "lib/units/quantity.h"
 #include "lib/uncertainty/catalogue.h"
-#include "montecarlo/engine/engine.h"
+#include "montecarlo/study/engine/engine.h"
 #include "lib/compensation/extended_vector.h"
-#include "montecarlo/sampler/sampler.h"
-#include "montecarlo/study/checkpoint.h"
-#include "montecarlo/study/run_file.h"
-#include "montecarlo/write/csv.h"
-#include "montecarlo/write/plot/gnuplot.h"
+#include "montecarlo/study/sampler/sampler.h"
+#include "montecarlo/study/run/checkpoint.h"
+#include "montecarlo/study/run/run_file.h"
+#include "montecarlo/report/csv.h"
+#include "montecarlo/report/plot/gnuplot.h"
 
 namespace insmc::app {
 namespace {
@@ -69,7 +69,7 @@ int replay(const mc::StudyConfig& c, const mc::StudyLayout& l, const mc::StudyMa
 }
 
 /// settings_json with the arguments that made the numbers (apps/option_sources.h,
-/// read back by montecarlo/study/run_file.h).
+/// read back by montecarlo/study/run/run_file.h).
 mc::Json run_settings(const mc::StudyConfig& config, const po::variables_map& vm, const po::options_description& opts) {
   mc::Json settings = mc::settings_json(config);
   mc::Json arguments = mc::Json::array();

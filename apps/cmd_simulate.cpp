@@ -18,10 +18,10 @@
 #include "lib/truth/simulator.h"
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
-#include "montecarlo/runs/simulation/record_simulation.h"
-#include "montecarlo/gap/diagnosis_options.h"
-#include "montecarlo/gap/validation/foreign_layout.h"
-#include "montecarlo/sampler/sampler.h"
+#include "montecarlo/records/runs/simulation/record_simulation.h"
+#include "montecarlo/records/gap/diagnosis_options.h"
+#include "montecarlo/records/gap/validation/foreign_layout.h"
+#include "montecarlo/study/sampler/sampler.h"
 
 namespace insmc::app {
 namespace {

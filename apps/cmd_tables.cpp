@@ -7,9 +7,9 @@
 #include "apps/cli_common.h"
 #include "apps/output_paths.h"
 #include "lib/common/input_error.h"
-#include "montecarlo/write/csv.h"
-#include "montecarlo/write/markdown.h"
-#include "montecarlo/write/plot/panel_figure.h"
+#include "montecarlo/report/csv.h"
+#include "montecarlo/report/markdown.h"
+#include "montecarlo/report/plot/panel_figure.h"
 #include "tables/generate.h"
 
 namespace insmc::app {

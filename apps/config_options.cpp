@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "apps/option_sources.h"
-#include "montecarlo/study/config_file.h"
+#include "montecarlo/study/run/config_file.h"
 
 namespace insmc::app {
 

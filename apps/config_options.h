@@ -1,6 +1,6 @@
 #pragma once
 /// The options of a `--config FILE`: each key of the INI file (read by
-/// montecarlo/study/config_file.h) names an option of the subcommand, by its
+/// montecarlo/study/run/config_file.h) names an option of the subcommand, by its
 /// long name. Every mistake is an InputError whose one-line message starts
 /// `FILE:LINE: ` and names the key.
 #include <boost/program_options.hpp>

@@ -1,6 +1,6 @@
 // MPI ranks for `insmc run` (compiled only with -DINSMC_MPI=ON): the block
 // range is split into contiguous rank shares by
-// montecarlo/study/study_runner.cpp; here the ranks' accumulator states are
+// montecarlo/study/run/study_runner.cpp; here the ranks' accumulator states are
 // gathered at rank 0 with their sizes (a sparse histogram's state differs in
 // size between ranks, so a fixed-size MPI reduction cannot carry them),
 // merged there in rank order (exactly: the sums are fixed-point, so any

@@ -11,8 +11,8 @@
 /// through one check (FileOptions), so a `--` separator or a word after it
 /// cannot smuggle an option past it. Here too the options a file keeps
 /// (explicit_arguments) and the options typed (given_options); the files
-/// themselves are read by montecarlo/study/config_file.h,
-/// montecarlo/study/run_file.h and montecarlo/study/checkpoint.h.
+/// themselves are read by montecarlo/study/run/config_file.h,
+/// montecarlo/study/run/run_file.h and montecarlo/study/run/checkpoint.h.
 #include <boost/program_options.hpp>
 #include <cstddef>
 #include <map>

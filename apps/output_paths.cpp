@@ -10,8 +10,8 @@
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
-#include "montecarlo/write/output_error.h"
-#include "montecarlo/write/plot/gnuplot.h"
+#include "montecarlo/report/output_error.h"
+#include "montecarlo/report/plot/gnuplot.h"
 
 namespace insmc::app {
 

@@ -3,15 +3,15 @@
 /// --checkpoint FILE): checked and locked before any work, so that a path
 /// the user can fix is refused at once with exit code 2 (InputError naming
 /// the option and the path), and written at the end as a whole
-/// (montecarlo/write/output_set.h, output_file.h; docs/outputs.md).
+/// (montecarlo/report/output_set.h, output_file.h; docs/outputs.md).
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "apps/cli_common.h"
-#include "montecarlo/write/output_file.h"
-#include "montecarlo/write/output_set.h"
+#include "montecarlo/report/output_file.h"
+#include "montecarlo/report/output_set.h"
 
 namespace insmc::app {
 

@@ -2,11 +2,11 @@
 /// The processes of one `insmc run`: a single process, or the ranks of an
 /// MPI job (only in a build with -DINSMC_MPI=ON, and only when launched by
 /// mpirun/srun). The interface the study runner uses is
-/// montecarlo/study/ranks.h; MPI stays in apps/mpi_ranks.cpp, so the default
+/// montecarlo/study/run/ranks.h; MPI stays in apps/mpi_ranks.cpp, so the default
 /// build needs no MPI.
 #include <memory>
 
-#include "montecarlo/study/ranks.h"
+#include "montecarlo/study/run/ranks.h"
 
 namespace insmc::app {
 

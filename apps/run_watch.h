@@ -1,11 +1,11 @@
 #pragma once
 /// A study's blocks run as the command line runs them: the library's runner
-/// (montecarlo/study/study_runner.h) with progress on stderr on rank 0
+/// (montecarlo/study/run/study_runner.h) with progress on stderr on rank 0
 /// (apps/progress.h) and, for a checkpointed run, SIGINT and SIGTERM
 /// stopping it between two blocks, followed by a checkpoint
 /// (apps/interrupt.h).
 #include "apps/ranks.h"
-#include "montecarlo/study/study_runner.h"
+#include "montecarlo/study/run/study_runner.h"
 
 namespace insmc::app {
 

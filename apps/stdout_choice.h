@@ -1,6 +1,6 @@
 #pragma once
 /// What `insmc run` and `insmc covariance` print on stdout: by default a
-/// compact summary (montecarlo/write/envelope_summary.h) and where the full
+/// compact summary (montecarlo/study/write/envelope_summary.h) and where the full
 /// tables are; --full the full table; --quiet nothing (the files are still
 /// written, errors still go to stderr); --format csv|json the machine output
 /// alone, unchanged, for scripts.

@@ -14,8 +14,8 @@ UncertaintyModel read_uncertainty_model(const po::variables_map& vm);
 
 }  // namespace insmc::app
 
-#include "montecarlo/study/study_config.h"
-#include "montecarlo/write/study_writer.h"
+#include "montecarlo/study/model/study_config.h"
+#include "montecarlo/study/write/study_writer.h"
 
 namespace insmc::app {
 

@@ -3,12 +3,12 @@
 /// (--test-duration 5min,10min,15min, --bound gyro_drift=1meru,3meru,10meru,
 /// --realignment-duration 5min,15min, ...) is a swept quantity; several
 /// sweep over their Cartesian product. Each point is a full study
-/// (montecarlo/study/sweep_study.h).
+/// (montecarlo/study/run/sweep_study.h).
 #include <string>
 #include <vector>
 
 #include "apps/cli_common.h"
-#include "montecarlo/study/sweep_study.h"
+#include "montecarlo/study/run/sweep_study.h"
 
 namespace insmc::app {
 

@@ -11,7 +11,7 @@ set -euo pipefail
 
 packages=(g++ cmake make libeigen3-dev libtbb-dev libboost-program-options-dev libboost-dev libfmt-dev nlohmann-json3-dev)
 # gnuplot renders the plots of `insmc run` (envelope, sweep) to SVG and PNG
-# from the script insmc writes beside them (montecarlo/write/plot/gnuplot.h).
+# from the script insmc writes beside them (montecarlo/report/plot/gnuplot.h).
 packages+=(gnuplot-nox)
 if [[ " $* " == *" --numpy "* ]]; then
   packages+=(python3 python3-numpy libopenblas0-pthread)

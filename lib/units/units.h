@@ -3,7 +3,7 @@
 ///
 /// SI inside: every quantity in lib/ and montecarlo/ is in metres, seconds,
 /// radians (and their products). The paper's units (ft, mg, meru, mrad, ppm,
-/// n.mi.) appear only at the edges (apps/, tables/, montecarlo/write/), via the
+/// n.mi.) appear only at the edges (apps/, tables/, montecarlo/report/), via the
 /// constants below, each named by both of its units.
 ///
 /// Constants the report does not print (tables/notes/errata.md#transcription-slips):

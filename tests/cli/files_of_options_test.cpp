@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "montecarlo/study/checkpoint.h"
+#include "montecarlo/study/run/checkpoint.h"
 #include "tests/cli/run_program.h"
 
 namespace insmc::testing {

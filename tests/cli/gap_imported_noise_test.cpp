@@ -3,7 +3,7 @@
 // (tests/unit/lib/noise/synthetic_noise.h, written apart from the
 // diagnosis's own synthesizer), tactical grade, several times Table 3.1. The
 // raw-sensor stage fits that noise, and the diagnosis's null goes through
-// the import with it (montecarlo/gap/null/import_null.h): such a sensor
+// the import with it (montecarlo/records/gap/null/import_null.h): such a sensor
 // matches its own noise, so it is not an unmodelled effect (false alarms
 // consistent with alpha), while against the model alone (Table 3.1, a
 // perfect sensor) its gap is significant: the null through the import is

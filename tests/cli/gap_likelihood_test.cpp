@@ -1,5 +1,5 @@
 // The maximum-likelihood side of `insmc gap`'s ranking
-// (montecarlo/gap/ranking/likelihood_ranking.h) on records of the truth
+// (montecarlo/records/gap/ranking/likelihood_ranking.h) on records of the truth
 // simulator: a withheld velocity random walk is fitted near its true value and
 // its held-out log-likelihood gain stands above its null reference; on records
 // of the model itself no candidate gains more than fitting noise allows.
@@ -12,7 +12,7 @@
 #include <string>
 
 #include "lib/records/record_io.h"
-#include "montecarlo/gap/diagnosis.h"
+#include "montecarlo/records/gap/diagnosis.h"
 #include "tests/cli/run_program.h"
 
 namespace insmc::testing {

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "lib/propagation/linear_model.h"
-#include "montecarlo/sampler/sampler.h"
+#include "montecarlo/study/sampler/sampler.h"
 #include "tests/cli/gap_null_files.h"
 #include "tests/cli/run_program.h"
 

@@ -1,4 +1,4 @@
-// The plots as gnuplot renders them (montecarlo/write/plot/): each panel's
+// The plots as gnuplot renders them (montecarlo/report/plot/): each panel's
 // frame holds every drawn element, each legend line has its data inside
 // the frame (not collapsed onto an edge, not empty), the PNG is a PNG, and
 // the shipped script renders the same SVG again.

@@ -13,7 +13,7 @@
 #include <numbers>
 #include <random>
 
-#include "montecarlo/gap/candidates/raw_limits.h"
+#include "montecarlo/records/gap/candidates/raw_limits.h"
 #include "tests/cli/run_program.h"
 
 namespace insmc::testing {

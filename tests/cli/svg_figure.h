@@ -1,5 +1,5 @@
 #pragma once
-// Reading back what gnuplot drew (montecarlo/write/plot/): the panels'
+// Reading back what gnuplot drew (montecarlo/report/plot/): the panels'
 // frames and each plotted element's coordinates, from the SVG. Plain string
 // scanning (std::regex trips GCC 12's -Wmaybe-uninitialized in the
 // sanitizer build).

@@ -1,6 +1,6 @@
 #include "tests/fuzz/fuzz_entry.h"
 
-#include "montecarlo/aggregate/accumulator_state.h"
+#include "montecarlo/study/aggregate/accumulator_state.h"
 
 #include <boost/program_options.hpp>
 
@@ -31,10 +31,10 @@
 #include "lib/records/record_io.h"
 #include "lib/truth/effect.h"
 #include "lib/units/quantity.h"
-#include "montecarlo/aggregate/byte_io.h"
-#include "montecarlo/check/bounds_file.h"
-#include "montecarlo/study/checkpoint.h"
-#include "montecarlo/study/run_file.h"
+#include "montecarlo/study/aggregate/byte_io.h"
+#include "montecarlo/study/check/bounds_file.h"
+#include "montecarlo/study/run/checkpoint.h"
+#include "montecarlo/study/run/run_file.h"
 
 namespace insmc::fuzz {
 namespace {

@@ -18,9 +18,9 @@ Outcome records(std::string_view data);
 /// parse_imu_csv; the first byte chooses units, rate or time column, and
 /// column names.
 Outcome imu(std::string_view data);
-/// check's bounds file (montecarlo/check/bounds_file.h).
+/// check's bounds file (montecarlo/study/check/bounds_file.h).
 Outcome bounds(std::string_view data);
-/// The --config INI reader (montecarlo/study/config_file.h) and its keys'
+/// The --config INI reader (montecarlo/study/run/config_file.h) and its keys'
 /// checks (apps/config_options.h) with options of every kind the
 /// subcommands use; then stored and notified as parse_args does.
 Outcome config(std::string_view data);
@@ -30,7 +30,7 @@ Outcome config(std::string_view data);
 Outcome checkpoint(std::string_view data);
 /// parse_quantity; the first byte chooses the dimension (or parse_rate_hz).
 Outcome quantity(std::string_view data);
-/// run.json's settings.arguments (montecarlo/study/run_file.h), as `run --from`
+/// run.json's settings.arguments (montecarlo/study/run/run_file.h), as `run --from`
 /// reads them: each element through the check of files of options
 /// (apps/option_sources.h) with the study's options, then stored.
 Outcome run_json(std::string_view data);

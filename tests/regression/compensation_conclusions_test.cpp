@@ -36,7 +36,7 @@
 #include <vector>
 
 #include "lib/uncertainty/catalogue.h"
-#include "montecarlo/engine/engine.h"
+#include "montecarlo/study/engine/engine.h"
 
 namespace insmc::mc {
 namespace {

@@ -1,4 +1,4 @@
-// Statistical test of `insmc compensate` (montecarlo/compensate/) on
+// Statistical test of `insmc compensate` (montecarlo/records/compensate/) on
 // truth-simulated units: 500 runs of the truth simulator (Table 3.1's
 // uncertainties drawn per run, ΔV pulses of 0.1 ft/s, position readout at
 // 3 ft, the scheme applied from the run's own test-run estimates), each
@@ -39,9 +39,9 @@
 #include "lib/compensation/truth_compensation.h"
 #include "lib/propagation/linear_model.h"
 #include "lib/propagation/paper_model.h"
-#include "montecarlo/compensate/compensate.h"
-#include "montecarlo/runs/simulation/record_simulation.h"
-#include "montecarlo/sampler/sampler.h"
+#include "montecarlo/records/compensate/compensate.h"
+#include "montecarlo/records/runs/simulation/record_simulation.h"
+#include "montecarlo/study/sampler/sampler.h"
 
 namespace insmc::mc {
 namespace {

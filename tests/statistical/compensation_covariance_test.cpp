@@ -66,9 +66,9 @@
 
 #include "lib/compensation/scheme.h"
 #include "lib/uncertainty/catalogue.h"
-#include "montecarlo/engine/engine.h"
+#include "montecarlo/study/engine/engine.h"
 #include "tests/statistical/r2_check.h"
-#include "montecarlo/sampler/sampler.h"
+#include "montecarlo/study/sampler/sampler.h"
 
 namespace insmc::mc {
 namespace {

@@ -42,7 +42,7 @@
 
 #include "lib/compensation/scheme.h"
 #include "lib/uncertainty/catalogue.h"
-#include "montecarlo/engine/engine.h"
+#include "montecarlo/study/engine/engine.h"
 #include "tests/statistical/r2_check.h"
 
 namespace insmc::mc {

@@ -1,4 +1,4 @@
-// Round trip of the diagnosis' finding (montecarlo/gap/ranking/finding_check.h,
+// Round trip of the diagnosis' finding (montecarlo/records/gap/ranking/finding_check.h,
 // fit/subgrid.h): files simulated with an effect at a drawn strength,
 // diagnosed blind; the first-ranked finding's 16–84 % range must cover the
 // simulated value at its nominal rate, 68 %.
@@ -34,9 +34,9 @@
 #include <tbb/parallel_for.h>
 
 #include "lib/truth/effect.h"
-#include "montecarlo/gap/diagnosis.h"
-#include "montecarlo/gap/validation/foreign_layout.h"
-#include "montecarlo/gap/validation/validation.h"
+#include "montecarlo/records/gap/diagnosis.h"
+#include "montecarlo/records/gap/validation/foreign_layout.h"
+#include "montecarlo/records/gap/validation/validation.h"
 
 namespace insmc::mc {
 namespace {

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 #include <string>
 
-#include "montecarlo/engine/engine.h"
+#include "montecarlo/study/engine/engine.h"
 
 namespace insmc::mc::testing {
 

@@ -29,7 +29,7 @@
 #include <iostream>
 
 #include "lib/compensation/scheme.h"
-#include "montecarlo/engine/engine.h"
+#include "montecarlo/study/engine/engine.h"
 
 namespace insmc::mc {
 namespace {

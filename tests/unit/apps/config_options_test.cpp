@@ -1,5 +1,5 @@
 // The options of a --config INI file (apps/config_options.h, over the reader
-// montecarlo/study/config_file.h): file:line and key in every message, BOM,
+// montecarlo/study/run/config_file.h): file:line and key in every message, BOM,
 // duplicates, escaped echoes, caps.
 #include "apps/config_options.h"
 
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "lib/common/input_error.h"
-#include "montecarlo/study/config_file.h"
+#include "montecarlo/study/run/config_file.h"
 
 namespace insmc::app {
 namespace {

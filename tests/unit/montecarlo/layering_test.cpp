@@ -1,6 +1,8 @@
-// The include arrows between the levels and the diagnosis' stages point one
-// way only (montecarlo/runs/README.md, montecarlo/gap/README.md): a change
-// to a later stage cannot reach back into an earlier one.
+// The include arrows between the levels of montecarlo/ (montecarlo/README.md),
+// the study's layers and the diagnosis' stages point one way only
+// (montecarlo/study/README.md, montecarlo/records/runs/README.md,
+// montecarlo/records/gap/README.md): a change to a later stage cannot reach
+// back into an earlier one.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -46,23 +48,87 @@ std::vector<Include> includes_under(const std::string& folder) {
 
 bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
-/// The position of a file of montecarlo/gap/ in the stage order; -1 for a
+/// The position of a file of montecarlo/records/gap/ in the stage order; -1 for a
 /// file outside every stage.
 int gap_stage(const std::string& path) {
   static const std::vector<std::string> kOrder = {
-      "montecarlo/gap/metric/",          "montecarlo/gap/candidates/",       "montecarlo/gap/diagnosis_options.",
-      "montecarlo/gap/diagnosis_results.", "montecarlo/gap/null/",         "montecarlo/gap/fit/",
-      "montecarlo/gap/where/",           "montecarlo/gap/ranking/",          "montecarlo/gap/diagnosis.h",
-      "montecarlo/gap/diagnosis.cpp",    "montecarlo/gap/report/",           "montecarlo/gap/validation/"};
+      "montecarlo/records/gap/metric/",          "montecarlo/records/gap/candidates/",       "montecarlo/records/gap/diagnosis_options.",
+      "montecarlo/records/gap/diagnosis_results.", "montecarlo/records/gap/null/",         "montecarlo/records/gap/fit/",
+      "montecarlo/records/gap/where/",           "montecarlo/records/gap/ranking/",          "montecarlo/records/gap/diagnosis.h",
+      "montecarlo/records/gap/diagnosis.cpp",    "montecarlo/records/gap/report/",           "montecarlo/records/gap/validation/"};
   for (std::size_t i = 0; i < kOrder.size(); ++i)
     if (starts_with(path, kOrder[i])) return static_cast<int>(i);
   return -1;
 }
 
+/// The position of a file of montecarlo/study/ in its bottom-up order; -1
+/// for a file outside every layer.
+int study_layer(const std::string& path) {
+  static const std::vector<std::vector<std::string>> kOrder = {
+      {"montecarlo/study/random/", "montecarlo/study/kernels/"},
+      {"montecarlo/study/sampler/"},
+      {"montecarlo/study/model/"},
+      {"montecarlo/study/aggregate/"},
+      {"montecarlo/study/engine/"},
+      {"montecarlo/study/write/"},
+      {"montecarlo/study/run/"},
+      {"montecarlo/study/rank/", "montecarlo/study/check/", "montecarlo/study/bench/"}};
+  for (std::size_t i = 0; i < kOrder.size(); ++i)
+    for (const std::string& folder : kOrder[i])
+      if (starts_with(path, folder)) return static_cast<int>(i);
+  return -1;
+}
+
 TEST(Layering, TheSourcesAreFound) {
   // The checks below pass vacuously on an empty tree: make sure they read it.
-  EXPECT_GT(includes_under("montecarlo/gap").size(), 100u);
-  EXPECT_GT(includes_under("montecarlo/runs").size(), 30u);
+  EXPECT_GT(includes_under("montecarlo/records/gap").size(), 100u);
+  EXPECT_GT(includes_under("montecarlo/records/runs").size(), 30u);
+  EXPECT_GT(includes_under("montecarlo/study").size(), 100u);
+  EXPECT_GT(includes_under("montecarlo/report").size(), 10u);
+}
+
+TEST(Layering, MontecarloIsItsThreeLevels) {
+  std::vector<std::string> folders;
+  for (const auto& entry : fs::directory_iterator(source_root() / "montecarlo"))
+    if (entry.is_directory()) folders.push_back(entry.path().filename().string());
+  std::sort(folders.begin(), folders.end());
+  EXPECT_EQ(folders, (std::vector<std::string>{"records", "report", "study"}));
+}
+
+TEST(Layering, TheReportKnowsNeitherTheStudyNorTheRecords) {
+  for (const Include& i : includes_under("montecarlo/report"))
+    EXPECT_TRUE(starts_with(i.to, "montecarlo/report/") || starts_with(i.to, "lib/common/") ||
+                starts_with(i.to, "lib/units/"))
+        << i.from << " includes " << i.to;
+}
+
+TEST(Layering, TheStudyIncludesNoRecords) {
+  for (const Include& i : includes_under("montecarlo/study"))
+    EXPECT_FALSE(starts_with(i.to, "montecarlo/records/")) << i.from << " includes " << i.to;
+}
+
+TEST(Layering, TheRecordsTakeFromTheStudyOnlyItsStreamsAndSampler) {
+  // The priors a run is drawn from (Table 3.1 through the sampler) and the
+  // counter-based streams; nothing of the study's engine, runner or files.
+  for (const Include& i : includes_under("montecarlo/records")) {
+    if (!starts_with(i.to, "montecarlo/study/")) continue;
+    EXPECT_TRUE(starts_with(i.to, "montecarlo/study/random/") || starts_with(i.to, "montecarlo/study/sampler/"))
+        << i.from << " includes " << i.to;
+  }
+}
+
+TEST(Layering, EveryLayerOfTheStudyIncludesOnlyLayersBelowIt) {
+  int checked = 0;
+  for (const Include& i : includes_under("montecarlo/study")) {
+    const int from = study_layer(i.from);
+    ASSERT_GE(from, 0) << i.from << " is in no layer of montecarlo/study/README.md";
+    if (!starts_with(i.to, "montecarlo/study/")) continue;
+    const int to = study_layer(i.to);
+    ASSERT_GE(to, 0) << i.to << " is in no layer";
+    EXPECT_LE(to, from) << i.from << " (a layer below) includes " << i.to << " (a layer above)";
+    ++checked;
+  }
+  EXPECT_GT(checked, 50);
 }
 
 TEST(Layering, LibIncludesNeitherMontecarloNorApps) {
@@ -76,22 +142,22 @@ TEST(Layering, MontecarloDoesNotIncludeApps) {
 }
 
 TEST(Layering, TheRunModelIncludesNoUserOfIt) {
-  for (const Include& i : includes_under("montecarlo/runs"))
-    EXPECT_FALSE(starts_with(i.to, "montecarlo/gap/") || starts_with(i.to, "montecarlo/compensate/"))
+  for (const Include& i : includes_under("montecarlo/records/runs"))
+    EXPECT_FALSE(starts_with(i.to, "montecarlo/records/gap/") || starts_with(i.to, "montecarlo/records/compensate/"))
         << i.from << " includes " << i.to;
 }
 
 TEST(Layering, CompensateUsesTheRunModelNotTheDiagnosis) {
-  for (const Include& i : includes_under("montecarlo/compensate"))
-    EXPECT_FALSE(starts_with(i.to, "montecarlo/gap/")) << i.from << " includes " << i.to;
+  for (const Include& i : includes_under("montecarlo/records/compensate"))
+    EXPECT_FALSE(starts_with(i.to, "montecarlo/records/gap/")) << i.from << " includes " << i.to;
 }
 
 TEST(Layering, EveryDiagnosisStageIncludesOnlyEarlierStages) {
   int checked = 0;
-  for (const Include& i : includes_under("montecarlo/gap")) {
+  for (const Include& i : includes_under("montecarlo/records/gap")) {
     const int from = gap_stage(i.from);
-    ASSERT_GE(from, 0) << i.from << " is in no stage of montecarlo/gap/README.md";
-    if (!starts_with(i.to, "montecarlo/gap/")) continue;
+    ASSERT_GE(from, 0) << i.from << " is in no stage of montecarlo/records/gap/README.md";
+    if (!starts_with(i.to, "montecarlo/records/gap/")) continue;
     const int to = gap_stage(i.to);
     ASSERT_GE(to, 0) << i.to << " is in no stage";
     EXPECT_LE(to, from) << i.from << " (a stage before) includes " << i.to << " (a later stage)";

@@ -21,7 +21,7 @@
 #include "lib/compensation/compensation_maps.h"
 #include "lib/compensation/schemes/scheme_definition.h"
 #include "lib/uncertainty/catalogue.h"
-#include "montecarlo/engine/engine.h"
+#include "montecarlo/study/engine/engine.h"
 #include "tests/unit/lib/compensation/scheme_case.h"
 
 namespace insmc {

@@ -1,0 +1,146 @@
+#include "montecarlo/records/compensate/unit_records.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "lib/common/input_error.h"
+#include "montecarlo/records/runs/model/scheme_rows.h"
+#include "montecarlo/records/runs/prepared_runs.h"
+
+namespace insmc::mc {
+namespace {
+
+/// A recorder's time stamps may jitter: a row within 1 % of τ of t_k is
+/// t_k's (its window shifted by that much changes Δf by a hundredth of a
+/// window's drift, and r by the velocity error over τ/100).
+constexpr double kGridJitter = 0.01;
+
+/// The row of `run` nearest t within kGridJitter τ, or nullptr.
+/// `nav_continues`: the records' navigation goes on from the test run (no
+/// reset or realignment at T), so a nav row stamped just after T is the row at T.
+const RecordRow* test_row_at(const RecordRun& run, double t_s, double tau_s, bool nav_continues) {
+  const auto nearest_of = [&](Phase phase) {
+    const RecordRow* nearest = nullptr;
+    for (const RecordRow& row : run.rows)
+      if (row.phase == phase && std::abs(row.t_s - t_s) <= kGridJitter * tau_s &&
+          (nearest == nullptr || std::abs(row.t_s - t_s) < std::abs(nearest->t_s - t_s)))
+        nearest = &row;
+    return nearest;
+  };
+  // The row at T may come stamped a little after it, labelled nav by a
+  // recorder that reads the phase from the time: taken when no test row is
+  // there and nothing reset the navigation at T.
+  const RecordRow* test = nearest_of(Phase::kTest);
+  return test != nullptr || !nav_continues ? test : nearest_of(Phase::kNav);
+}
+
+/// The median spacing of consecutive r rows of the test runs (0 when none).
+double median_r_spacing(const RecordFile& file) {
+  std::vector<double> spacings;
+  for (const RecordRun& run : file.runs) {
+    double last = -1.0;
+    for (const RecordRow& row : run.rows) {
+      if (row.phase != Phase::kTest || !row.r_ap_m) continue;
+      if (last >= 0 && row.t_s > last) spacings.push_back(row.t_s - last);
+      last = row.t_s;
+    }
+  }
+  if (spacings.empty()) return 0.0;
+  std::nth_element(spacings.begin(), spacings.begin() + static_cast<std::ptrdiff_t>(spacings.size() / 2), spacings.end());
+  return spacings[spacings.size() / 2];
+}
+
+UnitTestRun unit_test_run(const RecordRun& run, const runs::RecordSite& site) {
+  const double tau = site.filter_interval_s;
+  const int K = static_cast<int>(std::lround(site.test_duration_s / tau));
+  UnitTestRun out;
+  out.id = run.id;
+  out.layout = test_run_layout(K, tau);
+  out.values.resize(static_cast<Eigen::Index>(out.layout.rows.size()));
+  Eigen::MatrixXd position(K, 3), accel(K, 3);
+  for (int k = 1; k <= K; ++k) {
+    const double t = k * tau;
+    const RecordRow* row =
+        test_row_at(run, t, tau, runs::nav_segment_of(site.scheme) == runs::NavSegment::kContinue);
+    const auto missing = [&](const char* what) {
+      return InputError(fmt::format("records run {} test rows", run.id), fmt::format("(no {} at t_s = {:g})", what, t),
+                        fmt::format("compensate needs f and r (all three axes) at every filter interval t_k = k*{:g} s "
+                                    "(within {:g} s) up to T = {:g} s: the data of the estimators (4.4), (4.8)",
+                                    tau, kGridJitter * tau, site.test_duration_s));
+    };
+    if (row == nullptr) throw missing("row");
+    if (!row->r_ap_m) throw missing("r");
+    for (int a = 0; a < 3; ++a) {
+      if (!row->f_mps2[a]) throw missing("f");
+      accel(k - 1, a) = *row->f_mps2[a];
+      position(k - 1, a) = (*row->r_ap_m)[a];
+      out.values[6 * (k - 1) + a] = accel(k - 1, a);
+      out.values[6 * (k - 1) + 3 + a] = position(k - 1, a);
+    }
+  }
+  // The estimators as the Monte Carlo applies them (test_run.h); r rather
+  // than Δr = r − r(0): records have no row at t = 0, so each estimate
+  // carries the estimator's response to r(0) (scheme_rows.h models it).
+  const Eigen::Matrix<double, kEstimateRows, 3> e =
+      apply_estimators<3>(*site.estimators, site.model, site.test_duration_s, position, accel);
+  out.estimates.u2 = e.row(kU2Row).transpose();
+  out.estimates.u3 = e.row(kU3Row).transpose();
+  out.estimates.u3_accel = e.row(kU3AccelRow).transpose();
+  out.estimates.df_at_test_end_mps2 = e.row(kDfAtTestEndRow).transpose();
+  return out;
+}
+
+}  // namespace
+
+runs::Layout test_run_layout(int K, double tau_s) {
+  runs::Layout layout;
+  layout.nav = runs::NavSegment::kContinue;
+  for (int k = 1; k <= K; ++k)
+    for (const runs::Quantity q : {runs::Quantity::kF, runs::Quantity::kR})
+      for (int a = 0; a < 3; ++a) layout.rows.push_back({k * tau_s, q, a, runs::group_of(runs::Stage::kTest, q, a, 0)});
+  layout.test_rows = static_cast<int>(layout.rows.size());
+  return layout;
+}
+
+UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& prior, std::optional<std::int64_t> run,
+                              std::optional<double> site_gravity_mps2) {
+  // Only the test run is read: what followed it in the records (a scheme,
+  // a realignment) is not this unit's future.
+  RecordFile tests = without_truth(file);
+  if (run) {
+    std::erase_if(tests.runs, [&](const RecordRun& r) { return r.id != *run; });
+    if (tests.runs.empty())
+      throw InputError("--run", std::to_string(*run), "must be the id of a run in the records");
+  }
+  // Under a scheme that acts from the switch-over (5.4) the test rows are
+  // compensated already: not the data the estimators and this model take.
+  const Scheme recorded = tests.header.scheme();
+  if (uses_alignment_data(recorded))
+    throw InputError("records' header scheme", std::string(to_string(recorded)),
+                     "the test rows of these records were flown under that scheme's compensation (it acts from the "
+                     "switch-over); give records of the uncompensated test run (scheme none or a scheme that uses "
+                     "the test run)");
+  for (RecordRun& r : tests.runs) std::erase_if(r.rows, [](const RecordRow& row) { return row.phase != Phase::kTest; });
+  tests.header.set(std::string(kKeyScheme), std::string(to_string(Scheme::kNone)));
+  runs::RecordReading options;
+  options.prior = prior;
+  const double T = tests.header.test_duration_s();
+  // The estimators fit r at the ends of the filter windows: windows at least
+  // as long as the r spacing (less two rows' jitter) put an r row at each end.
+  options.min_filter_interval_s =
+      std::max({kUnitFilterIntervalS, T / kMaxUnitIntervals, median_r_spacing(tests) * (1 - 2 * kGridJitter)});
+  UnitRecords out;
+  const runs::Records records = runs::read_records(tests, options, out.statements, out.site_values);
+  out.site = records.site;
+  if (site_gravity_mps2) out.site.model.gravity_mps2 = *site_gravity_mps2;
+  if (out.site.test_duration_s / out.site.filter_interval_s > kMaxUnitIntervals + 1e-9)
+    throw InputError("records' header filter_interval_s", fmt::format("{:g}", out.site.filter_interval_s),
+                     fmt::format("compensate sums f windows up to at least T/{} = {:g} s; the recorded windows could "
+                                 "not be summed so (gaps in the f rows)", kMaxUnitIntervals, T / kMaxUnitIntervals));
+  out.site.estimators = record_estimators(out.site, prior);
+  for (const RecordRun& r : records.file.runs) out.runs.push_back(unit_test_run(r, out.site));
+  return out;
+}
+
+}  // namespace insmc::mc

@@ -1,0 +1,27 @@
+#include "montecarlo/records/gap/diagnosis_options.h"
+
+#include <fmt/format.h>
+#include <string>
+
+#include "lib/common/input_error.h"
+
+namespace insmc::gap {
+
+void validate(const DiagnosisOptions& options) {
+  if (!(options.alpha > 0 && options.alpha < 0.5))
+    throw InputError("--alpha", fmt::format("{}", options.alpha), "must lie in (0, 0.5)");
+  if (options.calibration_runs < 0 || options.calibration_runs > 100000)
+    throw InputError("--calibration-runs", std::to_string(options.calibration_runs), "must lie in [0, 100000]");
+  if (options.calibration_runs > 0 && options.calibration_runs < 50)
+    throw InputError("--calibration-runs", std::to_string(options.calibration_runs), "use 0 (automatic) or >= 50");
+  if (options.max_selected < 1 || options.max_selected > 5)
+    throw InputError("--max-effects", std::to_string(options.max_selected), "must lie in [1, 5]");
+  if (options.likelihood_candidates < 0 || options.likelihood_candidates > 15)
+    throw InputError("--likelihood", std::to_string(options.likelihood_candidates), "must lie in [0, 15]");
+  if (options.likelihood_pair_candidates < 0 || options.likelihood_pair_candidates > 5 ||
+      options.likelihood_pair_candidates > options.likelihood_candidates)
+    throw InputError("--likelihood-pairs", std::to_string(options.likelihood_pair_candidates),
+                     "must lie in [0, 5] and not exceed --likelihood");
+}
+
+}  // namespace insmc::gap

@@ -1,0 +1,236 @@
+#include "montecarlo/records/gap/fit/candidate_fit.h"
+
+#include "montecarlo/records/gap/candidates/layout_extensions.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <utility>
+
+namespace insmc::gap {
+
+namespace {
+
+std::vector<const runs::Extension*> pointers(const std::vector<runs::Extension>& selected, const runs::Extension* added) {
+  std::vector<const runs::Extension*> e;
+  for (const runs::Extension& s : selected) e.push_back(&s);
+  if (added) e.push_back(added);
+  return e;
+}
+
+CandidateSums evaluate_on_grid(const runs::PreparedRuns& p, const Candidate& c,
+                               const std::vector<std::vector<runs::Extension>>& selected,
+                               LayoutExtensions& build, const NullCalibration& m0,
+                               std::vector<std::vector<int>> groups) {
+  CandidateSums out;
+  out.keys = &p.keys;
+  const std::vector<bool> used = used_layouts(p);
+  const int K = c.grid_size();
+  out.at.resize(static_cast<std::size_t>(K));
+  out.sets.resize(static_cast<std::size_t>(K));
+  out.evaluated.assign(static_cast<std::size_t>(K), false);
+  // The points of a batch: their extensions built one after another (a
+  // candidate's build fills the layout's response cache, which is not
+  // shared across threads), then the run models and the runs under them
+  // (most of the cost) side by side. Each point's result is its own, so the
+  // order does not change it.
+  const auto evaluate = [&](std::vector<int> ks) {
+    std::sort(ks.begin(), ks.end());
+    ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
+    std::erase_if(ks, [&](int k) { return out.evaluated[static_cast<std::size_t>(k)]; });
+    std::vector<std::vector<std::optional<runs::Extension>>> extensions(ks.size());
+    for (std::size_t b = 0; b < ks.size(); ++b) extensions[b] = build.build(c, c.grid_point(ks[b]), used);
+    tbb::parallel_for(std::size_t{0}, ks.size(), [&](std::size_t b) {
+      std::vector<std::vector<const runs::Extension*>> on_lattice(p.lattices.size());
+      for (std::size_t l = 0; l < p.lattices.size(); ++l)
+        if (extensions[b][l]) on_lattice[l] = pointers(selected[l], &*extensions[b][l]);
+      const std::vector<std::optional<runs::RunAnalyser>> analysers = runs::layout_analysers(p, on_lattice, used);
+      std::vector<const runs::RunAnalyser*> pointers_to(p.layouts.size(), nullptr);
+      for (std::size_t L = 0; L < p.layouts.size(); ++L)
+        if (analysers[L]) pointers_to[L] = &*analysers[L];
+      const auto k = static_cast<std::size_t>(ks[b]);
+      out.at[k] = evaluate_runs(p.runs, p.layout_of, pointers_to, p.keys);
+      out.sets[k] = out.at[k].set(p.keys);
+    });
+    for (int k : ks) out.evaluated[static_cast<std::size_t>(k)] = true;
+  };
+  // Grid index = first-parameter index × rest + rest index (grid_point).
+  const int first = static_cast<int>(c.parameters.front().grid.size()), rest = K / first;
+  if (groups.empty()) {
+    groups.emplace_back(p.runs.size());
+    for (std::size_t r = 0; r < p.runs.size(); ++r) groups.front()[r] = static_cast<int>(r);
+  }
+  for (int j = 0; j < rest; ++j) {
+    std::vector<int> every_other;
+    for (int i = 0; i < first; i += 2) every_other.push_back(i * rest + j);
+    evaluate(every_other);
+    std::vector<int> next_to_best;
+    for (const std::vector<int>& runs : groups) {
+      int best = -1;
+      double best_gap = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < first; i += 2) {
+        const double g = gap_value(out.sets[static_cast<std::size_t>(i * rest + j)], runs, m0);
+        if (g < best_gap) best_gap = g, best = i;
+      }
+      for (int i : {best - 1, best + 1})
+        if (i >= 0 && i < first) next_to_best.push_back(i * rest + j);
+    }
+    evaluate(next_to_best);
+  }
+  return out;
+}
+
+CandidateSums evaluate_amplitudes(const runs::PreparedRuns& p, const Candidate& c,
+                                  const std::vector<std::vector<runs::Extension>>& selected,
+                                  LayoutExtensions& build) {
+  CandidateSums out;
+  const std::vector<bool> used = used_layouts(p);
+  out.amplitudes = true;
+  out.keys = &p.keys;
+  out.layout_of = p.layout_of;
+  std::vector<std::vector<const runs::Extension*>> on_lattice(p.lattices.size());
+  for (std::size_t l = 0; l < p.lattices.size(); ++l) on_lattice[l] = pointers(selected[l], nullptr);
+  out.fit = runs::layout_analysers(p, on_lattice, used);
+  for (std::size_t r = 0; r < p.runs.size(); ++r)
+    out.normalized.push_back(out.fit[static_cast<std::size_t>(p.layout_of[r])]->normalized(run_values(p.runs[r])));
+  const std::vector<int> amp = c.amplitude_indices();
+  out.amplitude_limit.resize(static_cast<Eigen::Index>(amp.size()));
+  for (std::size_t j = 0; j < amp.size(); ++j)
+    out.amplitude_limit[static_cast<Eigen::Index>(j)] = c.parameters[static_cast<std::size_t>(amp[j])].grid.front();
+  out.signature.resize(static_cast<std::size_t>(c.grid_size()));
+  for (int k = 0; k < c.grid_size(); ++k) {
+    std::vector<Eigen::MatrixXd>& signature = out.signature[static_cast<std::size_t>(k)];
+    signature.resize(p.layouts.size());
+    for (std::size_t j = 0; j < amp.size(); ++j) {
+      // The signature of amplitude j alone, at unit size (SI).
+      std::vector<double> theta = c.grid_point(k);
+      theta[static_cast<std::size_t>(amp[j])] = 1.0;
+      const std::vector<std::optional<runs::Extension>> e = build.build(c, theta, used);
+      for (std::size_t L = 0; L < p.layouts.size(); ++L) {
+        if (!used[L]) continue;
+        const runs::Extension& on_lattice_e = *e[static_cast<std::size_t>(p.lattice_of[L])];
+        const Eigen::VectorXd z = out.fit[L]->normalized_linear(runs::select_rows(on_lattice_e, p.lattice_rows[L]).mean);
+        Eigen::MatrixXd& Z = signature[L];
+        if (Z.size() == 0) Z.resize(z.size(), static_cast<Eigen::Index>(amp.size()));
+        Z.col(static_cast<Eigen::Index>(j)) = z;
+      }
+    }
+  }
+  return out;
+}
+
+/// The signature columns of run r at grid point k: its layout's, or for a
+/// run that stopped early that layout's first rows and the estimates (the
+/// normalized values are affine in the data, row by row).
+/// `scratch` holds the assembled columns of a shortened run (the layout's
+/// own are returned without a copy).
+const Eigen::MatrixXd& signature_of(const CandidateSums& s, int k, int r, Eigen::MatrixXd& scratch) {
+  const Eigen::MatrixXd& Z =
+      s.signature[static_cast<std::size_t>(k)][static_cast<std::size_t>(s.layout_of[static_cast<std::size_t>(r)])];
+  const Eigen::Index size = s.normalized[static_cast<std::size_t>(r)].size();
+  if (size == Z.rows()) return Z;
+  const auto L = static_cast<std::size_t>(s.layout_of[static_cast<std::size_t>(r)]);
+  const auto estimates = static_cast<Eigen::Index>(s.fit[L]->estimate_x_columns().size());
+  scratch.resize(size, Z.cols());
+  scratch << Z.topRows(size - estimates), Z.bottomRows(estimates);
+  return scratch;
+}
+
+/// Least squares over the multiset `runs` of the normalized values on the
+/// signature columns; beyond its limit a signature is held at the limit (and flagged).
+Eigen::VectorXd least_squares_amplitudes(const CandidateSums& s, int k, const std::vector<int>& runs) {
+  Eigen::MatrixXd scratch;
+  const Eigen::Index m = signature_of(s, k, runs.front(), scratch).cols();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(m, m);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(m);
+  for (int r : runs) {
+    const Eigen::MatrixXd& Z = signature_of(s, k, r, scratch);
+    A += Z.transpose() * Z;
+    b += Z.transpose() * s.normalized[static_cast<std::size_t>(r)];
+  }
+  // A signature the layout cannot see (a zero column) gets amplitude 0.
+  return A.completeOrthogonalDecomposition().solve(b).cwiseMax(-s.amplitude_limit).cwiseMin(s.amplitude_limit);
+}
+
+}  // namespace
+
+CandidateSums evaluate_candidate(const runs::PreparedRuns& p, const Candidate& c,
+                                 const std::vector<std::vector<runs::Extension>>& selected,
+                                 const NullCalibration& m0, const std::vector<std::vector<int>>& groups) {
+  LayoutExtensions build(p);
+  return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, build, m0, groups)
+                                       : evaluate_amplitudes(p, c, selected, build);
+}
+
+RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices) {
+  std::vector<runs::GroupSums> sums(runs.size());
+  Eigen::MatrixXd keyed(s.keys->size(), static_cast<Eigen::Index>(runs.size()));
+  for (std::size_t j = 0; j < runs.size(); ++j) {
+    const auto r = static_cast<std::size_t>(runs[j]);
+    const Choice& choice = choices[j];
+    if (!s.amplitudes) {
+      const EvaluatedRuns& e = s.at[static_cast<std::size_t>(choice.grid)];
+      sums[j] = e.sums[r];
+      keyed.col(static_cast<Eigen::Index>(j)) = e.keyed.col(static_cast<Eigen::Index>(r));
+      continue;
+    }
+    const int L = s.layout_of[r];
+    const runs::RunAnalyser& a = *s.fit[static_cast<std::size_t>(L)];
+    Eigen::MatrixXd scratch;
+    const Eigen::VectorXd v = s.normalized[r] - signature_of(s, choice.grid, runs[j], scratch) * choice.amplitude;
+    sums[j] = a.sums_of(v);
+    keyed.col(static_cast<Eigen::Index>(j)) = runs::keyed_values(v, a, L, *s.keys);
+  }
+  return make_run_set(std::move(sums), keyed, *s.keys);
+}
+
+RunsUnderChoice::RunsUnderChoice(const CandidateSums& sums, std::vector<int> runs_in) : s(&sums), runs(std::move(runs_in)) {
+  if (!s->amplitudes) return;
+  std::map<int, int> index;
+  for (int r : runs) {
+    auto [it, added] = index.emplace(r, static_cast<int>(distinct.size()));
+    if (added) distinct.push_back(r);
+    at.push_back(it->second);
+  }
+}
+
+double RunsUnderChoice::gap_at(int k, const NullCalibration& m0, Choice* choice) const {
+  Choice here{k, {}};
+  double g = 0;
+  if (s->amplitudes) {
+    // Amplitudes by least squares on the multiset; G over its distinct runs
+    // each counted as often as it is drawn.
+    here.amplitude = least_squares_amplitudes(*s, k, runs);
+    g = gap_value(run_set_under(*s, distinct, std::vector<Choice>(distinct.size(), here)), at, m0);
+  } else {
+    if (!s->evaluated[static_cast<std::size_t>(k)]) return std::numeric_limits<double>::infinity();
+    g = gap_value(s->sets[static_cast<std::size_t>(k)], runs, m0);
+  }
+  if (choice) *choice = std::move(here);
+  return g;
+}
+
+Choice choose(const CandidateSums& s, const std::vector<int>& runs, const NullCalibration& m0) {
+  return choose(RunsUnderChoice(s, runs), m0);
+}
+
+Choice choose(const RunsUnderChoice& under, const NullCalibration& m0) {
+  Choice best, here;
+  double best_gap = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < under.grid_size(); ++k) {
+    const double g = under.gap_at(k, m0, &here);
+    if (g < best_gap) best_gap = g, best = here;
+  }
+  return best;
+}
+
+std::vector<double> parameter_values(const Candidate& c, const Choice& choice) {
+  std::vector<double> v = c.grid_point(choice.grid);
+  const std::vector<int> amp = c.amplitude_indices();
+  for (std::size_t j = 0; j < amp.size(); ++j) v[static_cast<std::size_t>(amp[j])] = choice.amplitude[static_cast<Eigen::Index>(j)];
+  return v;
+}
+
+}  // namespace insmc::gap

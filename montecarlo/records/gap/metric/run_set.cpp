@@ -1,0 +1,77 @@
+#include "montecarlo/records/gap/metric/run_set.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lib/common/assert.h"
+#include "montecarlo/records/runs/prepared_runs.h"
+
+namespace insmc::gap {
+
+RunSet make_run_set(std::vector<runs::GroupSums> sums, const Eigen::MatrixXd& keyed, const runs::KeySpace& keys) {
+  INSMC_ASSERT(keyed.cols() == static_cast<Eigen::Index>(sums.size()) && keyed.rows() == keys.size(),
+               "keyed values {}x{} for {} runs, {} keys", keyed.rows(), keyed.cols(), sums.size(), keys.size());
+  RunSet set;
+  set.sums = std::move(sums);
+  std::array<std::vector<Eigen::Index>, runs::kCoherentCount> members;
+  for (int k = 0; k < keys.size(); ++k) members[static_cast<std::size_t>(keys.coherent_group(k))].push_back(k);
+  for (int c = 0; c < runs::kCoherentCount; ++c) {
+    Eigen::MatrixXd z = keyed(members[static_cast<std::size_t>(c)], Eigen::all);
+    if (set.size() <= kMaxGramRuns)
+      set.gram[static_cast<std::size_t>(c)] = z.transpose() * z;
+    else
+      set.values[static_cast<std::size_t>(c)] = std::move(z);
+  }
+  return set;
+}
+
+double RunSet::pair_sum(int c, std::span<const int> runs) const {
+  const Eigen::MatrixXd& g = gram[static_cast<std::size_t>(c)];
+  double sum = 0.0;
+  if (size() <= kMaxGramRuns) {
+    for (int a : runs)
+      for (int b : runs) sum += g(a, b);
+    return sum;
+  }
+  const Eigen::MatrixXd& z = values[static_cast<std::size_t>(c)];
+  Eigen::VectorXd total = Eigen::VectorXd::Zero(z.rows());
+  for (int a : runs) total += z.col(a);
+  return total.squaredNorm();
+}
+
+double RunSet::distinct_pair_sum(int c) const {
+  if (size() <= kMaxGramRuns) {
+    const Eigen::MatrixXd& g = gram[static_cast<std::size_t>(c)];
+    return g.sum() - g.trace();
+  }
+  // |Σ z|² − Σ |z_a|²: the pairs of one run with itself taken off.
+  const Eigen::MatrixXd& z = values[static_cast<std::size_t>(c)];
+  return z.rowwise().sum().squaredNorm() - z.colwise().squaredNorm().sum();
+}
+
+Pooled pool(const RunSet& set, std::span<const int> runs) {
+  Pooled p;
+  p.runs = static_cast<int>(runs.size());
+  for (int r : runs) p.power += set.sums[static_cast<std::size_t>(r)];
+  if (runs.empty()) return p;
+  for (int c = 0; c < runs::kCoherentCount; ++c)
+    p.coherent[static_cast<std::size_t>(c)] = set.pair_sum(c, runs) / static_cast<double>(runs.size());
+  return p;
+}
+
+EvaluatedRuns evaluate_runs(const std::vector<runs::RunData>& runs, const std::vector<int>& layout_of,
+                        const std::vector<const runs::RunAnalyser*>& analysers, const runs::KeySpace& keys) {
+  EvaluatedRuns e;
+  e.sums.resize(runs.size());
+  e.keyed.resize(keys.size(), static_cast<Eigen::Index>(runs.size()));
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const int L = layout_of[r];
+    const runs::RunAnalyser& a = *analysers[static_cast<std::size_t>(L)];
+    const Eigen::VectorXd v = a.normalized(run_values(runs[r]));
+    e.sums[r] = a.sums_of(v);
+    e.keyed.col(static_cast<Eigen::Index>(r)) = runs::keyed_values(v, a, L, keys);
+  }
+  return e;
+}
+
+}  // namespace insmc::gap

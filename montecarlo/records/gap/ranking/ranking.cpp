@@ -1,0 +1,200 @@
+#include "montecarlo/records/gap/ranking/ranking.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "montecarlo/records/gap/fit/subgrid.h"
+#include "montecarlo/records/gap/null/bootstrap.h"
+#include "montecarlo/records/gap/ranking/effect_terms.h"
+#include "montecarlo/records/gap/ranking/likelihood_ranking.h"
+
+namespace insmc::gap {
+namespace {
+
+/// Every run under the other half's fit (runs alternate between the halves
+/// in file order): 2-fold cross-validation.
+RunSet heldout_set(const std::array<Choice, 2>& half, const CandidateSums& s, const std::vector<int>& runs) {
+  std::vector<Choice> heldout_choice(runs.size());
+  for (std::size_t r = 0; r < runs.size(); ++r) heldout_choice[r] = half[1 - r % 2];
+  return run_set_under(s, runs, heldout_choice);
+}
+
+/// The runs first, first + 1, ..., first + n - 1.
+std::vector<int> run_range(std::size_t first, std::size_t n) {
+  std::vector<int> runs(n);
+  std::iota(runs.begin(), runs.end(), static_cast<int>(first));
+  return runs;
+}
+
+/// 2-fold cross-validation (runs alternate between the halves in file order),
+/// the full-data fit and its resampled 16–84 % range.
+Scored score(const Candidate& c, const CandidateSums& s, std::size_t n, const NullCalibration& m0,
+             std::uint64_t seed, const runs::RecordSite& site) {
+  const auto in_effect_terms = [&](std::vector<double> theta) {
+    if (c.to_effect_terms) c.to_effect_terms(theta, site);
+    return theta;
+  };
+  Scored out;
+  out.half_fit = half_fits(s, n, m0);
+  out.heldout = heldout_set(out.half_fit, s, all_runs(n));
+  out.heldout_gap = gap_value(out.heldout, all_runs(n), m0);
+  out.full_fit = choose(s, all_runs(n), m0);
+  const std::vector<double> best = parameter_values(c, out.full_fit);
+  // Reported between grid points (fit/subgrid.h), so that the resampled
+  // fits spread as the data do, not only from one grid point to the next.
+  const std::vector<double> reported =
+      in_effect_terms(subgrid_values(c, RunsUnderChoice(s, all_runs(n)), out.full_fit, m0));
+  constexpr int kResamples = 200;
+  std::vector<std::vector<double>> draws(c.parameters.size());
+  for (int b = 0; b < kResamples; ++b) {
+    const RunsUnderChoice runs(
+        s, resample(seed, 1'000'000 + static_cast<std::uint64_t>(b), static_cast<int>(n), static_cast<int>(n)));
+    const std::vector<double> theta = in_effect_terms(subgrid_values(c, runs, choose(runs, m0), m0));
+    for (std::size_t i = 0; i < theta.size(); ++i) draws[i].push_back(theta[i]);
+  }
+  for (std::size_t i = 0; i < c.parameters.size(); ++i) {
+    const CandidateParameter& par = c.parameters[i];
+    ParameterEstimate e{par.name, par.dimension, reported[i], quantile(draws[i], 0.16), quantile(draws[i], 0.84),
+                        par.amplitude ? std::abs(best[i]) >= par.grid.front()
+                                      : par.grid.size() > 1 && (best[i] == par.grid.front() || best[i] == par.grid.back()),
+                        {}};
+    out.parameters.push_back(e);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::array<Choice, 2> half_fits(const CandidateSums& s, const std::vector<int>& runs, const NullCalibration& m0) {
+  std::array<Choice, 2> out;
+  for (std::size_t h = 0; h < 2; ++h) {
+    std::vector<int> train;
+    for (std::size_t r = h; r < runs.size(); r += 2) train.push_back(runs[r]);
+    out[h] = choose(s, train, m0);
+  }
+  return out;
+}
+
+std::array<Choice, 2> half_fits(const CandidateSums& s, std::size_t n, const NullCalibration& m0) {
+  return half_fits(s, all_runs(n), m0);
+}
+
+int null_file_count(const runs::PreparedRuns& p, const ModelNull& null, const DiagnosisOptions& options) {
+  return std::min(options.null_shrink_files, static_cast<int>(null.runs.size() / std::max<std::size_t>(p.runs.size(), 1)));
+}
+
+runs::PreparedRuns null_file(const runs::PreparedRuns& p, const ModelNull& null, int f) {
+  const auto n = static_cast<std::ptrdiff_t>(p.runs.size());
+  runs::PreparedRuns q = p;
+  q.runs.assign(null.runs.begin() + f * n, null.runs.begin() + (f + 1) * n);
+  q.layout_of.assign(null.layout_of.begin() + f * n, null.layout_of.begin() + (f + 1) * n);
+  return q;
+}
+
+std::vector<Scored> rank_candidates(const runs::PreparedRuns& p, const std::vector<std::vector<runs::Extension>>& selected,
+                                    const std::vector<std::string>& exclude, const NullCalibration& m0,
+                                    const DiagnosisOptions& options, std::string_view stage) {
+  const auto& registry = candidates_of(options);
+  std::vector<Scored> scored(registry.size());
+  std::vector<bool> used(registry.size(), false);
+  std::atomic<std::uint64_t> done{0};
+  tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
+    if (std::find(exclude.begin(), exclude.end(), registry[c].name) != exclude.end()) return;
+    scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected, m0), p.runs.size(), m0, options.seed,
+                      p.site);
+    scored[c].candidate = static_cast<int>(c);
+    used[c] = true;
+    report_progress(options, stage, ++done, registry.size() - exclude.size(), "candidates");
+  });
+  std::vector<Scored> out;
+  for (std::size_t c = 0; c < registry.size(); ++c)
+    if (used[c]) out.push_back(std::move(scored[c]));
+  std::stable_sort(out.begin(), out.end(), [](const Scored& a, const Scored& b) { return a.heldout_gap < b.heldout_gap; });
+  return out;
+}
+
+std::vector<double> null_shrinks(const runs::PreparedRuns& p, const ModelNull& null, const NullCalibration& m0,
+                                 const DiagnosisOptions& options) {
+  const auto& registry = candidates_of(options);
+  const std::size_t n = p.runs.size();
+  const int files = null_file_count(p, null, options);
+  std::vector<double> out(registry.size(), std::numeric_limits<double>::quiet_NaN());
+  if (files == 0) return out;
+  // The null files together: each candidate's models (one per grid point
+  // and layout, the cost) are built once for all of them; each file keeps
+  // its own search, fits and held-out sets.
+  runs::PreparedRuns q = p;
+  q.runs.assign(null.runs.begin(), null.runs.begin() + static_cast<std::ptrdiff_t>(files * n));
+  q.layout_of.assign(null.layout_of.begin(), null.layout_of.begin() + static_cast<std::ptrdiff_t>(files * n));
+  std::vector<std::vector<int>> file_runs;
+  std::vector<double> before;
+  for (int f = 0; f < files; ++f) {
+    file_runs.push_back(run_range(static_cast<std::size_t>(f) * n, n));
+    before.push_back(gap_value(null.set, file_runs.back(), m0));
+  }
+  std::atomic<std::uint64_t> done{0};
+  const std::vector<std::vector<runs::Extension>> none(p.lattices.size());
+  tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
+    const CandidateSums sums = evaluate_candidate(q, registry[c], none, m0, file_runs);
+    std::vector<double> shrink;
+    for (int f = 0; f < files; ++f) {
+      const std::vector<int>& runs = file_runs[static_cast<std::size_t>(f)];
+      const RunSet held = heldout_set(half_fits(sums, runs, m0), sums, runs);
+      const double b = before[static_cast<std::size_t>(f)];
+      shrink.push_back(b > 0 ? 1.0 - gap_value(held, all_runs(n), m0) / b : 0.0);
+    }
+    out[c] = quantile(shrink, 0.5);
+    report_progress(options, "candidates on null files", ++done, registry.size(), "candidates");
+  });
+  return out;
+}
+
+void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const runs::PreparedRuns& p, const ModelNull& null,
+                    const DiagnosisOptions& options, double before) {
+  const auto& registry = candidates_of(options);
+  const int n = d.runs;
+  d.ranked = true;
+  for (const Scored& s : ranked) {
+    const Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
+    d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before,
+                         std::numeric_limits<double>::quiet_NaN(),
+                         log_ratios(pool(s.heldout, all_runs(p.runs.size())), null.calibration),
+                         {}, {}, {}});
+    EffectArgument a = effect_argument(d.ranking.back(), p.site);
+    d.ranking.back().as_effect = std::move(a.text);
+    d.ranking.back().as_effect_kept = std::move(a.kept);
+  }
+  d.top = d.ranking.front().effect;
+  if (options.null_shrink_files > 0) {
+    const std::vector<double> reference = null_shrinks(p, null, null.calibration, options);
+    for (std::size_t i = 0; i < ranked.size(); ++i)
+      d.ranking[i].null_shrink = reference[static_cast<std::size_t>(ranked[i].candidate)];
+  }
+  record_likelihood(d, ranked, p, null, options);
+  if (ranked.size() > 1) {
+    // Runner-up margin and its resampling standard error.
+    constexpr int kResamples = 500;
+    std::vector<double> margins;
+    for (int b = 0; b < kResamples; ++b) {
+      const std::vector<int> idx = resample(options.seed, 2'000'000 + static_cast<std::uint64_t>(b), n, n);
+      margins.push_back(gap_value(ranked[1].heldout, idx, null.calibration) -
+                        gap_value(ranked[0].heldout, idx, null.calibration));
+    }
+    d.runner_up_margin = ranked[1].heldout_gap - ranked[0].heldout_gap;
+    const double mean = std::accumulate(margins.begin(), margins.end(), 0.0) / kResamples;
+    double var = 0;
+    for (double m : margins) var += (m - mean) * (m - mean);
+    d.runner_up_margin_se = std::sqrt(var / (kResamples - 1));
+    const bool single = d.ranking[0].effect.find('|') == std::string::npos &&
+                        d.ranking[1].effect.find('|') == std::string::npos;
+    if (single && d.runner_up_margin < 2.0 * d.runner_up_margin_se)
+      d.top = d.ranking[0].effect + "|" + d.ranking[1].effect;
+  }
+}
+
+}  // namespace insmc::gap

@@ -1,0 +1,57 @@
+#pragma once
+// The report of `insmc noise` (docs/noise.md §6): Markdown for people,
+// allan.csv and noise_terms.csv for tables, noise.json for programs,
+// the allan and stationarity figures (SVG and PNG) for the eye. Values in SI and in the units engineers quote
+// (deg/sqrt(h), deg/h, m/s/sqrt(h), ug), beside Table 3.1's bounds.
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "montecarlo/records/noise/calibration_report.h"
+#include "lib/noise/noise_analysis.h"
+#include "montecarlo/report/json.h"
+
+namespace insmc::mc {
+
+/// A sensor's data-sheet values (`insmc noise --datasheet KEY=VALUE`), SI;
+/// absent when not given. Drawn on the allan figure (the white noise as its
+/// −1/2 slope N/√τ, the bias instability as its flat floor 0.664 B) and set
+/// against the fitted terms in noise.md and noise.json.
+struct Datasheet {
+  std::optional<double> gyro_arw_radprts, gyro_bias_instability_radps;
+  std::optional<double> accel_vrw_mpsprts, accel_bias_instability_mps2;
+  bool empty() const {
+    return !gyro_arw_radprts && !gyro_bias_instability_radps && !accel_vrw_mpsprts && !accel_bias_instability_mps2;
+  }
+  /// The sensor's white-noise and bias-instability values.
+  std::optional<double> white(noise::SensorKind kind) const;
+  std::optional<double> instability(noise::SensorKind kind) const;
+};
+
+/// Parses one `KEY=VALUE` (gyro_arw=0.15degprth, gyro_bias_instability=1degph,
+/// accel_vrw=0.03mpsprth, accel_bias_instability=50ug) into `sheet`; throws
+/// InputError naming --datasheet, the text and what is allowed.
+void parse_datasheet_entry(const std::string& text, Datasheet& sheet);
+
+/// The value of a fitted term in the units engineers quote: (value, unit).
+std::pair<double, std::string> spec_value(noise::NoiseTerm term, noise::SensorKind kind, double value_si);
+
+/// The names of the files noise_report returns, and noise.json beside them.
+std::vector<std::string> noise_file_names();
+/// The figures' stems (gnuplot: `.gp`, `.svg`, `.png` each).
+std::vector<std::string> noise_figure_stems();
+/// The figures (montecarlo/records/noise/noise_figures.h), as (file name, contents).
+std::vector<std::pair<std::string, std::string>> noise_figures(const noise::SensorRecording& rec,
+                                                               const noise::NoiseAnalysis& a, const Datasheet& sheet);
+
+/// The files of the report: noise.md first, then allan.csv, noise_terms.csv,
+/// calibration.csv (the multi-position calibrations, montecarlo/records/noise/calibration_report.h).
+
+std::vector<std::pair<std::string, std::string>> noise_report(
+    const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence, const Datasheet& sheet = {},
+    const std::vector<RecordingCalibration>& calibrations = {});
+mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
+                    const Datasheet& sheet = {}, const std::vector<RecordingCalibration>& calibrations = {});
+
+}  // namespace insmc::mc

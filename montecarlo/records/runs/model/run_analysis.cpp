@@ -1,0 +1,265 @@
+#include "montecarlo/records/runs/model/run_analysis.h"
+
+#include <algorithm>
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "lib/common/assert.h"
+
+namespace insmc::runs {
+
+namespace {
+
+/// (I + PSD)⁻¹ of an information matrix in scaled causes.
+Eigen::MatrixXd inverse_of_information(const Eigen::MatrixXd& info) {
+  const Eigen::Index d = info.rows();
+  const Eigen::LLT<Eigen::MatrixXd> llt(info);
+  if (llt.info() == Eigen::Success) return llt.solve(Eigen::MatrixXd::Identity(d, d));
+  // Priors many orders wider than the data (a candidate's widened bounds)
+  // leave round-off in the huge entries; info = I + (PSD) has every
+  // eigenvalue ≥ 1, which the eigen-decomposition restores.
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(info);
+  INSMC_ASSERT(eig.info() == Eigen::Success, "information matrix not decomposable ({} causes)", d);
+  const Eigen::VectorXd inv = eig.eigenvalues().cwiseMax(1.0).cwiseInverse();
+  return eig.eigenvectors() * inv.asDiagonal() * eig.eigenvectors().transpose();
+}
+
+template <class Vector>
+Vector rows_of(const Vector& v, std::span<const Eigen::Index> rows) {
+  Vector out(static_cast<Eigen::Index>(rows.size()), v.cols());
+  if (v.cols() == 0) return out;  // no data to take a row of (a null pointer)
+  for (std::size_t i = 0; i < rows.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = v.row(rows[i]);
+  return out;
+}
+
+/// A downdate of k test rows is worth it while k is below this share of the
+/// causes (O(n d k) against the fit anew's O(n d²)), and is exact to
+/// round-off while the information left, I − Gᵀ Π G, keeps every
+/// eigenvalue above kLeastKept (a cancellation of at most 1/kLeastKept).
+constexpr double kDowndateShare = 0.5;
+constexpr double kLeastKept = 1e-3;
+
+}  // namespace
+
+LatticeAnalysis::LatticeAnalysis(const Layout& lattice, const GaussianModel& model)
+    : layout_(&lattice), mean_(model.mean), test_rows_(lattice.test_rows) {
+  const Eigen::Index n = model.H.rows();
+  if (mean_.size() != n) mean_ = Eigen::VectorXd::Zero(n);
+  INSMC_ASSERT(n == static_cast<Eigen::Index>(lattice.rows.size()), "rows {} vs layout {}", n, lattice.rows.size());
+  // Causes with zero prior variance are known exactly: drop them.
+  for (Eigen::Index j = 0; j < model.prior_var.size(); ++j)
+    if (model.prior_var[j] > 0) active_.push_back(j);
+  const auto d = static_cast<Eigen::Index>(active_.size());
+  H_.resize(n, d);
+  prior_.resize(d);
+  for (Eigen::Index a = 0; a < d; ++a) {
+    H_.col(a) = model.H.col(active_[static_cast<std::size_t>(a)]);
+    prior_[a] = model.prior_var[active_[static_cast<std::size_t>(a)]];
+  }
+  noise_var_ = model.noise_var;
+  actual_noise_var_ = model.actual_noise_var;
+  fit();
+}
+
+LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows)
+    : layout_(&layout),
+      mean_(rows_of(lattice.mean_, rows)),
+      H_(rows_of(lattice.H_, rows)),
+      prior_(lattice.prior_),
+      active_(lattice.active_),
+      noise_var_(rows_of(lattice.noise_var_, rows)),
+      actual_noise_var_(rows_of(lattice.actual_noise_var_, rows)),
+      test_rows_(layout.test_rows) {
+  fit();
+}
+
+void LatticeAnalysis::fit() {
+  const Eigen::Index nt = test_rows_;
+  const Eigen::MatrixXd weighted_test = H_.topRows(nt).array().colwise() / noise_var_.head(nt).array();
+  // Information form: (P⁻¹ + Hᵀ R⁻¹ H)⁻¹ = P⁺. Scaling by the prior std keeps
+  // it well conditioned across causes of very different units: c = S u,
+  // u ~ (0, I), P⁺ = S Π S with Π = (I + S Hᵀ R⁻¹ H S)⁻¹.
+  s_ = prior_.cwiseSqrt();
+  Eigen::MatrixXd info = (s_.asDiagonal() * (H_.topRows(nt).transpose() * weighted_test) * s_.asDiagonal());
+  info.diagonal().array() += 1.0;
+  pi_ = inverse_of_information(info);
+  // The actual test noise through the fit's gain, scaled: J = S Hₜᵀ R⁻¹ R_a R⁻¹ Hₜ S;
+  // then A + B = S Π (I + J) Π S.
+  const Eigen::ArrayXd actual_share = actual_noise_var_.head(nt).array() / noise_var_.head(nt).array();
+  spread_ = s_.asDiagonal() *
+            (weighted_test.transpose() * (H_.topRows(nt).array().colwise() * actual_share).matrix()) *
+            s_.asDiagonal();
+  spread_.diagonal().array() += 1.0;
+  around_ = pi_ * spread_ * pi_;
+  const Eigen::MatrixXd HS = H_ * s_.asDiagonal();
+  HS_pi_ = HS * pi_;
+  q_ = (HS_pi_.array() * HS.array()).rowwise().sum();
+  ab_ = ((HS * around_).array() * HS.array()).rowwise().sum();
+}
+
+RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model) {
+  const LatticeAnalysis own(layout, model);
+  std::vector<Eigen::Index> rows(layout.rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = static_cast<Eigen::Index>(i);
+  layout_ = &layout;
+  finish(own, rows, own.pi_, own.q_, own.ab_, own.around_.diagonal());
+}
+
+RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::span<const Eigen::Index> rows) {
+  layout_ = &layout;
+  INSMC_ASSERT(rows.size() == layout.rows.size(), "{} rows for a layout of {}", rows.size(), layout.rows.size());
+  // The lattice's test rows this layout lacks (rows_within keeps the stages apart).
+  const auto nt = static_cast<std::size_t>(layout.test_rows);
+  std::vector<Eigen::Index> missing;
+  for (Eigen::Index m = 0, i = 0; m < a.test_rows_; ++m) {
+    if (static_cast<std::size_t>(i) < nt && rows[static_cast<std::size_t>(i)] == m) ++i;
+    else missing.push_back(m);
+  }
+  const auto k = static_cast<Eigen::Index>(missing.size());
+  const Eigen::Index d = a.pi_.rows();
+  if (k == 0) {
+    finish(a, rows, a.pi_, rows_of(a.q_, rows), rows_of(a.ab_, rows), a.around_.diagonal());
+    return;
+  }
+  // Information of the layout = the lattice's − G Gᵀ, g_m = S h_mᵀ/σ_m of each
+  // row m it lacks; Woodbury: Π_ℓ = Π + U C Uᵀ, U = Π G, C = (I − Gᵀ Π G)⁻¹.
+  Eigen::MatrixXd G(d, k);
+  Eigen::VectorXd share(k);
+  for (Eigen::Index j = 0; j < k; ++j) {
+    const Eigen::Index m = missing[static_cast<std::size_t>(j)];
+    G.col(j) = a.s_.cwiseProduct(a.H_.row(m).transpose()) / std::sqrt(a.noise_var_[m]);
+    share[j] = a.actual_noise_var_[m] / a.noise_var_[m];
+  }
+  const Eigen::MatrixXd U = a.pi_ * G;
+  Eigen::MatrixXd kept = -G.transpose() * U;
+  kept.diagonal().array() += 1.0;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(kept);
+  if (static_cast<double>(k) > kDowndateShare * static_cast<double>(d) || eig.info() != Eigen::Success ||
+      !(eig.eigenvalues().minCoeff() > kLeastKept)) {
+    // The layout's own fit: too many rows missing, or ones that carried
+    // nearly all the information about some cause.
+    const LatticeAnalysis own(layout, a, rows);
+    std::vector<Eigen::Index> all(rows.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<Eigen::Index>(i);
+    finish(own, all, own.pi_, own.q_, own.ab_, own.around_.diagonal());
+    return;
+  }
+  const Eigen::MatrixXd C =
+      eig.eigenvectors() * eig.eigenvalues().cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
+  const Eigen::MatrixXd spread_U = a.spread_ * U;
+  const Eigen::MatrixXd W = U.transpose() * spread_U;
+  // Per row with a = h S Π, b = a G, β = b C, e = a (I + J) U:
+  //   q_ℓ  = q + β bᵀ,
+  //   ab_ℓ = ab + 2 e βᵀ + β W βᵀ − Σ_m share_m β_m²  (h S Π_ℓ G = β).
+  const auto update = [&](const Eigen::MatrixXd& a_rows, const Eigen::VectorXd& q, const Eigen::VectorXd& ab,
+                          Eigen::VectorXd& q_out, Eigen::VectorXd& ab_out) {
+    const Eigen::MatrixXd b = a_rows * G;
+    const Eigen::MatrixXd beta = b * C;
+    const Eigen::MatrixXd e = a_rows * spread_U;
+    q_out = q + (beta.array() * b.array()).rowwise().sum().matrix();
+    ab_out = ab + (2.0 * (e.array() * beta.array()).rowwise().sum() +
+                   ((beta * W).array() * beta.array()).rowwise().sum()).matrix() -
+             beta.array().square().matrix() * share;
+  };
+  Eigen::VectorXd q, ab, pi_diagonal, around_diagonal;
+  update(rows_of(a.HS_pi_, rows), rows_of(a.q_, rows), rows_of(a.ab_, rows), q, ab);
+  // The causes themselves (h S = the unit vector of cause j): the diagonals
+  // of Π_ℓ and of Π_ℓ (I + J_ℓ) Π_ℓ the estimates need.
+  update(a.pi_, a.pi_.diagonal(), a.around_.diagonal(), pi_diagonal, around_diagonal);
+  Eigen::MatrixXd pi = a.pi_ + U * C * U.transpose();
+  pi.diagonal() = pi_diagonal;  // the same to round-off, formed as the rows' q are
+  finish(a, rows, pi, q, ab, around_diagonal);
+}
+
+void RunAnalyser::finish(const LatticeAnalysis& a, std::span<const Eigen::Index> rows, const Eigen::MatrixXd& pi,
+                         const Eigen::VectorXd& q, const Eigen::VectorXd& ab, const Eigen::VectorXd& around_diagonal) {
+  const auto n = static_cast<Eigen::Index>(rows.size());
+  test_rows_ = layout_->test_rows;
+  const Eigen::Index nt = test_rows_;
+  mean_ = rows_of(a.mean_, rows);
+  H_ = rows_of(a.H_, rows);
+  const Eigen::VectorXd noise_var = rows_of(a.noise_var_, rows), actual_noise_var = rows_of(a.actual_noise_var_, rows);
+  weighted_test_ = H_.topRows(nt).array().colwise() / noise_var.head(nt).array();
+  posterior_ = a.s_.asDiagonal() * pi * a.s_.asDiagonal();
+  const auto d = static_cast<Eigen::Index>(a.active_.size());
+  for (Eigen::Index c = 0; c < d; ++c) {
+    const Eigen::Index j = a.active_[static_cast<std::size_t>(c)];
+    if (j < ux::kDim && 1.0 - pi(c, c) > kResolvedShare) {
+      estimate_columns_.push_back(static_cast<int>(c));
+      estimate_x_.push_back(static_cast<int>(j));
+    }
+  }
+  const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
+  expected_.resize(n);
+  actual_.resize(n + m);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double r = noise_var[i], ra = actual_noise_var[i];
+    expected_[i] = i < nt ? std::max(r - q[i], 1e-6 * r) : q[i] + r;
+    actual_[i] = std::max(0.0, i < nt ? ab[i] + ra * (1.0 - 2.0 * q[i] / r) : ab[i] + ra);
+  }
+  estimate_var_.resize(m);
+  for (Eigen::Index k = 0; k < m; ++k) {
+    const int c = estimate_columns_[static_cast<std::size_t>(k)];
+    // P − P⁺ and P − 2P⁺ + A + B, over the prior (scaled).
+    estimate_var_[k] = a.prior_[c] * (1.0 - pi(c, c));
+    actual_[n + k] = std::max(0.0, (1.0 - 2.0 * pi(c, c) + around_diagonal[c]) / (1.0 - pi(c, c)));
+  }
+  share_.resize(n + m);
+  for (Eigen::Index i = 0; i < n + m; ++i) share_[i] = std::min(1.0, i < n ? actual_[i] / expected_[i] : actual_[i]);
+}
+
+GroupSums RunAnalyser::analyse(const Eigen::VectorXd& y) const {
+  Eigen::VectorXd z;
+  return analyse(y, z);
+}
+
+GroupSums RunAnalyser::analyse(const Eigen::VectorXd& data, Eigen::VectorXd& z) const {
+  const Eigen::VectorXd v = normalized(data);
+  z = v.head(data.size());
+  return sums_of(v);
+}
+
+Eigen::VectorXd RunAnalyser::normalized(const Eigen::VectorXd& data) const {
+  return normalized_linear(data - mean_.head(data.size()));
+}
+
+Eigen::VectorXd RunAnalyser::normalized_linear(const Eigen::VectorXd& y) const {
+  // A run that stops early is the layout's first y.size() rows: the same
+  // test rows, hence the same fit, and the navigation rows it has.
+  const Eigen::Index n = y.size();
+  INSMC_ASSERT(n >= test_rows_ && n <= H_.rows(), "run of {} values for a layout of {} rows ({} test rows)", n,
+               H_.rows(), test_rows_);
+  const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
+  const Eigen::VectorXd c = posterior_ * (weighted_test_.transpose() * y.head(test_rows_));
+  Eigen::VectorXd v(n + m);
+  v.head(n) = ((y - H_.topRows(n) * c).array() / expected_.head(n).array().sqrt()).matrix();
+  for (Eigen::Index k = 0; k < m; ++k) v[n + k] = c[estimate_columns_[static_cast<std::size_t>(k)]] / std::sqrt(estimate_var_[k]);
+  return v;
+}
+
+Eigen::MatrixXd RunAnalyser::estimate_map() const {
+  const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
+  Eigen::MatrixXd W(m, test_rows_);
+  for (Eigen::Index k = 0; k < m; ++k)
+    W.row(k) = (weighted_test_ * posterior_.row(estimate_columns_[static_cast<std::size_t>(k)]).transpose()).transpose() /
+               std::sqrt(estimate_var_[k]);
+  return W;
+}
+
+GroupSums RunAnalyser::sums_of(const Eigen::VectorXd& v) const {
+  GroupSums sums;
+  const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
+  const Eigen::Index n = v.size() - m;  // the run's rows (a prefix of the layout's)
+  const Eigen::Index all = static_cast<Eigen::Index>(layout_->rows.size());
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    const Eigen::Index term = i < n ? i : all + (i - n);  // index into the layout's terms
+    const int g = i < n ? layout_->rows[static_cast<std::size_t>(i)].group : kEstimatesGroup;
+    sums.z2[g] += v[i] * v[i];
+    sums.count[g] += 1.0;
+    sums.expected[g] += share_[term];
+    sums.floor[g] += 1.0 - share_[term];
+  }
+  return sums;
+}
+
+}  // namespace insmc::runs

@@ -1,0 +1,181 @@
+// Tests for montecarlo/records/gap/validation/foreign_layout.h: files in another
+// recorder's conventions hold the same physics as insmc's own (f over a
+// longer window is the mean of the shorter windows it spans; r does not
+// depend on the sampling), and the record reader takes them as written.
+#include "montecarlo/records/gap/validation/foreign_layout.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "lib/records/record_io.h"
+#include "montecarlo/records/runs/prepared_runs.h"
+#include "montecarlo/records/runs/simulation/record_simulation.h"
+
+namespace insmc::gap {
+namespace {
+
+ForeignRuns short_runs() {
+  ForeignRuns spec;
+  spec.runs = 3;
+  spec.nav_duration_s = 5400.0;
+  return spec;
+}
+
+TEST(ForeignLayout, EveryCombinationComesRound) {
+  std::set<std::tuple<double, double, bool, bool>> seen;
+  for (std::uint64_t seed = 0; seed < 36; ++seed) {
+    const ForeignLayout l = foreign_layout_of(seed, false);
+    seen.insert({l.f_every_s, l.r_every_s, l.pulses, l.zero_row});
+  }
+  EXPECT_EQ(seen.size(), 3U * 3U * 2U * 2U);
+  EXPECT_TRUE(foreign_layout_of(9, true).pulses) << "a quantization file keeps its pulses";
+}
+
+TEST(ForeignLayout, RowsFollowTheRecordersOwnGrids) {
+  ForeignLayout layout;
+  layout.f_every_s = 20.0;
+  layout.r_every_s = 30.0;
+  layout.pulses = false;
+  layout.zero_row = true;
+  const RecordFile file = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 3, short_runs(), layout);
+  EXPECT_EQ(file.header.find("dv_pulse_mps"), nullptr);
+  EXPECT_EQ(file.header.find("filter_interval_s"), nullptr);
+  EXPECT_TRUE(file.header.truth_entries.empty());
+  ASSERT_EQ(file.runs.size(), 3U);
+  for (std::size_t r = 0; r < file.runs.size(); ++r) {
+    const RecordRun& run = file.runs[r];
+    EXPECT_EQ(run.id, 100 + 7 * static_cast<std::int64_t>(r));
+    EXPECT_EQ(run.rows.front().t_s, 0.0);
+    EXPECT_FALSE(run.rows.front().has_f());
+    for (const RecordRow& row : run.rows) {
+      ASSERT_TRUE(row.r_ap_m.has_value()) << row.t_s;
+      const bool on_f = std::fmod(row.t_s, 20.0) == 0.0 && row.t_s > 0;
+      EXPECT_EQ(row.has_f(), on_f) << row.t_s;
+      EXPECT_TRUE(on_f || std::fmod(row.t_s, 30.0) == 0.0) << row.t_s;
+    }
+  }
+  // The third run stops 60-80 min into the navigation.
+  EXPECT_EQ(file.runs[0].rows.back().t_s, 900.0 + 5400.0);
+  EXPECT_GE(file.runs[2].rows.back().t_s, 900.0 + 3600.0 - 30.0);
+  EXPECT_LE(file.runs[2].rows.back().t_s, 900.0 + 4800.0);
+  // What insmc writes, it reads back as written (to the 9 digits kept).
+  EXPECT_EQ(parse_record_text(write_record_file(file), "foreign.csv"), file);
+}
+
+TEST(ForeignLayout, ALongerWindowIsTheMeanOfTheWindowsItSpansAndRIsTheSame) {
+  // Continuous f: the filter box's output over 20 s is the mean of its four
+  // 5 s outputs (Δv adds up, fig. 5.2), and r(t) does not depend on how f is
+  // sampled: two independent samplings of one run agree.
+  ForeignLayout fine, coarse;
+  fine.f_every_s = 5.0;
+  coarse.f_every_s = 20.0;
+  fine.r_every_s = coarse.r_every_s = 60.0;
+  fine.pulses = coarse.pulses = false;
+  ForeignRuns spec = short_runs();
+  spec.runs = 1;
+  const RecordRun a = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 5, spec, fine).runs[0];
+  const RecordRun b = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 5, spec, coarse).runs[0];
+  std::map<double, const RecordRow*> at;
+  for (const RecordRow& row : a.rows) at[row.t_s] = &row;
+  int compared = 0;
+  for (const RecordRow& row : b.rows) {
+    ASSERT_TRUE(at.count(row.t_s)) << row.t_s;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR((*row.r_ap_m)[k], (*at[row.t_s]->r_ap_m)[k], 1e-6 * (1.0 + std::abs((*row.r_ap_m)[k]))) << row.t_s;
+    if (!row.has_f()) continue;
+    for (int k = 0; k < 3; ++k) {
+      double mean = 0.0;
+      for (int w = 0; w < 4; ++w) mean += *at.at(row.t_s - 5.0 * w)->f_mps2[k] / 4.0;
+      EXPECT_NEAR(*row.f_mps2[k], mean, 1e-9 + 1e-6 * std::abs(mean)) << row.t_s << " axis " << k;
+    }
+    ++compared;
+  }
+  EXPECT_GT(compared, 300);
+}
+
+TEST(FuzzedLayout, DrawsEveryConventionOverItsRange) {
+  std::set<double> f_every, r_every;
+  int pulses = 0, zero_rows = 0, f_in_nav = 0, exact = 0, keys = 0;
+  double least_resolution = 1e300, largest_resolution = 0.0, largest_dropout = 0.0;
+  std::set<double> short_shares;
+  constexpr int kFiles = 400;
+  for (std::uint64_t seed = 0; seed < kFiles; ++seed) {
+    const ForeignLayout l = fuzzed_layout_of(seed, false, 900.0);
+    ASSERT_GE(l.f_every_s, 1.0);
+    ASSERT_LE(l.f_every_s, 60.0);
+    ASSERT_GE(l.r_every_s, 1.0);
+    ASSERT_LE(l.r_every_s, 60.0);
+    ASSERT_GE(l.dropout_max, 0.0);
+    ASSERT_LE(l.dropout_max, 0.1);
+    f_every.insert(l.f_every_s);
+    r_every.insert(l.r_every_s);
+    pulses += l.pulses, zero_rows += l.zero_row, f_in_nav += l.f_in_nav, keys += l.header_keys;
+    if (l.resolution_m == 0.0) ++exact;
+    else least_resolution = std::min(least_resolution, l.resolution_m), largest_resolution = std::max(largest_resolution, l.resolution_m);
+    largest_dropout = std::max(largest_dropout, l.dropout_max);
+    short_shares.insert(l.short_share);
+    EXPECT_EQ(l.short_from_s, 450.0);
+  }
+  // Each whole second of 1-60 s has probability 1/60 a draw: in 400 draws a
+  // value is never drawn with probability (59/60)^400 = 1.2e-3, so fewer than
+  // 50 distinct values (11 never drawn) has probability below C(60,11)
+  // (1.2e-3)^11 < 1e-20. The bounds below are each 4.5 standard deviations
+  // or more from their binomial mean, or a miss of probability < 1e-6.
+  EXPECT_GE(f_every.size(), 50U);
+  EXPECT_GE(r_every.size(), 50U);
+  // Coins: 400 draws of probability 1/2 lie in [150, 250] but with probability < 1e-6 (binomial).
+  for (const int heads : {pulses, zero_rows, f_in_nav, keys}) {
+    EXPECT_GE(heads, 150);
+    EXPECT_LE(heads, 250);
+  }
+  EXPECT_GE(exact, 60);  // p = 1/4: mean 100, sd 8.7
+  EXPECT_LT(least_resolution, 2e-4);
+  EXPECT_GT(largest_resolution, 0.6);
+  EXPECT_GT(largest_dropout, 0.095);
+  EXPECT_EQ(short_shares.size(), 4U);
+  EXPECT_TRUE(fuzzed_layout_of(7, true, 900.0).pulses) << "a quantization file keeps its pulses";
+}
+
+TEST(FuzzedLayout, EachRunDropsRecordsOfItsOwnAndTheModelIsBuiltOnce) {
+  ForeignLayout layout;
+  layout.f_every_s = 10.0;
+  layout.r_every_s = 10.0;
+  layout.pulses = false;
+  layout.dropout_max = 0.1;
+  layout.short_share = 0.0;
+  layout.short_from_s = 450.0;
+  ForeignRuns spec = short_runs();
+  spec.runs = 6;
+  const RecordFile file = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 21, spec, layout);
+  ASSERT_EQ(file.runs.size(), 6U);
+  std::set<std::vector<double>> patterns;
+  for (const RecordRun& run : file.runs) {
+    std::vector<double> missing;  // rows without f, and rows lost (the grid every 10 s)
+    double expected = run.rows.front().t_s;
+    for (const RecordRow& row : run.rows) {
+      for (; expected < row.t_s - 1e-9; expected += 10.0) missing.push_back(-expected);
+      if (!row.has_f()) missing.push_back(row.t_s);
+      expected = row.t_s + 10.0;
+    }
+    patterns.insert(missing);
+  }
+  EXPECT_EQ(patterns.size(), 6U) << "every run its own dropouts";
+  EXPECT_EQ(parse_record_text(write_record_file(file), "fuzzed.csv"), file);
+  // The diagnosis' run model: a layout per run, one lattice for all, from
+  // which every layout takes its rows (runs/prepared_runs.h).
+  runs::RecordReading reading;
+  std::vector<std::string> statements;
+  std::vector<runs::SiteValue> site;
+  const runs::PreparedRuns p = runs::prepare(runs::read_records(file, reading, statements, site), reading);
+  EXPECT_GT(p.layouts.size(), 1U);
+  EXPECT_EQ(p.lattices.size(), 1U);
+  for (std::size_t L = 0; L < p.layouts.size(); ++L) EXPECT_EQ(p.lattice_of[L], 0);
+}
+
+}  // namespace
+}  // namespace insmc::gap

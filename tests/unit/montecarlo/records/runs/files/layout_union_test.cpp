@@ -1,0 +1,162 @@
+// Layouts that miss records, each its own way, take their rows from the
+// union of the file's layouts (montecarlo/records/runs/files/layout_union.h): the
+// rows are found where they are, and a model built on the union and cut to
+// a layout's rows is the layout's own.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "lib/uncertainty/uncertainty_model.h"
+#include "montecarlo/records/runs/model/gaussian_model.h"
+#include "montecarlo/records/runs/model/run_analysis.h"
+#include "montecarlo/records/runs/files/layout_union.h"
+#include "tests/unit/montecarlo/records/runs/test_layout.h"
+
+namespace insmc::runs {
+namespace {
+
+/// The test layout with every `step`-th f record from `first` dropped
+/// (three axes at a time), as a logger that loses samples writes it.
+Layout with_dropouts(const Layout& full, int first, int step) {
+  Layout l = full;
+  l.rows.clear();
+  l.test_rows = 0;
+  int f_record = 0;
+  for (std::size_t i = 0; i < full.rows.size(); ++i) {
+    const ObservationRow& r = full.rows[i];
+    const bool dropped = r.quantity == Quantity::kF && f_record >= first && (f_record - first) % step == 0;
+    if (r.quantity == Quantity::kF && r.axis == 2) ++f_record;
+    if (dropped) continue;
+    l.rows.push_back(r);
+    if (static_cast<int>(i) < full.test_rows) ++l.test_rows;
+  }
+  return l;
+}
+
+TEST(LayoutUnion, EachLayoutFindsItsRowsInTheUnion) {
+  const Layout full = testing::test_layout(3600.0);
+  const Layout a = with_dropouts(full, 3, 17), b = with_dropouts(full, 8, 23);
+  const Layout shorter = with_dropouts(testing::test_layout(1800.0), 5, 11);
+  const Layout* layouts[] = {&a, &b, &shorter};
+  const Layout lattice = layout_union(layouts);
+  // Together they miss no record of the full layout.
+  EXPECT_EQ(lattice, full);
+  for (const Layout* l : layouts) {
+    const auto rows = rows_within(*l, lattice);
+    ASSERT_TRUE(rows.has_value());
+    ASSERT_EQ(rows->size(), l->rows.size());
+    for (std::size_t i = 0; i < rows->size(); ++i) EXPECT_EQ(lattice.rows[static_cast<std::size_t>((*rows)[i])], l->rows[i]);
+  }
+  // A row the lattice lacks, or one of another stage, is not within it.
+  Layout extra = a;
+  extra.rows.push_back({3605.0, Quantity::kR, 0, extra.rows.back().group});
+  EXPECT_FALSE(rows_within(extra, a).has_value());
+  EXPECT_FALSE(rows_within(full, a).has_value());
+  Layout moved = a;
+  moved.test_rows -= 3;
+  EXPECT_FALSE(rows_within(moved, lattice).has_value());
+}
+
+TEST(LayoutUnion, TheUnionsModelCutToALayoutIsTheLayoutsOwn) {
+  const Layout full = testing::test_layout(3600.0);
+  const Layout a = with_dropouts(full, 2, 9);
+  // Continuous f: pulse counting's columns are the leading components of
+  // the rows' covariance and differ with the rows they are taken over; the
+  // rest of the model is each row's own.
+  RecordSite s = testing::test_site();
+  s.dv_pulse_mps = 0.0;
+  const UncertaintyVector x_var = UncertaintyModel{}.variance();
+  const BaseModel on_lattice = make_base_model(full, s, x_var);
+  const auto rows = rows_within(a, full);
+  ASSERT_TRUE(rows.has_value());
+  const GaussianModel cut = combine(select_rows(on_lattice, *rows), {});
+  const GaussianModel own = combine(make_base_model(a, s, x_var), {});
+  ASSERT_EQ(cut.H.rows(), own.H.rows());
+  ASSERT_EQ(cut.H.cols(), own.H.cols());
+  EXPECT_LT((cut.H - own.H).cwiseAbs().maxCoeff(), 1e-9 * own.H.cwiseAbs().maxCoeff());
+  EXPECT_LT((cut.noise_var - own.noise_var).cwiseAbs().maxCoeff(), 1e-9 * own.noise_var.maxCoeff());
+  const RunAnalyser from_lattice(a, cut), from_own(a, own);
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> n01;
+  for (int draw = 0; draw < 3; ++draw) {
+    Eigen::VectorXd c(own.prior_var.size()), e(own.H.rows());
+    for (Eigen::Index j = 0; j < c.size(); ++j) c[j] = std::sqrt(own.prior_var[j]) * n01(rng);
+    for (Eigen::Index i = 0; i < e.size(); ++i) e[i] = std::sqrt(own.noise_var[i]) * n01(rng);
+    const Eigen::VectorXd y = own.H * c + e;
+    const GroupSums x = from_lattice.analyse(y), z = from_own.analyse(y);
+    for (int g = 0; g < kGroupCount; ++g) {
+      EXPECT_EQ(x.count[g], z.count[g]) << group_name(g);
+      EXPECT_NEAR(x.z2[g], z.z2[g], 1e-7 * (1.0 + z.z2[g])) << group_name(g);
+      EXPECT_NEAR(x.expected[g], z.expected[g], 1e-7 * (1.0 + z.expected[g])) << group_name(g);
+    }
+  }
+}
+
+/// The group sums of `a` and `b` on draws from `model` agree to round-off.
+void expect_same_sums(const RunAnalyser& a, const RunAnalyser& b, const GaussianModel& model, int seed) {
+  std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
+  std::normal_distribution<double> n01;
+  for (int draw = 0; draw < 3; ++draw) {
+    Eigen::VectorXd c(model.prior_var.size()), e(model.H.rows());
+    for (Eigen::Index j = 0; j < c.size(); ++j) c[j] = std::sqrt(model.prior_var[j]) * n01(rng);
+    for (Eigen::Index i = 0; i < e.size(); ++i) e[i] = std::sqrt(model.noise_var[i]) * n01(rng);
+    const Eigen::VectorXd y = model.H * c + e;
+    const GroupSums x = a.analyse(y), z = b.analyse(y);
+    for (int g = 0; g < kGroupCount; ++g) {
+      EXPECT_EQ(x.count[g], z.count[g]) << group_name(g);
+      EXPECT_NEAR(x.z2[g], z.z2[g], 1e-7 * (1.0 + z.z2[g])) << group_name(g);
+      EXPECT_NEAR(x.expected[g], z.expected[g], 1e-7 * (1.0 + z.expected[g])) << group_name(g);
+      EXPECT_NEAR(x.floor[g], z.floor[g], 1e-7 * (1.0 + z.floor[g])) << group_name(g);
+    }
+  }
+}
+
+TEST(LayoutUnion, ALayoutsFitCutFromTheLatticesIsItsOwn) {
+  // The lattice's fit downdated by the test rows a layout lacks (Woodbury,
+  // run_analysis.h) against the layout's fit made anew; and a layout that
+  // lacks most of the test run, fitted on its own rows.
+  // Pulses of 0.1 ft/s: the f rows' counting noise. (A continuous f has
+  // only the 0.1 µg floor, and a test residual's normalizer σ² − h P⁺ hᵀ
+  // then cancels to a part in 10⁴ of σ²: two fits that agree to 10⁻⁸ in P⁺
+  // differ there by 10⁻⁴, whichever way each is made.)
+  const Layout full = testing::test_layout(3600.0);
+  const RecordSite s = testing::test_site();
+  const UncertaintyVector x_var = UncertaintyModel{}.variance();
+  const GaussianModel on_lattice = combine(make_base_model(full, s, x_var), {});
+  const LatticeAnalysis shared(full, on_lattice);
+  Layout sparse = full;  // every second f record of the test run missing
+  sparse.rows.clear();
+  for (int i = 0; i < static_cast<int>(full.rows.size()); ++i) {
+    const ObservationRow& r = full.rows[static_cast<std::size_t>(i)];
+    if (i < full.test_rows && r.quantity == Quantity::kF && std::fmod(r.t_s, 20.0) == 0.0) continue;
+    sparse.rows.push_back(r);
+  }
+  sparse.test_rows = full.test_rows - 3 * 45;
+  int seed = 11;
+  for (const Layout& l : {with_dropouts(full, 5, 60), with_dropouts(full, 0, 40), sparse, full}) {
+    const auto rows = rows_within(l, full);
+    ASSERT_TRUE(rows.has_value());
+    const GaussianModel own_model = select_rows(on_lattice, *rows);
+    SCOPED_TRACE(::testing::Message() << l.test_rows << " of " << full.test_rows << " test rows");
+    expect_same_sums(RunAnalyser(l, shared, *rows), RunAnalyser(l, own_model), own_model, seed++);
+  }
+}
+
+TEST(LayoutUnion, PulseCountingKeepsEachRowsVariance) {
+  // With pulses, the counting's columns differ with the rows they are
+  // taken over, but each row's total variance (columns and rest) is its own.
+  const Layout full = testing::test_layout(3600.0);
+  const Layout a = with_dropouts(full, 4, 13);
+  const RecordSite s = testing::test_site();
+  const UncertaintyVector x_var = UncertaintyModel{}.variance();
+  const auto rows = rows_within(a, full);
+  ASSERT_TRUE(rows.has_value());
+  const BaseModel cut = select_rows(make_base_model(full, s, x_var), *rows);
+  const BaseModel own = make_base_model(a, s, x_var);
+  const Eigen::VectorXd var_cut = cut.counting.columns.rowwise().squaredNorm() + cut.counting.noise_var;
+  const Eigen::VectorXd var_own = own.counting.columns.rowwise().squaredNorm() + own.counting.noise_var;
+  EXPECT_LT((var_cut - var_own).cwiseAbs().maxCoeff(), 1e-6 * var_own.maxCoeff());
+}
+
+}  // namespace
+}  // namespace insmc::runs
