@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "lib/common/assert.h"
 #include "lib/common/input_error.h"
 #include "lib/frames/frames.h"
 #include "lib/preflight/observables.h"
@@ -117,7 +118,7 @@ Eigen::MatrixXd least_squares_map(const Eigen::MatrixXd& h) {
 }  // namespace
 
 TestRunEstimators make_estimators(const TestRunOptions& o, const ModelOptions& m, bool u3_resolvable,
-                                  bool u4_resolvable) {
+                                  bool u4_resolvable, const ObservedIntervals& observed) {
   TestRunEstimators e;
   e.fit_u3 = u3_resolvable;
   e.fit_u4 = u3_resolvable && u4_resolvable && o.fit_u4 != FitU4::kNo;
@@ -144,7 +145,21 @@ TestRunEstimators make_estimators(const TestRunOptions& o, const ModelOptions& m
     for (size_t j = 0; j < pos_cols.size(); ++j) hp(k - 1, static_cast<Eigen::Index>(j)) = pos[pos_cols[j]];
     for (size_t j = 0; j < acc_cols.size(); ++j) ha(k - 1, static_cast<Eigen::Index>(j)) = acc[acc_cols[j]];
   }
-  const Eigen::MatrixXd lp = least_squares_map(hp), la = least_squares_map(ha);
+  // An interval a run lacks is a row the fit does not have: zero in the
+  // design, and its column of the estimator set to exactly zero below.
+  const auto has = [&](const std::vector<bool>& mask, int k) { return mask.empty() || mask[static_cast<size_t>(k)]; };
+  INSMC_ASSERT((observed.position.empty() || observed.position.size() == static_cast<size_t>(K)) &&
+                   (observed.accel.empty() || observed.accel.size() == static_cast<size_t>(K)),
+               "observed intervals of {} and {} for K = {}", observed.position.size(), observed.accel.size(), K);
+  for (int k = 0; k < K; ++k) {
+    if (!has(observed.position, k)) hp.row(k).setZero();
+    if (!has(observed.accel, k)) ha.row(k).setZero();
+  }
+  Eigen::MatrixXd lp = least_squares_map(hp), la = least_squares_map(ha);
+  for (int k = 0; k < K; ++k) {
+    if (!has(observed.position, k)) lp.col(k).setZero();
+    if (!has(observed.accel, k)) la.col(k).setZero();
+  }
   e.position = Eigen::Matrix<double, 4, Eigen::Dynamic>::Zero(4, K);
   e.accel = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, K);
   for (size_t j = 0; j < pos_cols.size(); ++j) e.position.row(pos_cols[j]) = lp.row(static_cast<Eigen::Index>(j));

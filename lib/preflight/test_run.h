@@ -146,11 +146,21 @@ Eigen::Matrix<double, kEstimateRows, Cols> apply_estimators(const TestRunEstimat
   return out;
 }
 
+/// The filter intervals k = 1..K whose data a run has, the position data
+/// (r) and the accelerometer data (f) apart: records of a logger that
+/// dropped samples. Empty: every interval.
+struct ObservedIntervals {
+  std::vector<bool> position, accel;
+};
+
 /// Builds the estimators. `u4_resolvable`/`u3_resolvable` follow
 /// resolvable_terms(); with FitU4::kYes and U4 not resolvable this throws
 /// InputError (the report's Table 4.3: e.g. U4 needs more than 15–20 min).
+/// The fits (4.4), (4.8) are least squares over the K intervals; with
+/// `observed` they are the same fits over the intervals a run has (a
+/// missing interval's column of each estimator is zero).
 TestRunEstimators make_estimators(const TestRunOptions& options, const ModelOptions& model,
-                                  bool u3_resolvable, bool u4_resolvable);
+                                  bool u3_resolvable, bool u4_resolvable, const ObservedIntervals& observed = {});
 
 /// (4.6) applied to the study: a term is resolvable when its resolution
 /// limit is below the prior RMS of its coefficient (largest axis), the prior

@@ -283,15 +283,84 @@ TEST(Compensate, BadInputIsRefusedWithTheFieldNamed) {
   const ProgramResult s54 = run_insmc("compensate --records " + simulate(d54, 1, "5.4"));
   EXPECT_EQ(s54.exit_code, 2) << s54.err;
   EXPECT_TRUE(has(s54.err, "scheme") && has(s54.err, "5.4")) << s54.err;
-  // A test run with a hole in its grid: the run and the time are named.
+  // A test run whose logger stopped from t = 200 s to 700 s: 51 of its 90
+  // filter intervals missing, more than the fits may do without; the run,
+  // the counts and the first missing time are named.
   std::ifstream in(records);
-  std::ofstream out(dir.str() + "/hole.csv");
-  for (std::string line; std::getline(in, line);)
-    if (!line.starts_with("0,300,")) out << line << "\n";
+  std::ofstream out(dir.str() + "/holes.csv");
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t c1 = line.find(','), c2 = line.find(',', c1 + 1);
+    const bool test_row = !line.starts_with("#") && !line.starts_with("run") && line.find(",test,") == c2;
+    const long k = test_row ? std::lround(std::stod(line.substr(c1 + 1, c2 - c1 - 1)) / 10.0) : 0;
+    if (!(test_row && k >= 20 && k <= 70)) out << line << "\n";
+  }
   out.close();
-  const ProgramResult hole = run_insmc("compensate --records " + dir.str() + "/hole.csv");
-  EXPECT_EQ(hole.exit_code, 2) << hole.err;
-  EXPECT_TRUE(has(hole.err, "hole.csv: ") && has(hole.err, "run 0") && has(hole.err, "300")) << hole.err;
+  const ProgramResult holes = run_insmc("compensate --records " + dir.str() + "/holes.csv");
+  EXPECT_EQ(holes.exit_code, 2) << holes.err;
+  EXPECT_TRUE(has(holes.err, "holes.csv: ") && has(holes.err, "run 0") && has(holes.err, "t_s = 200)") &&
+              has(holes.err, "f at 39 and r at 39 of the K = 90") && has(holes.err, "at least 45 of the 90"))
+      << holes.err;
+}
+
+TEST(Compensate, ARunThatDroppedRecordsIsFittedOverTheIntervalsItHas) {
+  // A logger that dropped five test records of 90 and the f of one more:
+  // the fits (4.4), (4.8) over the rest, said so, and the unit's test rows
+  // still fit the model. The conditioning on fewer rows is nested in the
+  // one on all of them, so the two estimates differ by a Gaussian of
+  // variance σ_dropped² − σ_all² (held to 4 of its sigmas). That variance is
+  // not small: with counted ΔV pulses the windows' counting errors telescope
+  // over consecutive windows, and each missing window breaks the chain
+  // (about twice the sigma of Û2_z here).
+  const TempDir dir;
+  const std::string records = simulate(dir, 1);
+  const TempDir full_dir;
+  ASSERT_EQ(run_insmc("compensate --records " + records + " --scheme 5.3 --out " + full_dir.str()).exit_code, 0);
+  const auto full_est = csv_rows(read_file(full_dir.path() / "estimates.csv"));
+  std::ifstream in(records);
+  const std::string dropped = dir.str() + "/dropped.csv";
+  std::ofstream out(dropped);
+  std::vector<std::string> header;
+  for (std::string line; std::getline(in, line);) {
+    if (line.starts_with("#")) {
+      out << line << "\n";
+      continue;
+    }
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    if (header.empty()) {
+      header = cells;
+      out << line << "\n";
+      continue;
+    }
+    const auto col = [&](const char* name) {
+      return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    const bool test_row = cells[col("phase")] == "test";
+    const double t = std::stod(cells[col("t_s")]);
+    if (test_row && (t == 50 || t == 130 || t == 300 || t == 610 || t == 820)) continue;
+    if (test_row && t == 440)
+      for (const char* f : {"f_x", "f_y", "f_z"}) cells[col(f)].clear();
+    for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << cells[i];
+    out << "\n";
+  }
+  out.close();
+  const TempDir dropped_out;
+  const ProgramResult r = run_insmc("compensate --records " + dropped + " --scheme 5.3 --out " + dropped_out.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "run 0: f at 84 and r at 85 of the 90 filter intervals of the test run (the first missing "
+                         "at t = 50 s)"))
+      << r.out;
+  EXPECT_TRUE(has(r.out, "1 of 1 unit(s) go")) << r.out;  // no limit: no-go only where the rows do not fit
+  const auto est = csv_rows(read_file(dropped_out.path() / "estimates.csv"));
+  ASSERT_EQ(full_est.size(), est.size());
+  for (std::size_t i = 1; i < est.size(); ++i) {
+    const double sigma = std::stod(est[i][3]), sigma_all = std::stod(full_est[i][3]);
+    EXPECT_GE(sigma, sigma_all * (1 - 1e-9)) << est[i][1];  // fewer data never know more
+    EXPECT_LE(std::abs(std::stod(est[i][2]) - std::stod(full_est[i][2])),
+              4 * std::sqrt(sigma * sigma - sigma_all * sigma_all))
+        << est[i][1] << " (six of 90 intervals dropped)";
+  }
 }
 
 }  // namespace

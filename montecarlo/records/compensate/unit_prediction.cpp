@@ -135,6 +135,7 @@ Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const runs::L
   const auto K = static_cast<Eigen::Index>(std::lround(T / tau));
   const auto n = static_cast<Eigen::Index>(layout.rows.size());
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(runs::kEstimateCount, n);
+  const TestRunEstimators estimators = layout_estimators(site, layout);
   for (int a = 0; a < 3; ++a) {
     Eigen::MatrixXd position = Eigen::MatrixXd::Zero(K, n), accel = Eigen::MatrixXd::Zero(K, n);
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -144,7 +145,7 @@ Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const runs::L
       INSMC_ASSERT(k >= 1 && k <= K, "test row at {} s off the filter grid", row.t_s);
       (row.quantity == runs::Quantity::kF ? accel : position)(k - 1, i) = 1.0;
     }
-    const Eigen::MatrixXd e = apply_estimators(*site.estimators, site.model, T, position, accel);
+    const Eigen::MatrixXd e = apply_estimators(estimators, site.model, T, position, accel);
     B.row(a) = e.row(kU2Row);
     B.row(3 + a) = e.row(kU3Row);
     B.row(6 + a) = e.row(kU3AccelRow);
@@ -230,7 +231,7 @@ UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run,
   c.consistency_p = boost::math::cdf(
       boost::math::complement(boost::math::chi_squared(c.consistency_dof), std::max(c.consistency_chi2, 0.0)));
   c.estimates_map = shared.estimates_map;
-  const TestRunEstimators& est = *site.estimators;
+  const TestRunEstimators& est = run.estimators;
   const Eigen::Vector4d per_r0 = est.position * Eigen::VectorXd::Ones(est.position.cols());
   const Vec3 r0 = LinearErrorModel(site.system, site.model).initial_position() * c.cause_estimate.head(ux::kDim);
   c.crew_estimates = run.estimates;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "lib/common/assert.h"
 #include "lib/common/input_error.h"
 #include "montecarlo/records/runs/model/scheme_rows.h"
 #include "montecarlo/records/runs/prepared_runs.h"
@@ -51,39 +52,63 @@ double median_r_spacing(const RecordFile& file) {
   return spacings[spacings.size() / 2];
 }
 
-UnitTestRun unit_test_run(const RecordRun& run, const runs::RecordSite& site) {
+/// The fewest intervals a run's fit may keep of K: half of them (a logger's
+/// dropouts are a few per cent; a run with more missing is not the test run
+/// the report's fits were designed for), and every one of a very short run.
+int fewest_intervals(int K) { return std::max((K + 1) / 2, std::min(K, 6)); }
+
+UnitTestRun unit_test_run(const RecordRun& run, const runs::RecordSite& site, std::vector<std::string>& statements) {
   const double tau = site.filter_interval_s;
   const int K = static_cast<int>(std::lround(site.test_duration_s / tau));
   UnitTestRun out;
   out.id = run.id;
-  out.layout = test_run_layout(K, tau);
-  out.values.resize(static_cast<Eigen::Index>(out.layout.rows.size()));
-  Eigen::MatrixXd position(K, 3), accel(K, 3);
+  out.layout.nav = runs::NavSegment::kContinue;
+  Eigen::MatrixXd position = Eigen::MatrixXd::Zero(K, 3), accel = Eigen::MatrixXd::Zero(K, 3);
+  std::vector<double> values;
+  int with_f = 0, with_r = 0;
+  double first_missing_s = -1;
   for (int k = 1; k <= K; ++k) {
     const double t = k * tau;
     const RecordRow* row =
         test_row_at(run, t, tau, runs::nav_segment_of(site.scheme) == runs::NavSegment::kContinue);
-    const auto missing = [&](const char* what) {
-      return InputError(fmt::format("records run {} test rows", run.id), fmt::format("(no {} at t_s = {:g})", what, t),
-                        fmt::format("compensate needs f and r (all three axes) at every filter interval t_k = k*{:g} s "
-                                    "(within {:g} s) up to T = {:g} s: the data of the estimators (4.4), (4.8)",
-                                    tau, kGridJitter * tau, site.test_duration_s));
-    };
-    if (row == nullptr) throw missing("row");
-    if (!row->r_ap_m) throw missing("r");
-    for (int a = 0; a < 3; ++a) {
-      if (!row->f_mps2[a]) throw missing("f");
-      accel(k - 1, a) = *row->f_mps2[a];
-      position(k - 1, a) = (*row->r_ap_m)[a];
-      out.values[6 * (k - 1) + a] = accel(k - 1, a);
-      out.values[6 * (k - 1) + 3 + a] = position(k - 1, a);
+    const bool has_f = row != nullptr && row->f_mps2[0] && row->f_mps2[1] && row->f_mps2[2];
+    const bool has_r = row != nullptr && row->r_ap_m.has_value();
+    if ((!has_f || !has_r) && first_missing_s < 0) first_missing_s = t;
+    // test_run_layout's order: at each t_k the f rows of x, y, z, then the r rows.
+    for (const runs::Quantity q : {runs::Quantity::kF, runs::Quantity::kR}) {
+      const bool is_f = q == runs::Quantity::kF;
+      if (is_f ? !has_f : !has_r) continue;
+      for (int a = 0; a < 3; ++a) {
+        const double v = is_f ? *row->f_mps2[a] : (*row->r_ap_m)[a];
+        (is_f ? accel : position)(k - 1, a) = v;
+        out.layout.rows.push_back({t, q, a, runs::group_of(runs::Stage::kTest, q, a, 0)});
+        values.push_back(v);
+      }
     }
+    with_f += has_f ? 1 : 0;
+    with_r += has_r ? 1 : 0;
   }
+  out.layout.test_rows = static_cast<int>(out.layout.rows.size());
+  out.values = Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
+  if (std::min(with_f, with_r) < fewest_intervals(K))
+    throw InputError(fmt::format("records run {} test rows", run.id),
+                     fmt::format("(f at {} and r at {} of the K = {} filter intervals; the first missing at t_s = {:g})",
+                                 with_f, with_r, K, first_missing_s),
+                     fmt::format("compensate fits (4.4), (4.8) over the intervals t_k = k*{:g} s (within {:g} s) up "
+                                 "to T = {:g} s that have f and r (all three axes): at least {} of the {}",
+                                 tau, kGridJitter * tau, site.test_duration_s, fewest_intervals(K), K));
+  if (with_f < K || with_r < K)
+    statements.push_back(fmt::format(
+        "run {}: f at {} and r at {} of the {} filter intervals of the test run (the first missing at t = {:g} s): "
+        "the fits (4.4), (4.8) are taken over the intervals it has",
+        run.id, with_f, with_r, K, first_missing_s));
+  out.estimators = layout_estimators(site, out.layout);
   // The estimators as the Monte Carlo applies them (test_run.h); r rather
   // than Δr = r − r(0): records have no row at t = 0, so each estimate
   // carries the estimator's response to r(0) (scheme_rows.h models it).
+  // A missing interval's data are zero here and its columns zero.
   const Eigen::Matrix<double, kEstimateRows, 3> e =
-      apply_estimators<3>(*site.estimators, site.model, site.test_duration_s, position, accel);
+      apply_estimators<3>(out.estimators, site.model, site.test_duration_s, position, accel);
   out.estimates.u2 = e.row(kU2Row).transpose();
   out.estimates.u3 = e.row(kU3Row).transpose();
   out.estimates.u3_accel = e.row(kU3AccelRow).transpose();
@@ -92,6 +117,29 @@ UnitTestRun unit_test_run(const RecordRun& run, const runs::RecordSite& site) {
 }
 
 }  // namespace
+
+TestRunEstimators layout_estimators(const runs::RecordSite& site, const runs::Layout& layout) {
+  INSMC_ASSERT(site.estimators.has_value(), "layout_estimators before the site's estimators");
+  const double tau = site.filter_interval_s;
+  const auto K = static_cast<std::size_t>(std::lround(site.test_duration_s / tau));
+  std::vector<int> f_axes(K, 0), r_axes(K, 0);
+  for (const runs::ObservationRow& row : layout.rows) {
+    const long k = std::lround(row.t_s / tau);
+    INSMC_ASSERT(k >= 1 && static_cast<std::size_t>(k) <= K, "test row at {} s off the filter grid", row.t_s);
+    ++(row.quantity == runs::Quantity::kF ? f_axes : r_axes)[static_cast<std::size_t>(k - 1)];
+  }
+  ObservedIntervals observed;
+  for (std::size_t k = 0; k < K; ++k) {
+    observed.accel.push_back(f_axes[k] == 3);
+    observed.position.push_back(r_axes[k] == 3);
+  }
+  const auto all = [](const std::vector<bool>& v) { return std::all_of(v.begin(), v.end(), [](bool b) { return b; }); };
+  if (all(observed.accel) && all(observed.position)) return *site.estimators;
+  // The site's choice of terms (resolvability, --fit-u4) stays: only the
+  // intervals change.
+  return make_estimators(runs::record_test_options(site), site.model, site.estimators->fit_u3,
+                         site.estimators->fit_u4, observed);
+}
 
 runs::Layout test_run_layout(int K, double tau_s) {
   runs::Layout layout;
@@ -139,7 +187,7 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
                      fmt::format("compensate sums f windows up to at least T/{} = {:g} s; the recorded windows could "
                                  "not be summed so (gaps in the f rows)", kMaxUnitIntervals, T / kMaxUnitIntervals));
   out.site.estimators = record_estimators(out.site, prior);
-  for (const RecordRun& r : records.file.runs) out.runs.push_back(unit_test_run(r, out.site));
+  for (const RecordRun& r : records.file.runs) out.runs.push_back(unit_test_run(r, out.site, out.statements));
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "lib/preflight/test_run.h"
 #include "lib/preflight/test_run_estimates.h"
 #include "lib/records/record.h"
 #include "montecarlo/records/runs/files/site_values.h"
@@ -18,17 +19,23 @@
 namespace insmc::mc {
 
 /// One unit's test run: f and r at t_k = kτ, k = 1..K, per axis (the data
-/// the estimators use), and what the estimators made of them.
+/// the estimators use), and what the estimators made of them. A run whose
+/// logger dropped records has the intervals it has.
 struct UnitTestRun {
   std::int64_t id = 0;
   runs::Layout layout;       ///< the test rows only (f then r per t_k, axes x, y, z)
   Eigen::VectorXd values;   ///< in layout order [m/s², m]
+  TestRunEstimators estimators;  ///< the fits (4.4), (4.8) over the intervals of `layout`
   TestRunEstimates estimates;
 };
 
 /// The rows of a test run of K filter intervals τ: at each t_k = kτ the f
 /// rows of x, y, z, then the r rows.
 runs::Layout test_run_layout(int K, double tau_s);
+
+/// The site's estimators over the intervals a test-run layout has (f and r
+/// each with all three axes at t_k); the site's own where it has them all.
+TestRunEstimators layout_estimators(const runs::RecordSite& site, const runs::Layout& layout);
 
 struct UnitRecords {
   runs::RecordSite site;  ///< completed; its estimators set
@@ -47,8 +54,9 @@ inline constexpr int kMaxUnitIntervals = 120;
 /// `site_gravity_mps2`: the specific force at the site, which the model's
 /// accelerometer and tilt terms are scaled by (default the report's g; a
 /// site's differs by up to 0.3 %, which the most precise estimates resolve).
-/// Throws InputError naming the file's field when a run lacks part of the
-/// test run's grid or the site cannot be completed.
+/// A run may lack some intervals' f or r (the fits take the rest, and a
+/// statement says how many); throws InputError naming the file's field when
+/// a run lacks more than half of either or the site cannot be completed.
 UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& prior,
                               std::optional<std::int64_t> run = std::nullopt,
                               std::optional<double> site_gravity_mps2 = std::nullopt);

@@ -44,5 +44,70 @@ TEST(Estimators, ReproduceTheirOwnDesignAtAnyIntervalCount) {
   }
 }
 
+/// The design of the position fit (4.7) with the U4 term of (4.5), column j
+/// at t_k = kτ.
+double position_datum(const ModelOptions& m, int j, double t) {
+  const double ws = m.schuler_radps(), x = ws * t, r0 = m.radius_m, q = m.earth_rate_radps / ws;
+  const double pos[4] = {std::sin(x) / ws, r0 * (1 - std::cos(x)), r0 * q * (x - std::sin(x)),
+                         r0 * q * q * (0.5 * x * x - (1 - std::cos(x)))};
+  return pos[j];
+}
+
+TEST(Estimators, OverTheIntervalsARunHasTheyAreTheSameFitsWithoutTheMissingOnes) {
+  const ModelOptions m;
+  TestRunOptions o;  // 15 min at 10 s: K = 90
+  const int K = o.intervals();
+  ObservedIntervals observed{std::vector<bool>(K, true), std::vector<bool>(K, true)};
+  // Every interval given: the same bits as the fits over all of them.
+  const TestRunEstimators all = make_estimators(o, m, true, true);
+  const TestRunEstimators all_given = make_estimators(o, m, true, true, observed);
+  EXPECT_TRUE(all.position == all_given.position && all.accel == all_given.accel);
+  // A logger's dropouts, r and f apart, the first and last interval among them.
+  for (const int k : {0, 7, 13, 44, 89}) observed.position[static_cast<std::size_t>(k)] = false;
+  for (const int k : {0, 21, 60, 61}) observed.accel[static_cast<std::size_t>(k)] = false;
+  const TestRunEstimators e = make_estimators(o, m, true, true, observed);
+  ASSERT_TRUE(e.fit_u3 && e.fit_u4);
+  double worst_position = 0, worst_accel = 0;
+  for (int k = 0; k < K; ++k) {
+    if (!observed.position[static_cast<std::size_t>(k)]) {
+      EXPECT_TRUE((e.position.col(k).array() == 0).all()) << k;
+    }
+    if (!observed.accel[static_cast<std::size_t>(k)]) {
+      EXPECT_TRUE((e.accel.col(k).array() == 0).all()) << k;
+    }
+  }
+  // Each map applied to its own design over the intervals it has: the
+  // identity (a least-squares fit reproduces data its model explains).
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      // Relative to the sum's own rounding scale Σ|e d| (the columns span
+      // 1/ω_s to r0 q² (ω_s T)²/2).
+      double sum = 0, magnitude = 1.0;
+      for (int k = 1; k <= K; ++k)
+        if (observed.position[static_cast<std::size_t>(k - 1)]) {
+          const double term = e.position(i, k - 1) * position_datum(m, j, k * o.filter_interval_s);
+          sum += term;
+          magnitude += std::abs(term);
+        }
+      worst_position = std::max(worst_position, std::abs(sum - (i == j ? 1.0 : 0.0)) / magnitude);
+    }
+  const double w = m.earth_rate_radps, g = m.gravity_mps2;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      double sum = 0;
+      for (int k = 1; k <= K; ++k) {
+        if (!observed.accel[static_cast<std::size_t>(k - 1)]) continue;
+        const double t = k * o.filter_interval_s, a = t - o.filter_interval_s;
+        const double datum[3] = {g, g * w * (a + t) / 2, g * w * w * (a * a + a * t + t * t) / 6};
+        sum += e.accel(i, k - 1) * datum[j];
+      }
+      worst_accel = std::max(worst_accel, std::abs(sum - (i == j ? 1.0 : 0.0)));
+    }
+  EXPECT_LT(worst_position, 1e-9);
+  EXPECT_LT(worst_accel, 1e-9);
+  // And they differ from the fits over every interval (the test can fail).
+  EXPECT_GT((e.position - all.position).cwiseAbs().maxCoeff(), 0.0);
+}
+
 }  // namespace
 }  // namespace insmc
