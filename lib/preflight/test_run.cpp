@@ -15,7 +15,9 @@
 namespace insmc {
 
 int TestRunOptions::intervals() const {
-  return static_cast<int>(std::lround(duration_s / filter_interval_s));
+  // The windows that end within the test run: T/τ itself where τ divides T
+  // (validate() asks it of a study); a recorder's τ need not.
+  return static_cast<int>(std::floor(duration_s / filter_interval_s + 1e-6));
 }
 
 void validate(const TestRunOptions& o) {

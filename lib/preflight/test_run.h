@@ -54,7 +54,7 @@ struct TestRunOptions {
   /// steady state.
   std::optional<AlignmentLoopSettings> alignment_loops;
 
-  int intervals() const;  ///< K = T/τ
+  int intervals() const;  ///< K = ⌊T/τ⌋, the filter windows that end within T (T/τ in a study)
 };
 
 /// Physical ranges of the test-run settings (validate() and --help use them).

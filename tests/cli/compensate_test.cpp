@@ -302,6 +302,32 @@ TEST(Compensate, BadInputIsRefusedWithTheFieldNamed) {
       << holes.err;
 }
 
+TEST(Compensate, ARecorderWhoseFilterIntervalDoesNotDivideTheTestRun) {
+  // A recorder of 40 s windows over a 15-min test run: the fits take the 22
+  // windows that end within it (to 880 s), said so, and the rows fit. Made
+  // from a 920 s simulated test run (23 windows) whose header says 900 s and
+  // whose window ending at 920 s is gone.
+  const TempDir dir;
+  const std::string sim = dir.str() + "/sim.csv";
+  ASSERT_EQ(run_insmc("simulate --runs 1 --test-duration 920s --filter-interval 40s --nav-duration 20min --out " + sim)
+                .exit_code,
+            0);
+  std::ifstream in(sim);
+  const std::string cut = dir.str() + "/cut.csv";
+  std::ofstream out(cut);
+  for (std::string line; std::getline(in, line);) {
+    if (line == "# test_duration_s=920") line = "# test_duration_s=900";
+    if (line.find(",920,test,") == std::string::npos) out << line << "\n";
+  }
+  out.close();
+  const ProgramResult r = run_insmc("compensate --records " + cut);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "the filter interval 40 s does not divide T = 900 s: the fits (4.4), (4.8) take the 22 "
+                         "windows that end within the test run (to 880 s)"))
+      << r.out;
+  EXPECT_TRUE(has(r.out, "1 of 1 unit(s) go")) << r.out;
+}
+
 TEST(Compensate, ARunThatDroppedRecordsIsFittedOverTheIntervalsItHas) {
   // A logger that dropped five test records of 90 and the f of one more:
   // the fits (4.4), (4.8) over the rest, said so, and the unit's test rows

@@ -132,7 +132,7 @@ double UnitPositionError::population_horizontal_rms_m() const {
 Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const runs::Layout& layout) {
   const runs::RecordSite& site = records.site;
   const double tau = site.filter_interval_s, T = site.test_duration_s;
-  const auto K = static_cast<Eigen::Index>(std::lround(T / tau));
+  const auto K = static_cast<Eigen::Index>(runs::record_test_options(site).intervals());
   const auto n = static_cast<Eigen::Index>(layout.rows.size());
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(runs::kEstimateCount, n);
   const TestRunEstimators estimators = layout_estimators(site, layout);
@@ -182,7 +182,7 @@ std::vector<Identifiability> identifiability(const UnitRecords& records, const U
     runs::RecordSite site = site_for(records, Scheme::kNone, 0.0);
     site.test_duration_s *= factor;
     site.filter_interval_s *= factor;
-    const int K = static_cast<int>(std::lround(site.test_duration_s / site.filter_interval_s));
+    const int K = runs::record_test_options(site).intervals();
     const runs::Layout layout = test_run_layout(K, site.filter_interval_s);
     const runs::BaseModel base = runs::make_base_model(layout, site, x_var);
     runs::GaussianModel model = runs::combine(base, {});

@@ -59,7 +59,7 @@ int fewest_intervals(int K) { return std::max((K + 1) / 2, std::min(K, 6)); }
 
 UnitTestRun unit_test_run(const RecordRun& run, const runs::RecordSite& site, std::vector<std::string>& statements) {
   const double tau = site.filter_interval_s;
-  const int K = static_cast<int>(std::lround(site.test_duration_s / tau));
+  const int K = runs::record_test_options(site).intervals();
   UnitTestRun out;
   out.id = run.id;
   out.layout.nav = runs::NavSegment::kContinue;
@@ -121,7 +121,7 @@ UnitTestRun unit_test_run(const RecordRun& run, const runs::RecordSite& site, st
 TestRunEstimators layout_estimators(const runs::RecordSite& site, const runs::Layout& layout) {
   INSMC_ASSERT(site.estimators.has_value(), "layout_estimators before the site's estimators");
   const double tau = site.filter_interval_s;
-  const auto K = static_cast<std::size_t>(std::lround(site.test_duration_s / tau));
+  const auto K = static_cast<std::size_t>(runs::record_test_options(site).intervals());
   std::vector<int> f_axes(K, 0), r_axes(K, 0);
   for (const runs::ObservationRow& row : layout.rows) {
     const long k = std::lround(row.t_s / tau);
@@ -187,6 +187,12 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
                      fmt::format("compensate sums f windows up to at least T/{} = {:g} s; the recorded windows could "
                                  "not be summed so (gaps in the f rows)", kMaxUnitIntervals, T / kMaxUnitIntervals));
   out.site.estimators = record_estimators(out.site, prior);
+  const int K = runs::record_test_options(out.site).intervals();
+  if (std::abs(K * out.site.filter_interval_s - out.site.test_duration_s) > 1e-6 * out.site.test_duration_s)
+    out.statements.push_back(fmt::format(
+        "the filter interval {:g} s does not divide T = {:g} s: the fits (4.4), (4.8) take the {} windows that end "
+        "within the test run (to {:g} s), and (5.10) carries them to T",
+        out.site.filter_interval_s, out.site.test_duration_s, K, K * out.site.filter_interval_s));
   for (const RecordRun& r : records.file.runs) out.runs.push_back(unit_test_run(r, out.site, out.statements));
   return out;
 }

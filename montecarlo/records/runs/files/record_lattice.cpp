@@ -106,7 +106,11 @@ LatticeFit fit_lattice(std::vector<double> values, double tolerance) {
 namespace {
 
 /// Differences of `order` (1 or 2) of each run's consecutive counted
-/// velocities u_k (rows at most 2τ apart).
+/// velocities u_k: windows τ apart (a recorder's jitter allowed). A dropped
+/// record ends the stretch: a difference across it spans two windows, whose
+/// leftover of the nominal increment (g at the site against the report's)
+/// no longer cancels, and one such value off the lattice hid the pulses of
+/// a whole file.
 std::vector<double> counted_differences(const RecordFile& file, const ModelOptions& model, double tau, int order) {
   std::vector<double> values;
   for (const RecordRun& run : file.runs)
@@ -116,7 +120,7 @@ std::vector<double> counted_differences(const RecordFile& file, const ModelOptio
       for (const RecordRow& row : run.rows) {
         if (row.phase != Phase::kTest || !row.f_mps2[static_cast<std::size_t>(a)] || row.t_s < tau * (1 - 1e-9))
           continue;
-        if (!u.empty() && row.t_s - last_t > 2 * tau * (1 + 1e-6)) u.clear();
+        if (!u.empty() && row.t_s - last_t > 1.5 * tau) u.clear();
         u.push_back(*row.f_mps2[static_cast<std::size_t>(a)] * tau +
                     (nominal_velocity_increment(row.t_s, model) - nominal_velocity_increment(row.t_s - tau, model))[a]);
         last_t = row.t_s;

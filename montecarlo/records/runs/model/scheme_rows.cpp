@@ -107,7 +107,7 @@ SchemeRows scheme_rows(const Layout& layout, const RecordSite& site, const TestR
 std::optional<SchemeEstimates> record_estimates(const RecordRun& run, const RecordSite& site,
                                                 const TestRunEstimators& estimators) {
   const double tau = site.filter_interval_s;
-  const auto K = static_cast<int>(std::lround(site.test_duration_s / tau));
+  const int K = record_test_options(site).intervals();
   Eigen::MatrixXd accel(K, 3), position(K, 3);
   std::vector<bool> seen(static_cast<std::size_t>(K), false);
   for (const RecordRow& row : run.rows) {
