@@ -31,6 +31,13 @@ std::string simulate(const TempDir& dir, int runs, const std::string& scheme = "
   return path;
 }
 
+/// The rows of estimates.csv of `compensate --scheme 5.3` on a record file.
+std::vector<std::vector<std::string>> estimates_after_53(const std::string& records) {
+  const TempDir out;
+  EXPECT_EQ(run_insmc("compensate --records " + records + " --scheme 5.3 --out " + out.str()).exit_code, 0);
+  return csv_rows(read_file(out.path() / "estimates.csv"));
+}
+
 TEST(Compensate, ReportsEachUnitWithItsFilesAndJson) {
   const TempDir dir;
   const std::string records = simulate(dir, 2);
@@ -201,9 +208,7 @@ std::string foreign_records(const TempDir& dir, const std::string& records, bool
 TEST(Compensate, RecordsOfOtherSoftware) {
   const TempDir dir;
   const std::string records = simulate(dir, 1);
-  const TempDir full_dir;
-  ASSERT_EQ(run_insmc("compensate --records " + records + " --scheme 5.3 --out " + full_dir.str()).exit_code, 0);
-  const auto full_est = csv_rows(read_file(full_dir.path() / "estimates.csv"));
+  const auto full_est = estimates_after_53(records);
   for (const bool coarse : {false, true}) {
     const std::string file = foreign_records(dir, records, coarse);
     const TempDir out;
@@ -339,9 +344,7 @@ TEST(Compensate, ARunThatDroppedRecordsIsFittedOverTheIntervalsItHas) {
   // (about twice the sigma of Û2_z here).
   const TempDir dir;
   const std::string records = simulate(dir, 1);
-  const TempDir full_dir;
-  ASSERT_EQ(run_insmc("compensate --records " + records + " --scheme 5.3 --out " + full_dir.str()).exit_code, 0);
-  const auto full_est = csv_rows(read_file(full_dir.path() / "estimates.csv"));
+  const auto full_est = estimates_after_53(records);
   std::ifstream in(records);
   const std::string dropped = dir.str() + "/dropped.csv";
   std::ofstream out(dropped);
