@@ -29,8 +29,10 @@ std::string row(const std::string& md, const std::string& section, const std::st
 /// 2 h at 10 Hz; gyro_x: white noise 9 deg/h/√Hz (0.15 deg/√h), a
 /// Gauss–Markov process of 3 deg/h with T_c = 20 s and a rate random walk of
 /// 8 deg/h/√h, each dominating a decade of τ; the other channels white.
-/// (The statistical test, tests/statistical/noise_fit_coverage_test.cpp,
-/// counts how often each term is kept and covered over many files.)
+/// (NoiseFit.WhiteGaussMarkovAndRandomWalkAreKeptTogether and
+/// NavigationGradeWhiteNoiseAndRandomWalkCoverAtTheirRate, in
+/// tests/unit/lib/noise/noise_fit_test.cpp, count how often each term is
+/// kept and covered over many files.)
 TEST(NoiseTrust, EveryTermTheDataSupportIsKeptAndTheModelPassesItsFitTest) {
   TempDir dir;
   const std::string input = (dir.path() / "imu.csv").string();
