@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <optional>
+#include <cstdlib>
 
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
@@ -131,17 +132,26 @@ PreparedRuns prepare(const Records& records, const RecordReading& options) {
     if (!records.estimates.empty())
       take_off_estimates(p.runs[r], p.bases[static_cast<std::size_t>(L)], records.estimates[r]);
   }
+  if (std::getenv("INSMC_DEBUG_LAYOUTS")) { fmt::print(stderr, "DEBUG lattices {} layouts {}\n", p.lattices.size(), p.layouts.size());
+    for (auto& l : p.lattices) fmt::print(stderr, " lattice rows {} test {}\n", l.rows.size(), l.test_rows);
+    for (std::size_t L=0;L<p.layouts.size();++L) fmt::print(stderr, " layout {} rows {} test {} lattice {}\n", L, p.layouts[L].rows.size(), p.layouts[L].test_rows, p.lattice_of[L]); }
   return p;
 }
 
 void PreparedRuns::add_lattice(std::span<const Layout* const> of) {
-  std::size_t largest = 0;
-  for (const Layout* l : of) {
+  std::size_t largest = 0, apart = 0;
+  for (std::size_t i = 0; i < of.size(); ++i) {
+    const Layout* l = of[i];
     largest = std::max(largest, l->rows.size());
     if (l->nav != of.front()->nav || l->nav_start_s != of.front()->nav_start_s) return;
+    // The rows the layouts would be fitted on apart: each distinct one once.
+    if (std::none_of(of.begin(), of.begin() + static_cast<std::ptrdiff_t>(i), [&](const Layout* e) { return *e == *l; }))
+      apart += l->rows.size();
   }
   Layout lattice = layout_union(of);
-  if (static_cast<double>(lattice.rows.size()) > kLatticeGrowth * static_cast<double>(largest)) return;
+  if (std::getenv("INSMC_DEBUG_LAYOUTS")) fmt::print(stderr, "DEBUG union {} largest {} apart {}\n", lattice.rows.size(), largest, apart);
+  const auto rows = static_cast<double>(lattice.rows.size());
+  if (rows > kLatticeGrowth * static_cast<double>(largest) && rows > static_cast<double>(apart) / kLatticeGrowth) return;
   lattice_bases.push_back(make_base_model(lattice, site, x_var));
   lattices.push_back(std::move(lattice));
 }

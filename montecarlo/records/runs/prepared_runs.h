@@ -21,8 +21,9 @@
 
 namespace insmc::runs {
 
-/// How much larger than the largest layout a union of layouts may be to
-/// serve as their lattice (PreparedRuns::add_lattice).
+/// A union of layouts serves as their lattice when it holds at most this
+/// many times the rows of the largest of them, or at most 1/this of the rows
+/// the distinct layouts would be fitted on apart (PreparedRuns::add_lattice).
 inline constexpr double kLatticeGrowth = 1.5;
 
 /// How records are read into the run model.
@@ -86,8 +87,12 @@ struct PreparedRuns {
   KeySpace keys;  // over every layout
 
   /// Adds the union of `layouts` as a lattice when it holds at most
-  /// kLatticeGrowth times the rows of the largest of them (a union of
-  /// layouts that share few rows would cost more than they do).
+  /// kLatticeGrowth times the rows of the largest of them, or when fitting
+  /// it costs at most 1/kLatticeGrowth of fitting the distinct layouts apart
+  /// (each run of other software drops its own records, and runs stop at
+  /// different times: the union is then larger than any one run but far
+  /// smaller than their fits apart). A union of layouts that share few rows
+  /// would cost more than they do.
   void add_lattice(std::span<const Layout* const> layouts);
 
   /// Index of `layout`, added (with its base model and keys) when new.

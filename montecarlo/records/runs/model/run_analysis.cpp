@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lib/common/assert.h"
+#include "montecarlo/records/runs/model/quadratic_forms.h"
 
 namespace insmc::runs {
 
@@ -27,16 +28,24 @@ Eigen::MatrixXd inverse_of_information(const Eigen::MatrixXd& info) {
 template <class Vector>
 Vector rows_of(const Vector& v, std::span<const Eigen::Index> rows) {
   Vector out(static_cast<Eigen::Index>(rows.size()), v.cols());
-  if (v.cols() == 0) return out;  // no data to take a row of (a null pointer)
-  for (std::size_t i = 0; i < rows.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = v.row(rows[i]);
+  // Column by column: the matrices are column-major, and a row at a time
+  // strides through all of them (it was a seventh of the diagnosis' time).
+  for (Eigen::Index c = 0; c < v.cols(); ++c) {
+    const double* from = v.col(c).data();
+    double* to = out.col(c).data();
+    for (std::size_t i = 0; i < rows.size(); ++i) to[i] = from[rows[i]];
+  }
   return out;
 }
 
-/// A downdate of k test rows is worth it while k is below this share of the
-/// causes (O(n d k) against the fit anew's O(n d²)), and is exact to
-/// round-off while the information left, I − Gᵀ Π G, keeps every
-/// eigenvalue above kLeastKept (a cancellation of at most 1/kLeastKept).
-constexpr double kDowndateShare = 0.5;
+/// A Woodbury downdate of k test rows is worth it while k is below this
+/// share of the causes (O(n d k) against the O(n d²) of the rows' terms
+/// from a posterior of the layout's own), and is exact to round-off while
+/// the information left, I − Gᵀ Π G, keeps every eigenvalue above
+/// kLeastKept (a cancellation of at most 1/kLeastKept). Beyond that share
+/// the layout's information is the lattice's less the rows it lacks, while
+/// each cause keeps more than kLeastKept of its own.
+constexpr double kDowndateShare = 0.25;
 constexpr double kLeastKept = 1e-3;
 
 }  // namespace
@@ -58,7 +67,7 @@ LatticeAnalysis::LatticeAnalysis(const Layout& lattice, const GaussianModel& mod
   }
   noise_var_ = model.noise_var;
   actual_noise_var_ = model.actual_noise_var;
-  fit();
+  fit(true);
 }
 
 LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows)
@@ -70,31 +79,60 @@ LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& la
       noise_var_(rows_of(lattice.noise_var_, rows)),
       actual_noise_var_(rows_of(lattice.actual_noise_var_, rows)),
       test_rows_(layout.test_rows) {
-  fit();
+  fit(false);
 }
 
-void LatticeAnalysis::fit() {
+LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows,
+                                 const Eigen::MatrixXd& G, const Eigen::VectorXd& share)
+    : layout_(&layout),
+      mean_(rows_of(lattice.mean_, rows)),
+      H_(rows_of(lattice.H_, rows)),
+      prior_(lattice.prior_),
+      s_(lattice.s_),
+      active_(lattice.active_),
+      noise_var_(rows_of(lattice.noise_var_, rows)),
+      actual_noise_var_(rows_of(lattice.actual_noise_var_, rows)),
+      test_rows_(layout.test_rows) {
+  // The information and the spread are sums over the test rows: the
+  // lattice's less the rows the layout lacks.
+  Eigen::MatrixXd info = lattice.info_, spread = lattice.spread_;
+  info.noalias() -= G * G.transpose();
+  spread.noalias() -= G * share.asDiagonal() * G.transpose();
+  solve(std::move(info), std::move(spread), false);
+}
+
+void LatticeAnalysis::fit(bool lattice) {
   const Eigen::Index nt = test_rows_;
-  const Eigen::MatrixXd weighted_test = H_.topRows(nt).array().colwise() / noise_var_.head(nt).array();
   // Information form: (P⁻¹ + Hᵀ R⁻¹ H)⁻¹ = P⁺. Scaling by the prior std keeps
   // it well conditioned across causes of very different units: c = S u,
   // u ~ (0, I), P⁺ = S Π S with Π = (I + S Hᵀ R⁻¹ H S)⁻¹.
   s_ = prior_.cwiseSqrt();
-  Eigen::MatrixXd info = (s_.asDiagonal() * (H_.topRows(nt).transpose() * weighted_test) * s_.asDiagonal());
+  const Eigen::MatrixXd HS = H_.topRows(nt) * s_.asDiagonal();
+  const Eigen::VectorXd inverse_noise = noise_var_.head(nt).cwiseInverse();
+  Eigen::MatrixXd info = weighted_gram(HS, inverse_noise);
   info.diagonal().array() += 1.0;
-  pi_ = inverse_of_information(info);
   // The actual test noise through the fit's gain, scaled: J = S Hₜᵀ R⁻¹ R_a R⁻¹ Hₜ S;
   // then A + B = S Π (I + J) Π S.
-  const Eigen::ArrayXd actual_share = actual_noise_var_.head(nt).array() / noise_var_.head(nt).array();
-  spread_ = s_.asDiagonal() *
-            (weighted_test.transpose() * (H_.topRows(nt).array().colwise() * actual_share).matrix()) *
-            s_.asDiagonal();
-  spread_.diagonal().array() += 1.0;
+  const Eigen::VectorXd actual_weight = actual_noise_var_.head(nt).cwiseProduct(inverse_noise.cwiseAbs2());
+  Eigen::MatrixXd spread = weighted_gram(HS, actual_weight);
+  spread.diagonal().array() += 1.0;
+  solve(std::move(info), std::move(spread), lattice);
+}
+
+void LatticeAnalysis::solve(Eigen::MatrixXd info, Eigen::MatrixXd spread, bool lattice) {
+  info_ = std::move(info);
+  spread_ = std::move(spread);
+  pi_ = inverse_of_information(info_);
   around_ = pi_ * spread_ * pi_;
   const Eigen::MatrixXd HS = H_ * s_.asDiagonal();
+  ab_ = row_quadratic_forms(HS, around_);
+  if (!lattice) {
+    q_ = row_quadratic_forms(HS, pi_);
+    return;
+  }
+  // A lattice's layouts downdate each row's terms by its h S Π (Woodbury).
   HS_pi_ = HS * pi_;
   q_ = (HS_pi_.array() * HS.array()).rowwise().sum();
-  ab_ = ((HS * around_).array() * HS.array()).rowwise().sum();
 }
 
 RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model) {
@@ -130,18 +168,32 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
     G.col(j) = a.s_.cwiseProduct(a.H_.row(m).transpose()) / std::sqrt(a.noise_var_[m]);
     share[j] = a.actual_noise_var_[m] / a.noise_var_[m];
   }
+  std::vector<Eigen::Index> all(rows.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<Eigen::Index>(i);
+  const auto own_fit = [&] {
+    // The rows the layout lacks held nearly all the information about some
+    // cause: a downdate would cancel; the layout's fit is made anew.
+    const LatticeAnalysis own(layout, a, rows);
+    finish(own, all, own.pi_, own.q_, own.ab_, own.around_.diagonal());
+  };
+  if (static_cast<double>(k) > kDowndateShare * static_cast<double>(d)) {
+    // Too many rows missing for Woodbury: the layout's information is the
+    // lattice's less G Gᵀ (O(k d²) instead of a Gram over its test rows).
+    const Eigen::VectorXd lacked = G.rowwise().squaredNorm();
+    if (!((a.info_.diagonal() - lacked).array() > kLeastKept * a.info_.diagonal().array()).all()) {
+      own_fit();
+      return;
+    }
+    const LatticeAnalysis own(layout, a, rows, G, share);
+    finish(own, all, own.pi_, own.q_, own.ab_, own.around_.diagonal());
+    return;
+  }
   const Eigen::MatrixXd U = a.pi_ * G;
   Eigen::MatrixXd kept = -G.transpose() * U;
   kept.diagonal().array() += 1.0;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(kept);
-  if (static_cast<double>(k) > kDowndateShare * static_cast<double>(d) || eig.info() != Eigen::Success ||
-      !(eig.eigenvalues().minCoeff() > kLeastKept)) {
-    // The layout's own fit: too many rows missing, or ones that carried
-    // nearly all the information about some cause.
-    const LatticeAnalysis own(layout, a, rows);
-    std::vector<Eigen::Index> all(rows.size());
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<Eigen::Index>(i);
-    finish(own, all, own.pi_, own.q_, own.ab_, own.around_.diagonal());
+  if (eig.info() != Eigen::Success || !(eig.eigenvalues().minCoeff() > kLeastKept)) {
+    own_fit();
     return;
   }
   const Eigen::MatrixXd C =

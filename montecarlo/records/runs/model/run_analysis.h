@@ -68,7 +68,16 @@ class LatticeAnalysis {
   friend class RunAnalyser;
   /// The analysis of `layout`, the rows `rows` of `lattice`'s, fitted anew.
   LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows);
-  void fit();
+  /// The same from the lattice's information less that of the test rows the
+  /// layout lacks (G's columns g_m = S h_mᵀ/σ_m, `share` their R_a/R).
+  LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows,
+                  const Eigen::MatrixXd& G, const Eigen::VectorXd& share);
+  /// The information and the spread from the test rows, then solve().
+  void fit(bool lattice);
+  /// Π, Π (I + J) Π and each row's q and ab from the scaled information
+  /// I + S Hₜᵀ R⁻¹ Hₜ S and spread I + J; a lattice also keeps H S Π, from
+  /// which its layouts are downdated.
+  void solve(Eigen::MatrixXd info, Eigen::MatrixXd spread, bool lattice);
 
   const Layout* layout_;
   Eigen::VectorXd mean_;              // rows
@@ -77,9 +86,9 @@ class LatticeAnalysis {
   std::vector<Eigen::Index> active_;  // the model's column of each active cause
   Eigen::VectorXd noise_var_, actual_noise_var_;  // rows
   int test_rows_ = 0;
-  // Scaled (c = S u): Π = (I + S Hₜᵀ R⁻¹ Hₜ S)⁻¹, the spread I + J of the
-  // actual test noise through the fit, and Π (I + J) Π.
-  Eigen::MatrixXd pi_, spread_, around_;
+  // Scaled (c = S u): the information I + S Hₜᵀ R⁻¹ Hₜ S, Π its inverse,
+  // the spread I + J of the actual test noise through the fit, and Π (I + J) Π.
+  Eigen::MatrixXd info_, pi_, spread_, around_;
   Eigen::MatrixXd HS_pi_;             // rows × active: H S Π
   Eigen::VectorXd q_, ab_;            // rows: h Π hᵀ and h Π (I + J) Π hᵀ (scaled)
 };
