@@ -15,25 +15,33 @@ namespace {
 /// order whatever the block, so every kernel gives the same bits.
 constexpr std::size_t kBlock = 32;
 
+/// One block of nb ≤ kBlock rows. With nb = kBlock known when compiled, t
+/// and acc stay in vector registers across the pairs.
+template <std::size_t kFixed>
+inline void quadratic_forms_block(const double* a, std::size_t lda, std::size_t nb_runtime, std::size_t d,
+                                  const double* m, std::size_t ldm, double* q) {
+  const std::size_t nb = kFixed > 0 ? kFixed : nb_runtime;
+  double t[kBlock], acc[kBlock];
+  for (std::size_t b = 0; b < nb; ++b) acc[b] = 0.0;
+  for (std::size_t k = 0; k < d; ++k) {
+    const double* ak = a + k * lda;
+    const double mkk = m[k * ldm + k];
+    for (std::size_t b = 0; b < nb; ++b) t[b] = mkk * ak[b];
+    for (std::size_t j = 0; j < k; ++j) {
+      const double w = 2.0 * m[j * ldm + k];  // M(k, j), below the diagonal
+      const double* aj = a + j * lda;
+      for (std::size_t b = 0; b < nb; ++b) t[b] += w * aj[b];
+    }
+    for (std::size_t b = 0; b < nb; ++b) acc[b] += ak[b] * t[b];
+  }
+  for (std::size_t b = 0; b < nb; ++b) q[b] = acc[b];
+}
+
 [[maybe_unused]] void quadratic_forms_loop(const double* a, std::size_t lda, std::size_t rows, std::size_t d,
                                            const double* m, std::size_t ldm, double* q) {
-  double t[kBlock], acc[kBlock];
-  for (std::size_t r0 = 0; r0 < rows; r0 += kBlock) {
-    const std::size_t nb = std::min(kBlock, rows - r0);
-    for (std::size_t b = 0; b < nb; ++b) acc[b] = 0.0;
-    for (std::size_t k = 0; k < d; ++k) {
-      const double* ak = a + k * lda + r0;
-      const double mkk = m[k * ldm + k];
-      for (std::size_t b = 0; b < nb; ++b) t[b] = mkk * ak[b];
-      for (std::size_t j = 0; j < k; ++j) {
-        const double w = 2.0 * m[j * ldm + k];  // M(k, j), below the diagonal
-        const double* aj = a + j * lda + r0;
-        for (std::size_t b = 0; b < nb; ++b) t[b] += w * aj[b];
-      }
-      for (std::size_t b = 0; b < nb; ++b) acc[b] += ak[b] * t[b];
-    }
-    for (std::size_t b = 0; b < nb; ++b) q[r0 + b] = acc[b];
-  }
+  std::size_t r0 = 0;
+  for (; r0 + kBlock <= rows; r0 += kBlock) quadratic_forms_block<kBlock>(a + r0, lda, kBlock, d, m, ldm, q + r0);
+  if (r0 < rows) quadratic_forms_block<0>(a + r0, lda, rows - r0, d, m, ldm, q + r0);
 }
 
 /// Lanes of the Gram's sums over rows: row i adds to lane i mod kLanes, and
