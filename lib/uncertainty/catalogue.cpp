@@ -1,5 +1,6 @@
 #include "lib/uncertainty/catalogue.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "lib/units/units.h"
@@ -90,7 +91,9 @@ std::optional<UncertaintySpec> find_uncertainty(std::string_view name) {
   return std::nullopt;
 }
 
-bool is_scheme_error(const UncertaintySpec& spec) { return spec.index >= ux::kFirstSchemeError; }
+bool is_scheme_error(const UncertaintySpec& spec) {
+  return std::find(kSchemeErrorGroups.begin(), kSchemeErrorGroups.end(), spec.group) != kSchemeErrorGroups.end();
+}
 
 std::vector<int> select_uncertainties(std::string_view name_or_group) {
   std::vector<int> out;

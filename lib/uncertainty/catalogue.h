@@ -40,11 +40,19 @@ std::span<const UncertaintySpec> catalogue();
 std::optional<UncertaintySpec> find_uncertainty(std::string_view name);
 
 /// The group of every measurement error a compensation scheme relies on
-/// (alignment_drift_error, reset_position_error, reset_velocity_error):
+/// (kSchemeErrorGroups below):
 /// `--dist scheme_errors=zero` gives schemes with perfect measurements.
 inline constexpr std::string_view kSchemeErrorsGroup = "scheme_errors";
 
-/// A measurement error of a compensation scheme (no effect without it).
+/// The catalogue's groups that are a compensation scheme's own measurement
+/// errors (chapter 5; no effect on a run without that scheme). A new one is
+/// listed here: what is a scheme error follows the groups, not the slots'
+/// order in UncertaintyVector.
+inline constexpr std::array<std::string_view, 4> kSchemeErrorGroups = {
+    "alignment_drift_error", "reset_position_error", "reset_velocity_error", "realignment_azimuth_error"};
+
+/// A measurement error of a compensation scheme: its group is one of
+/// kSchemeErrorGroups.
 bool is_scheme_error(const UncertaintySpec& spec);
 
 /// Indices selected by a catalogue name, a group prefix (e.g. "gyro_drift"

@@ -23,8 +23,8 @@ inline constexpr int kInitialVelocity = 28; ///< (u)V_x,y,z [m/s] at switch-over
 inline constexpr int kLatitudeError = 31;   ///< δL_0 [rad] (1)
 inline constexpr int kAltitudeError = 32;   ///< δh [m] (1)
 // The schemes' own measurement errors (chapter 5): zero effect on an
-// uncompensated run, each acting only through the scheme that relies on it.
-inline constexpr int kFirstSchemeError = 33;
+// uncompensated run, each acting only through the scheme that relies on it
+// (catalogue.h's kSchemeErrorGroups says which slots they are).
 inline constexpr int kAlignDriftError = 33;    ///< ω_ie E4 of (5.15), (5.15a): 5.4's drift-estimate error [rad/s] (3)
 inline constexpr int kResetPositionError = 36; ///< error of the position reset at T, points 5 of (5.8), (5.11) [m] (3)
 inline constexpr int kResetVelocityError = 39; ///< error of the velocity reset at T, point 6 of (5.8), (5.11) [m/s] (3)

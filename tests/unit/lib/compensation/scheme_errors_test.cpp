@@ -5,6 +5,7 @@
 // enters as the measured torquer commands do (5.15).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "lib/compensation/compensation_maps.h"
@@ -75,6 +76,26 @@ TEST(SchemeErrors, TheGroupSelectsTheTenAndNothingElse) {
   EXPECT_EQ(select_uncertainties("alignment_drift_error").size(), 3u);
   EXPECT_EQ(select_uncertainties("realignment_azimuth_error"), std::vector<int>{ux::kRealignAzimuthError});
   EXPECT_EQ(uncertainty_groups().back(), kSchemeErrorsGroup);
+}
+
+TEST(SchemeErrors, AreTheCatalogueGroupsListedNotASlotRange) {
+  // Each listed group names entries of the catalogue, and an entry is a
+  // scheme error exactly when its group is listed: Table 3.1's entries,
+  // whatever their slot, never are.
+  for (std::string_view group : kSchemeErrorGroups) EXPECT_FALSE(select_uncertainties(group).empty()) << group;
+  int count = 0;
+  for (const UncertaintySpec& spec : catalogue()) {
+    const bool listed =
+        std::find(kSchemeErrorGroups.begin(), kSchemeErrorGroups.end(), spec.group) != kSchemeErrorGroups.end();
+    EXPECT_EQ(is_scheme_error(spec), listed) << spec.name;
+    count += listed ? 1 : 0;
+  }
+  EXPECT_EQ(count, 10);
+  // A Table 3.1 entry placed after the scheme errors would stay one of
+  // Table 3.1's: the group decides, not the index.
+  UncertaintySpec moved = catalogue()[ux::kAltitudeError];
+  moved.index = ux::kDim - 1;
+  EXPECT_FALSE(is_scheme_error(moved));
 }
 
 }  // namespace
