@@ -199,7 +199,7 @@ int run_sweep_points(const po::variables_map& vm, const mc::StudyConfig& config,
         mc::RunPlan plan;
         plan.result_everywhere = true;
         mc::StudyAccumulator state =
-            run_study_blocks(c, m, ranks, mc::StudyProgress{{}, mc::StudyAccumulator(m)}, plan, false)
+            run_study_watched(c, m, ranks, mc::StudyProgress{{}, mc::StudyAccumulator(m)}, plan, false)
                 .progress.state;
         // The sweep's own count (a point's samples have their own line while it runs).
         if (points_progress) points_progress->update("sweep", ++points_done, points_total, "points");
@@ -407,7 +407,7 @@ int run_command(const Args& args, Ranks& ranks) {
   }
 
   const auto started = std::chrono::steady_clock::now();
-  const mc::RunOutcome outcome = run_study_blocks(config, map, ranks, std::move(start), plan, stop_on_signals);
+  const mc::RunOutcome outcome = run_study_watched(config, map, ranks, std::move(start), plan, stop_on_signals);
   const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (outcome.signal != 0) {
     if (ranks.root())

@@ -31,7 +31,7 @@ class TerminalWatch final : public mc::RunWatch {
 
 }  // namespace
 
-mc::RunOutcome run_study_blocks(const mc::StudyConfig& config, const mc::StudyMap& map, Ranks& ranks,
+mc::RunOutcome run_study_watched(const mc::StudyConfig& config, const mc::StudyMap& map, Ranks& ranks,
                                 mc::StudyProgress start, mc::RunPlan plan, bool stop_on_signals) {
   TerminalWatch watch(stop_on_signals);
   plan.watch = &watch;

@@ -11,7 +11,7 @@ namespace insmc::app {
 
 /// Collective, as mc::run_study_blocks; the signal handlers are installed
 /// while it runs when `stop_on_signals`.
-mc::RunOutcome run_study_blocks(const mc::StudyConfig& config, const mc::StudyMap& map, Ranks& ranks,
+mc::RunOutcome run_study_watched(const mc::StudyConfig& config, const mc::StudyMap& map, Ranks& ranks,
                                 mc::StudyProgress start, mc::RunPlan plan, bool stop_on_signals);
 
 }  // namespace insmc::app

@@ -215,7 +215,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   rank_and_select(d, p, null, options);
   name_inside_priors(d);
   if (d.model_gap_significant()) check_finding(d, p, records.file, null, options);
-  honest_statements(d);
+  for (std::string& s : ranking_limits(d)) d.statements.push_back(std::move(s));
   add_raw_stage(d, file);
   return d;
 }

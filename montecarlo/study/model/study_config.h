@@ -17,7 +17,8 @@ struct StudyConfig {
   std::vector<System> systems = {System::kTheodolite, System::kGyrocompass};
   std::vector<Scheme> schemes = all_schemes();
   /// paper (the report's closed forms), linear (the corrected linear model)
-  /// or truth (the nonlinear simulator, per sample; scheme none so far).
+  /// or truth (the nonlinear simulator, per sample, every scheme through its
+  /// truth action: docs/truth-vs-models.md).
   Fidelity fidelity = Fidelity::kLinear;
   /// The linear-in-x level that gives the maps and the covariance prediction
   /// (for truth: linear, the reference the truth level is compared with).
