@@ -29,9 +29,17 @@ TEST(RowQuadraticForms, AreEachRowsFormThroughTheMatrix) {
     const Eigen::MatrixXd b = random_matrix(d, d, 4);
     const Eigen::MatrixXd m = b * b.transpose();
     const Eigen::VectorXd q = row_quadratic_forms(a, m);
-    const Eigen::VectorXd expected = ((a * m).array() * a.array()).rowwise().sum();
     ASSERT_EQ(q.size(), rows);
-    for (Eigen::Index i = 0; i < rows; ++i) EXPECT_NEAR(q[i], expected[i], 1e-12 * (1.0 + std::abs(expected[i])));
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      // The sum written out (Eigen's products take no matrix of 0 columns).
+      double expected = 0.0, scale = 0.0;
+      for (Eigen::Index k = 0; k < d; ++k)
+        for (Eigen::Index j = 0; j < d; ++j) {
+          expected += a(i, k) * m(k, j) * a(i, j);
+          scale += std::abs(a(i, k) * m(k, j) * a(i, j));
+        }
+      EXPECT_NEAR(q[i], expected, 1e-13 * (1.0 + scale));
+    }
   }
 }
 
@@ -42,12 +50,17 @@ TEST(WeightedGram, IsTheInformationTheRowsCarry) {
     const Eigen::MatrixXd a = random_matrix(rows, d, 5);
     const Eigen::VectorXd w = random_matrix(rows, 1, 6).col(0).cwiseAbs();
     const Eigen::MatrixXd g = weighted_gram(a, w);
-    const Eigen::MatrixXd expected = a.transpose() * w.asDiagonal() * a;
     ASSERT_EQ(g.rows(), d);
     EXPECT_EQ(g, g.transpose());
     for (Eigen::Index k = 0; k < d; ++k)
-      for (Eigen::Index j = 0; j < d; ++j)
-        EXPECT_NEAR(g(k, j), expected(k, j), 1e-12 * (1.0 + expected.cwiseAbs().maxCoeff()));
+      for (Eigen::Index j = 0; j < d; ++j) {
+        double expected = 0.0, scale = 0.0;
+        for (Eigen::Index i = 0; i < rows; ++i) {
+          expected += w[i] * a(i, k) * a(i, j);
+          scale += std::abs(w[i] * a(i, k) * a(i, j));
+        }
+        EXPECT_NEAR(g(k, j), expected, 1e-13 * (1.0 + scale));
+      }
   }
 }
 
