@@ -1,11 +1,12 @@
 #include "montecarlo/records/runs/prepared_runs.h"
 
-#include <algorithm>
-
-#include <cmath>
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
 #include <optional>
-#include <cstdlib>
+#include <utility>
+#include <vector>
 
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
@@ -132,9 +133,6 @@ PreparedRuns prepare(const Records& records, const RecordReading& options) {
     if (!records.estimates.empty())
       take_off_estimates(p.runs[r], p.bases[static_cast<std::size_t>(L)], records.estimates[r]);
   }
-  if (std::getenv("INSMC_DEBUG_LAYOUTS")) { fmt::print(stderr, "DEBUG lattices {} layouts {}\n", p.lattices.size(), p.layouts.size());
-    for (auto& l : p.lattices) fmt::print(stderr, " lattice rows {} test {}\n", l.rows.size(), l.test_rows);
-    for (std::size_t L=0;L<p.layouts.size();++L) fmt::print(stderr, " layout {} rows {} test {} lattice {}\n", L, p.layouts[L].rows.size(), p.layouts[L].test_rows, p.lattice_of[L]); }
   return p;
 }
 
@@ -149,7 +147,6 @@ void PreparedRuns::add_lattice(std::span<const Layout* const> of) {
       apart += l->rows.size();
   }
   Layout lattice = layout_union(of);
-  if (std::getenv("INSMC_DEBUG_LAYOUTS")) fmt::print(stderr, "DEBUG union {} largest {} apart {}\n", lattice.rows.size(), largest, apart);
   const auto rows = static_cast<double>(lattice.rows.size());
   if (rows > kLatticeGrowth * static_cast<double>(largest) && rows > static_cast<double>(apart) / kLatticeGrowth) return;
   lattice_bases.push_back(make_base_model(lattice, site, x_var));
@@ -192,20 +189,26 @@ int PreparedRuns::place(RunData& run) {
   return layout_index(run.layout);
 }
 
-std::vector<std::optional<RunAnalyser>> layout_analysers(const PreparedRuns& p,
-                                                         const std::vector<std::vector<const Extension*>>& extensions,
-                                                         const std::vector<bool>& used) {
+void for_each_layout_analyser(const PreparedRuns& p, const std::vector<std::vector<const Extension*>>& extensions,
+                              const std::vector<bool>& used,
+                              const std::function<void(std::size_t layout, RunAnalyser&& analyser)>& use) {
   INSMC_ASSERT(extensions.empty() || extensions.size() == p.lattices.size(), "extensions for {} lattices, {} expected",
                extensions.size(), p.lattices.size());
-  std::vector<std::optional<RunAnalyser>> out(p.layouts.size());
   for (std::size_t l = 0; l < p.lattices.size(); ++l) {
     std::optional<LatticeAnalysis> shared;
     for (std::size_t L = 0; L < p.layouts.size(); ++L) {
       if (static_cast<std::size_t>(p.lattice_of[L]) != l || (!used.empty() && !used[L])) continue;
       if (!shared) shared.emplace(p.lattices[l], combine(p.lattice_bases[l], extensions.empty() ? std::vector<const Extension*>{} : extensions[l]));
-      out[L].emplace(p.layouts[L], *shared, p.lattice_rows[L]);
+      use(L, RunAnalyser(p.layouts[L], *shared, p.lattice_rows[L]));
     }
   }
+}
+
+std::vector<std::optional<RunAnalyser>> layout_analysers(const PreparedRuns& p,
+                                                         const std::vector<std::vector<const Extension*>>& extensions,
+                                                         const std::vector<bool>& used) {
+  std::vector<std::optional<RunAnalyser>> out(p.layouts.size());
+  for_each_layout_analyser(p, extensions, used, [&](std::size_t L, RunAnalyser&& a) { out[L].emplace(std::move(a)); });
   return out;
 }
 

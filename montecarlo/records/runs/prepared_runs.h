@@ -4,8 +4,9 @@
 /// own test rows) and its runs placed on their layouts, each layout with its
 /// base model: what the diagnosis, its null and `compensate` start from.
 #include <Eigen/Core>
-#include <span>
+#include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -114,6 +115,14 @@ PreparedRuns prepare(const Records& records, const RecordReading& options);
 std::vector<std::optional<RunAnalyser>> layout_analysers(const PreparedRuns& p,
                                                          const std::vector<std::vector<const Extension*>>& extensions,
                                                          const std::vector<bool>& used = {});
+
+/// The same analysers one at a time: each built, handed to `use(L, analyser)` (which may keep it)
+/// and dropped before the next (layouts in index order within each
+/// lattice), so that at most one layout's model is held at a time (a file
+/// whose runs each drop their own records has a layout per run).
+void for_each_layout_analyser(const PreparedRuns& p, const std::vector<std::vector<const Extension*>>& extensions,
+                              const std::vector<bool>& used,
+                              const std::function<void(std::size_t layout, RunAnalyser&& analyser)>& use);
 
 /// A run's row values as a vector.
 Eigen::VectorXd run_values(const RunData& run);

@@ -3,10 +3,12 @@
 #include "montecarlo/records/gap/candidates/layout_extensions.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <span>
 #include <utility>
 
 namespace insmc::gap {
@@ -31,29 +33,32 @@ CandidateSums evaluate_on_grid(const runs::PreparedRuns& p, const Candidate& c,
   out.at.resize(static_cast<std::size_t>(K));
   out.sets.resize(static_cast<std::size_t>(K));
   out.evaluated.assign(static_cast<std::size_t>(K), false);
-  // The points of a batch: their extensions built one after another (a
-  // candidate's build fills the layout's response cache, which is not
-  // shared across threads), then the run models and the runs under them
-  // (most of the cost) side by side. Each point's result is its own, so the
-  // order does not change it.
-  const auto evaluate = [&](std::vector<int> ks) {
-    std::sort(ks.begin(), ks.end());
-    ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
-    std::erase_if(ks, [&](int k) { return out.evaluated[static_cast<std::size_t>(k)]; });
+  // The points of a batch, as many at a time as there are threads: their
+  // extensions built one after another (a candidate's build fills the
+  // layout's response cache, which is not shared across threads), then the
+  // run models and the runs under them (most of the cost) side by side. A
+  // random process' extension holds rows × knots, so only the points being
+  // evaluated hold theirs. Each point's result is its own, so neither the
+  // order nor the thread count changes it.
+  const auto chunk = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+  const auto evaluate_chunk = [&](std::span<const int> ks) {
     std::vector<std::vector<std::optional<runs::Extension>>> extensions(ks.size());
     for (std::size_t b = 0; b < ks.size(); ++b) extensions[b] = build.build(c, c.grid_point(ks[b]), used);
     tbb::parallel_for(std::size_t{0}, ks.size(), [&](std::size_t b) {
       std::vector<std::vector<const runs::Extension*>> on_lattice(p.lattices.size());
       for (std::size_t l = 0; l < p.lattices.size(); ++l)
         if (extensions[b][l]) on_lattice[l] = pointers(selected[l], &*extensions[b][l]);
-      const std::vector<std::optional<runs::RunAnalyser>> analysers = runs::layout_analysers(p, on_lattice, used);
-      std::vector<const runs::RunAnalyser*> pointers_to(p.layouts.size(), nullptr);
-      for (std::size_t L = 0; L < p.layouts.size(); ++L)
-        if (analysers[L]) pointers_to[L] = &*analysers[L];
       const auto k = static_cast<std::size_t>(ks[b]);
-      out.at[k] = evaluate_runs(p.runs, p.layout_of, pointers_to, p.keys);
+      out.at[k] = evaluate_runs(p, on_lattice, used);
       out.sets[k] = out.at[k].set(p.keys);
     });
+  };
+  const auto evaluate = [&](std::vector<int> ks) {
+    std::sort(ks.begin(), ks.end());
+    ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
+    std::erase_if(ks, [&](int k) { return out.evaluated[static_cast<std::size_t>(k)]; });
+    for (std::size_t first = 0; first < ks.size(); first += chunk)
+      evaluate_chunk(std::span<const int>(ks).subspan(first, std::min(chunk, ks.size() - first)));
     for (int k : ks) out.evaluated[static_cast<std::size_t>(k)] = true;
   };
   // Grid index = first-parameter index × rest + rest index (grid_point).

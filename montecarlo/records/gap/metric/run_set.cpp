@@ -59,18 +59,40 @@ Pooled pool(const RunSet& set, std::span<const int> runs) {
   return p;
 }
 
+namespace {
+
+void evaluate_run(EvaluatedRuns& e, std::size_t r, const runs::RunData& run, int layout, const runs::RunAnalyser& a,
+                  const runs::KeySpace& keys) {
+  const Eigen::VectorXd v = a.normalized(run_values(run));
+  e.sums[r] = a.sums_of(v);
+  e.keyed.col(static_cast<Eigen::Index>(r)) = runs::keyed_values(v, a, layout, keys);
+}
+
+EvaluatedRuns sized_for(std::size_t runs, const runs::KeySpace& keys) {
+  EvaluatedRuns e;
+  e.sums.resize(runs);
+  e.keyed.resize(keys.size(), static_cast<Eigen::Index>(runs));
+  return e;
+}
+
+}  // namespace
+
 EvaluatedRuns evaluate_runs(const std::vector<runs::RunData>& runs, const std::vector<int>& layout_of,
                         const std::vector<const runs::RunAnalyser*>& analysers, const runs::KeySpace& keys) {
-  EvaluatedRuns e;
-  e.sums.resize(runs.size());
-  e.keyed.resize(keys.size(), static_cast<Eigen::Index>(runs.size()));
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    const int L = layout_of[r];
-    const runs::RunAnalyser& a = *analysers[static_cast<std::size_t>(L)];
-    const Eigen::VectorXd v = a.normalized(run_values(runs[r]));
-    e.sums[r] = a.sums_of(v);
-    e.keyed.col(static_cast<Eigen::Index>(r)) = runs::keyed_values(v, a, L, keys);
-  }
+  EvaluatedRuns e = sized_for(runs.size(), keys);
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    evaluate_run(e, r, runs[r], layout_of[r], *analysers[static_cast<std::size_t>(layout_of[r])], keys);
+  return e;
+}
+
+EvaluatedRuns evaluate_runs(const runs::PreparedRuns& p, const std::vector<std::vector<const runs::Extension*>>& extensions,
+                            const std::vector<bool>& used) {
+  std::vector<std::vector<std::size_t>> runs_of(p.layouts.size());
+  for (std::size_t r = 0; r < p.runs.size(); ++r) runs_of[static_cast<std::size_t>(p.layout_of[r])].push_back(r);
+  EvaluatedRuns e = sized_for(p.runs.size(), p.keys);
+  runs::for_each_layout_analyser(p, extensions, used, [&](std::size_t L, runs::RunAnalyser&& a) {
+    for (std::size_t r : runs_of[L]) evaluate_run(e, r, p.runs[r], static_cast<int>(L), a, p.keys);
+  });
   return e;
 }
 

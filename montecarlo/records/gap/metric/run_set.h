@@ -14,6 +14,7 @@
 #include "montecarlo/records/runs/model/key_space.h"
 #include "montecarlo/records/runs/model/run_analysis.h"
 #include "montecarlo/records/runs/files/layout.h"
+#include "montecarlo/records/runs/prepared_runs.h"
 
 namespace insmc::gap {
 
@@ -52,6 +53,13 @@ struct EvaluatedRuns {
 /// `runs` (with their layouts) under the analysers of each layout.
 EvaluatedRuns evaluate_runs(const std::vector<runs::RunData>& runs, const std::vector<int>& layout_of,
                         const std::vector<const runs::RunAnalyser*>& analysers, const runs::KeySpace& keys);
+
+/// The runs of `p` under the models of their layouts with `extensions`
+/// (per lattice; runs::layout_analysers), each layout's model built, used
+/// for its runs and dropped before the next: the memory of one model, not
+/// of one per layout. `used`: the layouts some run of `p` has.
+EvaluatedRuns evaluate_runs(const runs::PreparedRuns& p, const std::vector<std::vector<const runs::Extension*>>& extensions,
+                            const std::vector<bool>& used);
 
 /// A multiset of the runs pooled: the group sums added, and per coherent
 /// group (1/m) Σ over pairs (a, b) of the multiset of the inner products,

@@ -75,30 +75,21 @@ LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& la
       mean_(rows_of(lattice.mean_, rows)),
       H_(rows_of(lattice.H_, rows)),
       prior_(lattice.prior_),
-      active_(lattice.active_),
-      noise_var_(rows_of(lattice.noise_var_, rows)),
-      actual_noise_var_(rows_of(lattice.actual_noise_var_, rows)),
-      test_rows_(layout.test_rows) {
-  fit(false);
-}
-
-LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows,
-                                 const Eigen::MatrixXd& G, const Eigen::VectorXd& share)
-    : layout_(&layout),
-      mean_(rows_of(lattice.mean_, rows)),
-      H_(rows_of(lattice.H_, rows)),
-      prior_(lattice.prior_),
       s_(lattice.s_),
       active_(lattice.active_),
       noise_var_(rows_of(lattice.noise_var_, rows)),
       actual_noise_var_(rows_of(lattice.actual_noise_var_, rows)),
-      test_rows_(layout.test_rows) {
+      test_rows_(layout.test_rows) {}
+
+LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows,
+                                 const Eigen::MatrixXd& G, const Eigen::VectorXd& share)
+    : LatticeAnalysis(layout, lattice, rows) {
   // The information and the spread are sums over the test rows: the
   // lattice's less the rows the layout lacks.
   Eigen::MatrixXd info = lattice.info_, spread = lattice.spread_;
   info.noalias() -= G * G.transpose();
   spread.noalias() -= G * share.asDiagonal() * G.transpose();
-  solve(std::move(info), std::move(spread), false);
+  solve(std::move(info), std::move(spread), false, H_ * s_.asDiagonal());
 }
 
 void LatticeAnalysis::fit(bool lattice) {
@@ -107,24 +98,23 @@ void LatticeAnalysis::fit(bool lattice) {
   // it well conditioned across causes of very different units: c = S u,
   // u ~ (0, I), P⁺ = S Π S with Π = (I + S Hᵀ R⁻¹ H S)⁻¹.
   s_ = prior_.cwiseSqrt();
-  const Eigen::MatrixXd HS = H_.topRows(nt) * s_.asDiagonal();
+  const Eigen::MatrixXd HS = H_ * s_.asDiagonal();
   const Eigen::VectorXd inverse_noise = noise_var_.head(nt).cwiseInverse();
-  Eigen::MatrixXd info = weighted_gram(HS, inverse_noise);
+  Eigen::MatrixXd info = weighted_gram(HS.topRows(nt), inverse_noise);
   info.diagonal().array() += 1.0;
   // The actual test noise through the fit's gain, scaled: J = S Hₜᵀ R⁻¹ R_a R⁻¹ Hₜ S;
   // then A + B = S Π (I + J) Π S.
   const Eigen::VectorXd actual_weight = actual_noise_var_.head(nt).cwiseProduct(inverse_noise.cwiseAbs2());
-  Eigen::MatrixXd spread = weighted_gram(HS, actual_weight);
+  Eigen::MatrixXd spread = weighted_gram(HS.topRows(nt), actual_weight);
   spread.diagonal().array() += 1.0;
-  solve(std::move(info), std::move(spread), lattice);
+  solve(std::move(info), std::move(spread), lattice, HS);
 }
 
-void LatticeAnalysis::solve(Eigen::MatrixXd info, Eigen::MatrixXd spread, bool lattice) {
+void LatticeAnalysis::solve(Eigen::MatrixXd info, Eigen::MatrixXd spread, bool lattice, const Eigen::MatrixXd& HS) {
   info_ = std::move(info);
   spread_ = std::move(spread);
   pi_ = inverse_of_information(info_);
   around_ = pi_ * spread_ * pi_;
-  const Eigen::MatrixXd HS = H_ * s_.asDiagonal();
   ab_ = row_quadratic_forms(HS, around_);
   if (!lattice) {
     q_ = row_quadratic_forms(HS, pi_);
@@ -173,7 +163,8 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
   const auto own_fit = [&] {
     // The rows the layout lacks held nearly all the information about some
     // cause: a downdate would cancel; the layout's fit is made anew.
-    const LatticeAnalysis own(layout, a, rows);
+    LatticeAnalysis own(layout, a, rows);
+    own.fit(false);
     finish(own, all, own.pi_, own.q_, own.ab_, own.around_.diagonal());
   };
   if (static_cast<double>(k) > kDowndateShare * static_cast<double>(d)) {

@@ -66,18 +66,19 @@ class LatticeAnalysis {
 
  private:
   friend class RunAnalyser;
-  /// The analysis of `layout`, the rows `rows` of `lattice`'s, fitted anew.
+  /// The model of `layout`, the rows `rows` of `lattice`'s, not yet fitted
+  /// (fit() fits it anew).
   LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows);
-  /// The same from the lattice's information less that of the test rows the
-  /// layout lacks (G's columns g_m = S h_mᵀ/σ_m, `share` their R_a/R).
+  /// The same, fitted from the lattice's information less that of the test
+  /// rows the layout lacks (G's columns g_m = S h_mᵀ/σ_m, `share` their R_a/R).
   LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows,
                   const Eigen::MatrixXd& G, const Eigen::VectorXd& share);
   /// The information and the spread from the test rows, then solve().
   void fit(bool lattice);
   /// Π, Π (I + J) Π and each row's q and ab from the scaled information
-  /// I + S Hₜᵀ R⁻¹ Hₜ S and spread I + J; a lattice also keeps H S Π, from
-  /// which its layouts are downdated.
-  void solve(Eigen::MatrixXd info, Eigen::MatrixXd spread, bool lattice);
+  /// I + S Hₜᵀ R⁻¹ Hₜ S and spread I + J (HS: the rows' H S); a lattice also
+  /// keeps H S Π, from which its layouts are downdated.
+  void solve(Eigen::MatrixXd info, Eigen::MatrixXd spread, bool lattice, const Eigen::MatrixXd& HS);
 
   const Layout* layout_;
   Eigen::VectorXd mean_;              // rows

@@ -6,13 +6,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "lib/records/record_io.h"
+#include "montecarlo/records/gap/metric/run_set.h"
 #include "montecarlo/records/runs/prepared_runs.h"
 #include "montecarlo/records/runs/simulation/record_simulation.h"
 
@@ -175,6 +178,44 @@ TEST(FuzzedLayout, EachRunDropsRecordsOfItsOwnAndTheModelIsBuiltOnce) {
   EXPECT_GT(p.layouts.size(), 1U);
   EXPECT_EQ(p.lattices.size(), 1U);
   for (std::size_t L = 0; L < p.layouts.size(); ++L) EXPECT_EQ(p.lattice_of[L], 0);
+}
+
+TEST(FuzzedLayout, RunsEvaluatedOneLayoutModelAtATimeAreThoseUnderEveryModelKept) {
+  // A layout per run: the evaluation that builds and drops one layout's
+  // model at a time (memory of one model) must give each run the values
+  // of its own layout's model, in the runs' order, to the bit.
+  ForeignLayout layout;
+  layout.f_every_s = 10.0;
+  layout.r_every_s = 10.0;
+  layout.pulses = false;
+  layout.dropout_max = 0.1;
+  layout.short_share = 0.0;
+  ForeignRuns spec = short_runs();
+  spec.runs = 5;
+  const RecordFile file = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 22, spec, layout);
+  runs::RecordReading reading;
+  std::vector<std::string> statements;
+  std::vector<runs::SiteValue> site;
+  runs::PreparedRuns p = runs::prepare(runs::read_records(file, reading, statements, site), reading);
+  ASSERT_GT(p.layouts.size(), 2U);
+  // Runs out of their layouts' order, one layout twice.
+  std::reverse(p.runs.begin(), p.runs.end());
+  std::reverse(p.layout_of.begin(), p.layout_of.end());
+  p.runs.push_back(p.runs.front());
+  p.layout_of.push_back(p.layout_of.front());
+  const std::vector<std::optional<runs::RunAnalyser>> kept = runs::layout_analysers(p, {});
+  std::vector<const runs::RunAnalyser*> pointers;
+  for (const std::optional<runs::RunAnalyser>& a : kept) pointers.push_back(&*a);
+  const EvaluatedRuns all_kept = evaluate_runs(p.runs, p.layout_of, pointers, p.keys);
+  const EvaluatedRuns one_at_a_time = evaluate_runs(p, {}, std::vector<bool>(p.layouts.size(), true));
+  ASSERT_EQ(one_at_a_time.sums.size(), p.runs.size());
+  for (std::size_t r = 0; r < p.runs.size(); ++r)
+    for (int g = 0; g < runs::kGroupCount; ++g) {
+      EXPECT_EQ(one_at_a_time.sums[r].z2[g], all_kept.sums[r].z2[g]) << "run " << r << " group " << g;
+      EXPECT_EQ(one_at_a_time.sums[r].expected[g], all_kept.sums[r].expected[g]) << "run " << r << " group " << g;
+    }
+  EXPECT_TRUE(one_at_a_time.keyed == all_kept.keyed);
+  EXPECT_NE(one_at_a_time.keyed.col(0), one_at_a_time.keyed.col(1)) << "runs of their own values";
 }
 
 }  // namespace
