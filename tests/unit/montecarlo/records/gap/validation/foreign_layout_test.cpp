@@ -144,7 +144,9 @@ TEST(FuzzedLayout, DrawsEveryConventionOverItsRange) {
   EXPECT_TRUE(fuzzed_layout_of(7, true, 900.0).pulses) << "a quantization file keeps its pulses";
 }
 
-TEST(FuzzedLayout, EachRunDropsRecordsOfItsOwnAndTheModelIsBuiltOnce) {
+/// `runs` runs of f and r every 10 s (continuous f), each dropping up to
+/// 10 % of its records its own way, none short.
+RecordFile own_dropouts_file(int runs, std::uint64_t seed) {
   ForeignLayout layout;
   layout.f_every_s = 10.0;
   layout.r_every_s = 10.0;
@@ -153,8 +155,20 @@ TEST(FuzzedLayout, EachRunDropsRecordsOfItsOwnAndTheModelIsBuiltOnce) {
   layout.short_share = 0.0;
   layout.short_from_s = 450.0;
   ForeignRuns spec = short_runs();
-  spec.runs = 6;
-  const RecordFile file = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 21, spec, layout);
+  spec.runs = runs;
+  return simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), seed, spec, layout);
+}
+
+/// The diagnosis' runs of `file` (runs/prepared_runs.h).
+runs::PreparedRuns prepared(const RecordFile& file) {
+  runs::RecordReading reading;
+  std::vector<std::string> statements;
+  std::vector<runs::SiteValue> site;
+  return runs::prepare(runs::read_records(file, reading, statements, site), reading);
+}
+
+TEST(FuzzedLayout, EachRunDropsRecordsOfItsOwnAndTheModelIsBuiltOnce) {
+  const RecordFile file = own_dropouts_file(6, 21);
   ASSERT_EQ(file.runs.size(), 6U);
   std::set<std::vector<double>> patterns;
   for (const RecordRun& run : file.runs) {
@@ -171,10 +185,7 @@ TEST(FuzzedLayout, EachRunDropsRecordsOfItsOwnAndTheModelIsBuiltOnce) {
   EXPECT_EQ(parse_record_text(write_record_file(file), "fuzzed.csv"), file);
   // The diagnosis' run model: a layout per run, one lattice for all, from
   // which every layout takes its rows (runs/prepared_runs.h).
-  runs::RecordReading reading;
-  std::vector<std::string> statements;
-  std::vector<runs::SiteValue> site;
-  const runs::PreparedRuns p = runs::prepare(runs::read_records(file, reading, statements, site), reading);
+  const runs::PreparedRuns p = prepared(file);
   EXPECT_GT(p.layouts.size(), 1U);
   EXPECT_EQ(p.lattices.size(), 1U);
   for (std::size_t L = 0; L < p.layouts.size(); ++L) EXPECT_EQ(p.lattice_of[L], 0);
@@ -184,19 +195,7 @@ TEST(FuzzedLayout, RunsEvaluatedOneLayoutModelAtATimeAreThoseUnderEveryModelKept
   // A layout per run: the evaluation that builds and drops one layout's
   // model at a time (memory of one model) must give each run the values
   // of its own layout's model, in the runs' order, to the bit.
-  ForeignLayout layout;
-  layout.f_every_s = 10.0;
-  layout.r_every_s = 10.0;
-  layout.pulses = false;
-  layout.dropout_max = 0.1;
-  layout.short_share = 0.0;
-  ForeignRuns spec = short_runs();
-  spec.runs = 5;
-  const RecordFile file = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 22, spec, layout);
-  runs::RecordReading reading;
-  std::vector<std::string> statements;
-  std::vector<runs::SiteValue> site;
-  runs::PreparedRuns p = runs::prepare(runs::read_records(file, reading, statements, site), reading);
+  runs::PreparedRuns p = prepared(own_dropouts_file(5, 22));
   ASSERT_GT(p.layouts.size(), 2U);
   // Runs out of their layouts' order, one layout twice.
   std::reverse(p.runs.begin(), p.runs.end());
