@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "lib/common/input_error.h"
 #include "lib/truth/simulator.h"
@@ -190,7 +191,16 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
                                        "up to G = {:.3g} at alpha = {})", n, n, d.null_gap_critical, options.alpha));
 
   // Where it lies.
-  locate_gap(d, p, analysers, observed, null, null_z, null_layout, options.alpha, own_noise ? &*own_noise : nullptr);
+  GapLocation where = locate_gap(p, analysers, observed, null, null_z, null_layout, options.alpha,
+                                 d.pessimistic.significant, own_noise ? &*own_noise : nullptr);
+  d.groups = std::move(where.groups);
+  d.pessimistic.where = std::move(where.pessimistic_where);
+  d.by_kind = std::move(where.by_kind);
+  d.by_axis = std::move(where.by_axis);
+  d.by_stage = std::move(where.by_stage);
+  d.by_window = std::move(where.by_window);
+  d.time_functions = std::move(where.time_functions);
+  d.allan = std::move(where.allan);
   own_noise.reset();
 
   // Which effect, and how far the gap shrinks.
@@ -214,7 +224,12 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   }
   rank_and_select(d, p, null, options);
   name_inside_priors(d);
-  if (d.model_gap_significant()) check_finding(d, p, records.file, null, options);
+  if (d.model_gap_significant() && !d.ranking.empty())
+    if (std::optional<CandidateResult> checked = check_finding(d.ranking[0], p, records.file, null, options)) {
+      // The greedy search's first step is the same finding when it names the same effect.
+      if (!d.greedy.empty() && d.greedy[0].effect == checked->effect) d.greedy[0].parameters = checked->parameters;
+      d.ranking[0] = std::move(*checked);
+    }
   for (std::string& s : ranking_limits(d)) d.statements.push_back(std::move(s));
   add_raw_stage(d, file);
   return d;

@@ -61,19 +61,20 @@ ParameterEstimate corrected(const ParameterEstimate& e, const SimulatedCheck& ch
   return out;
 }
 
-void check_finding(Diagnosis& d, const runs::PreparedRuns& p, const RecordFile& file, const ModelNull& null,
-                   const DiagnosisOptions& options) {
-  if (d.ranking.empty() || d.ranking[0].as_effect.empty()) return;
-  CandidateResult& finding = d.ranking[0];
-  const Candidate* c = candidate_named(options, finding.effect);
-  if (c == nullptr) return;
+std::optional<CandidateResult> check_finding(const CandidateResult& first, const runs::PreparedRuns& p,
+                                             const RecordFile& file, const ModelNull& null,
+                                             const DiagnosisOptions& options) {
+  if (first.as_effect.empty()) return std::nullopt;
+  const Candidate* c = candidate_named(options, first.effect);
+  if (c == nullptr) return std::nullopt;
+  CandidateResult finding = first;
   const EffectSpec spec = parse_effect(finding.as_effect, "as_effect");
   // Only a parameter off its grid's edges and of the effect's own is corrected.
   const auto checkable = [&](const ParameterEstimate& e) {
     double simulated = 0;
     return !e.at_grid_edge && simulated_value(spec, e.name, simulated);
   };
-  if (std::none_of(finding.parameters.begin(), finding.parameters.end(), checkable)) return;
+  if (std::none_of(finding.parameters.begin(), finding.parameters.end(), checkable)) return std::nullopt;
   const std::size_t n = p.runs.size();
   runs::PreparedRuns q = p;
   std::vector<int> layout_of;
@@ -103,7 +104,7 @@ void check_finding(Diagnosis& d, const runs::PreparedRuns& p, const RecordFile& 
   const EffectArgument a = effect_argument(finding, p.site);
   finding.as_effect = a.text;
   finding.as_effect_kept = a.kept;
-  if (!d.greedy.empty() && d.greedy[0].effect == finding.effect) d.greedy[0].parameters = finding.parameters;
+  return finding;
 }
 
 }  // namespace insmc::gap

@@ -9,6 +9,8 @@
 /// the value and the 16–84 % range; the bias' own uncertainty (the files'
 /// spread over the square root of their number) widens the range.
 /// docs/gap-method.md §3.
+#include <optional>
+
 #include "lib/records/record.h"
 #include "montecarlo/records/gap/diagnosis_options.h"
 #include "montecarlo/records/gap/diagnosis_results.h"
@@ -20,11 +22,12 @@ namespace insmc::gap {
 /// Files simulated with the finding, per parameter checked.
 inline constexpr int kFindingCheckFiles = 6;
 
-/// Corrects d.ranking[0]'s parameters (and the greedy search's first step,
-/// when it is the same effect) and its --effect form; nothing when it has
-/// no --effect form.
-void check_finding(Diagnosis& d, const runs::PreparedRuns& p, const RecordFile& file, const ModelNull& null,
-                   const DiagnosisOptions& options);
+/// The first-ranked finding `first` with its parameters and its --effect form
+/// corrected by the check; none when it has no --effect form or no
+/// parameter to check.
+std::optional<CandidateResult> check_finding(const CandidateResult& first, const runs::PreparedRuns& p,
+                                             const RecordFile& file, const ModelNull& null,
+                                             const DiagnosisOptions& options);
 
 /// A parameter's estimate corrected by its check: value and range shifted
 /// by the bias (in the check's coordinate), each side of the range widened

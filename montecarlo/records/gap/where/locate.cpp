@@ -4,12 +4,14 @@
 
 namespace insmc::gap {
 
-void locate_gap(Diagnosis& d, const runs::PreparedRuns& p, const std::vector<std::optional<runs::RunAnalyser>>& analysers,
-                const Pooled& observed, const ModelNull& null, const std::vector<Eigen::VectorXd>& null_z,
-                const std::vector<int>& null_layout, double alpha, const OwnNoiseRuns* own_noise) {
+GapLocation locate_gap(const runs::PreparedRuns& p, const std::vector<std::optional<runs::RunAnalyser>>& analysers,
+                       const Pooled& observed, const ModelNull& null, const std::vector<Eigen::VectorXd>& null_z,
+                       const std::vector<int>& null_layout, double alpha, bool pessimistic_significant,
+                       const OwnNoiseRuns* own_noise) {
+  GapLocation d;
   d.groups = group_results(observed, null.calibration, null.log_ratios, alpha);
   if (own_noise) add_own_noise_bands(d.groups, own_noise->log_ratios, alpha);
-  if (d.pessimistic.significant) d.pessimistic.where = pessimistic_groups(d.groups, null.log_ratios, alpha);
+  if (pessimistic_significant) d.pessimistic_where = pessimistic_groups(d.groups, null.log_ratios, alpha);
   d.by_kind = shares_by(d.groups, [](const GroupResult& g) {
     return std::string(g.coherent ? "common to all runs" : "run-to-run scatter");
   });
@@ -38,14 +40,14 @@ void locate_gap(Diagnosis& d, const runs::PreparedRuns& p, const std::vector<std
   }
   d.time_functions = time_function_shares(layouts, z, p.site);
   d.allan = allan_curves(layouts, z, expected, null_layouts, null_z, null_expected, p.site.filter_interval_s);
-  if (!own_noise) return;
+  if (!own_noise) return d;
   std::vector<const runs::Layout*> own_layouts;
   std::vector<const Eigen::VectorXd*> own_expected;
   for (const int l : own_noise->layout_of) {
     // A null run placed in a layout the base analysers predate has no
     // expectation here: no own-noise Allan band rather than a guess.
     const auto k = static_cast<std::size_t>(l);
-    if (k >= analysers.size() || !analysers[k]) return;
+    if (k >= analysers.size() || !analysers[k]) return d;
     own_layouts.push_back(&p.layouts[k]);
     own_expected.push_back(&analysers[k]->expected_square());
   }
@@ -59,6 +61,7 @@ void locate_gap(Diagnosis& d, const runs::PreparedRuns& p, const std::vector<std
           point.own_noise_low = o.null_low;
           point.own_noise_high = o.null_high;
         }
+  return d;
 }
 
 }  // namespace insmc::gap

@@ -3,6 +3,7 @@
 /// where.h (groups, shares, time functions, Allan curves).
 #include <Eigen/Dense>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "montecarlo/records/gap/diagnosis_results.h"
@@ -19,13 +20,24 @@ struct OwnNoiseRuns {
   std::vector<int> layout_of;         ///< and its layout
 };
 
-/// Fills d's groups, shares, time functions and Allan curves (and where
-/// a pessimistic finding lies). `analysers` are the base model's per layout;
+/// Where one diagnosis' gap lies.
+struct GapLocation {
+  std::vector<GroupResult> groups;
+  std::vector<std::string> pessimistic_where;  ///< where a significant pessimistic finding lies, most negative ℓ first
+  std::vector<Share> by_kind, by_axis, by_stage, by_window;
+  std::vector<TimeFunctionShares> time_functions;
+  std::vector<AllanCurve> allan;
+};
+
+/// The groups, their shares, the time functions and the Allan curves of
+/// the `observed` runs (and, when `pessimistic_significant`, the groups a
+/// pessimistic finding lies in). `analysers` are the base model's per layout;
 /// `null_z` and `null_layout` the null runs' row values and layouts. With
 /// `own_noise`, every group and Allan point also gets the band the sensor's
 /// own noise through the import puts it in.
-void locate_gap(Diagnosis& d, const runs::PreparedRuns& p, const std::vector<std::optional<runs::RunAnalyser>>& analysers,
-                const Pooled& observed, const ModelNull& null, const std::vector<Eigen::VectorXd>& null_z,
-                const std::vector<int>& null_layout, double alpha, const OwnNoiseRuns* own_noise = nullptr);
+GapLocation locate_gap(const runs::PreparedRuns& p, const std::vector<std::optional<runs::RunAnalyser>>& analysers,
+                       const Pooled& observed, const ModelNull& null, const std::vector<Eigen::VectorXd>& null_z,
+                       const std::vector<int>& null_layout, double alpha, bool pessimistic_significant,
+                       const OwnNoiseRuns* own_noise = nullptr);
 
 }  // namespace insmc::gap
