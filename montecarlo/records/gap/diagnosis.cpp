@@ -222,7 +222,16 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
     add_raw_stage(d, file);
     return d;
   }
-  rank_and_select(d, p, null, options);
+  Selection selection = rank_and_select(d, p, null, options);
+  d.ranked = selection.ranked;
+  d.ranking = std::move(selection.first.ranking);
+  d.top = std::move(selection.first.top);
+  d.runner_up_margin = selection.first.runner_up_margin;
+  d.runner_up_margin_se = selection.first.runner_up_margin_se;
+  d.pairs = std::move(selection.first.pairs);
+  d.greedy = std::move(selection.greedy);
+  d.selected = std::move(selection.selected);
+  for (std::string& s : selection.statements) d.statements.push_back(std::move(s));
   name_inside_priors(d);
   if (d.model_gap_significant() && !d.ranking.empty())
     if (std::optional<CandidateResult> checked = check_finding(d.ranking[0], p, records.file, null, options)) {

@@ -36,21 +36,26 @@ double share_closed(double before, double after, double critical) {
 
 }  // namespace
 
-void rank_and_select(Diagnosis& d, const runs::PreparedRuns& p, const ModelNull& null, const DiagnosisOptions& options) {
+Selection rank_and_select(const Diagnosis& verdict, const runs::PreparedRuns& p, const ModelNull& null,
+                          const DiagnosisOptions& options) {
   const auto& registry = candidates_of(options);
+  Selection d;
   std::vector<std::vector<runs::Extension>> selected(p.lattices.size());  // per lattice
   std::vector<std::string> taken;
-  double before = d.heldout_gap_before;
+  double before = verdict.heldout_gap_before;
   for (int step = 0; step < std::max(1, options.max_selected); ++step) {
     const std::vector<Scored> ranked = rank_candidates(p, selected, taken, null.calibration, options,
                                                        fmt::format("candidates, step {}", step + 1));
     if (ranked.empty()) break;
-    if (step == 0) record_ranking(d, ranked, p, null, options, before);
-    if (!d.model_gap_significant()) break;
+    if (step == 0) {
+      d.first = first_ranking(ranked, p, null, options, before);
+      d.ranked = true;
+    }
+    if (!verdict.model_gap_significant()) break;
     const Scored& best = ranked.front();
     const Candidate& c = registry[static_cast<std::size_t>(best.candidate)];
     if (step > 0 && best.heldout_gap >= before) break;  // nothing left that helps on held-out runs
-    const double closed = share_closed(before, best.heldout_gap, d.model_null_gap_critical());
+    const double closed = share_closed(before, best.heldout_gap, verdict.model_null_gap_critical());
     if (step > 0 && closed < kMinShareClosed) {
       d.statements.push_back(fmt::format("the next candidate, {}, closes {:.0f} % of the held-out gap left above the "
                                          "null's critical value (less than {:.0f} %): the greedy search stops after {} "
@@ -62,7 +67,7 @@ void rank_and_select(Diagnosis& d, const runs::PreparedRuns& p, const ModelNull&
                             .unmodelled;
     GreedyStep g{c.name, best.parameters, best.heldout_gap, p_value_of(left, null.unmodelled)};
     d.greedy.push_back(g);
-    d.selected.push_back(step == 0 ? d.top : c.name);
+    d.selected.push_back(step == 0 ? d.first.top : c.name);
     taken.push_back(c.name);
     const std::vector<double> theta = parameter_values(c, best.full_fit);
     std::vector<std::optional<runs::Extension>> built = LayoutExtensions(p).build(c, theta);
@@ -81,6 +86,7 @@ void rank_and_select(Diagnosis& d, const runs::PreparedRuns& p, const ModelNull&
       break;
     }
   }
+  return d;
 }
 
 }  // namespace insmc::gap

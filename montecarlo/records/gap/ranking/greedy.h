@@ -6,10 +6,24 @@
 #include "montecarlo/records/gap/diagnosis_results.h"
 #include "montecarlo/records/gap/fit/candidate_fit.h"
 #include "montecarlo/records/gap/null/null_calibration.h"
+#include "montecarlo/records/gap/ranking/ranking.h"
 
 namespace insmc::gap {
 
-/// Fills d's ranking and greedy steps (d.gap, d.significant and d.runs set).
-void rank_and_select(Diagnosis& d, const runs::PreparedRuns& p, const ModelNull& null, const DiagnosisOptions& options);
+/// The first ranking and the effects the greedy search selects.
+struct Selection {
+  bool ranked = false;  ///< false when no candidate could be scored
+  FirstRanking first;
+  std::vector<GreedyStep> greedy;         ///< the effects added, in order
+  std::vector<std::string> selected;      ///< their names (the first: the ranking's top, a class "a|b" included)
+  std::vector<std::string> statements;    ///< why the search stopped where it did, when not plain
+};
+
+/// The candidates ranked on `p`, then added greedily while the gap stays
+/// significant. `verdict`: the diagnosis so far (whether the model's gap is
+/// significant, its null's critical G and the held-out gap without any
+/// candidate).
+Selection rank_and_select(const Diagnosis& verdict, const runs::PreparedRuns& p, const ModelNull& null,
+                          const DiagnosisOptions& options);
 
 }  // namespace insmc::gap

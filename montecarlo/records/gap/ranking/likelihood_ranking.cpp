@@ -146,11 +146,13 @@ double null_gain(const runs::PreparedRuns& q, std::vector<Member> members, const
 
 }  // namespace
 
-void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const runs::PreparedRuns& p, const ModelNull& null,
-                       const DiagnosisOptions& options) {
+LikelihoodRanking rank_by_likelihood(const std::vector<Scored>& ranked, const std::vector<std::string>& effects,
+                                     const runs::PreparedRuns& p, const ModelNull& null, const DiagnosisOptions& options) {
   const auto& registry = candidates_of(options);
   const std::size_t top = std::min(ranked.size(), static_cast<std::size_t>(std::max(0, options.likelihood_candidates)));
-  if (top == 0) return;
+  LikelihoodRanking out;
+  if (top == 0) return out;
+  out.candidates.resize(top);
   const Selected none(p.lattices.size());
   const std::vector<double> null_ll = null_log_likelihoods(p, none);
 
@@ -170,7 +172,7 @@ void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const ru
 
   // The candidates on the records first: a pair starts from its members' fits.
   tbb::parallel_for(std::size_t{0}, top, [&](std::size_t i) {
-    d.ranking[i].likelihood = fit_model(p, models[i], none, null_ll);
+    out.candidates[i] = fit_model(p, models[i], none, null_ll);
     progress();
   });
   // A pair starts from each member's own maximum-likelihood values.
@@ -179,11 +181,11 @@ void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const ru
       std::vector<Member> pair = {models[a][0], models[b][0]};
       for (std::size_t k : {a, b}) {
         std::vector<double>& start = pair[k == a ? 0 : 1].start;
-        const std::vector<MlParameter>& fitted = d.ranking[k].likelihood.parameters;
+        const std::vector<MlParameter>& fitted = out.candidates[k].parameters;
         for (std::size_t j = 0; j < start.size(); ++j) start[j] = fitted[j].value;
       }
       models.push_back(std::move(pair));
-      d.pairs.push_back({d.ranking[a].effect, d.ranking[b].effect, {}});
+      out.pairs.push_back({effects[a], effects[b], {}});
     }
   // Then the pairs and, in the same parallel pass, each candidate's reference:
   // the same held-out gain on null files of the records' size. A pair's
@@ -198,18 +200,19 @@ void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const ru
   std::vector<std::vector<double>> gains(top, std::vector<double>(file.size()));
   tbb::parallel_for(std::size_t{0}, pairs + top * file.size(), [&](std::size_t t) {
     if (t < pairs) {
-      d.pairs[t].likelihood = fit_model(p, models[top + t], none, null_ll);
+      out.pairs[t].likelihood = fit_model(p, models[top + t], none, null_ll);
     } else {
       const std::size_t m = (t - pairs) % top, f = (t - pairs) / top;
       gains[m][f] = null_gain(file[f], models[m], none, file_null_ll[f], null.calibration);
     }
     progress();
   });
-  for (std::size_t m = 0; m < top && !file.empty(); ++m) d.ranking[m].likelihood.null_gain = quantile(gains[m], 0.5);
+  for (std::size_t m = 0; m < top && !file.empty(); ++m) out.candidates[m].null_gain = quantile(gains[m], 0.5);
 
-  std::stable_sort(d.pairs.begin(), d.pairs.end(), [](const PairResult& x, const PairResult& y) {
+  std::stable_sort(out.pairs.begin(), out.pairs.end(), [](const PairResult& x, const PairResult& y) {
     return x.likelihood.heldout_gain > y.likelihood.heldout_gain;
   });
+  return out;
 }
 
 }  // namespace insmc::gap

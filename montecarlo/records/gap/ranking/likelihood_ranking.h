@@ -6,6 +6,7 @@
 /// held-out log-likelihood gain over the model without them (2-fold, as the
 /// ranking splits) and that gain's reference on null files of the records'
 /// size; and the pairs of the best few, fitted jointly.
+#include <string>
 #include <vector>
 
 #include "montecarlo/records/gap/diagnosis_options.h"
@@ -16,10 +17,18 @@
 
 namespace insmc::gap {
 
-/// Fills d.ranking[i].likelihood for the first options.likelihood_candidates
-/// of `ranked` (d.ranking in the same order) and d.pairs for the pairs of the
-/// first options.likelihood_pair_candidates.
-void record_likelihood(Diagnosis& d, const std::vector<Scored>& ranked, const runs::PreparedRuns& p, const ModelNull& null,
-                       const DiagnosisOptions& options);
+/// The likelihood side of a ranking: the fit of each of the first
+/// candidates, in the ranking's order, and the pairs of the first few, the
+/// best held-out gain first.
+struct LikelihoodRanking {
+  std::vector<LikelihoodResult> candidates;
+  std::vector<PairResult> pairs;
+};
+
+/// The first options.likelihood_candidates of `ranked` (named `effects`, in
+/// the same order) fitted by maximum likelihood, and the pairs of the first
+/// options.likelihood_pair_candidates.
+LikelihoodRanking rank_by_likelihood(const std::vector<Scored>& ranked, const std::vector<std::string>& effects,
+                                     const runs::PreparedRuns& p, const ModelNull& null, const DiagnosisOptions& options);
 
 }  // namespace insmc::gap

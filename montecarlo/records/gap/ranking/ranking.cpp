@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <string>
+#include <utility>
 
 #include "montecarlo/records/gap/fit/subgrid.h"
 #include "montecarlo/records/gap/null/bootstrap.h"
@@ -154,11 +156,11 @@ std::vector<double> null_shrinks(const runs::PreparedRuns& p, const ModelNull& n
   return out;
 }
 
-void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const runs::PreparedRuns& p, const ModelNull& null,
-                    const DiagnosisOptions& options, double before) {
+FirstRanking first_ranking(const std::vector<Scored>& ranked, const runs::PreparedRuns& p, const ModelNull& null,
+                           const DiagnosisOptions& options, double before) {
   const auto& registry = candidates_of(options);
-  const int n = d.runs;
-  d.ranked = true;
+  const int n = static_cast<int>(p.runs.size());
+  FirstRanking d;
   for (const Scored& s : ranked) {
     const Candidate& c = registry[static_cast<std::size_t>(s.candidate)];
     d.ranking.push_back({c.name, c.description, s.parameters, s.heldout_gap, 1.0 - s.heldout_gap / before,
@@ -175,7 +177,11 @@ void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const runs:
     for (std::size_t i = 0; i < ranked.size(); ++i)
       d.ranking[i].null_shrink = reference[static_cast<std::size_t>(ranked[i].candidate)];
   }
-  record_likelihood(d, ranked, p, null, options);
+  std::vector<std::string> effects;
+  for (const CandidateResult& r : d.ranking) effects.push_back(r.effect);
+  LikelihoodRanking likelihood = rank_by_likelihood(ranked, effects, p, null, options);
+  for (std::size_t i = 0; i < likelihood.candidates.size(); ++i) d.ranking[i].likelihood = std::move(likelihood.candidates[i]);
+  d.pairs = std::move(likelihood.pairs);
   if (ranked.size() > 1) {
     // Runner-up margin and its resampling standard error.
     constexpr int kResamples = 500;
@@ -195,6 +201,7 @@ void record_ranking(Diagnosis& d, const std::vector<Scored>& ranked, const runs:
     if (single && d.runner_up_margin < 2.0 * d.runner_up_margin_se)
       d.top = d.ranking[0].effect + "|" + d.ranking[1].effect;
   }
+  return d;
 }
 
 }  // namespace insmc::gap
