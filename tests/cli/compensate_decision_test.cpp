@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -169,6 +170,47 @@ TEST(CompensateDecision, RowsThatDoNotFitTheModelGetNoNavigationNumbers) {
   const std::string gp = read_file(dir.path() / "o" / "compensate.gp");
   EXPECT_TRUE(has(gp, "not drawn (test rows do not fit the model)")) << gp.substr(0, 600);
   EXPECT_FALSE(has(gp, "unit (run "));
+}
+
+// A drift instability of 0.05 deg/h (tau 600 s), twenty times below the
+// one above: the rows stay inside the model's model-error allowance in
+// some units, but go beyond what rows of the linear level reach, which the
+// report says (in the rollup and the unit's section) without changing the
+// verdict; the model's own units (the same seed without it) are not flagged.
+TEST(CompensateDecision, RowsBeyondTheLinearLevelAreFlaggedNotRefused) {
+  const TempDir dir;
+  for (const bool effect : {false, true}) {
+    const std::string fleet =
+        simulate_fleet(dir, 4, effect ? " --effect gyro_drift_instability:sigma=0.05degph,tau=600s" : "");
+    const std::string out = dir.str() + (effect ? "/with" : "/without");
+    const ProgramResult r = run_insmc("compensate --records " + fleet + " --out " + out);
+    const std::string json = read_file(std::filesystem::path(out) / "compensate.json");
+    int flagged = 0, fitting = 0;
+    for (std::size_t at = json.find("\"consistency\""); at != std::string::npos;
+         at = json.find("\"consistency\"", at + 1)) {
+      const std::string block = json.substr(at, json.find('}', at) - at);
+      const auto number = [&](const std::string& key) {
+        const std::size_t k = block.find("\"" + key + "\"");
+        return std::stod(block.substr(block.find(':', k) + 1));
+      };
+      const bool fits = number("p") >= 1e-6;
+      fitting += fits;
+      flagged += fits && number("linear_level_p") < 1e-6;
+    }
+    if (!effect) {
+      EXPECT_EQ(r.exit_code, 0) << r.err;
+      EXPECT_EQ(fitting, 4);
+      EXPECT_EQ(flagged, 0) << r.out.substr(0, 3000);
+      EXPECT_FALSE(has(r.out, "more of its model-error allowance")) << r.out.substr(0, 3000);
+    } else {
+      ASSERT_GE(flagged, 1) << r.out.substr(0, 3000);
+      EXPECT_TRUE(has(r.out, "fit the model only with more of its model-error allowance than rows of the linear level "
+                             "reach"))
+          << r.out.substr(0, 3000);
+      EXPECT_TRUE(has(r.out, "They use more of the model-error allowance than the linear level leaves room for"))
+          << r.out.substr(0, 3000);
+    }
+  }
 }
 
 // Every unit of a fleet is drawn (beyond 8, a panel per scheme and group of

@@ -289,7 +289,7 @@ TEST(Compensate, BadInputIsRefusedWithTheFieldNamed) {
   EXPECT_EQ(s54.exit_code, 2) << s54.err;
   EXPECT_TRUE(has(s54.err, "scheme") && has(s54.err, "5.4")) << s54.err;
   // A test run whose logger stopped from t = 200 s to 700 s: 51 of its 90
-  // filter intervals missing, more than the fits may do without; the run,
+  // filter intervals missing, more than half of what it recorded; the run,
   // the counts and the first missing time are named.
   std::ifstream in(records);
   std::ofstream out(dir.str() + "/holes.csv");
@@ -303,7 +303,8 @@ TEST(Compensate, BadInputIsRefusedWithTheFieldNamed) {
   const ProgramResult holes = run_insmc("compensate --records " + dir.str() + "/holes.csv");
   EXPECT_EQ(holes.exit_code, 2) << holes.err;
   EXPECT_TRUE(has(holes.err, "holes.csv: ") && has(holes.err, "run 0") && has(holes.err, "t_s = 200)") &&
-              has(holes.err, "f at 39 and r at 39 of the K = 90") && has(holes.err, "at least 45 of the 90"))
+              has(holes.err, "f at 39 and r at 39 of the 90 filter intervals") &&
+              has(holes.err, "at least 50 % of its recorded f windows and r rows"))
       << holes.err;
 }
 
@@ -389,6 +390,45 @@ TEST(Compensate, ARunThatDroppedRecordsIsFittedOverTheIntervalsItHas) {
     EXPECT_LE(std::abs(std::stod(est[i][2]) - std::stod(full_est[i][2])),
               4 * std::sqrt(sigma * sigma - sigma_all * sigma_all))
         << est[i][1] << " (six of 90 intervals dropped)";
+  }
+}
+
+TEST(Compensate, ALoggerOfOneSecondRecordsThatDropsOneInTenIsFitted) {
+  // f and r every second, each run dropping its own tenth of the test
+  // records, as a real logger does: about a third of the 10-s boxes are
+  // whole (0.9^10), but each run holds nine tenths of what it recorded, so
+  // it is fitted over the whole boxes and said so. Its conditioning is on a
+  // subset of the boxes of the undropped file's, so the estimates differ by
+  // a Gaussian of variance sigma_dropped^2 - sigma_all^2 (4 of its sigmas).
+  const TempDir dir;
+  const std::string records = dir.str() + "/one_second.csv";
+  ASSERT_EQ(run_insmc("simulate --runs 2 --filter-interval 1s --nav-duration 20min --out " + records).exit_code, 0);
+  const auto full_est = estimates_after_53(records);
+  std::ifstream in(records);
+  const std::string dropped = dir.str() + "/dropped.csv";
+  std::ofstream out(dropped);
+  long test_row = 0;
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t c1 = line.find(','), c2 = line.find(',', c1 + 1);
+    const bool is_test = !line.starts_with("#") && !line.starts_with("run") && line.find(",test,") == c2;
+    // A scrambled tenth of the rows (a multiplicative hash of the row's index).
+    if (is_test && (static_cast<unsigned long>(test_row++) * 2654435761UL >> 7) % 10 == 3) continue;
+    out << line << "\n";
+  }
+  out.close();
+  const TempDir dropped_out;
+  const ProgramResult r = run_insmc("compensate --records " + dropped + " --scheme 5.3 --out " + dropped_out.str());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "; 10 s boxes summed from 1 s windows, a box with a window missing left out; 9")) << r.out;
+  EXPECT_TRUE(has(r.out, "2 of 2 unit(s) go")) << r.out;  // the rows fit the model
+  const auto est = csv_rows(read_file(dropped_out.path() / "estimates.csv"));
+  ASSERT_EQ(full_est.size(), est.size());
+  for (std::size_t i = 1; i < est.size(); ++i) {
+    const double sigma = std::stod(est[i][3]), sigma_all = std::stod(full_est[i][3]);
+    EXPECT_GE(sigma, sigma_all * (1 - 1e-9)) << est[i][1];
+    EXPECT_LE(std::abs(std::stod(est[i][2]) - std::stod(full_est[i][2])),
+              4 * std::sqrt(sigma * sigma - sigma_all * sigma_all))
+        << est[i][1] << " (a tenth of the 1-s records dropped)";
   }
 }
 

@@ -25,6 +25,13 @@
 //     priors' shape, so E z² = 1. m̂ = mean z² over n = 500; by the CLT
 //     m̂ ~ N(1, Var(z²)/n), Var(z²) estimated from the sample (delta method;
 //     its error is O(n^{-1/2}) relative). Two-sided at the per-check level.
+//  3. The test rows' chi-square against the model (UnitPosterior::
+//     consistency_chi2) lies in the band the model states: its mean over the
+//     units, m̂ ± its sample standard error, between the mean for rows of the
+//     linear level alone (ConsistencyBand::linear_mean, the floor unused) and
+//     the rows' count (the floor's whole allowance used). Truth-level rows
+//     carry the truth's second-order terms and its g_s, which the floor
+//     stands for, so they may lie anywhere inside; one-sided at each end.
 // Family-wise α = 1e-3 over all checks (Bonferroni).
 // The models differ from the truth by what docs/truth-vs-models.md states
 // (1 % + 1 m); at these spreads (hundreds to thousands of metres) that moves
@@ -50,8 +57,8 @@ constexpr int kUnits = 500;
 constexpr std::uint64_t kSeed = 20261126;
 constexpr double kFamilyAlpha = 1e-3;
 // 9 estimate checks (on the test rows all three schemes share: checked
-// once) + 3 schemes × 9 position checks.
-constexpr int kChecks = 9 + 3 * 9;
+// once) + 3 schemes × (9 position checks + the chi-square's two ends).
+constexpr int kChecks = 9 + 3 * (9 + 2);
 const double kAlpha = kFamilyAlpha / kChecks;
 
 struct Study {
@@ -134,6 +141,7 @@ TEST_P(CompensateCoverage, EstimatesAndPositionErrorsAtTheirStatedRates) {
   // Per estimate (U2, U3, df_T × axis): covered count and resolved count.
   std::array<int, 9> covered{}, resolved{};
   std::array<double, 9> zsum{}, z2sum{}, z4sum{};
+  double chi2_sum = 0.0, chi2_sq_sum = 0.0;
   const double q2 = test.position_resolution_m * test.position_resolution_m / 12.0;
   // Every unit has the same test-run layout: its model is built once.
   const UnitConditioning shared = unit_conditioning(records, records.runs.front().layout, prior);
@@ -143,6 +151,8 @@ TEST_P(CompensateCoverage, EstimatesAndPositionErrorsAtTheirStatedRates) {
     const UnitPosterior posterior = condition_unit(records, run, shared);
     if (!navigation)
       navigation = scheme_model(records, posterior, scheme, prior, clock_s, test.realignment_duration_s);
+    chi2_sum += posterior.consistency_chi2;
+    chi2_sq_sum += posterior.consistency_chi2 * posterior.consistency_chi2;
     const std::vector<UnitEstimate> est = estimate_unit(records, posterior, prior);
     for (int q = 0; q < 3; ++q)
       for (int a = 0; a < 3; ++a) {
@@ -191,6 +201,16 @@ TEST_P(CompensateCoverage, EstimatesAndPositionErrorsAtTheirStatedRates) {
                "xyz"[i % 3], clock_s[i / 3] / 60, zsum[i] / kUnits, m2, se, zc * se);
     EXPECT_LE(std::abs(m2 - 1.0), zc * se) << "r_" << "xyz"[i % 3] << " at " << clock_s[i / 3] / 60 << " min";
   }
+  const double chi2_mean = chi2_sum / kUnits;
+  const double chi2_se = std::sqrt(std::max(chi2_sq_sum / kUnits - chi2_mean * chi2_mean, 0.0) / kUnits);
+  const double z1 = boost::math::quantile(boost::math::complement(boost::math::normal(), kAlpha));
+  const double rows = static_cast<double>(shared.layout.rows.size());
+  fmt::print("{} chi-square of the test rows: mean {:.1f} +- {:.1f} over {} rows; band [{:.1f}, {:.0f}] (linear level "
+             "alone {:.1f} +- {:.1f} per unit)\n",
+             to_string(scheme), chi2_mean, chi2_se, rows, shared.consistency_band.linear_mean, rows,
+             shared.consistency_band.linear_mean, shared.consistency_band.linear_sd);
+  EXPECT_GE(chi2_mean + z1 * chi2_se, shared.consistency_band.linear_mean);
+  EXPECT_LE(chi2_mean - z1 * chi2_se, rows);
 }
 
 INSTANTIATE_TEST_SUITE_P(Schemes, CompensateCoverage,

@@ -187,6 +187,7 @@ CompensateResult compensate(const RecordFile& file, const CompensateOptions& opt
     u.consistency_chi2 = posterior.consistency_chi2;
     u.consistency_dof = posterior.consistency_dof;
     u.consistency_p = posterior.consistency_p;
+    u.consistency_band = posterior.consistency_band;
     for (const SchemeModel& m : scheme_models[L]) u.schemes.push_back(predict_scheme(out.records, run, posterior, m));
     choose_scheme(u, options);
     out.units.push_back(std::move(u));

@@ -83,7 +83,14 @@ struct UnitResult {
   std::int64_t run = 0;
   double consistency_chi2 = 0.0, consistency_p = 1.0;
   int consistency_dof = 0;
+  ConsistencyBand consistency_band;  ///< where rows of the linear level alone put the chi-square
   bool fits_model() const { return consistency_p >= kInconsistentP; }
+  /// Rows inside the model's allowance but beyond what rows of the linear
+  /// level alone reach (p below kInconsistentP there): the verdict stands,
+  /// the report warns.
+  bool beyond_linear_level() const {
+    return fits_model() && consistency_band.linear_p(consistency_chi2) < kInconsistentP;
+  }
   std::vector<UnitEstimate> estimates;
   std::vector<SchemePrediction> schemes;
   SchemeChoice choice = SchemeChoice::kNotChosen;

@@ -114,12 +114,21 @@ std::string rollup_markdown(const CompensateResult& result, const CompensateOpti
     }
   }
   const int n = static_cast<int>(result.units.size());
-  return fmt::format("## The units at a glance\n\n{}\n{} of {} unit(s) go{}. The detail of each follows.\n\n",
+  std::string beyond;
+  for (const UnitResult& u : result.units)
+    if (u.beyond_linear_level()) beyond += (beyond.empty() ? "" : ", ") + std::to_string(u.run);
+  if (!beyond.empty())
+    beyond = fmt::format(" The test rows of run(s) {} fit the model only with more of its model-error allowance than "
+                         "rows of the linear level reach (p < {:g} there): a sign of an effect the model lacks (each "
+                         "run's section gives the chi-square).",
+                         beyond, kInconsistentP);
+  return fmt::format("## The units at a glance\n\n{}\n{} of {} unit(s) go{}.{} The detail of each follows.\n\n",
                      render_markdown(t), go, n,
                      !limits ? " (no --limit given: only a unit whose test rows do not fit the model is no-go)"
                              : fmt::format(" (go: some scheme exceeds each --limit with probability at most {:g}; of "
                                            "those, the one whose worst limit has the largest ratio limit / RMS is used)",
-                                           options.risk));
+                                           options.risk),
+                     beyond);
 }
 
 /// The site's values with their sources, and the statements about the records.
@@ -493,11 +502,25 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
   for (const UnitResult& u : result.units) {
     const std::string run = std::to_string(u.run);
     md += fmt::format("## Run {}\n\n", run);
-    md += fmt::format("The test rows against the model: chi-square {:.1f} over {} rows, p = {:.3g}{}\n\n",
-                      u.consistency_chi2, u.consistency_dof, u.consistency_p,
-                      u.fits_model() ? "" : fmt::format(". **They do not fit the model (p < {:g})**: what follows assumes "
-                                                        "it, and no verdict is go; `insmc gap` on these records says "
-                                                        "where and why", kInconsistentP));
+    const double linear_p = u.consistency_band.linear_p(u.consistency_chi2);
+    md += fmt::format("The test rows against the model: chi-square {:.1f} over {} rows, p = {:.3g} against the model "
+                      "with its whole model-error allowance (where the chi-square is {} ± {:.0f}); rows of the linear "
+                      "level alone give {:.0f} ± {:.0f}, p = {:.3g}{}\n\n",
+                      u.consistency_chi2, u.consistency_dof, u.consistency_p, u.consistency_dof,
+                      std::sqrt(2.0 * u.consistency_dof), u.consistency_band.linear_mean,
+                      u.consistency_band.linear_sd, linear_p,
+                      !u.fits_model()
+                          ? fmt::format(". **They do not fit the model (p < {:g})**: what follows assumes it, and no "
+                                        "verdict is go; `insmc gap` on these records says where and why",
+                                        kInconsistentP)
+                      : u.beyond_linear_level()
+                          ? fmt::format(". **They use more of the model-error allowance than the linear level leaves "
+                                        "room for (p < {:g} there)**: the allowance stands for the truth's "
+                                        "second-order terms, which simulated truth units hardly show on a test run, "
+                                        "so this is more likely an effect the model lacks; the predictions below "
+                                        "stand, and `insmc gap` on these records says where",
+                                        kInconsistentP)
+                          : "");
     Json est_json = estimates_section(u, run, options.units, estimates, md);
     Json schemes = schemes_section(u, rec, run, compensation, envelope, md);
     md += envelope_markdown(u, options);
@@ -518,6 +541,9 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
     consistency["chi2"] = u.consistency_chi2;
     consistency["dof"] = u.consistency_dof;
     consistency["p"] = u.consistency_p;
+    consistency["linear_level_mean"] = u.consistency_band.linear_mean;
+    consistency["linear_level_sd"] = u.consistency_band.linear_sd;
+    consistency["linear_level_p"] = u.consistency_band.linear_p(u.consistency_chi2);
     consistency["fits_model"] = u.fits_model();
     uj["consistency"] = std::move(consistency);
     Json verdict = Json::object();

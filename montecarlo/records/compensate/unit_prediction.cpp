@@ -120,6 +120,28 @@ SchemeCompensation compensation_of(Scheme scheme, const UnitRecords& records, co
 
 }  // namespace
 
+/// ConsistencyBand: S_a = S − D, D the floor's share of the rows' noise,
+/// so S⁻¹S_a = I − S⁻¹D: tr = n − Σ dᵢ (S⁻¹)ᵢᵢ and
+/// tr((S⁻¹S_a)²) = n − 2 Σ dᵢ (S⁻¹)ᵢᵢ + Σᵢⱼ dᵢ dⱼ ((S⁻¹)ᵢⱼ)².
+ConsistencyBand consistency_band(const runs::GaussianModel& model, const Eigen::LLT<Eigen::MatrixXd>& S) {
+  const Eigen::Index n = model.H.rows();
+  const Eigen::VectorXd d = (model.noise_var - model.actual_noise_var).cwiseMax(0.0);
+  const Eigen::MatrixXd S_inv = S.solve(Eigen::MatrixXd::Identity(n, n));
+  const double dS = d.dot(S_inv.diagonal());
+  const double dSd = d.dot(S_inv.cwiseAbs2() * d);
+  ConsistencyBand band;
+  band.linear_mean = static_cast<double>(n) - dS;
+  band.linear_sd = std::sqrt(std::max(0.0, 2.0 * (static_cast<double>(n) - 2.0 * dS + dSd)));
+  return band;
+}
+
+double ConsistencyBand::linear_p(double chi2) const {
+  if (!(linear_mean > 0 && linear_sd > 0)) return 1.0;
+  const double c = linear_sd * linear_sd / (2.0 * linear_mean);
+  const double nu = 2.0 * linear_mean * linear_mean / (linear_sd * linear_sd);
+  return boost::math::cdf(boost::math::complement(boost::math::chi_squared(nu), std::max(chi2, 0.0) / c));
+}
+
 double UnitPositionError::unit_rms_m(int a) const { return std::sqrt(mean_m[a] * mean_m[a] + covariance_m2(a, a)); }
 double UnitPositionError::population_rms_m(int a) const { return std::sqrt(population_m2(a, a)); }
 double UnitPositionError::unit_horizontal_rms_m() const {
@@ -210,6 +232,7 @@ UnitConditioning unit_conditioning(const UnitRecords& records, const runs::Layou
   u.row_covariance = std::move(gain.S);
   u.cause_mean = cause_prior_mean(base, u.model, prior.mean());
   u.estimates_map = estimates_of_test_rows(records, layout);
+  u.consistency_band = consistency_band(u.model, u.row_covariance);
   return u;
 }
 
@@ -230,6 +253,7 @@ UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run,
   c.consistency_dof = static_cast<int>(innovation.size());
   c.consistency_p = boost::math::cdf(
       boost::math::complement(boost::math::chi_squared(c.consistency_dof), std::max(c.consistency_chi2, 0.0)));
+  c.consistency_band = shared.consistency_band;
   c.estimates_map = shared.estimates_map;
   const TestRunEstimators& est = run.estimators;
   const Eigen::Vector4d per_r0 = est.position * Eigen::VectorXd::Ones(est.position.cols());

@@ -31,6 +31,24 @@
 
 namespace insmc::mc {
 
+/// The chi-square of a unit's test rows against S = H P Hᵀ + W (W with the
+/// model-error floor) for rows of covariance S_a = H P Hᵀ + W_a (the actual
+/// noise, no model error): a quadratic form of mean tr(S⁻¹S_a) and, for
+/// Gaussian rows, variance 2 tr((S⁻¹S_a)²). Table 3.1's uniform draws have
+/// less kurtosis than a Gaussian's, so the spread is an upper bound.
+struct ConsistencyBand {
+  double linear_mean = 0.0, linear_sd = 0.0;
+  /// The upper-tail probability of `chi2` for rows of the linear level
+  /// alone: Satterthwaite's c·χ²(ν) of the same mean and variance (the
+  /// quadratic form is a weighted sum of χ²(1), weights the eigenvalues of
+  /// S⁻¹S_a, all in (0, 1]); 1 when the band is empty.
+  double linear_p(double chi2) const;
+};
+
+/// The band of a model's test rows: S its rows' covariance with the floor
+/// (H P Hᵀ + noise_var), the actual noise actual_noise_var.
+ConsistencyBand consistency_band(const runs::GaussianModel& model, const Eigen::LLT<Eigen::MatrixXd>& S);
+
 /// One coefficient of the report for this unit.
 struct UnitEstimate {
   std::string name;        ///< "U2_x", ..., "df_T_z"
@@ -96,6 +114,11 @@ struct UnitPosterior {
   double consistency_chi2 = 0.0;
   int consistency_dof = 0;
   double consistency_p = 1.0;
+  /// Where rows of the linear level itself (no model error, only the rows'
+  /// actual noise) put that chi-square: its mean and standard deviation.
+  /// The floor is an allowance, so data of the model lie between this and
+  /// χ²(rows); p above is taken against the full allowance.
+  ConsistencyBand consistency_band;
   Eigen::MatrixXd estimates_map;     ///< B: the report's estimates per unit of the test rows
   /// What the crew's estimators give: from Δr = r − r(0) (4.7), r(0) the
   /// position read at switch-over. Records hold no row at t = 0, so r(0) is
@@ -117,6 +140,7 @@ struct UnitConditioning {
   Eigen::MatrixXd gain;              ///< G = P Hᵀ S⁻¹
   Eigen::MatrixXd error_covariance;  ///< of the linear estimate
   Eigen::LLT<Eigen::MatrixXd> row_covariance;  ///< S = H P Hᵀ + W
+  ConsistencyBand consistency_band;
 };
 UnitConditioning unit_conditioning(const UnitRecords& records, const runs::Layout& layout, const UncertaintyModel& prior);
 /// condition_unit with the shared part built before (run.layout == shared.layout).

@@ -36,13 +36,20 @@ const RecordRow* test_row_at(const RecordRun& run, double t_s, double tau_s, boo
   return test != nullptr || !nav_continues ? test : nearest_of(Phase::kNav);
 }
 
-/// The median spacing of consecutive r rows of the test runs (0 when none).
-double median_r_spacing(const RecordFile& file) {
+/// Whether a test row carries the quantity: r, or f on all three axes.
+bool carries(const RecordRow& row, bool f) {
+  return f ? row.f_mps2[0] && row.f_mps2[1] && row.f_mps2[2] : row.r_ap_m.has_value();
+}
+
+/// The median spacing of consecutive test rows carrying f (or r) over the
+/// runs (0 when none): the recorder's f window or r interval, whatever the
+/// header says.
+double median_test_spacing(const RecordFile& file, bool f) {
   std::vector<double> spacings;
   for (const RecordRun& run : file.runs) {
     double last = -1.0;
     for (const RecordRow& row : run.rows) {
-      if (row.phase != Phase::kTest || !row.r_ap_m) continue;
+      if (row.phase != Phase::kTest || !carries(row, f)) continue;
       if (last >= 0 && row.t_s > last) spacings.push_back(row.t_s - last);
       last = row.t_s;
     }
@@ -52,12 +59,39 @@ double median_r_spacing(const RecordFile& file) {
   return spacings[spacings.size() / 2];
 }
 
-/// The fewest intervals a run's fit may keep of K: half of them (a logger's
-/// dropouts are a few per cent; a run with more missing is not the test run
-/// the report's fits were designed for), and every one of a very short run.
-int fewest_intervals(int K) { return std::max((K + 1) / 2, std::min(K, 6)); }
+/// The share of the test run a run's records cover, f and r apart, counted
+/// at the recorder's own spacing: the rows it has over those the spacing
+/// puts in (0, T]. Summing short windows into the fits' boxes drops every
+/// box with one window missing, so a logger's 10 % of dropped 1-s records
+/// leaves a third of the 10-s boxes: the run is still the test run the fits
+/// were designed for, which the share of boxes would not say.
+struct RecordedCover {
+  double f = 0.0, r = 0.0;
+};
+RecordedCover recorded_cover(const RecordRun& run, double test_duration_s, double f_spacing_s, double r_spacing_s) {
+  RecordedCover cover;
+  for (const bool f : {true, false}) {
+    const double spacing = f ? f_spacing_s : r_spacing_s;
+    if (!(spacing > 0)) continue;
+    const double slots = std::max(1.0, std::round(test_duration_s / spacing));
+    long rows = 0;
+    for (const RecordRow& row : run.rows)
+      if (row.phase == Phase::kTest && row.t_s > 0 && row.t_s <= test_duration_s * (1 + 1e-9) && carries(row, f)) ++rows;
+    (f ? cover.f : cover.r) = std::min(1.0, static_cast<double>(rows) / slots);
+  }
+  return cover;
+}
 
-UnitTestRun unit_test_run(const RecordRun& run, const runs::RecordSite& site, std::vector<std::string>& statements) {
+/// What a run must hold to be fitted: half of its recorded f windows and r
+/// rows over the test run (a logger's dropouts are a few per cent; a run
+/// with more missing is not the test run the report's fits were designed
+/// for), and of the fits' K intervals at least as many as a short run's
+/// every one (6), the fits' four terms and their spread.
+constexpr double kLeastRecordedCover = 0.5;
+int fewest_intervals(int K) { return std::min(K, 6); }
+
+UnitTestRun unit_test_run(const RecordRun& run, const RecordRun& recorded, const runs::RecordSite& site,
+                          double f_spacing_s, double r_spacing_s, std::vector<std::string>& statements) {
   const double tau = site.filter_interval_s;
   const int K = runs::record_test_options(site).intervals();
   UnitTestRun out;
@@ -90,18 +124,27 @@ UnitTestRun unit_test_run(const RecordRun& run, const runs::RecordSite& site, st
   }
   out.layout.test_rows = static_cast<int>(out.layout.rows.size());
   out.values = Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
-  if (std::min(with_f, with_r) < fewest_intervals(K))
+  const RecordedCover cover = recorded_cover(recorded, site.test_duration_s, f_spacing_s, r_spacing_s);
+  const bool summed = f_spacing_s < tau * (1 - 2 * kGridJitter);
+  const std::string counts =
+      fmt::format("f at {} and r at {} of the {} filter intervals of the test run", with_f, with_r, K);
+  const std::string boxes =
+      summed ? fmt::format("; {:g} s boxes summed from {:g} s windows, a box with a window missing left out; {:.0f} % of "
+                           "the recorded f windows and {:.0f} % of the r rows there",
+                           tau, f_spacing_s, 100 * cover.f, 100 * cover.r)
+             : "";
+  if (std::min(with_f, with_r) < fewest_intervals(K) || std::min(cover.f, cover.r) < kLeastRecordedCover)
     throw InputError(fmt::format("records run {} test rows", run.id),
-                     fmt::format("(f at {} and r at {} of the K = {} filter intervals; the first missing at t_s = {:g})",
-                                 with_f, with_r, K, first_missing_s),
+                     fmt::format("({}; the first missing at t_s = {:g}{})", counts, first_missing_s, boxes),
                      fmt::format("compensate fits (4.4), (4.8) over the intervals t_k = k*{:g} s (within {:g} s) up "
-                                 "to T = {:g} s that have f and r (all three axes): at least {} of the {}",
-                                 tau, kGridJitter * tau, site.test_duration_s, fewest_intervals(K), K));
+                                 "to T = {:g} s that have f and r (all three axes): a run must hold at least {:.0f} % "
+                                 "of its recorded f windows and r rows and at least {} of the {} intervals",
+                                 tau, kGridJitter * tau, site.test_duration_s, 100 * kLeastRecordedCover,
+                                 fewest_intervals(K), K));
   if (with_f < K || with_r < K)
-    statements.push_back(fmt::format(
-        "run {}: f at {} and r at {} of the {} filter intervals of the test run (the first missing at t = {:g} s): "
-        "the fits (4.4), (4.8) are taken over the intervals it has",
-        run.id, with_f, with_r, K, first_missing_s));
+    statements.push_back(fmt::format("run {}: {} (the first missing at t = {:g} s{}): the fits (4.4), (4.8) are taken "
+                                     "over the intervals it has",
+                                     run.id, counts, first_missing_s, boxes));
   out.estimators = layout_estimators(site, out.layout);
   // The estimators as the Monte Carlo applies them (test_run.h); r rather
   // than Δr = r − r(0): records have no row at t = 0, so each estimate
@@ -174,10 +217,11 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
   runs::RecordReading options;
   options.prior = prior;
   const double T = tests.header.test_duration_s();
+  const double f_spacing_s = median_test_spacing(tests, true), r_spacing_s = median_test_spacing(tests, false);
   // The estimators fit r at the ends of the filter windows: windows at least
   // as long as the r spacing (less two rows' jitter) put an r row at each end.
   options.min_filter_interval_s =
-      std::max({kUnitFilterIntervalS, T / kMaxUnitIntervals, median_r_spacing(tests) * (1 - 2 * kGridJitter)});
+      std::max({kUnitFilterIntervalS, T / kMaxUnitIntervals, r_spacing_s * (1 - 2 * kGridJitter)});
   UnitRecords out;
   const runs::Records records = runs::read_records(tests, options, out.statements, out.site_values);
   out.site = records.site;
@@ -193,7 +237,11 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
         "the filter interval {:g} s does not divide T = {:g} s: the fits (4.4), (4.8) take the {} windows that end "
         "within the test run (to {:g} s), and (5.10) carries them to T",
         out.site.filter_interval_s, out.site.test_duration_s, K, K * out.site.filter_interval_s));
-  for (const RecordRun& r : records.file.runs) out.runs.push_back(unit_test_run(r, out.site, out.statements));
+  INSMC_ASSERT(records.file.runs.size() == tests.runs.size(), "runs read {} of {}", records.file.runs.size(),
+               tests.runs.size());
+  for (std::size_t i = 0; i < tests.runs.size(); ++i)
+    out.runs.push_back(unit_test_run(records.file.runs[i], tests.runs[i], out.site, f_spacing_s, r_spacing_s,
+                                     out.statements));
   return out;
 }
 
