@@ -47,7 +47,11 @@ for t in "${targets[@]}"; do fuzz_targets+=("fuzz_$t"); done
 bash "$root/scripts/build-sanitize.sh" "${fuzz_targets[@]}"
 
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+# The targets' scratch files (megabytes each), in memory where /dev/shm is;
+# removed here too, since a fuzzer may exit without running destructors.
+scratch=$(mktemp -d -p /dev/shm 2>/dev/null || mktemp -d)
+export INSMC_FUZZ_SCRATCH=$scratch
+trap 'rm -rf "$work" "$scratch"' EXIT
 failed=0
 for t in "${targets[@]}"; do
   corpus=$work/$t/corpus

@@ -43,7 +43,7 @@ TEST(GapLikelihood, AWithheldVelocityRandomWalkIsFittedNearItsValueAndGainsAbove
       diagnosed(dir, "vrw.csv", "--seed 21 --effect velocity_random_walk:velocity_1h=0.3mps", 0);
   ASSERT_TRUE(d.significant);
   const gap::CandidateResult* vrw = nullptr;
-  for (const gap::CandidateResult& c : d.ranking)
+  for (const gap::CandidateResult& c : d.first.ranking)
     if (c.effect == "velocity_random_walk") vrw = &c;
   ASSERT_NE(vrw, nullptr);
   ASSERT_TRUE(vrw->likelihood.fitted) << "among the candidates fitted by maximum likelihood";
@@ -65,7 +65,7 @@ TEST(GapLikelihood, OnRecordsOfTheModelItselfNoCandidateGainsMoreThanFittingNois
   TempDir dir;
   const gap::Diagnosis d = diagnosed(dir, "null.csv", "--seed 22", 3);
   int fitted = 0;
-  for (const gap::CandidateResult& c : d.ranking) {
+  for (const gap::CandidateResult& c : d.first.ranking) {
     if (!c.likelihood.fitted) continue;
     ++fitted;
     // Each fold's held-out gain is at most the held-out half's own
@@ -82,9 +82,9 @@ TEST(GapLikelihood, OnRecordsOfTheModelItselfNoCandidateGainsMoreThanFittingNois
     EXPECT_LE(c.likelihood.heldout_gain, bound) << c.effect;
   }
   EXPECT_EQ(fitted, 5);
-  EXPECT_EQ(d.pairs.size(), 3u);
-  for (std::size_t i = 1; i < d.pairs.size(); ++i)
-    EXPECT_GE(d.pairs[i - 1].likelihood.heldout_gain, d.pairs[i].likelihood.heldout_gain);
+  EXPECT_EQ(d.first.pairs.size(), 3u);
+  for (std::size_t i = 1; i < d.first.pairs.size(); ++i)
+    EXPECT_GE(d.first.pairs[i - 1].likelihood.heldout_gain, d.first.pairs[i].likelihood.heldout_gain);
 }
 
 }  // namespace

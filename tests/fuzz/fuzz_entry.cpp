@@ -87,15 +87,34 @@ double si_or_nan(const std::string& text, Dimension d) {
 }
 
 /// A folder of this process for the files the commands read and write
-/// (in memory where /dev/shm is).
+/// (in memory where /dev/shm is; under INSMC_FUZZ_SCRATCH when set, which
+/// scripts/fuzz.sh removes whichever way the fuzzer exits), removed when
+/// the process exits normally: its files are megabytes of that memory.
+class ScratchFolder {
+ public:
+  ScratchFolder() {
+    const char* chosen = std::getenv("INSMC_FUZZ_SCRATCH");
+    const std::filesystem::path base = chosen != nullptr && *chosen != '\0'      ? chosen
+                                       : std::filesystem::is_directory("/dev/shm") ? "/dev/shm"
+                                                                                  : "/tmp";
+    path_ = base / fmt::format("insmc-fuzz-{}", ::getpid());
+    std::filesystem::create_directories(path_);
+  }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
 const std::filesystem::path& scratch() {
-  static const std::filesystem::path dir = [] {
-    const std::filesystem::path base = std::filesystem::is_directory("/dev/shm") ? "/dev/shm" : "/tmp";
-    std::filesystem::path d = base / fmt::format("insmc-fuzz-{}", ::getpid());
-    std::filesystem::create_directories(d);
-    return d;
-  }();
-  return dir;
+  static const ScratchFolder folder;
+  return folder.path();
 }
 
 /// Runs a subcommand as insmc's main does (InputError and Boost's parse

@@ -116,9 +116,9 @@ TEST(FindingIntervalCoverage, TheFirstRankedRangeCoversTheSimulatedValueAtItsNom
                                                gap::fuzzed_layout_of(seed, file.spec.kind.info().needs_pulses, 900.0))
                     : gap::own_layout_file({file.spec}, seed, 20);
     const gap::Diagnosis g = gap::diagnose(records, options);
-    if (!g.significant || g.ranking.empty()) return;
+    if (!g.significant || g.first.ranking.empty()) return;
     const bool thermal = file.drawn->effect == "thermal_transient";
-    for (const gap::ParameterEstimate& e : g.ranking[0].parameters) {
+    for (const gap::ParameterEstimate& e : g.first.ranking[0].parameters) {
       const bool drawn = e.name == file.drawn->parameter;
       if (!drawn && !thermal) continue;
       file.checked.push_back({file.drawn->effect + "." + e.name, file.spec.value(e.name), e, file.fuzzed, drawn});

@@ -42,7 +42,7 @@ namespace {
 /// The raw-sensor stage's verdict, when import-imu left one in the header.
 void add_raw_stage(Diagnosis& d, const RecordFile& file) {
   if (const auto raw = runs::raw_stage_from_header(file.header)) {
-    for (std::string& s : raw_stage_statements(*raw, d.top)) d.statements.push_back(std::move(s));
+    for (std::string& s : raw_stage_statements(*raw, d.first.top)) d.statements.push_back(std::move(s));
     d.raw_gyro_ratio = raw->gyro_ratio;
     d.raw_accel_ratio = raw->accel_ratio;
   }
@@ -75,25 +75,25 @@ RunEstimates test_run_estimates(Diagnosis& d, const runs::PreparedRuns& p,
 /// apart, and G pools it with the rows over each axis.
 void name_inside_priors(Diagnosis& d) {
   const EstimateTest& t = d.estimate_test;
-  if (!d.ranked || !t.significant || t.named.empty() || t.named == d.top) return;
+  if (!d.ranked() || !t.significant || t.named.empty() || t.named == d.first.top) return;
   const auto scored = [&](const std::string& name) {
     return std::any_of(t.scores.begin(), t.scores.end(), [&](const EstimateScore& s) { return s.effect == name; });
   };
-  bool inside = !d.top.empty();
-  for (std::size_t b = 0, e; b <= d.top.size(); b = e + 1) {
-    e = std::min(d.top.find('|', b), d.top.size());
-    inside = inside && scored(d.top.substr(b, e - b));
+  bool inside = !d.first.top.empty();
+  for (std::size_t b = 0, e; b <= d.first.top.size(); b = e + 1) {
+    e = std::min(d.first.top.find('|', b), d.first.top.size());
+    inside = inside && scored(d.first.top.substr(b, e - b));
   }
   const bool rows_see_it = d.p_value < d.alpha;
   if (rows_see_it && !inside) return;
   d.statements.push_back(fmt::format(
       "the test run's estimates stand beyond the prior (least p {:.3g}, over the table {:.3g}) and name {}{} where "
       "the ranking by held-out G named {}: {}",
-      t.min_p, t.family_p, t.named, t.told_apart_by.empty() ? "" : " (" + t.told_apart_by + ")", d.top,
+      t.min_p, t.family_p, t.named, t.told_apart_by.empty() ? "" : " (" + t.told_apart_by + ")", d.first.top,
       rows_see_it ? "the estimates tell apart effects that act inside the priors"
                   : "the rows' scatter alone is within the null"));
-  d.estimate_test.replaced_top = d.top.empty() ? "(none)" : d.top;
-  d.top = t.named;
+  d.estimate_test.replaced_top = d.first.top.empty() ? "(none)" : d.first.top;
+  d.first.top = t.named;
 }
 
 }  // namespace
@@ -191,16 +191,8 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
                                        "up to G = {:.3g} at alpha = {})", n, n, d.null_gap_critical, options.alpha));
 
   // Where it lies.
-  GapLocation where = locate_gap(p, analysers, observed, null, null_z, null_layout, options.alpha,
-                                 d.pessimistic.significant, own_noise ? &*own_noise : nullptr);
-  d.groups = std::move(where.groups);
-  d.pessimistic.where = std::move(where.pessimistic_where);
-  d.by_kind = std::move(where.by_kind);
-  d.by_axis = std::move(where.by_axis);
-  d.by_stage = std::move(where.by_stage);
-  d.by_window = std::move(where.by_window);
-  d.time_functions = std::move(where.time_functions);
-  d.allan = std::move(where.allan);
+  d.where = locate_gap(p, analysers, observed, null, null_z, null_layout, options.alpha, d.pessimistic.significant,
+                       own_noise ? &*own_noise : nullptr);
   own_noise.reset();
 
   // Which effect, and how far the gap shrinks.
@@ -223,21 +215,16 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
     return d;
   }
   Selection selection = rank_and_select(d, p, null, options);
-  d.ranked = selection.ranked;
-  d.ranking = std::move(selection.first.ranking);
-  d.top = std::move(selection.first.top);
-  d.runner_up_margin = selection.first.runner_up_margin;
-  d.runner_up_margin_se = selection.first.runner_up_margin_se;
-  d.pairs = std::move(selection.first.pairs);
+  d.first = std::move(selection.first);
   d.greedy = std::move(selection.greedy);
   d.selected = std::move(selection.selected);
   for (std::string& s : selection.statements) d.statements.push_back(std::move(s));
   name_inside_priors(d);
-  if (d.model_gap_significant() && !d.ranking.empty())
-    if (std::optional<CandidateResult> checked = check_finding(d.ranking[0], p, records.file, null, options)) {
+  if (d.model_gap_significant() && d.ranked())
+    if (std::optional<CandidateResult> checked = check_finding(d.first.ranking[0], p, records.file, null, options)) {
       // The greedy search's first step is the same finding when it names the same effect.
       if (!d.greedy.empty() && d.greedy[0].effect == checked->effect) d.greedy[0].parameters = checked->parameters;
-      d.ranking[0] = std::move(*checked);
+      d.first.ranking[0] = std::move(*checked);
     }
   for (std::string& s : ranking_limits(d)) d.statements.push_back(std::move(s));
   add_raw_stage(d, file);

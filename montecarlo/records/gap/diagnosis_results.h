@@ -164,7 +164,6 @@ struct PessimisticFinding {
   double p_value = 1;      ///< share of null files with G₋ at least this
   double critical = 0;     ///< G₋ quantile 1 − α of the null files
   bool significant = false;
-  std::vector<std::string> where;  ///< the groups below the model, most negative ℓ first
   PriorScale prior_scale;          ///< measured when significant
 };
 
@@ -221,6 +220,23 @@ struct EstimateTest {
   std::string replaced_top;           ///< the ranking's top when the estimates' name replaced it
 };
 
+/// Where one diagnosis' gap lies.
+struct GapLocation {
+  std::vector<GroupResult> groups;
+  std::vector<std::string> pessimistic_where;  ///< where a significant pessimistic finding lies, most negative ℓ first
+  std::vector<Share> by_kind, by_axis, by_stage, by_window;
+  std::vector<TimeFunctionShares> time_functions;
+  std::vector<AllanCurve> allan;
+};
+
+/// The first ranking as the report gives it.
+struct FirstRanking {
+  std::vector<CandidateResult> ranking;  ///< ascending held-out gap
+  std::string top;                       ///< effect or class "a|b"
+  double runner_up_margin = 0, runner_up_margin_se = 0;
+  std::vector<PairResult> pairs;         ///< of the top candidates, by held-out log-likelihood gain
+};
+
 struct Diagnosis {
   int runs = 0;
   std::string scheme = "none";  ///< the records' scheme (header)
@@ -242,22 +258,16 @@ struct Diagnosis {
   std::string null_kind = "the model";
   ModelOnlyVerdict against_model;
   OwnNoiseLess own_noise_less;  ///< measured when against_model.reported
-  std::vector<GroupResult> groups;
-  std::vector<Share> by_kind, by_axis, by_stage, by_window;
-  std::vector<TimeFunctionShares> time_functions;
-  std::vector<AllanCurve> allan;
-  bool ranked = false;
+  GapLocation where;
   double heldout_gap_before = 0;
-  std::vector<CandidateResult> ranking;   ///< ascending held-out gap
-  std::string top;                        ///< effect or class "a|b"
-  double runner_up_margin = 0, runner_up_margin_se = 0;
-  std::vector<PairResult> pairs;          ///< of the top candidates, by held-out log-likelihood gain
+  FirstRanking first;                     ///< the candidates ranked (empty when none was scored or ranking was not run)
   std::vector<GreedyStep> greedy;         ///< the effects added, in order
   std::vector<std::string> selected;
   EstimateTest estimate_test;
 
   /// The gap the candidates explain: against the model alone (the main
   /// verdict unless the null goes through the import).
+  bool ranked() const { return !first.ranking.empty(); }
   bool model_gap_significant() const { return against_model.reported ? against_model.significant : significant; }
   /// The critical G of the model's own null (what the held-out gaps are read against).
   double model_null_gap_critical() const {

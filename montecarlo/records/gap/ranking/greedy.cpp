@@ -49,7 +49,6 @@ Selection rank_and_select(const Diagnosis& verdict, const runs::PreparedRuns& p,
     if (ranked.empty()) break;
     if (step == 0) {
       d.first = first_ranking(ranked, p, null, options, before);
-      d.ranked = true;
     }
     if (!verdict.model_gap_significant()) break;
     const Scored& best = ranked.front();

@@ -12,7 +12,6 @@ namespace insmc::gap {
 
 /// The first ranking and the effects the greedy search selects.
 struct Selection {
-  bool ranked = false;  ///< false when no candidate could be scored
   FirstRanking first;
   std::vector<GreedyStep> greedy;         ///< the effects added, in order
   std::vector<std::string> selected;      ///< their names (the first: the ranking's top, a class "a|b" included)

@@ -48,14 +48,6 @@ std::vector<Scored> rank_candidates(const runs::PreparedRuns& p, const std::vect
 std::vector<double> null_shrinks(const runs::PreparedRuns& p, const ModelNull& null, const NullCalibration& m0,
                                  const DiagnosisOptions& options);
 
-/// The first ranking as the report gives it.
-struct FirstRanking {
-  std::vector<CandidateResult> ranking;  ///< ascending held-out gap
-  std::string top;                       ///< effect or class "a|b"
-  double runner_up_margin = 0, runner_up_margin_se = 0;
-  std::vector<PairResult> pairs;         ///< of the top candidates, by held-out log-likelihood gain
-};
-
 /// Every candidate's result of `ranked` (not empty) with its null shrink and
 /// its likelihood side, and the top one (a class "a|b" when the runner-up
 /// is within two resampling standard errors). `before`: the held-out gap

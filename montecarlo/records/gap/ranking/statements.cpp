@@ -25,8 +25,8 @@ std::string what_tells_apart(const std::string& a, const std::string& b) {
 
 std::vector<std::string> ranking_limits(const Diagnosis& d) {
   std::vector<std::string> out;
-  if (!d.ranked || !d.model_gap_significant()) return out;
-  const CandidateResult& top = d.ranking.front();
+  if (!d.ranked() || !d.model_gap_significant()) return out;
+  const CandidateResult& top = d.first.ranking.front();
   for (const ParameterEstimate& p : top.parameters)
     if (p.at_grid_edge)
       out.push_back(fmt::format("the top candidate's {} is fitted at the edge of its range ({}): the data lie "
@@ -38,10 +38,10 @@ std::vector<std::string> ranking_limits(const Diagnosis& d) {
                               "null's critical {:.3g}: no candidate (alone or combined) explains these data; "
                               "the system lies far outside the model's priors or has disturbances the "
                               "candidates do not describe", d.greedy.size(), left, d.model_null_gap_critical()));
-  for (const CandidateResult& c : d.ranking) {
+  for (const CandidateResult& c : d.first.ranking) {
     if (c.effect != "bounds" || c.parameters.empty()) continue;
     const bool chosen = std::find(d.selected.begin(), d.selected.end(), c.effect) != d.selected.end() ||
-                        d.top.find(c.effect) != std::string::npos;
+                        d.first.top.find(c.effect) != std::string::npos;
     if (chosen && c.shrink > 0.1)
       out.push_back(fmt::format("priors wider than Table 3.1 by a factor {} (bounds) remove {:.0f} % of the "
                                 "held-out gap: Table 3.1's priors are too narrow for this system",
@@ -50,15 +50,15 @@ std::vector<std::string> ranking_limits(const Diagnosis& d) {
   // Candidates that change nothing on held-out runs: with these records they
   // are either absent or masked by what is present (not identifiable here).
   std::string traceless;
-  for (const CandidateResult& c : d.ranking)
+  for (const CandidateResult& c : d.first.ranking)
     if (std::abs(c.shrink) < 0.01) traceless += (traceless.empty() ? "" : ", ") + c.effect;
   if (!traceless.empty())
     out.push_back(fmt::format("no held-out trace (|shrink| < 1 %): {}; with these records they are absent "
                               "or masked by what is present, so the data say nothing about them", traceless));
-  if (d.top.find('|') != std::string::npos)
+  if (d.first.top.find('|') != std::string::npos)
     out.push_back(fmt::format("{} are not told apart by these data (held-out margin {:.3g} ± {:.3g}): "
-                              "reported as one class; {}", d.top, d.runner_up_margin, d.runner_up_margin_se,
-                              what_tells_apart(d.ranking[0].effect, d.ranking[1].effect)));
+                              "reported as one class; {}", d.first.top, d.first.runner_up_margin, d.first.runner_up_margin_se,
+                              what_tells_apart(d.first.ranking[0].effect, d.first.ranking[1].effect)));
   return out;
 }
 

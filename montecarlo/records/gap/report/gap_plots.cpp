@@ -25,33 +25,33 @@ Side side_of(const GroupResult& g) {
 }  // namespace
 
 mc::RenderedFigure render_groups_figure(const Diagnosis& d) {
-  const std::size_t n = d.groups.size();
+  const std::size_t n = d.where.groups.size();
   std::string data = "$band << EOD\n";
   for (std::size_t i = 0; i < n; ++i)
-    data += fmt::format("{} {} {}\n", i + 1, mc::plot_number(d.groups[i].null_low), mc::plot_number(d.groups[i].null_high));
+    data += fmt::format("{} {} {}\n", i + 1, mc::plot_number(d.where.groups[i].null_low), mc::plot_number(d.where.groups[i].null_high));
   data += "EOD\n";
   // The sensor's own noise through the import, on the same scale (verdict 2's null).
   bool own_noise = false;
   data += "$own << EOD\n";
   for (std::size_t i = 0; i < n; ++i)
-    if (std::isfinite(d.groups[i].own_noise_low)) {
+    if (std::isfinite(d.where.groups[i].own_noise_low)) {
       own_noise = true;
-      data += fmt::format("{} {} {}\n", i + 1, mc::plot_number(d.groups[i].own_noise_low),
-                          mc::plot_number(d.groups[i].own_noise_high));
+      data += fmt::format("{} {} {}\n", i + 1, mc::plot_number(d.where.groups[i].own_noise_low),
+                          mc::plot_number(d.where.groups[i].own_noise_high));
     }
   data += "NaN NaN NaN\nEOD\n";
   static constexpr Side kSides[] = {Side::kAbove, Side::kBelow, Side::kInside};
   for (const Side s : kSides) {
     data += fmt::format("$side{} << EOD\n", static_cast<int>(s));
     for (std::size_t i = 0; i < n; ++i)
-      if (side_of(d.groups[i]) == s) data += fmt::format("{} {}\n", i + 1, mc::plot_number(d.groups[i].log_ratio));
+      if (side_of(d.where.groups[i]) == s) data += fmt::format("{} {}\n", i + 1, mc::plot_number(d.where.groups[i].log_ratio));
     // An empty block would stop gnuplot's plot: a missing point keeps the legend entry.
     data += "NaN NaN\nEOD\n";
   }
   std::string settings = data;
   settings += "set xtics rotate by -60 font \",9\" (";
   for (std::size_t i = 0; i < n; ++i)
-    settings += fmt::format("{}{} {}", i ? ", " : "", mc::gnuplot_quote(d.groups[i].name()), i + 1);
+    settings += fmt::format("{}{} {}", i ? ", " : "", mc::gnuplot_quote(d.where.groups[i].name()), i + 1);
   settings += ")\n";
   settings += fmt::format("set xrange [0.3:{}]\nset xzeroaxis linecolor \"#888888\"\n", mc::plot_number(static_cast<double>(n) + 0.7));
   settings += "set grid ytics linecolor \"#dddddd\"\nset offsets 0, 0, graph 0.08, graph 0.08\n";
@@ -91,7 +91,7 @@ mc::RenderedFigure render_groups_figure(const Diagnosis& d) {
 
 mc::RenderedFigure render_allan_figure(const Diagnosis& d) {
   bool own_noise = false;
-  for (const AllanCurve& c : d.allan)
+  for (const AllanCurve& c : d.where.allan)
     for (const AllanPoint& p : c.points) own_noise = own_noise || p.own_noise > 0;
   mc::PanelFigure f;
   f.stem = "gap_allan";
@@ -106,7 +106,7 @@ mc::RenderedFigure render_allan_figure(const Diagnosis& d) {
     panel.title = against_own_noise ? "against the unit's own noise (verdict 2): null runs through the import"
                                     : own_noise ? "against the model (verdict 1): the model's null runs"
                                                 : "against the model: the model's null runs";
-    for (const AllanCurve& c : d.allan) {
+    for (const AllanCurve& c : d.where.allan) {
       mc::PlotLine data, null;
       data.name = fmt::format("f_{} data", "xyz"[c.axis % 3]);
       null.name = fmt::format("f_{} {}", "xyz"[c.axis % 3], against_own_noise ? "own-noise null" : "model null");

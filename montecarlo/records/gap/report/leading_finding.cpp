@@ -56,13 +56,13 @@ std::string leading_finding(const Diagnosis& d) {
                        "model with these counts; the paper's error budget (Table 3.1, chapter 5) assumes the report's.{}",
                        fmt::join(far, "; "), verdicts);
   const bool significant = d.model_gap_significant();
-  if (significant && d.ranked && !d.ranking.empty()) {
-    for (const CandidateResult& c : d.ranking)
-      if (c.effect == "bounds" && !c.parameters.empty() && d.top.find("bounds") != std::string::npos)
+  if (significant && d.ranked() && !d.first.ranking.empty()) {
+    for (const CandidateResult& c : d.first.ranking)
+      if (c.effect == "bounds" && !c.parameters.empty() && d.first.top.find("bounds") != std::string::npos)
         return fmt::format("The unit lies outside the model's priors: Table 3.1's bounds widened {:.3g} times remove "
                            "{:.0f} % of the held-out gap (section 3).{}", c.parameters.front().value, 100 * c.shrink, verdicts);
-    const CandidateResult& top = d.ranking.front();
-    return fmt::format("An unmodelled effect: {} (first-ranked; {}) closes {:.0f} % of the held-out gap{}.{}", d.top,
+    const CandidateResult& top = d.first.ranking.front();
+    return fmt::format("An unmodelled effect: {} (first-ranked; {}) closes {:.0f} % of the held-out gap{}.{}", d.first.top,
                        top.as_effect.empty() ? "parameters in section 3" : "as an effect: " + top.as_effect,
                        100 * top.shrink,
                        std::isfinite(top.null_shrink) ? fmt::format(", against {:.0f} % on null files", 100 * top.null_shrink)

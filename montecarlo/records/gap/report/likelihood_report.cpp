@@ -74,7 +74,7 @@ void add_likelihood_json(mc::Json& entry, const LikelihoodResult& r, int runs) {
 
 mc::Json pairs_json(const Diagnosis& d) {
   mc::Json out = mc::Json::array();
-  for (const PairResult& p : d.pairs) {
+  for (const PairResult& p : d.first.pairs) {
     mc::Json e = mc::Json::object();
     mc::Json effects = mc::Json::array();
     effects.push_back(p.first);
@@ -87,7 +87,7 @@ mc::Json pairs_json(const Diagnosis& d) {
 }
 
 std::string likelihood_markdown(const Diagnosis& d) {
-  const auto fitted = std::count_if(d.ranking.begin(), d.ranking.end(),
+  const auto fitted = std::count_if(d.first.ranking.begin(), d.first.ranking.end(),
                                     [](const CandidateResult& c) { return c.likelihood.fitted; });
   if (fitted == 0) return {};
   std::string md = fmt::format(
@@ -99,18 +99,18 @@ std::string likelihood_markdown(const Diagnosis& d) {
       "stays by held-out G.\n\n",
       fitted);
   mc::Table t({"rank", "effect", "held-out log-likelihood gain [nats]", "on null files", "parameters [68 %] [95 %]"});
-  for (std::size_t i = 0; i < d.ranking.size(); ++i) {
-    const LikelihoodResult& r = d.ranking[i].likelihood;
+  for (std::size_t i = 0; i < d.first.ranking.size(); ++i) {
+    const LikelihoodResult& r = d.first.ranking[i].likelihood;
     if (!r.fitted) continue;
-    t.add_row({std::to_string(i + 1), d.ranking[i].effect, gain_text(r.heldout_gain, d.runs),
+    t.add_row({std::to_string(i + 1), d.first.ranking[i].effect, gain_text(r.heldout_gain, d.runs),
                gain_text(r.null_gain, d.runs), parameters_text(r.parameters)});
   }
   md += mc::render_markdown(t) + "\n";
-  if (d.pairs.empty()) return md;
+  if (d.first.pairs.empty()) return md;
   md += "Pairs of the first candidates, both extensions together and their parameters fitted jointly (coordinate "
         "ascent, no intervals), by held-out log-likelihood gain:\n\n";
   mc::Table pt({"pair", "held-out log-likelihood gain [nats]", "on null files", "parameters"});
-  for (const PairResult& p : d.pairs)
+  for (const PairResult& p : d.first.pairs)
     pt.add_row({p.first + " + " + p.second, gain_text(p.likelihood.heldout_gain, d.runs),
                 gain_text(p.likelihood.null_gain, d.runs), parameters_text(p.likelihood.parameters)});
   return md + mc::render_markdown(pt) + "\n";

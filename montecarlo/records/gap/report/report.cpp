@@ -127,7 +127,7 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
   pessimistic["p_value"] = d.pessimistic.p_value;
   pessimistic["critical"] = d.pessimistic.critical;
   mc::Json where_less = mc::Json::array();
-  for (const std::string& w : d.pessimistic.where) where_less.push_back(w);
+  for (const std::string& w : d.where.pessimistic_where) where_less.push_back(w);
   pessimistic["where"] = where_less;
   if (const PriorScale& ps = d.pessimistic.prior_scale; ps.measured) {
     mc::Json scale = mc::Json::object();
@@ -159,12 +159,12 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
                 "run) and coherent groups (what all runs share, one-sided), expectations calibrated on the null";
   j["gap"] = g;
   mc::Json where = mc::Json::object();
-  where["by_kind"] = shares_json(d.by_kind);
-  where["by_axis"] = shares_json(d.by_axis);
-  where["by_stage"] = shares_json(d.by_stage);
-  where["by_window"] = shares_json(d.by_window);
+  where["by_kind"] = shares_json(d.where.by_kind);
+  where["by_axis"] = shares_json(d.where.by_axis);
+  where["by_stage"] = shares_json(d.where.by_stage);
+  where["by_window"] = shares_json(d.where.by_window);
   mc::Json groups = mc::Json::array();
-  for (const GroupResult& r : d.groups) {
+  for (const GroupResult& r : d.where.groups) {
     mc::Json e = mc::Json::object();
     e["group"] = r.name();
     e["kind"] = r.coherent ? "coherent" : "scatter";
@@ -182,10 +182,10 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
   }
   where["groups"] = groups;
   mc::Json tf = mc::Json::object();
-  for (const TimeFunctionShares& t : d.time_functions) tf[std::string(1, "xyz"[t.axis])] = shares_json(t.shares);
+  for (const TimeFunctionShares& t : d.where.time_functions) tf[std::string(1, "xyz"[t.axis])] = shares_json(t.shares);
   where["time_functions_nav_r"] = tf;
   mc::Json allan = mc::Json::object();
-  for (const AllanCurve& c : d.allan) {
+  for (const AllanCurve& c : d.where.allan) {
     mc::Json a = mc::Json::array();
     for (const AllanPoint& p : c.points) {
       mc::Json e = mc::Json::object();
@@ -200,7 +200,7 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
   where["allan_f_residual"] = allan;
   j["where"] = where;
   mc::Json ranking = mc::Json::array();
-  for (const CandidateResult& c : d.ranking) {
+  for (const CandidateResult& c : d.first.ranking) {
     mc::Json e = mc::Json::object();
     e["effect"] = c.effect;
     e["params"] = parameters_json(c.parameters);
@@ -222,13 +222,13 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
     add_likelihood_json(e, c.likelihood, d.runs);
     ranking.push_back(e);
   }
-  j["ranked"] = d.ranked;
+  j["ranked"] = d.ranked();
   j["heldout_gap_before"] = d.heldout_gap_before;
   j["ranking"] = ranking;
   j["pairs"] = pairs_json(d);
-  j["top"] = d.top.empty() ? mc::Json(nullptr) : mc::Json(d.top);
-  j["runner_up_margin"] = d.runner_up_margin;
-  j["runner_up_margin_se"] = d.runner_up_margin_se;
+  j["top"] = d.first.top.empty() ? mc::Json(nullptr) : mc::Json(d.first.top);
+  j["runner_up_margin"] = d.first.runner_up_margin;
+  j["runner_up_margin_se"] = d.first.runner_up_margin_se;
   mc::Json greedy = mc::Json::array();
   for (const GreedyStep& s : d.greedy) {
     mc::Json e = mc::Json::object();
@@ -284,7 +284,7 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
   std::vector<std::string> columns{"group", "terms", "observed", "null", "ln ratio", "p", "share"};
   if (own_noise) columns.push_back("own-noise band");
   mc::Table t(columns);
-  for (const GroupResult& r : d.groups) {
+  for (const GroupResult& r : d.where.groups) {
     std::vector<std::string> row{r.name(), fmt::format("{:.0f}", r.count), fmt::format("{:.3g}", r.power),
                                  fmt::format("{:.3g}", r.null_power), fmt::format("{:+.3f}", r.log_ratio),
                                  fmt::format("{:.3g}", r.p_value), pct(r.share)};
@@ -299,35 +299,35 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
     for (std::size_t i = 0; i < s.size(); ++i) line += (i ? ", " : "") + s[i].name + " " + pct(s[i].share);
     return line + "\n";
   };
-  md += share_line("by kind", d.by_kind) + share_line("by axis", d.by_axis) + share_line("by stage", d.by_stage) +
-        share_line("by window", d.by_window);
+  md += share_line("by kind", d.where.by_kind) + share_line("by axis", d.where.by_axis) + share_line("by stage", d.where.by_stage) +
+        share_line("by window", d.where.by_window);
   md += "\nPost-test position innovations on the error's time functions (share of the normalized energy, fitted in "
         "this order):\n\n";
   mc::Table tf({"axis", "function", "share"});
-  for (const TimeFunctionShares& s : d.time_functions)
+  for (const TimeFunctionShares& s : d.where.time_functions)
     for (const Share& e : s.shares) tf.add_row({std::string(1, "xyz"[s.axis]), e.name, pct(e.share)});
   md += mc::render_markdown(tf) + "\n![group ln ratios](gap_groups.png)\n\n![Allan deviation](gap_allan.png)\n\n";
   md += "## 3. Which effect\n\n";
-  if (!d.ranked) {
+  if (!d.ranked()) {
     md += "Not ranked (see the statements above).\n\n";
   } else {
     md += fmt::format("Held-out G before: {:.3g} (against the model{}). Each candidate fitted on one half of the "
                       "runs, scored on the other (2-fold), ranked by held-out G after.\n\n",
                       d.heldout_gap_before, own_noise ? ", verdict 1" : "");
     mc::Table r({"rank", "effect", "held-out G after", "shrink", "shrink on null files", "parameters (16–84 % of resampled fits)"});
-    for (std::size_t i = 0; i < d.ranking.size(); ++i)
-      r.add_row({std::to_string(i + 1), d.ranking[i].effect, fmt::format("{:.3g}", d.ranking[i].heldout_gap_after),
-                 pct(d.ranking[i].shrink),
-                 std::isfinite(d.ranking[i].null_shrink) ? pct(d.ranking[i].null_shrink) : std::string("—"),
-                 params_text(d.ranking[i].parameters)});
+    for (std::size_t i = 0; i < d.first.ranking.size(); ++i)
+      r.add_row({std::to_string(i + 1), d.first.ranking[i].effect, fmt::format("{:.3g}", d.first.ranking[i].heldout_gap_after),
+                 pct(d.first.ranking[i].shrink),
+                 std::isfinite(d.first.ranking[i].null_shrink) ? pct(d.first.ranking[i].null_shrink) : std::string("—"),
+                 params_text(d.first.ranking[i].parameters)});
     md += "The shrink on null files is what the same candidate gains, split and fitted the same way, on null files "
           "of as many runs (runs of the null calibration): a shrink not above it is noise fitted, not an effect.\n\n";
     md += mc::render_markdown(r) + "\n";
-    md += fmt::format("Top: **{}**; runner-up margin {:.3g} ± {:.3g} (resampled runs){}.\n\n", d.top,
-                      d.runner_up_margin, d.runner_up_margin_se,
-                      d.top.find('|') != std::string::npos ? " — within two standard errors: reported as one class" : "");
-    if (!d.ranking.front().as_effect.empty()) {
-      const CandidateResult& top = d.ranking.front();
+    md += fmt::format("Top: **{}**; runner-up margin {:.3g} ± {:.3g} (resampled runs){}.\n\n", d.first.top,
+                      d.first.runner_up_margin, d.first.runner_up_margin_se,
+                      d.first.top.find('|') != std::string::npos ? " — within two standard errors: reported as one class" : "");
+    if (!d.first.ranking.front().as_effect.empty()) {
+      const CandidateResult& top = d.first.ranking.front();
       md += fmt::format("The first-ranked finding as an effect, to simulate and compare at this site (`insmc "
                         "simulate --effect {}{}`){}.\n\n", top.as_effect, simulate_site_options(d.site),
                         top.as_effect_kept.empty() ? ""

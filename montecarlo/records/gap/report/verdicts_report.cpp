@@ -115,7 +115,7 @@ std::string verdicts_markdown(const Diagnosis& d) {
           ? fmt::format(": **the model is pessimistic about {}**: the data scatter or share less there than it "
                         "predicts, so an assumption is wider than the data (a declared pulse weight or resolution "
                         "coarser than the data show, priors wider than this system); no effect is sought for it",
-                        fmt::join(d.pessimistic.where, ", "))
+                        fmt::join(d.where.pessimistic_where, ", "))
           : ": not beyond the null";
   if (!has_own_noise_verdict(d))
     return fmt::format("**Against {}**, judged on null files of {}. ", model.name, model.null) +

@@ -169,17 +169,17 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
                                       : own_layout_file(effects, job.file_seed, options.runs_per_file);
     const auto start = std::chrono::steady_clock::now();
     const Diagnosis g = diagnose(records, d);
-    ValidationCase c{job.effect, job.magnitude, job.seed, g.significant, g.top, false, 0.0, 0.0, g.gap, g.p_value, 0.0, ""};
+    ValidationCase c{job.effect, job.magnitude, job.seed, g.significant, g.first.top, false, 0.0, 0.0, g.gap, g.p_value, 0.0, ""};
     c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (layout) c.layout = layout->describe();
     if (!job.spec) {
-      c.top = g.significant ? g.top : "";
+      c.top = g.significant ? g.first.top : "";
       c.identified = !g.significant;
     } else {
-      c.identified = g.significant && names_effect(g.top, job.effect);
-      if (g.significant && !g.ranking.empty()) c.shrink = g.ranking.front().shrink;
+      c.identified = g.significant && names_effect(g.first.top, job.effect);
+      if (g.significant && !g.first.ranking.empty()) c.shrink = g.first.ranking.front().shrink;
       const EffectInfo& info = effect_info(job.spec->kind);
-      for (const CandidateResult& r : g.ranking) {
+      for (const CandidateResult& r : g.first.ranking) {
         if (r.effect != job.effect) continue;
         for (const ParameterEstimate& p : r.parameters)
           for (std::size_t i = 0; i < info.parameters.size(); ++i)

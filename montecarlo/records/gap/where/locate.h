@@ -20,15 +20,6 @@ struct OwnNoiseRuns {
   std::vector<int> layout_of;         ///< and its layout
 };
 
-/// Where one diagnosis' gap lies.
-struct GapLocation {
-  std::vector<GroupResult> groups;
-  std::vector<std::string> pessimistic_where;  ///< where a significant pessimistic finding lies, most negative ℓ first
-  std::vector<Share> by_kind, by_axis, by_stage, by_window;
-  std::vector<TimeFunctionShares> time_functions;
-  std::vector<AllanCurve> allan;
-};
-
 /// The groups, their shares, the time functions and the Allan curves of
 /// the `observed` runs (and, when `pessimistic_significant`, the groups a
 /// pessimistic finding lies in). `analysers` are the base model's per layout;

@@ -42,11 +42,10 @@ Vector rows_of(const Vector& v, std::span<const Eigen::Index> rows) {
 /// share of the causes (O(n d k) against the O(n d²) of the rows' terms
 /// from a posterior of the layout's own), and is exact to round-off while
 /// the information left, I − Gᵀ Π G, keeps every eigenvalue above
-/// kLeastKept (a cancellation of at most 1/kLeastKept). Beyond that share
-/// the layout's information is the lattice's less the rows it lacks, while
-/// each cause keeps more than kLeastKept of its own.
+/// kLeastKeptInformation. Beyond that share the layout's information is the
+/// lattice's less the rows it lacks, while each cause keeps more than
+/// kLeastKeptInformation of its own.
 constexpr double kDowndateShare = 0.25;
-constexpr double kLeastKept = 1e-3;
 
 }  // namespace
 
@@ -171,7 +170,7 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
     // Too many rows missing for Woodbury: the layout's information is the
     // lattice's less G Gᵀ (O(k d²) instead of a Gram over its test rows).
     const Eigen::VectorXd lacked = G.rowwise().squaredNorm();
-    if (!((a.info_.diagonal() - lacked).array() > kLeastKept * a.info_.diagonal().array()).all()) {
+    if (!((a.info_.diagonal() - lacked).array() > kLeastKeptInformation * a.info_.diagonal().array()).all()) {
       own_fit();
       return;
     }
@@ -183,7 +182,7 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
   Eigen::MatrixXd kept = -G.transpose() * U;
   kept.diagonal().array() += 1.0;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(kept);
-  if (eig.info() != Eigen::Success || !(eig.eigenvalues().minCoeff() > kLeastKept)) {
+  if (eig.info() != Eigen::Success || !(eig.eigenvalues().minCoeff() > kLeastKeptInformation)) {
     own_fit();
     return;
   }

@@ -53,6 +53,12 @@ struct GroupSums {
 /// removes at least this share of its prior variance.
 inline constexpr double kResolvedShare = 0.1;
 
+/// A layout cut from a lattice takes the lattice's information less the
+/// rows it lacks while every cause keeps more than this share of its own
+/// (and the downdate's remainder every eigenvalue above it: a cancellation
+/// of at most 1/kLeastKeptInformation); otherwise it is fitted on its own.
+inline constexpr double kLeastKeptInformation = 1e-3;
+
 /// What every layout cut from one lattice (layout_union.h) shares of its
 /// analysis: the lattice model's fit over all its test rows. A layout that
 /// lacks k of those test rows has the information of the lattice less a

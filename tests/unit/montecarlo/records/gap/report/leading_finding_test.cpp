@@ -25,14 +25,13 @@ TEST(LeadingFinding, AgreementIsSaidWhenNothingElseIs) {
 TEST(LeadingFinding, AnUnmodelledEffectIsNamedWithItsEffectArgumentAndShrink) {
   Diagnosis d = agreeing();
   d.significant = true;
-  d.ranked = true;
-  d.top = "thermal_transient";
+  d.first.top = "thermal_transient";
   CandidateResult c;
   c.effect = "thermal_transient";
   c.shrink = 0.88;
   c.null_shrink = -0.07;
   c.as_effect = "thermal_transient:bias=0.2mg";
-  d.ranking.push_back(c);
+  d.first.ranking.push_back(c);
   const std::string f = leading_finding(d);
   EXPECT_TRUE(has(f, "An unmodelled effect: thermal_transient")) << f;
   EXPECT_TRUE(has(f, "thermal_transient:bias=0.2mg")) << f;
@@ -43,9 +42,8 @@ TEST(LeadingFinding, PulsesFarFromTheModelsComeBeforeAnyEffect) {
   Diagnosis d = agreeing();
   d.site[0] = {"dv_pulse_mps", 1.0 * kFtpsToMps, "inferred", "a lattice"};
   d.significant = true;
-  d.ranked = true;
-  d.top = "quantization";
-  d.ranking.push_back(CandidateResult{});
+  d.first.top = "quantization";
+  d.first.ranking.push_back(CandidateResult{});
   const std::string f = leading_finding(d);
   EXPECT_TRUE(has(f, "counts lie outside the model's assumptions")) << f;
   EXPECT_TRUE(has(f, "1 ft/s (inferred from the rows, 10 times the model's 0.1 ft/s)")) << f;
@@ -113,12 +111,11 @@ TEST(LeadingFinding, AnEffectBeyondTheUnitsOwnNoiseIsNamedWithBothVerdicts) {
   Diagnosis d = imported(0.04, 0.02);
   d.p_value = 0.002;
   d.significant = true;
-  d.ranked = true;
-  d.top = "thermal_transient";
+  d.first.top = "thermal_transient";
   CandidateResult c;
   c.effect = "thermal_transient";
   c.shrink = 0.7;
-  d.ranking.push_back(c);
+  d.first.ranking.push_back(c);
   const std::string f = leading_finding(d);
   EXPECT_TRUE(has(f, "An unmodelled effect: thermal_transient")) << f;
   EXPECT_TRUE(has(f, "against the unit's own noise through the import: a significant gap (G+ = 0.445, p = 0.002)")) << f;
