@@ -19,28 +19,23 @@ def measure(args, refusal_allowed=False):
     wall = time.monotonic() - start
     err = proc.stderr.read().decode(errors="replace").strip()
     code = os.waitstatus_to_exitcode(status)
-    # compensate refuses (exit 2) a run whose test rows miss a filter
-    # interval (its estimators (4.4), (4.8) take every t_k): counted, not timed.
+    # compensate refuses (exit 2) a file with a run holding less than half of
+    # its recorded test rows (docs/compensate.md): counted, not timed.
     if code not in (0, 1) and not (refusal_allowed and code == 2):
         sys.exit(f"time-records: {' '.join(args)} exited {code}: {err}")
     return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0, code == 2
 
 
-def rows_and_first_run(path):
-    rows, first = 0, None
+def data_rows(path):
+    rows, header_seen = 0, False
     with open(path) as f:
-        header = None
         for line in f:
             if line.startswith("#") or not line.strip():
                 continue
-            cells = line.rstrip("\n").split(",")
-            if header is None:
-                header = cells
-                continue
-            rows += 1
-            if first is None:
-                first = cells[header.index("run")]
-    return rows, first
+            if header_seen:
+                rows += 1
+            header_seen = True
+    return rows
 
 
 cases = []
@@ -55,9 +50,9 @@ with tempfile.TemporaryDirectory() as work:
             inputs.append((family, path))
     inputs += [("given", p) for p in extra]
     for family, path in inputs:
-        rows, run = rows_and_first_run(path)
+        rows = data_rows(path)
         for command in (["gap", "--records", path, "--format", "json"],
-                        ["compensate", "--records", path, "--run", run, "--format", "json"]):
+                        ["compensate", "--records", path, "--format", "json"]):
             wall, cpu, mb, refused = measure([insmc] + command, refusal_allowed=command[0] == "compensate")
             cases.append({"family": family, "file": os.path.basename(path), "command": command[0], "rows": rows,
                           "refused": refused,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
@@ -166,32 +167,41 @@ CompensateResult compensate(const RecordFile& file, const CompensateOptions& opt
   out.records = read_unit_records(file, options.prior, options.run, options.site_gravity_mps2);
   out.clock_s = envelope_times(options);
   out.identifiability = identifiability(out.records, options.prior);
-  // What depends on the test-run layout alone is built once per layout
-  // (every unit of a file, as a rule), not once per unit.
-  std::vector<UnitConditioning> conditionings;
-  std::vector<std::vector<SchemeModel>> scheme_models;
-  for (const UnitTestRun& run : out.records.runs) {
-    UnitResult u;
-    u.run = run.id;
+  // Runs grouped by their test-run layout: every unit of a file shares one
+  // as a rule, but a logger that drops records gives each run its own. What
+  // depends on the layout alone (the conditioning, rows² per covariance, and
+  // the schemes' navigation models) is built once per layout, the layouts in
+  // parallel, and dropped when its units are done. Each layout's work is
+  // sequential, so the bits do not depend on the threads.
+  const std::vector<UnitTestRun>& runs = out.records.runs;
+  std::vector<std::vector<std::size_t>> by_layout;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
     std::size_t L = 0;
-    while (L < conditionings.size() && !(conditionings[L].layout == run.layout)) ++L;
-    if (L == conditionings.size()) conditionings.push_back(unit_conditioning(out.records, run.layout, options.prior));
-    const UnitPosterior posterior = condition_unit(out.records, run, conditionings[L]);
-    if (L == scheme_models.size()) {
-      scheme_models.emplace_back();
-      for (Scheme s : options.schemes)
-        scheme_models.back().push_back(
-            scheme_model(out.records, posterior, s, options.prior, out.clock_s, options.realignment_duration_s));
-    }
-    u.estimates = estimate_unit(out.records, posterior, options.prior);
-    u.consistency_chi2 = posterior.consistency_chi2;
-    u.consistency_dof = posterior.consistency_dof;
-    u.consistency_p = posterior.consistency_p;
-    u.consistency_band = posterior.consistency_band;
-    for (const SchemeModel& m : scheme_models[L]) u.schemes.push_back(predict_scheme(out.records, run, posterior, m));
-    choose_scheme(u, options);
-    out.units.push_back(std::move(u));
+    while (L < by_layout.size() && !(runs[by_layout[L].front()].layout == runs[i].layout)) ++L;
+    if (L == by_layout.size()) by_layout.emplace_back();
+    by_layout[L].push_back(i);
   }
+  out.units.resize(runs.size());
+  tbb::parallel_for(std::size_t{0}, by_layout.size(), [&](std::size_t L) {
+    const UnitConditioning shared = unit_conditioning(out.records, runs[by_layout[L].front()].layout, options.prior);
+    std::vector<SchemeModel> scheme_models;
+    for (const std::size_t i : by_layout[L]) {
+      const UnitPosterior posterior = condition_unit(out.records, runs[i], shared);
+      if (scheme_models.empty())
+        for (Scheme s : options.schemes)
+          scheme_models.push_back(
+              scheme_model(out.records, posterior, s, options.prior, out.clock_s, options.realignment_duration_s));
+      UnitResult& u = out.units[i];
+      u.run = runs[i].id;
+      u.estimates = estimate_unit(out.records, posterior, options.prior);
+      u.consistency_chi2 = posterior.consistency_chi2;
+      u.consistency_dof = posterior.consistency_dof;
+      u.consistency_p = posterior.consistency_p;
+      u.consistency_band = posterior.consistency_band;
+      for (const SchemeModel& m : scheme_models) u.schemes.push_back(predict_scheme(out.records, runs[i], posterior, m));
+      choose_scheme(u, options);
+    }
+  });
   return out;
 }
 
