@@ -203,6 +203,9 @@ TEST(CompensateDecision, RowsBeyondTheLinearLevelAreFlaggedNotRefused) {
       EXPECT_EQ(flagged, 0) << r.out.substr(0, 3000);
       EXPECT_FALSE(has(r.out, "more of its model-error allowance")) << r.out.substr(0, 3000);
     } else {
+      // Flagged, not refused: the verdict stays that of the rows' fit.
+      EXPECT_EQ(r.exit_code, fitting == 4 ? 0 : 1) << r.err;
+      EXPECT_TRUE(has(r.out, std::to_string(fitting) + " of 4 unit(s) go")) << r.out.substr(0, 3000);
       ASSERT_GE(flagged, 1) << r.out.substr(0, 3000);
       EXPECT_TRUE(has(r.out, "fit the model only with more of its model-error allowance than rows of the linear level "
                              "reach"))

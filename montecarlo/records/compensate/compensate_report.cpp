@@ -504,7 +504,7 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
     md += fmt::format("## Run {}\n\n", run);
     const double linear_p = u.consistency_band.linear_p(u.consistency_chi2);
     md += fmt::format("The test rows against the model: chi-square {:.1f} over {} rows, p = {:.3g} against the model "
-                      "with its whole model-error allowance (where the chi-square is {} ± {:.0f}); rows of the linear "
+                      "with its whole model-error allowance (rows using all of it would give {} ± {:.0f}); rows of the linear "
                       "level alone give {:.0f} ± {:.0f}, p = {:.3g}{}\n\n",
                       u.consistency_chi2, u.consistency_dof, u.consistency_p, u.consistency_dof,
                       std::sqrt(2.0 * u.consistency_dof), u.consistency_band.linear_mean,

@@ -82,13 +82,15 @@ RecordedCover recorded_cover(const RecordRun& run, double test_duration_s, doubl
   return cover;
 }
 
-/// What a run must hold to be fitted: half of its recorded f windows and r
-/// rows over the test run (a logger's dropouts are a few per cent; a run
-/// with more missing is not the test run the report's fits were designed
-/// for), and of the fits' K intervals at least as many as a short run's
-/// every one (6), the fits' four terms and their spread.
+/// What a run must hold to be fitted: half of the fits' K intervals, or,
+/// where short windows are summed into the fits' boxes, half of its
+/// recorded f windows and r rows over the test run (a logger's dropouts are
+/// a few per cent; a run with more missing is not the test run the report's
+/// fits were designed for); in either case at least as many intervals as a
+/// short run's every one (6), the fits' four terms and their spread.
 constexpr double kLeastRecordedCover = 0.5;
 int fewest_intervals(int K) { return std::min(K, 6); }
+int half_of_intervals(int K) { return std::max((K + 1) / 2, fewest_intervals(K)); }
 
 UnitTestRun unit_test_run(const RecordRun& run, const RecordRun& recorded, const runs::RecordSite& site,
                           double f_spacing_s, double r_spacing_s, std::vector<std::string>& statements) {
@@ -125,26 +127,33 @@ UnitTestRun unit_test_run(const RecordRun& run, const RecordRun& recorded, const
   out.layout.test_rows = static_cast<int>(out.layout.rows.size());
   out.values = Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
   const RecordedCover cover = recorded_cover(recorded, site.test_duration_s, f_spacing_s, r_spacing_s);
-  const bool summed = f_spacing_s < tau * (1 - 2 * kGridJitter);
+  const bool summed = f_spacing_s > 0 && f_spacing_s < tau * (1 - 2 * kGridJitter);
+  const int least = std::min(with_f, with_r);
+  const bool holds = least >= half_of_intervals(K) ||
+                     (summed && least >= fewest_intervals(K) && std::min(cover.f, cover.r) >= kLeastRecordedCover);
   const std::string counts =
       fmt::format("f at {} and r at {} of the {} filter intervals of the test run", with_f, with_r, K);
+  const std::string first_missing =
+      first_missing_s < 0 ? std::string("none missing") : fmt::format("the first missing at t = {:g} s", first_missing_s);
+  // Shares rounded down: a run refused for 49.6 % does not read "50 %".
+  const std::string shares = fmt::format("{:g} % of the recorded f windows and {:g} % of the r rows there",
+                                         std::floor(1000 * cover.f) / 10, std::floor(1000 * cover.r) / 10);
   const std::string boxes =
-      summed ? fmt::format("; {:g} s boxes summed from {:g} s windows, a box with a window missing left out; {:.0f} % of "
-                           "the recorded f windows and {:.0f} % of the r rows there",
-                           tau, f_spacing_s, 100 * cover.f, 100 * cover.r)
+      summed ? fmt::format("; {:g} s boxes summed from {:g} s windows, a box with a window missing left out; {}", tau,
+                           f_spacing_s, shares)
              : "";
-  if (std::min(with_f, with_r) < fewest_intervals(K) || std::min(cover.f, cover.r) < kLeastRecordedCover)
+  if (!holds)
     throw InputError(fmt::format("records run {} test rows", run.id),
-                     fmt::format("({}; the first missing at t_s = {:g}{})", counts, first_missing_s, boxes),
+                     fmt::format("({}; {}{})", counts, first_missing, summed ? boxes : "; " + shares),
                      fmt::format("compensate fits (4.4), (4.8) over the intervals t_k = k*{:g} s (within {:g} s) up "
-                                 "to T = {:g} s that have f and r (all three axes): a run must hold at least {:.0f} % "
-                                 "of its recorded f windows and r rows and at least {} of the {} intervals",
-                                 tau, kGridJitter * tau, site.test_duration_s, 100 * kLeastRecordedCover,
-                                 fewest_intervals(K), K));
+                                 "to T = {:g} s that have f and r (all three axes): a run must hold at least {} of the "
+                                 "{} intervals, or, where shorter f windows are summed into them, at least {} of them "
+                                 "and {:g} % of its recorded f windows and r rows",
+                                 tau, kGridJitter * tau, site.test_duration_s, half_of_intervals(K), K,
+                                 fewest_intervals(K), 100 * kLeastRecordedCover));
   if (with_f < K || with_r < K)
-    statements.push_back(fmt::format("run {}: {} (the first missing at t = {:g} s{}): the fits (4.4), (4.8) are taken "
-                                     "over the intervals it has",
-                                     run.id, counts, first_missing_s, boxes));
+    statements.push_back(fmt::format("run {}: {} ({}{}): the fits (4.4), (4.8) are taken over the intervals it has",
+                                     run.id, counts, first_missing, boxes));
   out.estimators = layout_estimators(site, out.layout);
   // The estimators as the Monte Carlo applies them (test_run.h); r rather
   // than Δr = r − r(0): records have no row at t = 0, so each estimate
@@ -199,6 +208,9 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
   // Only the test run is read: what followed it in the records (a scheme,
   // a realignment) is not this unit's future.
   RecordFile tests = without_truth(file);
+  // The recorder's spacings from every run of the file: a run is judged the
+  // same whether it is read alone (--run) or with the others.
+  const double f_spacing_s = median_test_spacing(tests, true), r_spacing_s = median_test_spacing(tests, false);
   if (run) {
     std::erase_if(tests.runs, [&](const RecordRun& r) { return r.id != *run; });
     if (tests.runs.empty())
@@ -217,7 +229,6 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
   runs::RecordReading options;
   options.prior = prior;
   const double T = tests.header.test_duration_s();
-  const double f_spacing_s = median_test_spacing(tests, true), r_spacing_s = median_test_spacing(tests, false);
   // The estimators fit r at the ends of the filter windows: windows at least
   // as long as the r spacing (less two rows' jitter) put an r row at each end.
   options.min_filter_interval_s =
@@ -239,9 +250,12 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
         out.site.filter_interval_s, out.site.test_duration_s, K, K * out.site.filter_interval_s));
   INSMC_ASSERT(records.file.runs.size() == tests.runs.size(), "runs read {} of {}", records.file.runs.size(),
                tests.runs.size());
-  for (std::size_t i = 0; i < tests.runs.size(); ++i)
+  for (std::size_t i = 0; i < tests.runs.size(); ++i) {
+    INSMC_ASSERT(records.file.runs[i].id == tests.runs[i].id, "run {} read as run {}", tests.runs[i].id,
+                 records.file.runs[i].id);
     out.runs.push_back(unit_test_run(records.file.runs[i], tests.runs[i], out.site, f_spacing_s, r_spacing_s,
                                      out.statements));
+  }
   return out;
 }
 

@@ -56,9 +56,10 @@ inline constexpr int kMaxUnitIntervals = 120;
 /// site's differs by up to 0.3 %, which the most precise estimates resolve).
 /// A run may lack some intervals' f or r (the fits take the rest, and a
 /// statement says how many); throws InputError naming the file's field when
-/// a run lacks more than half of its recorded f windows or r rows (counted
-/// at the recorder's spacing, not the fits' boxes), holds fewer than 6 of
-/// the fits' intervals, or the site cannot be completed.
+/// a run holds less than half of the fits' intervals (where shorter f
+/// windows are summed into them: fewer than 6 of them or less than half of
+/// its recorded f windows or r rows, counted at the recorder's spacing), or
+/// the site cannot be completed.
 UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& prior,
                               std::optional<std::int64_t> run = std::nullopt,
                               std::optional<double> site_gravity_mps2 = std::nullopt);
