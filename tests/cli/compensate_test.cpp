@@ -433,5 +433,34 @@ TEST(Compensate, ALoggerOfOneSecondRecordsThatDropsOneInTenIsFitted) {
   }
 }
 
+TEST(Compensate, ARunReadAloneIsTheWholeFilesSectionWhenTheHeaderLeavesOutItsValues) {
+  // The pulse weight, the resolution and the filter interval inferred from
+  // the rows: from every run of the file, so that --run R reports what the
+  // whole file reports for R, to the bit.
+  const TempDir dir;
+  const std::string records = simulate(dir, 3);
+  std::ifstream in(records);
+  const std::string bare = dir.str() + "/bare.csv";
+  std::ofstream out(bare);
+  for (std::string line; std::getline(in, line);)
+    if (!line.starts_with("# dv_pulse_mps=") && !line.starts_with("# position_resolution_m=") &&
+        !line.starts_with("# filter_interval_s="))
+      out << line << "\n";
+  out.close();
+  const TempDir whole, alone;
+  ASSERT_EQ(run_insmc("compensate --records " + bare + " --out " + whole.str()).exit_code, 0);
+  ASSERT_EQ(run_insmc("compensate --records " + bare + " --run 1 --out " + alone.str()).exit_code, 0);
+  std::vector<std::vector<std::string>> of_run_1;
+  for (const auto& row : csv_rows(read_file(whole.path() / "estimates.csv")))
+    if (row[0] == "1") of_run_1.push_back(row);
+  auto alone_rows = csv_rows(read_file(alone.path() / "estimates.csv"));
+  alone_rows.erase(alone_rows.begin());  // the header
+  ASSERT_FALSE(of_run_1.empty());
+  EXPECT_EQ(of_run_1, alone_rows);
+  const ProgramResult absent = run_insmc("compensate --records " + bare + " --run 9");
+  EXPECT_EQ(absent.exit_code, 2);
+  EXPECT_TRUE(has(absent.err, "--run = 9") && has(absent.err, "3 runs, ids 0 to 2")) << absent.err;
+}
+
 }  // namespace
 }  // namespace insmc::testing

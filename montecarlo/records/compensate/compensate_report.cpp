@@ -503,7 +503,7 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
     const std::string run = std::to_string(u.run);
     md += fmt::format("## Run {}\n\n", run);
     const double linear_p = u.consistency_band.linear_p(u.consistency_chi2);
-    md += fmt::format("The test rows against the model: chi-square {:.1f} over {} rows, p = {:.3g} against the model "
+    md += fmt::format("The test rows against the model: chi-square {:.6g} over {} rows, p = {:.3g} against the model "
                       "with its whole model-error allowance (rows using all of it would give {} ± {:.0f}); rows of the linear "
                       "level alone give {:.0f} ± {:.0f}, p = {:.3g}{}\n\n",
                       u.consistency_chi2, u.consistency_dof, u.consistency_p, u.consistency_dof,

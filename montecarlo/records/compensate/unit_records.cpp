@@ -128,6 +128,9 @@ UnitTestRun unit_test_run(const RecordRun& run, const RecordRun& recorded, const
   out.values = Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
   const RecordedCover cover = recorded_cover(recorded, site.test_duration_s, f_spacing_s, r_spacing_s);
   const bool summed = f_spacing_s > 0 && f_spacing_s < tau * (1 - 2 * kGridJitter);
+  // Every window recorded yet boxes lost: the time stamps stray from the
+  // recorder's grid by more than summing allows (runs/files/filter_windows.h).
+  const bool off_grid = summed && with_f < K && cover.f > 0.999;
   const int least = std::min(with_f, with_r);
   const bool holds = least >= half_of_intervals(K) ||
                      (summed && least >= fewest_intervals(K) && std::min(cover.f, cover.r) >= kLeastRecordedCover);
@@ -139,8 +142,12 @@ UnitTestRun unit_test_run(const RecordRun& run, const RecordRun& recorded, const
   const std::string shares = fmt::format("{:g} % of the recorded f windows and {:g} % of the r rows there",
                                          std::floor(1000 * cover.f) / 10, std::floor(1000 * cover.r) / 10);
   const std::string boxes =
-      summed ? fmt::format("; {:g} s boxes summed from {:g} s windows, a box with a window missing left out; {}", tau,
-                           f_spacing_s, shares)
+      summed ? fmt::format("; {:g} s boxes summed from {:g} s windows, a box with a window missing left out; {}{}", tau,
+                           f_spacing_s, shares,
+                           off_grid ? fmt::format(" (every window is recorded: boxes were broken by time stamps more "
+                                                  "than 1 % of {:g} s off the recorder's grid)",
+                                                  f_spacing_s)
+                                    : "")
              : "";
   if (!holds)
     throw InputError(fmt::format("records run {} test rows", run.id),
@@ -208,14 +215,15 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
   // Only the test run is read: what followed it in the records (a scheme,
   // a realignment) is not this unit's future.
   RecordFile tests = without_truth(file);
-  // The recorder's spacings from every run of the file: a run is judged the
-  // same whether it is read alone (--run) or with the others.
+  // The recorder's spacings, and below the site's values the header leaves
+  // out, from every run of the file: a run is judged and modelled the same
+  // whether it is read alone (--run) or with the others.
   const double f_spacing_s = median_test_spacing(tests, true), r_spacing_s = median_test_spacing(tests, false);
-  if (run) {
-    std::erase_if(tests.runs, [&](const RecordRun& r) { return r.id != *run; });
-    if (tests.runs.empty())
-      throw InputError("--run", std::to_string(*run), "must be the id of a run in the records");
-  }
+  if (run && std::none_of(tests.runs.begin(), tests.runs.end(), [&](const RecordRun& r) { return r.id == *run; }))
+    throw InputError("--run", std::to_string(*run),
+                     fmt::format("must be the id of a run in the records (they hold {} runs, ids {} to {})",
+                                 tests.runs.size(), tests.runs.empty() ? 0 : tests.runs.front().id,
+                                 tests.runs.empty() ? 0 : tests.runs.back().id));
   // Under a scheme that acts from the switch-over (5.4) the test rows are
   // compensated already: not the data the estimators and this model take.
   const Scheme recorded = tests.header.scheme();
@@ -234,7 +242,12 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
   options.min_filter_interval_s =
       std::max({kUnitFilterIntervalS, T / kMaxUnitIntervals, r_spacing_s * (1 - 2 * kGridJitter)});
   UnitRecords out;
-  const runs::Records records = runs::read_records(tests, options, out.statements, out.site_values);
+  runs::Records records = runs::read_records(tests, options, out.statements, out.site_values);
+  if (run) {
+    const auto other = [&](const RecordRun& r) { return r.id != *run; };
+    std::erase_if(records.file.runs, other);
+    std::erase_if(tests.runs, other);
+  }
   out.site = records.site;
   if (site_gravity_mps2) out.site.model.gravity_mps2 = *site_gravity_mps2;
   if (out.site.test_duration_s / out.site.filter_interval_s > kMaxUnitIntervals + 1e-9)
