@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iomanip>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -29,6 +30,14 @@ std::string simulate(const TempDir& dir, int runs, const std::string& scheme = "
                                     " --nav-duration 20min --out " + path);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   return path;
+}
+
+/// The time of a line of a simulated record file that is a test row
+/// (run,t_s,phase,...), or nothing.
+std::optional<double> test_row_time(const std::string& line) {
+  const std::size_t c1 = line.find(','), c2 = line.find(',', c1 + 1);
+  if (line.starts_with("#") || line.starts_with("run") || line.find(",test,") != c2) return std::nullopt;
+  return std::stod(line.substr(c1 + 1, c2 - c1 - 1));
 }
 
 /// The rows of estimates.csv of `compensate --scheme 5.3` on a record file.
@@ -294,10 +303,9 @@ TEST(Compensate, BadInputIsRefusedWithTheFieldNamed) {
   std::ifstream in(records);
   std::ofstream out(dir.str() + "/holes.csv");
   for (std::string line; std::getline(in, line);) {
-    const std::size_t c1 = line.find(','), c2 = line.find(',', c1 + 1);
-    const bool test_row = !line.starts_with("#") && !line.starts_with("run") && line.find(",test,") == c2;
-    const long k = test_row ? std::lround(std::stod(line.substr(c1 + 1, c2 - c1 - 1)) / 10.0) : 0;
-    if (!(test_row && k >= 20 && k <= 70)) out << line << "\n";
+    const std::optional<double> t = test_row_time(line);
+    const long k = t ? std::lround(*t / 10.0) : 0;
+    if (!(t && k >= 20 && k <= 70)) out << line << "\n";
   }
   out.close();
   const ProgramResult holes = run_insmc("compensate --records " + dir.str() + "/holes.csv");
@@ -410,10 +418,8 @@ TEST(Compensate, ALoggerOfOneSecondRecordsThatDropsOneInTenIsFitted) {
   std::ofstream out(dropped);
   long test_row = 0;
   for (std::string line; std::getline(in, line);) {
-    const std::size_t c1 = line.find(','), c2 = line.find(',', c1 + 1);
-    const bool is_test = !line.starts_with("#") && !line.starts_with("run") && line.find(",test,") == c2;
     // A scrambled tenth of the rows (a multiplicative hash of the row's index).
-    if (is_test && (static_cast<unsigned long>(test_row++) * 2654435761UL >> 7) % 10 == 3) continue;
+    if (test_row_time(line) && (static_cast<unsigned long>(test_row++) * 2654435761UL >> 7) % 10 == 3) continue;
     out << line << "\n";
   }
   out.close();
