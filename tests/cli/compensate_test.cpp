@@ -439,6 +439,35 @@ TEST(Compensate, ALoggerOfOneSecondRecordsThatDropsOneInTenIsFitted) {
   }
 }
 
+TEST(Compensate, TheRowAtTheTestRunsEndLabelledNavByItsTimeStampIsTheTestRunsLast) {
+  // A recorder that reads the phase from a time stamp a little late (0.05 s,
+  // within the 1 % of the filter interval a stamp may jitter) labels the row
+  // at T nav. Nothing reset the navigation at T, so that row is the test
+  // run's last: the unit is fitted over every interval, to the bit of the
+  // file stamped on time. Stamped 0.5 s late, it is no longer the row at T.
+  const TempDir dir;
+  const std::string records = simulate(dir, 1);
+  const auto on_time = estimates_after_53(records);
+  const auto restamped = [&](const std::string& stamp) {
+    std::ifstream in(records);
+    const std::string path = dir.str() + "/late_" + stamp + ".csv";
+    std::ofstream out(path);
+    for (std::string line; std::getline(in, line);) {
+      if (test_row_time(line) == 900.0) line = "0," + stamp + ",nav" + line.substr(line.find(",test,") + 5);
+      out << line << "\n";
+    }
+    return path;
+  };
+  const std::string late = restamped("900.05");
+  EXPECT_EQ(estimates_after_53(late), on_time);
+  const ProgramResult r = run_insmc("compensate --records " + late + " --scheme 5.3");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(has(r.out, "filter intervals of the test run")) << r.out;  // none missing
+  const ProgramResult too_late = run_insmc("compensate --records " + restamped("900.5") + " --scheme 5.3");
+  EXPECT_EQ(too_late.exit_code, 0) << too_late.err;
+  EXPECT_TRUE(has(too_late.out, "f at 89 and r at 89 of the 90 filter intervals")) << too_late.out;
+}
+
 TEST(Compensate, ARunReadAloneIsTheWholeFilesSectionWhenTheHeaderLeavesOutItsValues) {
   // The pulse weight, the resolution and the filter interval inferred from
   // the rows: from every run of the file, so that --run R reports what the

@@ -17,23 +17,29 @@ namespace {
 /// window's drift, and r by the velocity error over τ/100).
 constexpr double kGridJitter = 0.01;
 
-/// The row of `run` nearest t within kGridJitter τ, or nullptr.
-/// `nav_continues`: the records' navigation goes on from the test run (no
-/// reset or realignment at T), so a nav row stamped just after T is the row at T.
-const RecordRow* test_row_at(const RecordRun& run, double t_s, double tau_s, bool nav_continues) {
-  const auto nearest_of = [&](Phase phase) {
-    const RecordRow* nearest = nullptr;
-    for (const RecordRow& row : run.rows)
-      if (row.phase == phase && std::abs(row.t_s - t_s) <= kGridJitter * tau_s &&
-          (nearest == nullptr || std::abs(row.t_s - t_s) < std::abs(nearest->t_s - t_s)))
-        nearest = &row;
-    return nearest;
-  };
-  // The row at T may come stamped a little after it, labelled nav by a
-  // recorder that reads the phase from the time: taken when no test row is
-  // there and nothing reset the navigation at T.
-  const RecordRow* test = nearest_of(Phase::kTest);
-  return test != nullptr || !nav_continues ? test : nearest_of(Phase::kNav);
+/// The test row of `run` nearest t within kGridJitter τ, or nullptr.
+const RecordRow* test_row_at(const RecordRun& run, double t_s, double tau_s) {
+  const RecordRow* nearest = nullptr;
+  for (const RecordRow& row : run.rows)
+    if (row.phase == Phase::kTest && std::abs(row.t_s - t_s) <= kGridJitter * tau_s &&
+        (nearest == nullptr || std::abs(row.t_s - t_s) < std::abs(nearest->t_s - t_s)))
+      nearest = &row;
+  return nearest;
+}
+
+/// A recorder that reads the phase from the time stamp labels the row at T
+/// nav when it comes stamped a little after T. Where nothing reset the
+/// navigation at T, that row is the test run's last: relabelled test when
+/// the run has no test row within `jitter_s` of T.
+void take_the_row_at_test_end(RecordRun& run, double test_duration_s, double jitter_s) {
+  RecordRow* nav = nullptr;
+  for (RecordRow& row : run.rows) {
+    const double off_s = std::abs(row.t_s - test_duration_s);
+    if (off_s > jitter_s) continue;
+    if (row.phase == Phase::kTest) return;
+    if (row.phase == Phase::kNav && (nav == nullptr || off_s < std::abs(nav->t_s - test_duration_s))) nav = &row;
+  }
+  if (nav != nullptr) nav->phase = Phase::kTest;
 }
 
 /// Whether a test row carries the quantity: r, or f on all three axes.
@@ -76,7 +82,9 @@ RecordedCover recorded_cover(const RecordRun& run, double test_duration_s, doubl
     const double slots = std::max(1.0, std::round(test_duration_s / spacing));
     long rows = 0;
     for (const RecordRow& row : run.rows)
-      if (row.phase == Phase::kTest && row.t_s > 0 && row.t_s <= test_duration_s * (1 + 1e-9) && carries(row, f)) ++rows;
+      if (row.phase == Phase::kTest && row.t_s > 0 && row.t_s <= test_duration_s + kGridJitter * spacing &&
+          carries(row, f))
+        ++rows;
     (f ? cover.f : cover.r) = std::min(1.0, static_cast<double>(rows) / slots);
   }
   return cover;
@@ -105,8 +113,7 @@ UnitTestRun unit_test_run(const RecordRun& run, const RecordRun& recorded, const
   double first_missing_s = -1;
   for (int k = 1; k <= K; ++k) {
     const double t = k * tau;
-    const RecordRow* row =
-        test_row_at(run, t, tau, runs::nav_segment_of(site.scheme) == runs::NavSegment::kContinue);
+    const RecordRow* row = test_row_at(run, t, tau);
     const bool has_f = row != nullptr && row->f_mps2[0] && row->f_mps2[1] && row->f_mps2[2];
     const bool has_r = row != nullptr && row->r_ap_m.has_value();
     if ((!has_f || !has_r) && first_missing_s < 0) first_missing_s = t;
@@ -232,11 +239,13 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
                      "the test rows of these records were flown under that scheme's compensation (it acts from the "
                      "switch-over); give records of the uncompensated test run (scheme none or a scheme that uses "
                      "the test run)");
+  const double T = tests.header.test_duration_s();
+  if (runs::nav_segment_of(recorded) == runs::NavSegment::kContinue)
+    for (RecordRun& r : tests.runs) take_the_row_at_test_end(r, T, kGridJitter * std::max(f_spacing_s, r_spacing_s));
   for (RecordRun& r : tests.runs) std::erase_if(r.rows, [](const RecordRow& row) { return row.phase != Phase::kTest; });
   tests.header.set(std::string(kKeyScheme), std::string(to_string(Scheme::kNone)));
   runs::RecordReading options;
   options.prior = prior;
-  const double T = tests.header.test_duration_s();
   // The estimators fit r at the ends of the filter windows: windows at least
   // as long as the r spacing (less two rows' jitter) put an r row at each end.
   options.min_filter_interval_s =
