@@ -65,10 +65,13 @@ double bridge_rest_share(int modes) {
   return share;
 }
 
-/// Unit response of a process on the knots, per axis k: columns 3j + k (j <
-/// K) the knot values, mixed by the Cholesky factor of their covariance, and
-/// 3(K(m + 1) + j) + k bridge mode m (0-based) of interval j; every
-/// coefficient is independent with variance σ².
+/// Unit response of a process on the knots, per axis k: columns
+/// 3(1 + M) j + k (j < K) the knot values, mixed by the Cholesky factor of
+/// their covariance, and 3((1 + M) j + m) + k bridge mode m (1-based) of
+/// interval j; every coefficient is independent with variance σ². In the
+/// order of time: a row sees no column of a later interval, so a test run
+/// sees only the leading columns and the fit's matrices are theirs
+/// (run_analysis.h).
 Eigen::MatrixXd process_columns(const LayoutContext& ctx, Drive drive, double tau) {
   const std::string key = "process" + std::to_string(static_cast<int>(drive)) + ":" + std::to_string(tau);
   if (auto it = ctx.cache.find(key); it != ctx.cache.end()) return it->second;
@@ -111,7 +114,7 @@ Eigen::MatrixXd process_columns(const LayoutContext& ctx, Drive drive, double ta
           knot = (t > tk[j] - d && t <= tk[j]) ? 1.0 / d : (t > tk[j] && t <= tk[j] + d) ? -1.0 / d : 0.0;
           break;
       }
-      for (int k = 0; k < 3; ++k) out(k, 3 * j + k) = knot;
+      for (int k = 0; k < 3; ++k) out(k, 3 * (1 + M) * j + k) = knot;
       if (u <= 0) continue;
       for (int m = 1; m <= M; ++m) {
         const double w = m * pi / d;
@@ -121,17 +124,18 @@ Eigen::MatrixXd process_columns(const LayoutContext& ctx, Drive drive, double ta
           case Drive::kRate: mode = (1.0 - std::cos(w * std::min(u, d))) / w; break;
           case Drive::kVelocity: mode = u < d ? w * std::cos(w * u) : 0.0; break;
         }
-        for (int k = 0; k < 3; ++k) out(k, 3 * (K * m + j) + k) = unit_std / m * mode;
+        for (int k = 0; k < 3; ++k) out(k, 3 * ((1 + M) * j + m) + k) = unit_std / m * mode;
       }
     }
   };
   Eigen::MatrixXd r = input_response(*ctx.layout, *ctx.site, in);
-  // Knot columns per axis k: r(:, 3j + k); mix the knots by L.
+  // Knot columns per axis k: r(:, 3(1 + M) j + k); mix the knots by L (lower
+  // triangular: knot i takes the drives of knots j ≤ i, so the order of time stays).
   for (int k = 0; k < 3; ++k) {
     Eigen::MatrixXd axis(r.rows(), K);
-    for (int j = 0; j < K; ++j) axis.col(j) = r.col(3 * j + k);
+    for (int j = 0; j < K; ++j) axis.col(j) = r.col(3 * (1 + M) * j + k);
     const Eigen::MatrixXd mixed = axis * L;
-    for (int j = 0; j < K; ++j) r.col(3 * j + k) = mixed.col(j);
+    for (int j = 0; j < K; ++j) r.col(3 * (1 + M) * j + k) = mixed.col(j);
   }
   ctx.cache[key] = r;
   return r;

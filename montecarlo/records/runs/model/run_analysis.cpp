@@ -25,12 +25,14 @@ Eigen::MatrixXd inverse_of_information(const Eigen::MatrixXd& info) {
   return eig.eigenvectors() * inv.asDiagonal() * eig.eigenvectors().transpose();
 }
 
+/// The rows `rows` of v's first `columns` columns (all when negative).
 template <class Vector>
-Vector rows_of(const Vector& v, std::span<const Eigen::Index> rows) {
-  Vector out(static_cast<Eigen::Index>(rows.size()), v.cols());
+Vector rows_of(const Vector& v, std::span<const Eigen::Index> rows, Eigen::Index columns = -1) {
+  if (columns < 0) columns = v.cols();
+  Vector out(static_cast<Eigen::Index>(rows.size()), columns);
   // Column by column: the matrices are column-major, and a row at a time
   // strides through all of them (it was a seventh of the diagnosis' time).
-  for (Eigen::Index c = 0; c < v.cols(); ++c) {
+  for (Eigen::Index c = 0; c < columns; ++c) {
     const double* from = v.col(c).data();
     double* to = out.col(c).data();
     for (std::size_t i = 0; i < rows.size(); ++i) to[i] = from[rows[i]];
@@ -46,6 +48,28 @@ Vector rows_of(const Vector& v, std::span<const Eigen::Index> rows) {
 /// lattice's less the rows it lacks, while each cause keeps more than
 /// kLeastKeptInformation of its own.
 constexpr double kDowndateShare = 0.25;
+
+/// How many leading columns of A the first `test_rows` rows touch: one past
+/// the last column with a nonzero there. The causes beyond it (a random
+/// process' knots after the test run) are not seen by the fit and keep
+/// their prior.
+Eigen::Index observed_columns(const Eigen::MatrixXd& a, Eigen::Index test_rows) {
+  for (Eigen::Index c = a.cols(); c > 0; --c)
+    if ((a.col(c - 1).head(test_rows).array() != 0.0).any()) return c;
+  return 0;
+}
+
+/// Each row's h M hᵀ for a matrix M over the first M.rows() columns and the
+/// identity beyond them (the scaled posterior of causes the fit does not see).
+Eigen::VectorXd row_forms(const Eigen::MatrixXd& hs, const Eigen::MatrixXd& m) {
+  const Eigen::Index p = m.rows();
+  Eigen::VectorXd q = hs.rightCols(hs.cols() - p).rowwise().squaredNorm();
+  if (hs.rows() == 0 || p == 0) return q;
+  Eigen::VectorXd seen(hs.rows());
+  row_quadratic_forms(hs.data(), static_cast<std::size_t>(hs.outerStride()), static_cast<std::size_t>(hs.rows()),
+                      static_cast<std::size_t>(p), m.data(), static_cast<std::size_t>(m.outerStride()), seen.data());
+  return q + seen;
+}
 
 }  // namespace
 
@@ -78,7 +102,8 @@ LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& la
       active_(lattice.active_),
       noise_var_(rows_of(lattice.noise_var_, rows)),
       actual_noise_var_(rows_of(lattice.actual_noise_var_, rows)),
-      test_rows_(layout.test_rows) {}
+      test_rows_(layout.test_rows),
+      observed_(lattice.observed_) {}
 
 LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows,
                                  const Eigen::MatrixXd& G, const Eigen::VectorXd& share)
@@ -98,13 +123,16 @@ void LatticeAnalysis::fit(bool lattice) {
   // u ~ (0, I), P⁺ = S Π S with Π = (I + S Hᵀ R⁻¹ H S)⁻¹.
   s_ = prior_.cwiseSqrt();
   const Eigen::MatrixXd HS = H_ * s_.asDiagonal();
+  // The information is zero beyond the causes the test rows touch: the
+  // fit's matrices are those columns' (Π is the identity beyond them).
+  observed_ = observed_columns(HS, nt);
   const Eigen::VectorXd inverse_noise = noise_var_.head(nt).cwiseInverse();
-  Eigen::MatrixXd info = weighted_gram(HS.topRows(nt), inverse_noise);
+  Eigen::MatrixXd info = weighted_gram(HS.topLeftCorner(nt, observed_), inverse_noise);
   info.diagonal().array() += 1.0;
   // The actual test noise through the fit's gain, scaled: J = S Hₜᵀ R⁻¹ R_a R⁻¹ Hₜ S;
   // then A + B = S Π (I + J) Π S.
   const Eigen::VectorXd actual_weight = actual_noise_var_.head(nt).cwiseProduct(inverse_noise.cwiseAbs2());
-  Eigen::MatrixXd spread = weighted_gram(HS.topRows(nt), actual_weight);
+  Eigen::MatrixXd spread = weighted_gram(HS.topLeftCorner(nt, observed_), actual_weight);
   spread.diagonal().array() += 1.0;
   solve(std::move(info), std::move(spread), lattice, HS);
 }
@@ -114,14 +142,16 @@ void LatticeAnalysis::solve(Eigen::MatrixXd info, Eigen::MatrixXd spread, bool l
   spread_ = std::move(spread);
   pi_ = inverse_of_information(info_);
   around_ = pi_ * spread_ * pi_;
-  ab_ = row_quadratic_forms(HS, around_);
+  ab_ = row_forms(HS, around_);
   if (!lattice) {
-    q_ = row_quadratic_forms(HS, pi_);
+    q_ = row_forms(HS, pi_);
     return;
   }
   // A lattice's layouts downdate each row's terms by its h S Π (Woodbury).
-  HS_pi_ = HS * pi_;
-  q_ = (HS_pi_.array() * HS.array()).rowwise().sum();
+  const auto seen = HS.leftCols(observed_);
+  HS_pi_ = seen * pi_;
+  q_ = (HS_pi_.array() * seen.array()).rowwise().sum().matrix() +
+       HS.rightCols(HS.cols() - observed_).rowwise().squaredNorm();
 }
 
 RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model) {
@@ -143,7 +173,7 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
     else missing.push_back(m);
   }
   const auto k = static_cast<Eigen::Index>(missing.size());
-  const Eigen::Index d = a.pi_.rows();
+  const Eigen::Index d = a.observed_;  // the lacked rows touch no cause beyond
   if (k == 0) {
     finish(a, rows, a.pi_, rows_of(a.q_, rows), rows_of(a.ab_, rows), a.around_.diagonal());
     return;
@@ -154,7 +184,7 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
   Eigen::VectorXd share(k);
   for (Eigen::Index j = 0; j < k; ++j) {
     const Eigen::Index m = missing[static_cast<std::size_t>(j)];
-    G.col(j) = a.s_.cwiseProduct(a.H_.row(m).transpose()) / std::sqrt(a.noise_var_[m]);
+    G.col(j) = a.s_.head(d).cwiseProduct(a.H_.row(m).head(d).transpose()) / std::sqrt(a.noise_var_[m]);
     share[j] = a.actual_noise_var_[m] / a.noise_var_[m];
   }
   std::vector<Eigen::Index> all(rows.size());
@@ -166,7 +196,7 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
     own.fit(false);
     finish(own, all, own.pi_, own.q_, own.ab_, own.around_.diagonal());
   };
-  if (static_cast<double>(k) > kDowndateShare * static_cast<double>(d)) {
+  if (static_cast<double>(k) > kDowndateShare * static_cast<double>(a.active_.size())) {
     // Too many rows missing for Woodbury: the layout's information is the
     // lattice's less G Gᵀ (O(k d²) instead of a Gram over its test rows).
     const Eigen::VectorXd lacked = G.rowwise().squaredNorm();
@@ -218,13 +248,15 @@ void RunAnalyser::finish(const LatticeAnalysis& a, std::span<const Eigen::Index>
   const auto n = static_cast<Eigen::Index>(rows.size());
   test_rows_ = layout_->test_rows;
   const Eigen::Index nt = test_rows_;
+  // The fit moves only the causes the test rows see (pi's): the others keep
+  // their prior, so the estimate and each row's residual take those columns.
+  const Eigen::Index p = pi.rows();
   mean_ = rows_of(a.mean_, rows);
-  H_ = rows_of(a.H_, rows);
+  H_ = rows_of(a.H_, rows, p);
   const Eigen::VectorXd noise_var = rows_of(a.noise_var_, rows), actual_noise_var = rows_of(a.actual_noise_var_, rows);
   weighted_test_ = H_.topRows(nt).array().colwise() / noise_var.head(nt).array();
-  posterior_ = a.s_.asDiagonal() * pi * a.s_.asDiagonal();
-  const auto d = static_cast<Eigen::Index>(a.active_.size());
-  for (Eigen::Index c = 0; c < d; ++c) {
+  posterior_ = a.s_.head(p).asDiagonal() * pi * a.s_.head(p).asDiagonal();
+  for (Eigen::Index c = 0; c < p; ++c) {
     const Eigen::Index j = a.active_[static_cast<std::size_t>(c)];
     if (j < ux::kDim && 1.0 - pi(c, c) > kResolvedShare) {
       estimate_columns_.push_back(static_cast<int>(c));

@@ -93,10 +93,14 @@ class LatticeAnalysis {
   std::vector<Eigen::Index> active_;  // the model's column of each active cause
   Eigen::VectorXd noise_var_, actual_noise_var_;  // rows
   int test_rows_ = 0;
-  // Scaled (c = S u): the information I + S Hₜᵀ R⁻¹ Hₜ S, Π its inverse,
-  // the spread I + J of the actual test noise through the fit, and Π (I + J) Π.
+  // The leading active causes the test rows touch (observed_columns); the
+  // matrices below are theirs, the identity beyond (a cause no test row
+  // sees keeps its prior). Scaled (c = S u): the information
+  // I + S Hₜᵀ R⁻¹ Hₜ S, Π its inverse, the spread I + J of the actual test
+  // noise through the fit, and Π (I + J) Π.
+  Eigen::Index observed_ = 0;
   Eigen::MatrixXd info_, pi_, spread_, around_;
-  Eigen::MatrixXd HS_pi_;             // rows × active: H S Π
+  Eigen::MatrixXd HS_pi_;             // rows × observed: H S Π
   Eigen::VectorXd q_, ab_;            // rows: h Π hᵀ and h Π (I + J) Π hᵀ (scaled)
 };
 
@@ -147,9 +151,9 @@ class RunAnalyser {
 
   const Layout* layout_;
   Eigen::VectorXd mean_;          // rows
-  Eigen::MatrixXd H_;             // rows × active columns
-  Eigen::MatrixXd weighted_test_; // test rows of H / σ², rows × active
-  Eigen::MatrixXd posterior_;     // P⁺
+  Eigen::MatrixXd H_;             // rows × the causes the fit sees (the rest keep their prior mean 0)
+  Eigen::MatrixXd weighted_test_; // test rows of H / σ², rows × those causes
+  Eigen::MatrixXd posterior_;     // P⁺ of those causes
   Eigen::VectorXd expected_;      // rows
   Eigen::VectorXd actual_;        // rows + estimates
   std::vector<int> estimate_columns_;  // active indices of resolved x
