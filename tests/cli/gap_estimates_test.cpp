@@ -35,5 +35,23 @@ TEST(GapEstimates, SwitchOverStepsInsideTheScatterAreFoundByTheEstimatesAndNamed
   EXPECT_TRUE(has(read_file(std::filesystem::path(out) / "gap.md"), "estimates against the prior"));
 }
 
+TEST(GapEstimates, TheEstimatesDoNotOverruleRowsThatTellTheFirstRankedApart) {
+  // A thermal transient ten times its default on a fuzzed layout: the runs'
+  // estimates stand far beyond the prior, and on them alone widened priors
+  // (bounds) fit best; the rows put thermal_transient far ahead (held-out G
+  // about 0.5 against 5). The estimates are one group of the rows' G, so
+  // they decide only between effects the rows do not tell apart.
+  TempDir dir;
+  const std::string records = (dir.path() / "thermal.csv").string();
+  const auto s = run_insmc("simulate --runs 20 --seed 2 --layout fuzzed --test-duration 15min --nav-duration 90min "
+                           "--effect thermal_transient:bias=1mg,drift=20meru --out " + records);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto r = run_insmc("gap --records " + records + " --max-effects 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "Top: **thermal_transient**")) << r.out.substr(0, 2000);
+  EXPECT_TRUE(has(r.out, "and point to bounds, but the rows tell thermal_transient ahead of it")) << r.out;
+  EXPECT_TRUE(has(r.out, "An unmodelled effect: thermal_transient")) << r.out.substr(0, 600);
+}
+
 }  // namespace
 }  // namespace insmc::testing

@@ -4,6 +4,7 @@
 // The orchestrator: one call per stage, in the order of README.md.
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <memory>
 #include <optional>
@@ -72,20 +73,53 @@ RunEstimates test_run_estimates(Diagnosis& d, const runs::PreparedRuns& p,
 /// (G₊ alone not significant), or when every member of the ranking's top
 /// acts inside the priors too: among effects the same in every run or
 /// priors widened, the direction the estimates move in is what tells them
-/// apart, and G pools it with the rows over each axis.
+/// apart, and G pools it with the rows over each axis. They do not
+/// overrule an effect ranked first that the rows tell apart from theirs,
+/// unless what the rows rank first is widened priors (`bounds`, which nests
+/// every effect acting inside them).
 void name_inside_priors(Diagnosis& d) {
   const EstimateTest& t = d.estimate_test;
   if (!d.ranked() || !t.significant || t.named.empty() || t.named == d.first.top) return;
   const auto scored = [&](const std::string& name) {
     return std::any_of(t.scores.begin(), t.scores.end(), [&](const EstimateScore& s) { return s.effect == name; });
   };
-  bool inside = !d.first.top.empty();
-  for (std::size_t b = 0, e; b <= d.first.top.size(); b = e + 1) {
-    e = std::min(d.first.top.find('|', b), d.first.top.size());
-    inside = inside && scored(d.first.top.substr(b, e - b));
-  }
+  const auto members = [](const std::string& named) {
+    std::vector<std::string> out;
+    for (std::size_t b = 0, e; b <= named.size(); b = e + 1) {
+      e = std::min(named.find('|', b), named.size());
+      out.push_back(named.substr(b, e - b));
+    }
+    return out;
+  };
+  const std::vector<std::string> first_members = members(d.first.top);
+  const bool inside = !d.first.top.empty() && std::all_of(first_members.begin(), first_members.end(), scored);
   const bool rows_see_it = d.p_value < d.alpha;
   if (rows_see_it && !inside) return;
+  const bool first_is_widened_priors =
+      std::find(first_members.begin(), first_members.end(), "bounds") != first_members.end();
+  if (rows_see_it && !first_is_widened_priors) {
+    // The estimates are one group of the rows' G: between effects the rows
+    // tell apart (more than twice the resampled margin's standard error,
+    // the rule that makes a class of the first two) the rows decide. Where
+    // the rows rank widened priors first, they say the unit is beyond the
+    // priors and not which effect moved it: there the estimates' direction
+    // names it.
+    const CandidateResult* closest = nullptr;
+    for (const std::string& m : members(t.named))
+      for (const CandidateResult& c : d.first.ranking)
+        if (c.effect == m && (closest == nullptr || c.heldout_gap_after < closest->heldout_gap_after)) closest = &c;
+    const CandidateResult& first = d.first.ranking.front();
+    if (closest != nullptr && closest != &first && std::isfinite(closest->behind_first_se) &&
+        closest->heldout_gap_after - first.heldout_gap_after >= 2.0 * closest->behind_first_se) {
+      d.statements.push_back(fmt::format(
+          "the test run's estimates stand beyond the prior (least p {:.3g}, over the table {:.3g}) and point to {}, "
+          "but the rows tell {} ahead of it (held-out G {:.3g} against {:.3g}, more than twice the margin's resampled "
+          "standard error {:.2g}): {} is kept",
+          t.min_p, t.family_p, t.named, d.first.top, first.heldout_gap_after, closest->heldout_gap_after,
+          closest->behind_first_se, d.first.top));
+      return;
+    }
+  }
   d.statements.push_back(fmt::format(
       "the test run's estimates stand beyond the prior (least p {:.3g}, over the table {:.3g}) and name {}{} where "
       "the ranking by held-out G named {}: {}",

@@ -130,6 +130,9 @@ struct CandidateResult {
   /// effect's parameters it keeps at a default or a header value, with why.
   std::string as_effect;
   std::vector<std::string> as_effect_kept;
+  /// The resampling standard error of this candidate's held-out G less the
+  /// first-ranked one's (runs drawn with replacement); NaN for the first.
+  double behind_first_se = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Two of the top candidates together, their parameters fitted jointly.

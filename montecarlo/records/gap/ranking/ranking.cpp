@@ -183,19 +183,24 @@ FirstRanking first_ranking(const std::vector<Scored>& ranked, const runs::Prepar
   for (std::size_t i = 0; i < likelihood.candidates.size(); ++i) d.ranking[i].likelihood = std::move(likelihood.candidates[i]);
   d.pairs = std::move(likelihood.pairs);
   if (ranked.size() > 1) {
-    // Runner-up margin and its resampling standard error.
+    // Each candidate's margin behind the first and its resampling standard
+    // error (the same resampled runs for all).
     constexpr int kResamples = 500;
-    std::vector<double> margins;
+    std::vector<std::vector<double>> margins(ranked.size());
     for (int b = 0; b < kResamples; ++b) {
       const std::vector<int> idx = resample(options.seed, 2'000'000 + static_cast<std::uint64_t>(b), n, n);
-      margins.push_back(gap_value(ranked[1].heldout, idx, null.calibration) -
-                        gap_value(ranked[0].heldout, idx, null.calibration));
+      const double first = gap_value(ranked[0].heldout, idx, null.calibration);
+      for (std::size_t i = 1; i < ranked.size(); ++i)
+        margins[i].push_back(gap_value(ranked[i].heldout, idx, null.calibration) - first);
+    }
+    for (std::size_t i = 1; i < ranked.size(); ++i) {
+      const double mean = std::accumulate(margins[i].begin(), margins[i].end(), 0.0) / kResamples;
+      double var = 0;
+      for (double m : margins[i]) var += (m - mean) * (m - mean);
+      d.ranking[i].behind_first_se = std::sqrt(var / (kResamples - 1));
     }
     d.runner_up_margin = ranked[1].heldout_gap - ranked[0].heldout_gap;
-    const double mean = std::accumulate(margins.begin(), margins.end(), 0.0) / kResamples;
-    double var = 0;
-    for (double m : margins) var += (m - mean) * (m - mean);
-    d.runner_up_margin_se = std::sqrt(var / (kResamples - 1));
+    d.runner_up_margin_se = d.ranking[1].behind_first_se;
     const bool single = d.ranking[0].effect.find('|') == std::string::npos &&
                         d.ranking[1].effect.find('|') == std::string::npos;
     if (single && d.runner_up_margin < 2.0 * d.runner_up_margin_se)
