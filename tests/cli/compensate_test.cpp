@@ -441,7 +441,7 @@ TEST(Compensate, ALoggerOfOneSecondRecordsThatDropsOneInTenIsFitted) {
 
 TEST(Compensate, TheRowAtTheTestRunsEndLabelledNavByItsTimeStampIsTheTestRunsLast) {
   // A recorder that reads the phase from a time stamp a little late (0.05 s,
-  // within the 1 % of the filter interval a stamp may jitter) labels the row
+  // within the 1 % of the recorder's 10-s spacing a stamp may jitter) labels the row
   // at T nav. Nothing reset the navigation at T, so that row is the test
   // run's last: the unit is fitted over every interval, to the bit of the
   // file stamped on time. Stamped 0.5 s late, it is no longer the row at T.

@@ -27,6 +27,13 @@ const RecordRow* test_row_at(const RecordRun& run, double t_s, double tau_s) {
   return nearest;
 }
 
+/// The finer of the f and r spacings (0 when neither is recorded).
+double finer_spacing(double f_spacing_s, double r_spacing_s) {
+  if (!(f_spacing_s > 0)) return r_spacing_s;
+  if (!(r_spacing_s > 0)) return f_spacing_s;
+  return std::min(f_spacing_s, r_spacing_s);
+}
+
 /// A recorder that reads the phase from the time stamp labels the row at T
 /// nav when it comes stamped a little after T. Where nothing reset the
 /// navigation at T, that row is the test run's last: relabelled test when
@@ -241,7 +248,9 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
                      "the test run)");
   const double T = tests.header.test_duration_s();
   if (runs::nav_segment_of(recorded) == runs::NavSegment::kContinue)
-    for (RecordRun& r : tests.runs) take_the_row_at_test_end(r, T, kGridJitter * std::max(f_spacing_s, r_spacing_s));
+    // Within the jitter of the finer spacing, so that the row also lies on
+    // the grid f windows are summed on (filter_windows.h).
+    for (RecordRun& r : tests.runs) take_the_row_at_test_end(r, T, kGridJitter * finer_spacing(f_spacing_s, r_spacing_s));
   for (RecordRun& r : tests.runs) std::erase_if(r.rows, [](const RecordRow& row) { return row.phase != Phase::kTest; });
   tests.header.set(std::string(kKeyScheme), std::string(to_string(Scheme::kNone)));
   runs::RecordReading options;

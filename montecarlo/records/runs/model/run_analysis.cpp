@@ -41,8 +41,8 @@ Vector rows_of(const Vector& v, std::span<const Eigen::Index> rows, Eigen::Index
 }
 
 /// A Woodbury downdate of k test rows is worth it while k is below this
-/// share of the causes (O(n d k) against the O(n d²) of the rows' terms
-/// from a posterior of the layout's own), and is exact to round-off while
+/// share of the causes the test rows see, p (O(n p k) against the O(n p²)
+/// of the rows' terms from a posterior of the layout's own), and is exact to round-off while
 /// the information left, I − Gᵀ Π G, keeps every eigenvalue above
 /// kLeastKeptInformation. Beyond that share the layout's information is the
 /// lattice's less the rows it lacks, while each cause keeps more than
@@ -196,7 +196,7 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
     own.fit(false);
     finish(own, all, own.pi_, own.q_, own.ab_, own.around_.diagonal());
   };
-  if (static_cast<double>(k) > kDowndateShare * static_cast<double>(a.active_.size())) {
+  if (static_cast<double>(k) > kDowndateShare * static_cast<double>(d)) {
     // Too many rows missing for Woodbury: the layout's information is the
     // lattice's less G Gᵀ (O(k d²) instead of a Gram over its test rows).
     const Eigen::VectorXd lacked = G.rowwise().squaredNorm();

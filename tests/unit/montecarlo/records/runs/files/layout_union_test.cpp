@@ -4,8 +4,11 @@
 // a layout's rows is the layout's own.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "lib/uncertainty/uncertainty_model.h"
@@ -187,6 +190,104 @@ TEST(LayoutUnion, PulseCountingKeepsEachRowsVariance) {
   const Eigen::VectorXd var_cut = cut.counting.columns.rowwise().squaredNorm() + cut.counting.noise_var;
   const Eigen::VectorXd var_own = own.counting.columns.rowwise().squaredNorm() + own.counting.noise_var;
   EXPECT_LT((var_cut - var_own).cwiseAbs().maxCoeff(), 1e-6 * var_own.maxCoeff());
+}
+
+/// Each row's expected square from the dense posterior over every cause,
+/// written out (run_analysis.h), scaled by S = diag(√prior):
+/// Π = (I + S Hₜᵀ R⁻¹ Hₜ S)⁻¹, q = h S Π S hᵀ, under the model's noise
+/// σ² − q on test rows and q + σ² after them; under the actual noise, with
+/// J = S Hₜᵀ R⁻¹ R_a R⁻¹ Hₜ S and ab = h S Π (I + J) Π S hᵀ,
+/// ab + R_a (1 − 2q/σ²) on test rows and ab + R_a after them.
+struct DenseSquares {
+  Eigen::VectorXd expected, actual;
+  double round_off = 0;  ///< the relative round-off of a posterior: 10 κ(I + S Hₜᵀ R⁻¹ Hₜ S) ε
+  /// The size of each row's terms, on which the round-off acts: of the
+  /// quadratic forms |h S|² max(1, ‖Π (I + J) Π‖) (a form much smaller
+  /// than that is a cancellation), and R_a (1 + 2q/σ²).
+  Eigen::VectorXd terms;
+};
+DenseSquares dense_squares(const GaussianModel& m, int test_rows) {
+  const Eigen::VectorXd s = m.prior_var.cwiseSqrt();
+  const Eigen::MatrixXd HS = m.H * s.asDiagonal();
+  const Eigen::MatrixXd Ht = HS.topRows(test_rows);
+  const Eigen::VectorXd w = m.noise_var.head(test_rows).cwiseInverse();
+  Eigen::MatrixXd info = Ht.transpose() * w.asDiagonal() * Ht;
+  info.diagonal().array() += 1.0;
+  const Eigen::MatrixXd pi = info.llt().solve(Eigen::MatrixXd::Identity(info.rows(), info.cols()));
+  const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(info).eigenvalues();
+  const double round_off = 10.0 * eig.maxCoeff() / eig.minCoeff() * std::numeric_limits<double>::epsilon();
+  Eigen::MatrixXd spread = Ht.transpose() * (m.actual_noise_var.head(test_rows).cwiseProduct(w.cwiseAbs2())).asDiagonal() * Ht;
+  spread.diagonal().array() += 1.0;
+  const Eigen::MatrixXd around = pi * spread * pi;
+  const double around_norm = std::max(1.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(around).eigenvalues().cwiseAbs().maxCoeff());
+  DenseSquares d{Eigen::VectorXd(m.H.rows()), Eigen::VectorXd(m.H.rows()), round_off, Eigen::VectorXd(m.H.rows())};
+  for (Eigen::Index i = 0; i < m.H.rows(); ++i) {
+    const double q = HS.row(i) * pi * HS.row(i).transpose(), ab = HS.row(i) * around * HS.row(i).transpose();
+    const double r = m.noise_var[i], ra = m.actual_noise_var[i];
+    d.expected[i] = i < test_rows ? r - q : q + r;
+    d.actual[i] = i < test_rows ? ab + ra * (1.0 - 2.0 * q / r) : ab + ra;
+    d.terms[i] = HS.row(i).squaredNorm() * around_norm + ra * (1.0 + (i < test_rows ? 2.0 * std::abs(q) / r : 0.0));
+  }
+  return d;
+}
+
+TEST(LayoutUnion, CausesNoTestRowSeesKeepTheirPriorAndTheRowsTheirWholeVariance) {
+  // A run model with causes that act only after the test run (a process'
+  // later knots: ramps that start after T), one of them before a cause the
+  // test rows do see. The fit is made over the causes the test rows touch
+  // (run_analysis.h); each row's expected square must be the dense
+  // posterior's over every cause, on the layout's own fit and on one cut
+  // from the lattice (Woodbury), nav rows included (they carry the unseen
+  // causes' whole prior).
+  const Layout full = testing::test_layout(3600.0);
+  const RecordSite s = testing::test_site();
+  GaussianModel m = combine(make_base_model(full, s, UncertaintyModel{}.variance()), {});
+  const double T = full.rows[static_cast<std::size_t>(full.test_rows - 1)].t_s;
+  const Eigen::Index d = m.H.cols(), extra = 8;
+  m.H.conservativeResize(Eigen::NoChange, d + extra);
+  m.prior_var.conservativeResize(d + extra);
+  for (Eigen::Index j = 0; j < extra; ++j) {
+    // Column d + 1 is seen by the test rows (it starts at 300 s); the others start after T.
+    const double start = j == 1 ? 300.0 : T + 150.0 * static_cast<double>(j + 1);
+    for (Eigen::Index i = 0; i < m.H.rows(); ++i) {
+      const ObservationRow& r = full.rows[static_cast<std::size_t>(i)];
+      const double after = std::max(0.0, r.t_s - start);
+      m.H(i, d + j) = after > 0 ? (r.quantity == Quantity::kR ? 0.01 * after : 1e-5) : 0.0;
+    }
+    m.prior_var[d + j] = 1.0 + static_cast<double>(j);
+  }
+  const auto expect_dense = [](const RunAnalyser& a, const GaussianModel& model, int test_rows) {
+    const DenseSquares want = dense_squares(model, test_rows);
+    ASSERT_EQ(a.expected_square().size(), want.expected.size());
+    ASSERT_GE(a.actual_square().size(), want.actual.size());  // then the estimates
+    for (Eigen::Index i = 0; i < want.expected.size(); ++i) {
+      const double r = model.noise_var[i];
+      // Both ways round off as the posterior's condition number allows.
+      const double tol = std::max(1e-9, want.round_off);
+      EXPECT_NEAR(a.expected_square()[i], want.expected[i], tol * (want.terms[i] + r)) << "row " << i;
+      EXPECT_NEAR(a.actual_square()[i], std::max(0.0, want.actual[i]), tol * (want.terms[i] + r)) << "row " << i;
+    }
+  };
+  expect_dense(RunAnalyser(full, m), m, full.test_rows);
+  const LatticeAnalysis shared(full, m);
+  // Few test rows lacked (Woodbury), and every second f record of the test
+  // run lacked (the lattice's information less the rows').
+  Layout sparse = full;
+  sparse.rows.clear();
+  for (int i = 0; i < static_cast<int>(full.rows.size()); ++i) {
+    const ObservationRow& r = full.rows[static_cast<std::size_t>(i)];
+    if (i < full.test_rows && r.quantity == Quantity::kF && std::fmod(r.t_s, 20.0) == 0.0) continue;
+    sparse.rows.push_back(r);
+  }
+  sparse.test_rows = full.test_rows - 3 * 45;
+  for (const Layout& l : {with_dropouts(full, 5, 60), with_dropouts(full, 0, 40), sparse}) {
+    const auto rows = rows_within(l, full);
+    ASSERT_TRUE(rows.has_value());
+    const GaussianModel own = select_rows(m, *rows);
+    SCOPED_TRACE(::testing::Message() << l.test_rows << " of " << full.test_rows << " test rows");
+    expect_dense(RunAnalyser(l, shared, *rows), own, l.test_rows);
+    expect_dense(RunAnalyser(l, own), own, l.test_rows);
+  }
 }
 
 }  // namespace
