@@ -38,6 +38,21 @@ Layout with_dropouts(const Layout& full, int first, int step) {
   return l;
 }
 
+/// The test layout with every second f record of its test run missing
+/// (those at multiples of 20 s).
+Layout every_second_test_f_missing(const Layout& full) {
+  Layout sparse = full;
+  sparse.rows.clear();
+  sparse.test_rows = 0;
+  for (int i = 0; i < static_cast<int>(full.rows.size()); ++i) {
+    const ObservationRow& r = full.rows[static_cast<std::size_t>(i)];
+    if (i < full.test_rows && r.quantity == Quantity::kF && std::fmod(r.t_s, 20.0) == 0.0) continue;
+    sparse.rows.push_back(r);
+    if (i < full.test_rows) ++sparse.test_rows;
+  }
+  return sparse;
+}
+
 TEST(LayoutUnion, EachLayoutFindsItsRowsInTheUnion) {
   const Layout full = testing::test_layout(3600.0);
   const Layout a = with_dropouts(full, 3, 17), b = with_dropouts(full, 8, 23);
@@ -129,14 +144,7 @@ TEST(LayoutUnion, ALayoutsFitCutFromTheLatticesIsItsOwn) {
   const UncertaintyVector x_var = UncertaintyModel{}.variance();
   const GaussianModel on_lattice = combine(make_base_model(full, s, x_var), {});
   const LatticeAnalysis shared(full, on_lattice);
-  Layout sparse = full;  // every second f record of the test run missing
-  sparse.rows.clear();
-  for (int i = 0; i < static_cast<int>(full.rows.size()); ++i) {
-    const ObservationRow& r = full.rows[static_cast<std::size_t>(i)];
-    if (i < full.test_rows && r.quantity == Quantity::kF && std::fmod(r.t_s, 20.0) == 0.0) continue;
-    sparse.rows.push_back(r);
-  }
-  sparse.test_rows = full.test_rows - 3 * 45;
+  const Layout sparse = every_second_test_f_missing(full);
   // No r record in the test run: the causes only r sees (the position
   // offsets) lose nearly all their information, so the lattice's less the
   // rows lacked would cancel, and the layout is fitted anew.
@@ -272,14 +280,7 @@ TEST(LayoutUnion, CausesNoTestRowSeesKeepTheirPriorAndTheRowsTheirWholeVariance)
   const LatticeAnalysis shared(full, m);
   // Few test rows lacked (Woodbury), and every second f record of the test
   // run lacked (the lattice's information less the rows').
-  Layout sparse = full;
-  sparse.rows.clear();
-  for (int i = 0; i < static_cast<int>(full.rows.size()); ++i) {
-    const ObservationRow& r = full.rows[static_cast<std::size_t>(i)];
-    if (i < full.test_rows && r.quantity == Quantity::kF && std::fmod(r.t_s, 20.0) == 0.0) continue;
-    sparse.rows.push_back(r);
-  }
-  sparse.test_rows = full.test_rows - 3 * 45;
+  const Layout sparse = every_second_test_f_missing(full);
   for (const Layout& l : {with_dropouts(full, 5, 60), with_dropouts(full, 0, 40), sparse}) {
     const auto rows = rows_within(l, full);
     ASSERT_TRUE(rows.has_value());
