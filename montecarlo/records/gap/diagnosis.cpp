@@ -83,15 +83,7 @@ void name_inside_priors(Diagnosis& d) {
   const auto scored = [&](const std::string& name) {
     return std::any_of(t.scores.begin(), t.scores.end(), [&](const EstimateScore& s) { return s.effect == name; });
   };
-  const auto members = [](const std::string& named) {
-    std::vector<std::string> out;
-    for (std::size_t b = 0, e; b <= named.size(); b = e + 1) {
-      e = std::min(named.find('|', b), named.size());
-      out.push_back(named.substr(b, e - b));
-    }
-    return out;
-  };
-  const std::vector<std::string> first_members = members(d.first.top);
+  const std::vector<std::string> first_members = class_members(d.first.top);
   const bool inside = !d.first.top.empty() && std::all_of(first_members.begin(), first_members.end(), scored);
   const bool rows_see_it = d.p_value < d.alpha;
   if (rows_see_it && !inside) return;
@@ -105,7 +97,7 @@ void name_inside_priors(Diagnosis& d) {
     // priors and not which effect moved it: there the estimates' direction
     // names it.
     const CandidateResult* closest = nullptr;
-    for (const std::string& m : members(t.named))
+    for (const std::string& m : class_members(t.named))
       for (const CandidateResult& c : d.first.ranking)
         if (c.effect == m && (closest == nullptr || c.heldout_gap_after < closest->heldout_gap_after)) closest = &c;
     const CandidateResult& first = d.first.ranking.front();

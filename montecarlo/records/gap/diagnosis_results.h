@@ -2,6 +2,7 @@
 /// What a diagnosis finds (`insmc gap`, docs/gap-method.md): the result of each
 /// stage, gathered in a Diagnosis. The stages fill these in; the report
 /// (report/) and the validation (validation/) read them.
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <vector>
@@ -231,6 +232,16 @@ struct GapLocation {
   std::vector<TimeFunctionShares> time_functions;
   std::vector<AllanCurve> allan;
 };
+
+/// The effects a top names: one, or each member of a class "a|b".
+inline std::vector<std::string> class_members(const std::string& top) {
+  std::vector<std::string> out;
+  for (std::size_t b = 0, e; b <= top.size(); b = e + 1) {
+    e = std::min(top.find('|', b), top.size());
+    out.push_back(top.substr(b, e - b));
+  }
+  return out;
+}
 
 /// The first ranking as the report gives it.
 struct FirstRanking {

@@ -38,14 +38,8 @@ EffectSpec scaled_effect(EffectKind kind, double magnitude, double model_pulse_m
 }
 
 bool names_effect(const std::string& top, const std::string& effect) {
-  std::size_t start = 0;
-  while (start <= top.size()) {
-    const std::size_t bar = top.find('|', start);
-    if (top.substr(start, bar == std::string::npos ? std::string::npos : bar - start) == effect) return true;
-    if (bar == std::string::npos) break;
-    start = bar + 1;
-  }
-  return false;
+  const std::vector<std::string> members = class_members(top);
+  return std::find(members.begin(), members.end(), effect) != members.end();
 }
 
 double median(std::vector<double> v) {

@@ -60,15 +60,15 @@ Eigen::Index observed_columns(const Eigen::MatrixXd& a, Eigen::Index test_rows) 
 }
 
 /// Each row's h M hᵀ for a matrix M over the first M.rows() columns and the
-/// identity beyond them (the scaled posterior of causes the fit does not see).
-Eigen::VectorXd row_forms(const Eigen::MatrixXd& hs, const Eigen::MatrixXd& m) {
+/// identity beyond them (the scaled posterior of causes the fit does not
+/// see), `unseen` each row's |h|² over those.
+Eigen::VectorXd row_forms(const Eigen::MatrixXd& hs, const Eigen::MatrixXd& m, const Eigen::VectorXd& unseen) {
   const Eigen::Index p = m.rows();
-  Eigen::VectorXd q = hs.rightCols(hs.cols() - p).rowwise().squaredNorm();
-  if (hs.rows() == 0 || p == 0) return q;
+  if (hs.rows() == 0 || p == 0) return unseen;
   Eigen::VectorXd seen(hs.rows());
   row_quadratic_forms(hs.data(), static_cast<std::size_t>(hs.outerStride()), static_cast<std::size_t>(hs.rows()),
                       static_cast<std::size_t>(p), m.data(), static_cast<std::size_t>(m.outerStride()), seen.data());
-  return q + seen;
+  return seen + unseen;
 }
 
 }  // namespace
@@ -142,16 +142,16 @@ void LatticeAnalysis::solve(Eigen::MatrixXd info, Eigen::MatrixXd spread, bool l
   spread_ = std::move(spread);
   pi_ = inverse_of_information(info_);
   around_ = pi_ * spread_ * pi_;
-  ab_ = row_forms(HS, around_);
+  const Eigen::VectorXd unseen = HS.rightCols(HS.cols() - observed_).rowwise().squaredNorm();
+  ab_ = row_forms(HS, around_, unseen);
   if (!lattice) {
-    q_ = row_forms(HS, pi_);
+    q_ = row_forms(HS, pi_, unseen);
     return;
   }
   // A lattice's layouts downdate each row's terms by its h S Π (Woodbury).
   const auto seen = HS.leftCols(observed_);
   HS_pi_ = seen * pi_;
-  q_ = (HS_pi_.array() * seen.array()).rowwise().sum().matrix() +
-       HS.rightCols(HS.cols() - observed_).rowwise().squaredNorm();
+  q_ = (HS_pi_.array() * seen.array()).rowwise().sum().matrix() + unseen;
 }
 
 RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model) {
