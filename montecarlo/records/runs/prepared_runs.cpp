@@ -105,9 +105,20 @@ Records read_records(const RecordFile& file, const RecordReading& options, std::
   return r;
 }
 
-void take_off_estimates(RunData& run, const BaseModel& base, const SchemeEstimates& estimates) {
+BaseModel PreparedRuns::base_of(int layout) const {
+  const auto L = static_cast<std::size_t>(layout);
+  return select_rows(lattice_bases[static_cast<std::size_t>(lattice_of[L])], lattice_rows[L]);
+}
+
+void PreparedRuns::take_off_estimates(RunData& run, int layout, const SchemeEstimates& estimates) const {
+  const auto L = static_cast<std::size_t>(layout);
+  const Eigen::MatrixXd& on_lattice = lattice_bases[static_cast<std::size_t>(lattice_of[L])].estimate_map;
+  const std::vector<Eigen::Index>& rows = lattice_rows[L];
   const auto n = static_cast<Eigen::Index>(run.values.size());  // the layout's first n rows
-  Eigen::Map<Eigen::VectorXd>(run.values.data(), n) -= base.estimate_map.topRows(n) * estimates;
+  INSMC_ASSERT(n <= static_cast<Eigen::Index>(rows.size()), "run of {} values on a layout of {} rows", n, rows.size());
+  Eigen::MatrixXd map(n, on_lattice.cols());
+  for (Eigen::Index i = 0; i < n; ++i) map.row(i) = on_lattice.row(rows[static_cast<std::size_t>(i)]);
+  Eigen::Map<Eigen::VectorXd>(run.values.data(), n) -= map * estimates;
 }
 
 PreparedRuns prepare(const Records& records, const RecordReading& options) {
@@ -131,7 +142,7 @@ PreparedRuns prepare(const Records& records, const RecordReading& options) {
     const int L = p.place(p.runs[r]);
     p.layout_of.push_back(L);
     if (!records.estimates.empty())
-      take_off_estimates(p.runs[r], p.bases[static_cast<std::size_t>(L)], records.estimates[r]);
+      p.take_off_estimates(p.runs[r], L, records.estimates[r]);
   }
   return p;
 }
@@ -169,7 +180,6 @@ int PreparedRuns::layout_index(const Layout& layout) {
     for (std::size_t i = 0; i < rows->size(); ++i) (*rows)[i] = static_cast<Eigen::Index>(i);
   }
   layouts.push_back(layout);
-  bases.push_back(select_rows(lattice_bases[lattice], *rows));
   lattice_of.push_back(static_cast<int>(lattice));
   lattice_rows.push_back(std::move(*rows));
   keys.add_layout(layout);

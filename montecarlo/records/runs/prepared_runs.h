@@ -63,10 +63,6 @@ TestRunEstimators record_estimators(const RecordSite& site, const UncertaintyMod
 Records read_records(const RecordFile& file, const RecordReading& options, std::vector<std::string>& statements,
                      std::vector<SiteValue>& site_values);
 
-/// Takes the scheme's use of a run's own test-run estimates off its rows
-/// (scheme_rows.h): exact, whatever moved the estimates.
-void take_off_estimates(RunData& run, const BaseModel& base, const SchemeEstimates& estimates);
-
 /// The runs, their layouts and the base model of each layout.
 ///
 /// Every layout takes its rows from a lattice (layout_union.h): the union of
@@ -79,7 +75,6 @@ struct PreparedRuns {
   std::vector<RunData> runs;
   std::vector<Layout> layouts;
   std::vector<int> layout_of;  // per run
-  std::vector<BaseModel> bases;  // per layout
   std::vector<Layout> lattices;
   std::vector<BaseModel> lattice_bases;  // per lattice
   std::vector<int> lattice_of;           // per layout
@@ -96,7 +91,16 @@ struct PreparedRuns {
   /// would cost more than they do.
   void add_lattice(std::span<const Layout* const> layouts);
 
-  /// Index of `layout`, added (with its base model and keys) when new.
+  /// Layout L's base model: its rows of its lattice's, made when asked (one
+  /// kept per layout would hold the file's rows once more per layout).
+  BaseModel base_of(int layout) const;
+
+  /// Takes the scheme's use of a run's own test-run estimates off its rows
+  /// (scheme_rows.h), the run analysed under `layout`: exact, whatever moved
+  /// the estimates.
+  void take_off_estimates(RunData& run, int layout, const SchemeEstimates& estimates) const;
+
+  /// Index of `layout`, added (with its lattice rows and keys) when new.
   int layout_index(const Layout& layout);
   /// Index of the layout `run` is analysed under: its own, or a known
   /// layout it is the beginning of (rows_begun; the run then loses the

@@ -1,6 +1,7 @@
 #include "montecarlo/records/gap/fit/candidate_fit.h"
 
 #include "montecarlo/records/gap/candidates/layout_extensions.h"
+#include "lib/common/assert.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <memory>
 #include <span>
 #include <utility>
 
@@ -22,9 +24,39 @@ std::vector<const runs::Extension*> pointers(const std::vector<runs::Extension>&
   return e;
 }
 
+/// Evaluates grid points `ks` of `c` on every run, as many at a time as
+/// there are threads: their extensions built one after another (a
+/// candidate's build fills the layout's response cache, which is not shared
+/// across threads), then the run models and the runs under them (most of the
+/// cost) side by side. A random process' extension holds rows × knots, so
+/// only the points being evaluated hold theirs. Each point's result is its
+/// own, so neither the order nor the thread count changes it. Without
+/// `keep_keyed` only the run sets and sums stay.
+void evaluate_points(CandidateSums& out, const runs::PreparedRuns& p, const Candidate& c,
+                     const std::vector<std::vector<runs::Extension>>& selected, LayoutExtensions& build,
+                     const std::vector<bool>& used, std::span<const int> ks, bool keep_keyed) {
+  const auto chunk = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+  for (std::size_t first = 0; first < ks.size(); first += chunk) {
+    const std::span<const int> batch = ks.subspan(first, std::min(chunk, ks.size() - first));
+    std::vector<std::vector<std::optional<runs::Extension>>> extensions(batch.size());
+    for (std::size_t b = 0; b < batch.size(); ++b) extensions[b] = build.build(c, c.grid_point(batch[b]), used);
+    tbb::parallel_for(std::size_t{0}, batch.size(), [&](std::size_t b) {
+      std::vector<std::vector<const runs::Extension*>> on_lattice(p.lattices.size());
+      for (std::size_t l = 0; l < p.lattices.size(); ++l)
+        if (extensions[b][l]) on_lattice[l] = pointers(selected[l], &*extensions[b][l]);
+      const auto k = static_cast<std::size_t>(batch[b]);
+      EvaluatedRuns e = evaluate_runs(p, on_lattice, used);
+      if (!out.evaluated[k]) out.sets[k] = e.set(p.keys);
+      if (!keep_keyed) e.keyed.resize(0, 0);
+      out.at[k] = std::move(e);
+    });
+    for (int k : batch) out.keyed_kept[static_cast<std::size_t>(k)] = keep_keyed;  // bits: not from the threads
+  }
+}
+
 CandidateSums evaluate_on_grid(const runs::PreparedRuns& p, const Candidate& c,
                                const std::vector<std::vector<runs::Extension>>& selected,
-                               LayoutExtensions& build, const NullCalibration& m0,
+                               std::shared_ptr<LayoutExtensions> build, const NullCalibration& m0,
                                std::vector<std::vector<int>> groups) {
   CandidateSums out;
   out.keys = &p.keys;
@@ -33,32 +65,15 @@ CandidateSums evaluate_on_grid(const runs::PreparedRuns& p, const Candidate& c,
   out.at.resize(static_cast<std::size_t>(K));
   out.sets.resize(static_cast<std::size_t>(K));
   out.evaluated.assign(static_cast<std::size_t>(K), false);
-  // The points of a batch, as many at a time as there are threads: their
-  // extensions built one after another (a candidate's build fills the
-  // layout's response cache, which is not shared across threads), then the
-  // run models and the runs under them (most of the cost) side by side. A
-  // random process' extension holds rows × knots, so only the points being
-  // evaluated hold theirs. Each point's result is its own, so neither the
-  // order nor the thread count changes it.
-  const auto chunk = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
-  const auto evaluate_chunk = [&](std::span<const int> ks) {
-    std::vector<std::vector<std::optional<runs::Extension>>> extensions(ks.size());
-    for (std::size_t b = 0; b < ks.size(); ++b) extensions[b] = build.build(c, c.grid_point(ks[b]), used);
-    tbb::parallel_for(std::size_t{0}, ks.size(), [&](std::size_t b) {
-      std::vector<std::vector<const runs::Extension*>> on_lattice(p.lattices.size());
-      for (std::size_t l = 0; l < p.lattices.size(); ++l)
-        if (extensions[b][l]) on_lattice[l] = pointers(selected[l], &*extensions[b][l]);
-      const auto k = static_cast<std::size_t>(ks[b]);
-      out.at[k] = evaluate_runs(p, on_lattice, used);
-      out.sets[k] = out.at[k].set(p.keys);
-    });
+  out.keyed_kept.assign(static_cast<std::size_t>(K), false);
+  out.reevaluate = [&p, &c, &selected, build, used](CandidateSums& s, std::span<const int> ks) {
+    evaluate_points(s, p, c, selected, *build, used, ks, true);
   };
   const auto evaluate = [&](std::vector<int> ks) {
     std::sort(ks.begin(), ks.end());
     ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
     std::erase_if(ks, [&](int k) { return out.evaluated[static_cast<std::size_t>(k)]; });
-    for (std::size_t first = 0; first < ks.size(); first += chunk)
-      evaluate_chunk(std::span<const int>(ks).subspan(first, std::min(chunk, ks.size() - first)));
+    evaluate_points(out, p, c, selected, *build, used, ks, false);
     for (int k : ks) out.evaluated[static_cast<std::size_t>(k)] = true;
   };
   // Grid index = first-parameter index × rest + rest index (grid_point).
@@ -164,9 +179,21 @@ Eigen::VectorXd least_squares_amplitudes(const CandidateSums& s, int k, const st
 CandidateSums evaluate_candidate(const runs::PreparedRuns& p, const Candidate& c,
                                  const std::vector<std::vector<runs::Extension>>& selected,
                                  const NullCalibration& m0, const std::vector<std::vector<int>>& groups) {
-  LayoutExtensions build(p);
-  return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, build, m0, groups)
-                                       : evaluate_amplitudes(p, c, selected, build);
+  auto build = std::make_shared<LayoutExtensions>(p);
+  return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, std::move(build), m0, groups)
+                                       : evaluate_amplitudes(p, c, selected, *build);
+}
+
+void keep_keyed_at(CandidateSums& s, std::vector<int> grid) {
+  if (s.amplitudes) return;
+  std::sort(grid.begin(), grid.end());
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  std::erase_if(grid, [&](int k) {
+    INSMC_ASSERT(k >= 0 && k < s.grid_size() && s.evaluated[static_cast<std::size_t>(k)],
+                 "grid point {} of {} was not evaluated", k, s.grid_size());
+    return s.keyed_kept[static_cast<std::size_t>(k)];
+  });
+  if (!grid.empty()) s.reevaluate(s, grid);
 }
 
 RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices) {
@@ -176,6 +203,8 @@ RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const
     const auto r = static_cast<std::size_t>(runs[j]);
     const Choice& choice = choices[j];
     if (!s.amplitudes) {
+      INSMC_ASSERT(s.keyed_kept[static_cast<std::size_t>(choice.grid)], "grid point {}'s keyed values were not kept",
+                   choice.grid);
       const EvaluatedRuns& e = s.at[static_cast<std::size_t>(choice.grid)];
       sums[j] = e.sums[r];
       keyed.col(static_cast<Eigen::Index>(j)) = e.keyed.col(static_cast<Eigen::Index>(r));

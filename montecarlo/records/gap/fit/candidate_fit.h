@@ -8,7 +8,9 @@
 /// would miss a signature seen coherently in every run by tens of percent.
 
 #include <Eigen/Dense>
+#include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "montecarlo/records/gap/candidates/candidates.h"
@@ -26,9 +28,18 @@ struct CandidateSums {
   bool amplitudes = false;
   /// Without amplitudes: every run at each grid point evaluated, and its
   /// run set (empty where the coarse-to-fine search skipped the point).
+  /// The runs' keyed values (what a run set of runs under different points
+  /// is made from) are kept only where keyed_kept: each point's are as large
+  /// as the file, and a choice needs those of one or two points
+  /// (keep_keyed_at re-evaluates them).
   std::vector<EvaluatedRuns> at;
   std::vector<RunSet> sets;
   std::vector<bool> evaluated;
+  std::vector<bool> keyed_kept;
+  /// Evaluates grid points again with their keyed values (the same bits as
+  /// the first time); valid while the prepared runs, the candidate and the
+  /// selected effects it was evaluated on live.
+  std::function<void(CandidateSums&, std::span<const int>)> reevaluate;
   /// With amplitudes: the fit without the candidate per layout, the runs'
   /// normalized values under it, and the normalized signature columns
   /// [grid][layout] (rows × amplitudes).
@@ -58,8 +69,13 @@ CandidateSums evaluate_candidate(const runs::PreparedRuns& p, const Candidate& c
                                  const std::vector<std::vector<runs::Extension>>& selected,
                                  const NullCalibration& m0, const std::vector<std::vector<int>>& groups = {});
 
+/// Makes the keyed values of grid points `grid` available to run_set_under
+/// (a no-op for amplitude candidates, whose values are affine in theirs).
+void keep_keyed_at(CandidateSums& s, std::vector<int> grid);
+
 /// Each run of `runs` under its own choice (e.g. the held-out runs of two
-/// folds, each under the other fold's fit), as a run set in that order.
+/// folds, each under the other fold's fit), as a run set in that order. The
+/// choices' grid points must have their keyed values (keep_keyed_at).
 RunSet run_set_under(const CandidateSums& s, const std::vector<int>& runs, const std::vector<Choice>& choices);
 
 /// A multiset of runs (indices into the candidate's runs, repeats allowed:

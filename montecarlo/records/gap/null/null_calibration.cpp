@@ -53,7 +53,7 @@ std::vector<runs::RunData> simulate_like_records(runs::PreparedRuns& p, const Re
   for (std::size_t j = 0; j < sim.size(); ++j) {
     layout_of[j] = p.place(sim[j]);
     // The run's own estimates, taken off its rows as the records' are.
-    if (p.site.estimators) take_off_estimates(sim[j], p.bases[static_cast<std::size_t>(layout_of[j])], estimates[j]);
+    if (p.site.estimators) p.take_off_estimates(sim[j], layout_of[j], estimates[j]);
   }
   return sim;
 }

@@ -73,7 +73,7 @@ void name_from_estimates(EstimateTest& test, const RunEstimates& e, const runs::
   Eigen::MatrixXd W(J, W_all.cols());
   for (Eigen::Index k = 0; k < J; ++k)
     W.row(k) = W_all.row(std::find(x.begin(), x.end(), e.columns[static_cast<std::size_t>(k)]) - x.begin());
-  const runs::BaseModel& base = p.bases[static_cast<std::size_t>(layout)];
+  const runs::BaseModel base = p.base_of(layout);
   const Eigen::Index nt = analyser.test_rows();
   const Eigen::Index nx = std::min<Eigen::Index>(base.H_x.cols(), ux::kDim);
   const Eigen::MatrixXd WH = W * base.H_x.topRows(nt).leftCols(nx);

@@ -20,7 +20,8 @@ namespace {
 
 /// Every run under the other half's fit (runs alternate between the halves
 /// in file order): 2-fold cross-validation.
-RunSet heldout_set(const std::array<Choice, 2>& half, const CandidateSums& s, const std::vector<int>& runs) {
+RunSet heldout_set(const std::array<Choice, 2>& half, CandidateSums& s, const std::vector<int>& runs) {
+  keep_keyed_at(s, {half[0].grid, half[1].grid});
   std::vector<Choice> heldout_choice(runs.size());
   for (std::size_t r = 0; r < runs.size(); ++r) heldout_choice[r] = half[1 - r % 2];
   return run_set_under(s, runs, heldout_choice);
@@ -35,7 +36,7 @@ std::vector<int> run_range(std::size_t first, std::size_t n) {
 
 /// 2-fold cross-validation (runs alternate between the halves in file order),
 /// the full-data fit and its resampled 16–84 % range.
-Scored score(const Candidate& c, const CandidateSums& s, std::size_t n, const NullCalibration& m0,
+Scored score(const Candidate& c, CandidateSums s, std::size_t n, const NullCalibration& m0,
              std::uint64_t seed, const runs::RecordSite& site) {
   const auto in_effect_terms = [&](std::vector<double> theta) {
     if (c.to_effect_terms) c.to_effect_terms(theta, site);
@@ -142,11 +143,18 @@ std::vector<double> null_shrinks(const runs::PreparedRuns& p, const ModelNull& n
   std::atomic<std::uint64_t> done{0};
   const std::vector<std::vector<runs::Extension>> none(p.lattices.size());
   tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
-    const CandidateSums sums = evaluate_candidate(q, registry[c], none, m0, file_runs);
+    CandidateSums sums = evaluate_candidate(q, registry[c], none, m0, file_runs);
+    std::vector<std::array<Choice, 2>> halves;
+    std::vector<int> chosen;
+    for (const std::vector<int>& runs : file_runs) {
+      halves.push_back(half_fits(sums, runs, m0));
+      chosen.insert(chosen.end(), {halves.back()[0].grid, halves.back()[1].grid});
+    }
+    keep_keyed_at(sums, std::move(chosen));  // every file's points at once: they share their evaluation
     std::vector<double> shrink;
     for (int f = 0; f < files; ++f) {
       const std::vector<int>& runs = file_runs[static_cast<std::size_t>(f)];
-      const RunSet held = heldout_set(half_fits(sums, runs, m0), sums, runs);
+      const RunSet held = heldout_set(halves[static_cast<std::size_t>(f)], sums, runs);
       const double b = before[static_cast<std::size_t>(f)];
       shrink.push_back(b > 0 ? 1.0 - gap_value(held, all_runs(n), m0) / b : 0.0);
     }

@@ -17,7 +17,7 @@ PriorScale fit_prior_scale(const runs::PreparedRuns& p, const NullCalibration& m
   grid.clear();
   for (int k = -16; k <= 16; ++k) grid.push_back(std::pow(10.0, k / 8.0));
   const std::vector<std::vector<runs::Extension>> none(p.lattices.size());
-  const CandidateSums sums = evaluate_candidate(p, c, none, m0);
+  CandidateSums sums = evaluate_candidate(p, c, none, m0);
   const std::size_t n = p.runs.size();
   const std::vector<int> runs = all_runs(n);
   const Choice best = choose(sums, runs, m0);
@@ -36,6 +36,7 @@ PriorScale fit_prior_scale(const runs::PreparedRuns& p, const NullCalibration& m
   out.low = quantile(draws, 0.16);
   out.high = quantile(draws, 0.84);
   // G₋ as the verdict reads it (coherent groups against at least the model's scatter).
+  keep_keyed_at(sums, {best.grid});
   const RunSet set = run_set_under(sums, runs, std::vector<Choice>(n, best));
   const LogRatios ratios =
       log_ratios(pool(set, runs), m0, CoherentReference::kAtLeastModelScatter);

@@ -38,10 +38,11 @@ runs::PreparedRuns drawn_runs(int runs, double s, std::uint64_t seed) {
   p.x_var = UncertaintyModel{}.variance();
   const runs::Layout l = layout(2700.0);
   const int L = p.layout_index(l);
-  gap::LayoutContext ctx{&p.layouts[0], &p.site, &p.bases[0], {}};
+  const runs::BaseModel base = p.base_of(0);
+  gap::LayoutContext ctx{&p.layouts[0], &p.site, &base, {}};
   const double theta[] = {s};
   const runs::Extension e = candidate("bounds").build(ctx, theta);
-  const runs::GaussianModel m = runs::combine(p.bases[0], {&e});
+  const runs::GaussianModel m = runs::combine(base, {&e});
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal;
   for (int r = 0; r < runs; ++r) {
@@ -74,10 +75,11 @@ TEST(GapCandidateLikelihood, IsTheCombinedModelsLikelihoodAndFitsTheDrawnValue) 
   std::printf("one evaluation: %.3f s (%zu rows, %d runs)\n", seconds, p.layouts[0].rows.size(),
               static_cast<int>(p.runs.size()));
 
-  gap::LayoutContext ctx{&p.layouts[0], &p.site, &p.bases[0], {}};
+  const runs::BaseModel base = p.base_of(0);
+  gap::LayoutContext ctx{&p.layouts[0], &p.site, &base, {}};
   const runs::Extension e = c.build(ctx, at);
-  const runs::RunLikelihood direct(runs::combine(p.bases[0], {&e}));
-  const runs::RunLikelihood null_model(runs::combine(p.bases[0], {}));
+  const runs::RunLikelihood direct(runs::combine(base, {&e}));
+  const runs::RunLikelihood null_model(runs::combine(base, {}));
   const std::vector<double> null = null_log_likelihoods(p, selected);
   ASSERT_EQ(ll.size(), p.runs.size());
   for (std::size_t r = 0; r < p.runs.size(); ++r) {
