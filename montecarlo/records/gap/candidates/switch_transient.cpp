@@ -1,7 +1,8 @@
 // switch_transient: steps at switch-over beyond Table 3.1, in the
-// misalignment and the accelerometer bias.
+// misalignment (to the rotation's second order) and the accelerometer bias.
 #include "montecarlo/records/gap/candidates/common.h"
 #include "montecarlo/records/gap/candidates/definitions.h"
+#include "montecarlo/records/gap/candidates/misalignment_second_order.h"
 
 namespace insmc::gap::candidates {
 
@@ -14,11 +15,12 @@ Candidate switch_transient() {
            searched("bias", Dimension::kAcceleration, scaled({0, 20, 50, 100, 200, 500, 1000, 3000}, kUg),
                     1e-6 * kMgToMps2, magnitude_limit(Dimension::kAcceleration),
                     "a floor of 1e-6 of Table 3.1's 1 mg for 0 (none) up to the 100 mg the linearized model describes")},
-          [](const LayoutContext&, std::span<const double> p) {
+          [](const LayoutContext& ctx, std::span<const double> p) {
             runs::Extension e;
             e.x_var_add.segment<3>(ux::kMisalignAlign).setConstant(p[0] * p[0]);
             e.x_var_add.segment<2>(ux::kBiasChangeAlign).setConstant(p[1] * p[1]);
             e.x_var_add[ux::kAccelBias + 2] = p[1] * p[1];
+            add_misalignment_second_order(ctx, Eigen::Vector3d::Constant(p[0]), e);
             return e;
           },
           {},

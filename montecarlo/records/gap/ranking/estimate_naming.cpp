@@ -52,7 +52,7 @@ double log_likelihood(const EstimatePoint& pt, const Eigen::VectorXd& a, const E
 }
 
 bool acts_inside_priors(const runs::Extension& e) {
-  return e.columns.cols() == 0 && e.noise_var_add.size() == 0 && !e.counting;
+  return (e.columns.cols() == 0 || e.columns_higher_order) && e.noise_var_add.size() == 0 && !e.counting;
 }
 
 }  // namespace

@@ -79,6 +79,12 @@ struct Extension {
   Eigen::VectorXd mean;
   /// Pulse counting that replaces the base model's (pulses of another weight).
   std::optional<PulseCounting> counting;
+  /// True when `columns` and `mean` are only the higher-order terms of an
+  /// effect that acts through the priors (x_var_scale, x_var_add) to first
+  /// order: e.g. a large misalignment's rotation to second order. Whatever
+  /// reads the effect to first order (the test run's estimates, linear in
+  /// the causes) may take the priors alone.
+  bool columns_higher_order = false;
 
   /// True when the extension only moves the mean (the covariance, hence the
   /// fit, is the one without it).
