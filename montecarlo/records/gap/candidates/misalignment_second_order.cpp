@@ -37,7 +37,20 @@ void add_misalignment_second_order(const LayoutContext& ctx, const Eigen::Vector
       });
   const SecondOrderWeights w = second_order_weights(sigma_rad);
   e.columns_higher_order = true;  // the test run's estimates see the first order (ζ_r) alone
-  e.mean = unit * w.mean;
+  e.mean = unit * w.mean;  // after a realignment the response restarts the input: the same mean again
+  const runs::Layout& layout = *ctx.layout;
+  const Eigen::Index n = unit.rows(), nt = layout.test_rows;
+  if (layout.nav == runs::NavSegment::kRestart && nt < n) {
+    // A realignment draws the misalignment anew (its first order has a
+    // column of its own, scheme_rows.h): the spread after it is independent
+    // of the test run's, columns of its own.
+    e.columns = Eigen::MatrixXd::Zero(n, 12);
+    e.columns.topLeftCorner(nt, 6) = unit.topRows(nt);
+    e.columns.bottomRightCorner(n - nt, 6) = unit.bottomRows(n - nt);
+    e.column_var.resize(12);
+    e.column_var << w.variance, w.variance;
+    return;
+  }
   e.columns = unit;
   e.column_var = w.variance;
 }

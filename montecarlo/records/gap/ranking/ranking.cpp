@@ -104,14 +104,14 @@ std::vector<Scored> rank_candidates(const runs::PreparedRuns& p, const std::vect
                                     const DiagnosisOptions& options, std::string_view stage) {
   const auto& registry = candidates_of(options);
   std::vector<Scored> scored(registry.size());
-  std::vector<bool> used(registry.size(), false);
+  std::vector<char> used(registry.size(), 0);  // written from the threads: a byte each, not vector<bool>'s bits
   std::atomic<std::uint64_t> done{0};
   tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
     if (std::find(exclude.begin(), exclude.end(), registry[c].name) != exclude.end()) return;
     scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected, m0), p.runs.size(), m0, options.seed,
                       p.site);
     scored[c].candidate = static_cast<int>(c);
-    used[c] = true;
+    used[c] = 1;
     report_progress(options, stage, ++done, registry.size() - exclude.size(), "candidates");
   });
   std::vector<Scored> out;
