@@ -53,5 +53,25 @@ TEST(GapEstimates, TheEstimatesDoNotOverruleRowsThatTellTheFirstRankedApart) {
   EXPECT_TRUE(has(r.out, "An unmodelled effect: thermal_transient")) << r.out.substr(0, 600);
 }
 
+TEST(GapEstimates, EstimatesThatFitWidenedPriorsBestKeepTheRowsClassThatHoldsThem) {
+  // A switch-over misalignment thirty times Table 3.1's on a fuzzed layout:
+  // the rows rank alignment_transient first with bounds within two standard
+  // errors (a class); on the estimates alone widened priors fit best, as
+  // they nest every effect acting inside them. Those estimates cannot split
+  // the class: it is kept (naming `bounds` alone dropped the true effect).
+  TempDir dir;
+  const std::string records = (dir.path() / "alignment.csv").string();
+  const auto s = run_insmc("simulate --runs 20 --seed 7 --layout fuzzed --test-duration 15min --nav-duration 90min "
+                           "--effect alignment_transient:level_initial=150mrad,azimuth_initial=600mrad --out " + records);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto r = run_insmc("gap --records " + records + " --max-effects 1 --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto top = r.out.find("\"top\": \"");
+  ASSERT_NE(top, std::string::npos);
+  EXPECT_TRUE(has(r.out.substr(top, 60), "\"top\": \"alignment_transient|bounds\"")) << r.out.substr(top, 60);
+  EXPECT_TRUE(has(r.out, "they do not split the rows' class alignment_transient|bounds, which is kept")) << r.out;
+  EXPECT_TRUE(has(r.out, "\"behind_first_se\": null")) << "the first has no margin";
+}
+
 }  // namespace
 }  // namespace insmc::testing

@@ -76,7 +76,8 @@ RunEstimates test_run_estimates(Diagnosis& d, const runs::PreparedRuns& p,
 /// apart, and G pools it with the rows over each axis. They do not
 /// overrule an effect ranked first that the rows tell apart from theirs,
 /// unless what the rows rank first is widened priors (`bounds`, which nests
-/// every effect acting inside them).
+/// every effect acting inside them); estimates that fit `bounds` best do not
+/// narrow a class of the rows holding it and another effect.
 void name_inside_priors(Diagnosis& d) {
   const EstimateTest& t = d.estimate_test;
   if (!d.ranked() || !t.significant || t.named.empty() || t.named == d.first.top) return;
@@ -89,6 +90,17 @@ void name_inside_priors(Diagnosis& d) {
   if (rows_see_it && !inside) return;
   const bool first_is_widened_priors =
       std::find(first_members.begin(), first_members.end(), "bounds") != first_members.end();
+  if (rows_see_it && first_is_widened_priors && first_members.size() > 1 && t.named == "bounds") {
+    // Widened priors nest every effect acting inside them, so estimates that
+    // fit them best cannot split a class the rows made of them and another
+    // such effect: on the estimates alone the nesting one wins whenever the
+    // other's signature fits the truth imperfectly. The rows' class stands.
+    d.statements.push_back(fmt::format(
+        "the test run's estimates stand beyond the prior (least p {:.3g}, over the table {:.3g}) and fit widened "
+        "priors best, which nest every effect acting inside them: they do not split the rows' class {}, which is kept",
+        t.min_p, t.family_p, d.first.top));
+    return;
+  }
   if (rows_see_it && !first_is_widened_priors) {
     // The estimates are one group of the rows' G: between effects the rows
     // tell apart (more than twice the resampled margin's standard error,

@@ -206,6 +206,9 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
     e["params"] = parameters_json(c.parameters);
     e["heldout_gap_after"] = c.heldout_gap_after;
     e["shrink"] = c.shrink;
+    // The margin behind the first's standard error (resampled runs): what the
+    // rules that keep the rows' first or make a class read; none for the first.
+    e["behind_first_se"] = std::isfinite(c.behind_first_se) ? mc::Json(c.behind_first_se) : mc::Json(nullptr);
     e["null_shrink"] = std::isfinite(c.null_shrink) ? mc::Json(c.null_shrink) : mc::Json(nullptr);
     e["as_effect"] = c.as_effect.empty() ? mc::Json(nullptr) : mc::Json(c.as_effect);
     e["simulate_site_options"] = simulate_site_options(d.site);
