@@ -2,6 +2,7 @@
 
 #include "lib/common/assert.h"
 #include "montecarlo/records/runs/model/response.h"
+#include "montecarlo/records/runs/model/row_subset.h"
 #include "montecarlo/records/runs/model/scheme_rows.h"
 
 namespace insmc::runs {
@@ -87,22 +88,7 @@ GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>
 
 namespace {
 
-Eigen::VectorXd rows_of(const Eigen::VectorXd& v, std::span<const Eigen::Index> rows) {
-  if (v.size() == 0) return v;
-  Eigen::VectorXd out(static_cast<Eigen::Index>(rows.size()));
-  for (std::size_t i = 0; i < rows.size(); ++i) out[static_cast<Eigen::Index>(i)] = v[rows[i]];
-  return out;
-}
-
-Eigen::MatrixXd rows_of(const Eigen::MatrixXd& m, std::span<const Eigen::Index> rows) {
-  if (m.rows() == 0) return m;  // none (e.g. no scheme's estimates)
-  Eigen::MatrixXd out(static_cast<Eigen::Index>(rows.size()), m.cols());
-  if (m.cols() == 0) return out;  // no columns: no data to take a row of (a null pointer)
-  for (std::size_t i = 0; i < rows.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = m.row(rows[i]);
-  return out;
-}
-
-PulseCounting rows_of(const PulseCounting& c, std::span<const Eigen::Index> rows) {
+PulseCounting counting_rows_of(const PulseCounting& c, std::span<const Eigen::Index> rows) {
   return {rows_of(c.columns, rows), rows_of(c.noise_var, rows)};
 }
 
@@ -114,7 +100,7 @@ BaseModel select_rows(const BaseModel& base, std::span<const Eigen::Index> rows)
   out.noise_var = rows_of(base.noise_var, rows);
   out.actual_noise_var = rows_of(base.actual_noise_var, rows);
   out.prior_std = rows_of(base.prior_std, rows);
-  out.counting = rows_of(base.counting, rows);
+  out.counting = counting_rows_of(base.counting, rows);
   out.scheme_columns = rows_of(base.scheme_columns, rows);
   out.estimate_map = rows_of(base.estimate_map, rows);
   return out;
@@ -126,7 +112,7 @@ Extension select_rows(const Extension& e, std::span<const Eigen::Index> rows) {
   else out.columns.resize(static_cast<Eigen::Index>(rows.size()), 0);
   out.noise_var_add = rows_of(e.noise_var_add, rows);
   out.mean = rows_of(e.mean, rows);
-  if (e.counting) out.counting = rows_of(*e.counting, rows);
+  if (e.counting) out.counting = counting_rows_of(*e.counting, rows);
   return out;
 }
 

@@ -6,6 +6,7 @@
 
 #include "lib/common/assert.h"
 #include "montecarlo/records/runs/model/quadratic_forms.h"
+#include "montecarlo/records/runs/model/row_subset.h"
 
 namespace insmc::runs {
 
@@ -23,21 +24,6 @@ Eigen::MatrixXd inverse_of_information(const Eigen::MatrixXd& info) {
   INSMC_ASSERT(eig.info() == Eigen::Success, "information matrix not decomposable ({} causes)", d);
   const Eigen::VectorXd inv = eig.eigenvalues().cwiseMax(1.0).cwiseInverse();
   return eig.eigenvectors() * inv.asDiagonal() * eig.eigenvectors().transpose();
-}
-
-/// The rows `rows` of v's first `columns` columns (all when negative).
-template <class Vector>
-Vector rows_of(const Vector& v, std::span<const Eigen::Index> rows, Eigen::Index columns = -1) {
-  if (columns < 0) columns = v.cols();
-  Vector out(static_cast<Eigen::Index>(rows.size()), columns);
-  // Column by column: the matrices are column-major, and a row at a time
-  // strides through all of them (it was a seventh of the diagnosis' time).
-  for (Eigen::Index c = 0; c < columns; ++c) {
-    const double* from = v.col(c).data();
-    double* to = out.col(c).data();
-    for (std::size_t i = 0; i < rows.size(); ++i) to[i] = from[rows[i]];
-  }
-  return out;
 }
 
 /// A Woodbury downdate of k test rows is worth it while k is below this
