@@ -24,104 +24,140 @@ std::vector<const runs::Extension*> pointers(const std::vector<runs::Extension>&
   return e;
 }
 
-/// Evaluates grid points `ks` of `c` on every run, as many at a time as
-/// there are threads: their extensions built one after another (a
-/// candidate's build fills the layout's response cache, which is not shared
-/// across threads), then the run models and the runs under them (most of the
-/// cost) side by side. A random process' extension holds rows × knots, so
-/// only the points being evaluated hold theirs. Each point's result is its
-/// own, so neither the order nor the thread count changes it. Without
-/// `keep_keyed` only the run sets and sums stay.
-void evaluate_points(CandidateSums& out, const runs::PreparedRuns& p, const Candidate& c,
-                     const std::vector<std::vector<runs::Extension>>& selected, LayoutExtensions& build,
-                     const std::vector<bool>& used, std::span<const int> ks, bool keep_keyed) {
+/// Which layouts some run of any part is analysed under.
+std::vector<bool> layouts_used_by(std::span<const runs::PreparedRuns* const> parts) {
+  std::vector<bool> used = used_layouts(*parts.front());
+  for (const runs::PreparedRuns* p : parts.subspan(1)) {
+    const std::vector<bool> more = used_layouts(*p);
+    for (std::size_t L = 0; L < used.size(); ++L) used[L] = used[L] || more[L];
+  }
+  return used;
+}
+
+/// Evaluates grid points `ks` of `c` on every run of every part (out[i] the
+/// sums of parts[i]), as many points at a time as there are threads: their
+/// extensions built one after another (a candidate's build fills the
+/// layout's response cache, which is not shared across threads), then the
+/// run models and the runs under them (most of the cost) side by side, each
+/// layout's model once for all parts. A random process' extension holds
+/// rows × knots, so only the points being evaluated hold theirs. Each
+/// point's result is its own, so neither the order, the thread count nor
+/// the other parts change it. Without `keep_keyed` only the run sets and
+/// sums stay; with it (points evaluated before) the run sets are kept.
+void evaluate_points(std::span<CandidateSums* const> out, std::span<const runs::PreparedRuns* const> parts,
+                     const Candidate& c, const std::vector<std::vector<runs::Extension>>& selected,
+                     LayoutExtensions& build, const std::vector<bool>& used, std::span<const int> ks, bool keep_keyed) {
+  const runs::PreparedRuns& first_part = *parts.front();
   const auto chunk = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
   for (std::size_t first = 0; first < ks.size(); first += chunk) {
     const std::span<const int> batch = ks.subspan(first, std::min(chunk, ks.size() - first));
     std::vector<std::vector<std::optional<runs::Extension>>> extensions(batch.size());
     for (std::size_t b = 0; b < batch.size(); ++b) extensions[b] = build.build(c, c.grid_point(batch[b]), used);
     tbb::parallel_for(std::size_t{0}, batch.size(), [&](std::size_t b) {
-      std::vector<std::vector<const runs::Extension*>> on_lattice(p.lattices.size());
-      for (std::size_t l = 0; l < p.lattices.size(); ++l)
+      std::vector<std::vector<const runs::Extension*>> on_lattice(first_part.lattices.size());
+      for (std::size_t l = 0; l < first_part.lattices.size(); ++l)
         if (extensions[b][l]) on_lattice[l] = pointers(selected[l], &*extensions[b][l]);
       const auto k = static_cast<std::size_t>(batch[b]);
-      EvaluatedRuns e = evaluate_runs(p, on_lattice, used);
-      if (!out.evaluated[k]) out.sets[k] = e.set(p.keys);
-      if (!keep_keyed) e.keyed.resize(0, 0);
-      out.at[k] = std::move(e);
+      std::vector<EvaluatedRuns> e = evaluate_runs(parts, on_lattice, used);
+      for (std::size_t i = 0; i < parts.size(); ++i) {
+        if (!keep_keyed) {
+          out[i]->sets[k] = e[i].set(parts[i]->keys);
+          e[i].keyed.resize(0, 0);
+        }
+        out[i]->at[k] = std::move(e[i]);
+      }
     });
-    for (int k : batch) out.keyed_kept[static_cast<std::size_t>(k)] = keep_keyed;  // bits: not from the threads
+    for (CandidateSums* o : out)
+      for (int k : batch) o->keyed_kept[static_cast<std::size_t>(k)] = keep_keyed;  // bits: not from the threads
   }
 }
 
-CandidateSums evaluate_on_grid(const runs::PreparedRuns& p, const Candidate& c,
-                               const std::vector<std::vector<runs::Extension>>& selected,
-                               std::shared_ptr<LayoutExtensions> build, const NullCalibration& m0,
-                               std::vector<std::vector<int>> groups) {
-  CandidateSums out;
-  out.keys = &p.keys;
-  const std::vector<bool> used = used_layouts(p);
+/// Each part searched on its grid as evaluate_candidate says, every point
+/// any part's search asks for evaluated once on all parts; a part sees as
+/// evaluated the points its own search asked for.
+std::vector<CandidateSums> evaluate_on_grid(std::span<const runs::PreparedRuns* const> parts, const Candidate& c,
+                                            const std::vector<std::vector<runs::Extension>>& selected,
+                                            std::shared_ptr<LayoutExtensions> build, const NullCalibration& m0,
+                                            std::vector<std::vector<std::vector<int>>> groups) {
+  const std::vector<bool> used = layouts_used_by(parts);
   const int K = c.grid_size();
-  out.at.resize(static_cast<std::size_t>(K));
-  out.sets.resize(static_cast<std::size_t>(K));
-  out.evaluated.assign(static_cast<std::size_t>(K), false);
-  out.keyed_kept.assign(static_cast<std::size_t>(K), false);
-  out.reevaluate = [&p, &c, &selected, build, used](CandidateSums& s, std::span<const int> ks) {
-    evaluate_points(s, p, c, selected, *build, used, ks, true);
-  };
-  const auto evaluate = [&](std::vector<int> ks) {
+  std::vector<CandidateSums> out(parts.size());
+  std::vector<CandidateSums*> all;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    CandidateSums& o = out[i];
+    const runs::PreparedRuns* p = parts[i];
+    o.keys = &p->keys;
+    o.at.resize(static_cast<std::size_t>(K));
+    o.sets.resize(static_cast<std::size_t>(K));
+    o.evaluated.assign(static_cast<std::size_t>(K), false);
+    o.keyed_kept.assign(static_cast<std::size_t>(K), false);
+    o.reevaluate = [p, &c, &selected, build, used](CandidateSums& s, std::span<const int> ks) {
+      CandidateSums* one[] = {&s};
+      const runs::PreparedRuns* own[] = {p};
+      evaluate_points(one, own, c, selected, *build, used, ks, true);
+    };
+    all.push_back(&o);
+    if (groups[i].empty()) {
+      groups[i].emplace_back(p->runs.size());
+      for (std::size_t r = 0; r < p->runs.size(); ++r) groups[i].front()[r] = static_cast<int>(r);
+    }
+  }
+  std::vector<bool> computed(static_cast<std::size_t>(K), false);
+  // Points asked for by part i (asked[i]); each computed once on every part.
+  const auto evaluate = [&](const std::vector<std::vector<int>>& asked) {
+    std::vector<int> ks;
+    for (const std::vector<int>& a : asked)
+      for (int k : a)
+        if (!computed[static_cast<std::size_t>(k)]) ks.push_back(k);
     std::sort(ks.begin(), ks.end());
     ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
-    std::erase_if(ks, [&](int k) { return out.evaluated[static_cast<std::size_t>(k)]; });
-    evaluate_points(out, p, c, selected, *build, used, ks, false);
-    for (int k : ks) out.evaluated[static_cast<std::size_t>(k)] = true;
+    evaluate_points(all, parts, c, selected, *build, used, ks, false);
+    for (int k : ks) computed[static_cast<std::size_t>(k)] = true;
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      for (int k : asked[i]) out[i].evaluated[static_cast<std::size_t>(k)] = true;
   };
   // Grid index = first-parameter index × rest + rest index (grid_point).
   const int first = static_cast<int>(c.parameters.front().grid.size()), rest = K / first;
-  if (groups.empty()) {
-    groups.emplace_back(p.runs.size());
-    for (std::size_t r = 0; r < p.runs.size(); ++r) groups.front()[r] = static_cast<int>(r);
-  }
   for (int j = 0; j < rest; ++j) {
     std::vector<int> every_other;
     for (int i = 0; i < first; i += 2) every_other.push_back(i * rest + j);
-    evaluate(every_other);
-    std::vector<int> next_to_best;
-    for (const std::vector<int>& runs : groups) {
-      int best = -1;
-      double best_gap = std::numeric_limits<double>::infinity();
-      for (int i = 0; i < first; i += 2) {
-        const double g = gap_value(out.sets[static_cast<std::size_t>(i * rest + j)], runs, m0);
-        if (g < best_gap) best_gap = g, best = i;
+    evaluate(std::vector<std::vector<int>>(parts.size(), every_other));
+    std::vector<std::vector<int>> next_to_best(parts.size());
+    for (std::size_t part = 0; part < parts.size(); ++part)
+      for (const std::vector<int>& runs : groups[part]) {
+        int best = -1;
+        double best_gap = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < first; i += 2) {
+          const double g = gap_value(out[part].sets[static_cast<std::size_t>(i * rest + j)], runs, m0);
+          if (g < best_gap) best_gap = g, best = i;
+        }
+        for (int i : {best - 1, best + 1})
+          if (i >= 0 && i < first) next_to_best[part].push_back(i * rest + j);
       }
-      for (int i : {best - 1, best + 1})
-        if (i >= 0 && i < first) next_to_best.push_back(i * rest + j);
-    }
     evaluate(next_to_best);
   }
   return out;
 }
 
-CandidateSums evaluate_amplitudes(const runs::PreparedRuns& p, const Candidate& c,
-                                  const std::vector<std::vector<runs::Extension>>& selected,
-                                  LayoutExtensions& build) {
-  CandidateSums out;
-  const std::vector<bool> used = used_layouts(p);
-  out.amplitudes = true;
-  out.keys = &p.keys;
-  out.layout_of = p.layout_of;
+/// Amplitude candidates: the fit without the candidate and the signatures
+/// per layout, made once and given to every part with its runs' values.
+std::vector<CandidateSums> evaluate_amplitudes(std::span<const runs::PreparedRuns* const> parts, const Candidate& c,
+                                               const std::vector<std::vector<runs::Extension>>& selected,
+                                               LayoutExtensions& build) {
+  const runs::PreparedRuns& p = *parts.front();
+  CandidateSums shared;
+  const std::vector<bool> used = layouts_used_by(parts);
+  shared.amplitudes = true;
   std::vector<std::vector<const runs::Extension*>> on_lattice(p.lattices.size());
   for (std::size_t l = 0; l < p.lattices.size(); ++l) on_lattice[l] = pointers(selected[l], nullptr);
-  out.fit = runs::layout_analysers(p, on_lattice, used);
-  for (std::size_t r = 0; r < p.runs.size(); ++r)
-    out.normalized.push_back(out.fit[static_cast<std::size_t>(p.layout_of[r])]->normalized(run_values(p.runs[r])));
+  shared.fit = runs::layout_analysers(p, on_lattice, used);
   const std::vector<int> amp = c.amplitude_indices();
-  out.amplitude_limit.resize(static_cast<Eigen::Index>(amp.size()));
+  shared.amplitude_limit.resize(static_cast<Eigen::Index>(amp.size()));
   for (std::size_t j = 0; j < amp.size(); ++j)
-    out.amplitude_limit[static_cast<Eigen::Index>(j)] = c.parameters[static_cast<std::size_t>(amp[j])].grid.front();
-  out.signature.resize(static_cast<std::size_t>(c.grid_size()));
+    shared.amplitude_limit[static_cast<Eigen::Index>(j)] = c.parameters[static_cast<std::size_t>(amp[j])].grid.front();
+  shared.signature.resize(static_cast<std::size_t>(c.grid_size()));
   for (int k = 0; k < c.grid_size(); ++k) {
-    std::vector<Eigen::MatrixXd>& signature = out.signature[static_cast<std::size_t>(k)];
+    std::vector<Eigen::MatrixXd>& signature = shared.signature[static_cast<std::size_t>(k)];
     signature.resize(p.layouts.size());
     for (std::size_t j = 0; j < amp.size(); ++j) {
       // The signature of amplitude j alone, at unit size (SI).
@@ -131,12 +167,23 @@ CandidateSums evaluate_amplitudes(const runs::PreparedRuns& p, const Candidate& 
       for (std::size_t L = 0; L < p.layouts.size(); ++L) {
         if (!used[L]) continue;
         const runs::Extension& on_lattice_e = *e[static_cast<std::size_t>(p.lattice_of[L])];
-        const Eigen::VectorXd z = out.fit[L]->normalized_linear(runs::select_rows(on_lattice_e, p.lattice_rows[L]).mean);
+        const Eigen::VectorXd z = shared.fit[L]->normalized_linear(runs::select_rows(on_lattice_e, p.lattice_rows[L]).mean);
         Eigen::MatrixXd& Z = signature[L];
         if (Z.size() == 0) Z.resize(z.size(), static_cast<Eigen::Index>(amp.size()));
         Z.col(static_cast<Eigen::Index>(j)) = z;
       }
     }
+  }
+  std::vector<CandidateSums> out(parts.size());
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    CandidateSums& o = out[i];
+    const runs::PreparedRuns& part = *parts[i];
+    if (i + 1 < parts.size()) o = shared;
+    else o = std::move(shared);
+    o.keys = &part.keys;
+    o.layout_of = part.layout_of;
+    for (std::size_t r = 0; r < part.runs.size(); ++r)
+      o.normalized.push_back(o.fit[static_cast<std::size_t>(part.layout_of[r])]->normalized(run_values(part.runs[r])));
   }
   return out;
 }
@@ -179,9 +226,18 @@ Eigen::VectorXd least_squares_amplitudes(const CandidateSums& s, int k, const st
 CandidateSums evaluate_candidate(const runs::PreparedRuns& p, const Candidate& c,
                                  const std::vector<std::vector<runs::Extension>>& selected,
                                  const NullCalibration& m0, const std::vector<std::vector<int>>& groups) {
-  auto build = std::make_shared<LayoutExtensions>(p);
-  return c.amplitude_indices().empty() ? evaluate_on_grid(p, c, selected, std::move(build), m0, groups)
-                                       : evaluate_amplitudes(p, c, selected, *build);
+  const runs::PreparedRuns* parts[] = {&p};
+  return std::move(evaluate_candidate(parts, c, selected, m0, {groups}).front());
+}
+
+std::vector<CandidateSums> evaluate_candidate(std::span<const runs::PreparedRuns* const> parts, const Candidate& c,
+                                              const std::vector<std::vector<runs::Extension>>& selected,
+                                              const NullCalibration& m0,
+                                              const std::vector<std::vector<std::vector<int>>>& groups) {
+  INSMC_ASSERT(!parts.empty() && groups.size() == parts.size(), "{} parts, {} group lists", parts.size(), groups.size());
+  auto build = std::make_shared<LayoutExtensions>(*parts.front());
+  return c.amplitude_indices().empty() ? evaluate_on_grid(parts, c, selected, std::move(build), m0, groups)
+                                       : evaluate_amplitudes(parts, c, selected, *build);
 }
 
 void keep_keyed_at(CandidateSums& s, std::vector<int> grid) {

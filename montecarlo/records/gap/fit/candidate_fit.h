@@ -69,6 +69,17 @@ CandidateSums evaluate_candidate(const runs::PreparedRuns& p, const Candidate& c
                                  const std::vector<std::vector<runs::Extension>>& selected,
                                  const NullCalibration& m0, const std::vector<std::vector<int>>& groups = {});
 
+/// The same on several sets of runs on p's layouts (the records and null
+/// files simulated in their layouts; parts[i] lives as long as the result's
+/// [i]): each grid point's and layout's model built once for all of them
+/// (the cost), each part searched on its own (`groups[i]` as `groups`
+/// above) and seeing only the points its own search asked for, so each
+/// result is what evaluate_candidate gives its part alone, bit for bit.
+std::vector<CandidateSums> evaluate_candidate(std::span<const runs::PreparedRuns* const> parts, const Candidate& c,
+                                              const std::vector<std::vector<runs::Extension>>& selected,
+                                              const NullCalibration& m0,
+                                              const std::vector<std::vector<std::vector<int>>>& groups);
+
 /// Makes the keyed values of grid points `grid` available to run_set_under
 /// (a no-op for amplitude candidates, whose values are affine in theirs).
 void keep_keyed_at(CandidateSums& s, std::vector<int> grid);

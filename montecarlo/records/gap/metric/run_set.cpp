@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "lib/common/assert.h"
 #include "montecarlo/records/runs/prepared_runs.h"
@@ -87,11 +88,27 @@ EvaluatedRuns evaluate_runs(const std::vector<runs::RunData>& runs, const std::v
 
 EvaluatedRuns evaluate_runs(const runs::PreparedRuns& p, const std::vector<std::vector<const runs::Extension*>>& extensions,
                             const std::vector<bool>& used) {
-  std::vector<std::vector<std::size_t>> runs_of(p.layouts.size());
-  for (std::size_t r = 0; r < p.runs.size(); ++r) runs_of[static_cast<std::size_t>(p.layout_of[r])].push_back(r);
-  EvaluatedRuns e = sized_for(p.runs.size(), p.keys);
-  runs::for_each_layout_analyser(p, extensions, used, [&](std::size_t L, runs::RunAnalyser&& a) {
-    for (std::size_t r : runs_of[L]) evaluate_run(e, r, p.runs[r], static_cast<int>(L), a, p.keys);
+  const runs::PreparedRuns* parts[] = {&p};
+  return std::move(evaluate_runs(parts, extensions, used).front());
+}
+
+std::vector<EvaluatedRuns> evaluate_runs(std::span<const runs::PreparedRuns* const> parts,
+                                         const std::vector<std::vector<const runs::Extension*>>& extensions,
+                                         const std::vector<bool>& used) {
+  const runs::PreparedRuns& first = *parts.front();
+  std::vector<std::vector<std::vector<std::size_t>>> runs_of(parts.size());
+  std::vector<EvaluatedRuns> e;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const runs::PreparedRuns& p = *parts[i];
+    INSMC_ASSERT(p.layouts.size() == first.layouts.size(), "parts of {} and {} layouts", p.layouts.size(),
+                 first.layouts.size());
+    runs_of[i].resize(p.layouts.size());
+    for (std::size_t r = 0; r < p.runs.size(); ++r) runs_of[i][static_cast<std::size_t>(p.layout_of[r])].push_back(r);
+    e.push_back(sized_for(p.runs.size(), p.keys));
+  }
+  runs::for_each_layout_analyser(first, extensions, used, [&](std::size_t L, runs::RunAnalyser&& a) {
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      for (std::size_t r : runs_of[i][L]) evaluate_run(e[i], r, parts[i]->runs[r], static_cast<int>(L), a, parts[i]->keys);
   });
   return e;
 }

@@ -60,6 +60,12 @@ EvaluatedRuns evaluate_runs(const std::vector<runs::RunData>& runs, const std::v
 /// of one per layout. `used`: the layouts some run of `p` has.
 EvaluatedRuns evaluate_runs(const runs::PreparedRuns& p, const std::vector<std::vector<const runs::Extension*>>& extensions,
                             const std::vector<bool>& used);
+/// The same for several sets of runs on the same layouts (the records and
+/// null files simulated in their layouts): each layout's model built once
+/// for all of them; each set's runs evaluated as they would be alone.
+std::vector<EvaluatedRuns> evaluate_runs(std::span<const runs::PreparedRuns* const> parts,
+                                         const std::vector<std::vector<const runs::Extension*>>& extensions,
+                                         const std::vector<bool>& used);
 
 /// A multiset of the runs pooled: the group sums added, and per coherent
 /// group (1/m) Σ over pairs (a, b) of the multiset of the inner products,

@@ -44,11 +44,12 @@ Selection rank_and_select(const Diagnosis& verdict, const runs::PreparedRuns& p,
   std::vector<std::string> taken;
   double before = verdict.heldout_gap_before;
   for (int step = 0; step < std::max(1, options.max_selected); ++step) {
-    const std::vector<Scored> ranked = rank_candidates(p, selected, taken, null.calibration, options,
-                                                       fmt::format("candidates, step {}", step + 1));
+    const RankedCandidates candidates = rank_candidates(p, selected, taken, null, options,
+                                                        fmt::format("candidates, step {}", step + 1), step == 0);
+    const std::vector<Scored>& ranked = candidates.ranked;
     if (ranked.empty()) break;
     if (step == 0) {
-      d.first = first_ranking(ranked, p, null, options, before);
+      d.first = first_ranking(candidates, p, null, options, before);
     }
     if (!verdict.model_gap_significant()) break;
     const Scored& best = ranked.front();

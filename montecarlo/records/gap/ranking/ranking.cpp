@@ -99,73 +99,92 @@ runs::PreparedRuns null_file(const runs::PreparedRuns& p, const ModelNull& null,
   return q;
 }
 
-std::vector<Scored> rank_candidates(const runs::PreparedRuns& p, const std::vector<std::vector<runs::Extension>>& selected,
-                                    const std::vector<std::string>& exclude, const NullCalibration& m0,
-                                    const DiagnosisOptions& options, std::string_view stage) {
+namespace {
+
+/// Null files of the records' size (consecutive runs of the null
+/// calibration in the records' layouts) and G on each before any candidate.
+struct NullFiles {
+  runs::PreparedRuns runs;              ///< every file's runs, one after another
+  std::vector<std::vector<int>> files;  ///< each file's runs in `runs`
+  std::vector<double> before;
+};
+
+NullFiles null_files(const runs::PreparedRuns& p, const ModelNull& null, const NullCalibration& m0, int files) {
+  const std::size_t n = p.runs.size();
+  NullFiles out{p, {}, {}};
+  out.runs.runs.assign(null.runs.begin(), null.runs.begin() + static_cast<std::ptrdiff_t>(files * n));
+  out.runs.layout_of.assign(null.layout_of.begin(), null.layout_of.begin() + static_cast<std::ptrdiff_t>(files * n));
+  for (int f = 0; f < files; ++f) {
+    out.files.push_back(run_range(static_cast<std::size_t>(f) * n, n));
+    out.before.push_back(gap_value(null.set, out.files.back(), m0));
+  }
+  return out;
+}
+
+/// The candidate's held-out shrink on each null file, split and fitted as
+/// the records are; the median over the files.
+double median_null_shrink(CandidateSums sums, const NullFiles& null, std::size_t n, const NullCalibration& m0) {
+  std::vector<std::array<Choice, 2>> halves;
+  std::vector<int> chosen;
+  for (const std::vector<int>& runs : null.files) {
+    halves.push_back(half_fits(sums, runs, m0));
+    chosen.insert(chosen.end(), {halves.back()[0].grid, halves.back()[1].grid});
+  }
+  keep_keyed_at(sums, std::move(chosen));  // every file's points at once: they share their evaluation
+  std::vector<double> shrink;
+  for (std::size_t f = 0; f < null.files.size(); ++f) {
+    const RunSet held = heldout_set(halves[f], sums, null.files[f]);
+    const double b = null.before[f];
+    shrink.push_back(b > 0 ? 1.0 - gap_value(held, all_runs(n), m0) / b : 0.0);
+  }
+  return quantile(shrink, 0.5);
+}
+
+}  // namespace
+
+RankedCandidates rank_candidates(const runs::PreparedRuns& p, const std::vector<std::vector<runs::Extension>>& selected,
+                                 const std::vector<std::string>& exclude, const ModelNull& null,
+                                 const DiagnosisOptions& options, std::string_view stage, bool with_null_shrinks) {
   const auto& registry = candidates_of(options);
+  const NullCalibration& m0 = null.calibration;
+  const std::size_t n = p.runs.size();
+  RankedCandidates out;
+  out.null_shrink.assign(registry.size(), std::numeric_limits<double>::quiet_NaN());
+  const int files = with_null_shrinks ? null_file_count(p, null, options) : 0;
+  // The null files are evaluated with the records: the same layouts, so each
+  // grid point's models (the cost) are built once for both; each keeps its
+  // own search, fits and held-out sets. Only before any effect is selected,
+  // as the null files carry none.
+  INSMC_ASSERT(files == 0 || std::all_of(selected.begin(), selected.end(), [](const auto& e) { return e.empty(); }),
+               "null shrinks are measured before any effect is selected");
+  const NullFiles reference = files > 0 ? null_files(p, null, m0, files) : NullFiles{};
   std::vector<Scored> scored(registry.size());
   std::vector<char> used(registry.size(), 0);  // written from the threads: a byte each, not vector<bool>'s bits
   std::atomic<std::uint64_t> done{0};
   tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
     if (std::find(exclude.begin(), exclude.end(), registry[c].name) != exclude.end()) return;
-    scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected, m0), p.runs.size(), m0, options.seed,
-                      p.site);
+    if (files > 0) {
+      const runs::PreparedRuns* parts[] = {&p, &reference.runs};
+      std::vector<CandidateSums> sums = evaluate_candidate(parts, registry[c], selected, m0, {{}, reference.files});
+      out.null_shrink[c] = median_null_shrink(std::move(sums[1]), reference, n, m0);
+      scored[c] = score(registry[c], std::move(sums[0]), n, m0, options.seed, p.site);
+    } else {
+      scored[c] = score(registry[c], evaluate_candidate(p, registry[c], selected, m0), n, m0, options.seed, p.site);
+    }
     scored[c].candidate = static_cast<int>(c);
     used[c] = 1;
     report_progress(options, stage, ++done, registry.size() - exclude.size(), "candidates");
   });
-  std::vector<Scored> out;
   for (std::size_t c = 0; c < registry.size(); ++c)
-    if (used[c]) out.push_back(std::move(scored[c]));
-  std::stable_sort(out.begin(), out.end(), [](const Scored& a, const Scored& b) { return a.heldout_gap < b.heldout_gap; });
+    if (used[c]) out.ranked.push_back(std::move(scored[c]));
+  std::stable_sort(out.ranked.begin(), out.ranked.end(),
+                   [](const Scored& a, const Scored& b) { return a.heldout_gap < b.heldout_gap; });
   return out;
 }
 
-std::vector<double> null_shrinks(const runs::PreparedRuns& p, const ModelNull& null, const NullCalibration& m0,
-                                 const DiagnosisOptions& options) {
-  const auto& registry = candidates_of(options);
-  const std::size_t n = p.runs.size();
-  const int files = null_file_count(p, null, options);
-  std::vector<double> out(registry.size(), std::numeric_limits<double>::quiet_NaN());
-  if (files == 0) return out;
-  // The null files together: each candidate's models (one per grid point
-  // and layout, the cost) are built once for all of them; each file keeps
-  // its own search, fits and held-out sets.
-  runs::PreparedRuns q = p;
-  q.runs.assign(null.runs.begin(), null.runs.begin() + static_cast<std::ptrdiff_t>(files * n));
-  q.layout_of.assign(null.layout_of.begin(), null.layout_of.begin() + static_cast<std::ptrdiff_t>(files * n));
-  std::vector<std::vector<int>> file_runs;
-  std::vector<double> before;
-  for (int f = 0; f < files; ++f) {
-    file_runs.push_back(run_range(static_cast<std::size_t>(f) * n, n));
-    before.push_back(gap_value(null.set, file_runs.back(), m0));
-  }
-  std::atomic<std::uint64_t> done{0};
-  const std::vector<std::vector<runs::Extension>> none(p.lattices.size());
-  tbb::parallel_for(std::size_t{0}, registry.size(), [&](std::size_t c) {
-    CandidateSums sums = evaluate_candidate(q, registry[c], none, m0, file_runs);
-    std::vector<std::array<Choice, 2>> halves;
-    std::vector<int> chosen;
-    for (const std::vector<int>& runs : file_runs) {
-      halves.push_back(half_fits(sums, runs, m0));
-      chosen.insert(chosen.end(), {halves.back()[0].grid, halves.back()[1].grid});
-    }
-    keep_keyed_at(sums, std::move(chosen));  // every file's points at once: they share their evaluation
-    std::vector<double> shrink;
-    for (int f = 0; f < files; ++f) {
-      const std::vector<int>& runs = file_runs[static_cast<std::size_t>(f)];
-      const RunSet held = heldout_set(halves[static_cast<std::size_t>(f)], sums, runs);
-      const double b = before[static_cast<std::size_t>(f)];
-      shrink.push_back(b > 0 ? 1.0 - gap_value(held, all_runs(n), m0) / b : 0.0);
-    }
-    out[c] = quantile(shrink, 0.5);
-    report_progress(options, "candidates on null files", ++done, registry.size(), "candidates");
-  });
-  return out;
-}
-
-FirstRanking first_ranking(const std::vector<Scored>& ranked, const runs::PreparedRuns& p, const ModelNull& null,
+FirstRanking first_ranking(const RankedCandidates& candidates, const runs::PreparedRuns& p, const ModelNull& null,
                            const DiagnosisOptions& options, double before) {
+  const std::vector<Scored>& ranked = candidates.ranked;
   const auto& registry = candidates_of(options);
   const int n = static_cast<int>(p.runs.size());
   FirstRanking d;
@@ -180,11 +199,8 @@ FirstRanking first_ranking(const std::vector<Scored>& ranked, const runs::Prepar
     d.ranking.back().as_effect_kept = std::move(a.kept);
   }
   d.top = d.ranking.front().effect;
-  if (options.null_shrink_files > 0) {
-    const std::vector<double> reference = null_shrinks(p, null, null.calibration, options);
-    for (std::size_t i = 0; i < ranked.size(); ++i)
-      d.ranking[i].null_shrink = reference[static_cast<std::size_t>(ranked[i].candidate)];
-  }
+  for (std::size_t i = 0; i < ranked.size(); ++i)
+    d.ranking[i].null_shrink = candidates.null_shrink[static_cast<std::size_t>(ranked[i].candidate)];
   std::vector<std::string> effects;
   for (const CandidateResult& r : d.ranking) effects.push_back(r.effect);
   LikelihoodRanking likelihood = rank_by_likelihood(ranked, effects, p, null, options);

@@ -36,23 +36,26 @@ runs::PreparedRuns null_file(const runs::PreparedRuns& p, const ModelNull& null,
 
 /// Every candidate not in `exclude`, on top of the effects `selected` (per
 /// layout), scored; ascending held-out gap (registry order among equals).
-std::vector<Scored> rank_candidates(const runs::PreparedRuns& p, const std::vector<std::vector<runs::Extension>>& selected,
-                                    const std::vector<std::string>& exclude, const NullCalibration& m0,
-                                    const DiagnosisOptions& options, std::string_view stage);
+/// With `with_null_shrinks` (before any effect is selected) also each
+/// candidate's held-out shrink on options.null_shrink_files null files of
+/// the records' size (consecutive runs of the null calibration, split and
+/// fitted as the records are), the median over the files: what fitting the
+/// candidate gains on noise alone, the reference its shrink on the records
+/// is read against. The null files are evaluated with the records (their
+/// layouts' models built once for both), each searched on its own.
+struct RankedCandidates {
+  std::vector<Scored> ranked;
+  std::vector<double> null_shrink;  ///< per registry entry; NaN where not measured
+};
+RankedCandidates rank_candidates(const runs::PreparedRuns& p, const std::vector<std::vector<runs::Extension>>& selected,
+                                 const std::vector<std::string>& exclude, const ModelNull& null,
+                                 const DiagnosisOptions& options, std::string_view stage, bool with_null_shrinks);
 
-/// Each candidate's held-out shrink on `files` null files of the records'
-/// size (consecutive runs of the null calibration, split and fitted as the
-/// records are), the median over the files: what fitting the candidate
-/// gains on noise alone, the reference its shrink on the records is read
-/// against. NaN for a candidate excluded.
-std::vector<double> null_shrinks(const runs::PreparedRuns& p, const ModelNull& null, const NullCalibration& m0,
-                                 const DiagnosisOptions& options);
-
-/// Every candidate's result of `ranked` (not empty) with its null shrink and
+/// Every candidate's result of `candidates.ranked` (not empty) with its null shrink and
 /// its likelihood side, and the top one (a class "a|b" when the runner-up
 /// is within two resampling standard errors). `before`: the held-out gap
 /// without any candidate.
-FirstRanking first_ranking(const std::vector<Scored>& ranked, const runs::PreparedRuns& p, const ModelNull& null,
+FirstRanking first_ranking(const RankedCandidates& candidates, const runs::PreparedRuns& p, const ModelNull& null,
                            const DiagnosisOptions& options, double before);
 
 }  // namespace insmc::gap

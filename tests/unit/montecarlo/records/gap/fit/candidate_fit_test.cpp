@@ -2,7 +2,9 @@
 // keeps each grid point's run set and drops the runs' keyed values; the
 // points a choice takes are evaluated again (keep_keyed_at). The values
 // evaluated again must be those the run set was made from, to the bit, on
-// runs of two layouts cut from one lattice.
+// runs of two layouts cut from one lattice. Several sets of runs evaluated
+// together (the records and the null files) must each get what they get
+// alone, to the bit.
 #include "montecarlo/records/gap/fit/candidate_fit.h"
 
 #include <gtest/gtest.h>
@@ -72,6 +74,74 @@ TEST(GapCandidateFit, TheKeyedValuesEvaluatedAgainAreThoseTheGridPointsRunSetWas
     ++checked;
   }
   EXPECT_GE(checked, 2);
+}
+
+/// The same layouts with other values: a second set of runs.
+runs::PreparedRuns redrawn(runs::PreparedRuns p, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal;
+  for (runs::RunData& r : p.runs)
+    for (double& v : r.values) v = normal(rng);
+  return p;
+}
+
+void expect_same_sums(const CandidateSums& together, const CandidateSums& alone, const std::string& what) {
+  ASSERT_EQ(together.amplitudes, alone.amplitudes) << what;
+  if (alone.amplitudes) {
+    ASSERT_EQ(together.normalized.size(), alone.normalized.size()) << what;
+    for (std::size_t r = 0; r < alone.normalized.size(); ++r)
+      EXPECT_TRUE(together.normalized[r] == alone.normalized[r]) << what << ", run " << r;
+    ASSERT_EQ(together.signature.size(), alone.signature.size()) << what;
+    for (std::size_t k = 0; k < alone.signature.size(); ++k)
+      for (std::size_t L = 0; L < alone.signature[k].size(); ++L)
+        EXPECT_TRUE(together.signature[k][L] == alone.signature[k][L]) << what << ", point " << k << ", layout " << L;
+    return;
+  }
+  EXPECT_EQ(together.evaluated, alone.evaluated) << what << ": the points its own search asked for";
+  for (std::size_t k = 0; k < alone.evaluated.size(); ++k) {
+    if (!alone.evaluated[k]) continue;
+    for (int c = 0; c < runs::kCoherentCount; ++c)
+      EXPECT_TRUE(together.sets[k].gram[static_cast<std::size_t>(c)] == alone.sets[k].gram[static_cast<std::size_t>(c)])
+          << what << ", point " << k << ", coherent group " << c;
+    for (std::size_t r = 0; r < alone.sets[k].sums.size(); ++r)
+      EXPECT_TRUE(together.sets[k].sums[r].z2 == alone.sets[k].sums[r].z2) << what << ", point " << k << ", run " << r;
+  }
+}
+
+TEST(GapCandidateFit, SetsOfRunsEvaluatedTogetherEachGetWhatTheyGetAlone) {
+  const runs::PreparedRuns p = two_layout_runs();
+  const runs::PreparedRuns q = redrawn(p, 11);
+  NullCalibration m0;
+  m0.floor_share.fill(1.0);
+  m0.systematic.fill(0.0);
+  const std::vector<std::vector<runs::Extension>> none(p.lattices.size());
+  // The second set searched as two files of five runs, as null files are.
+  const std::vector<std::vector<int>> files = {{0, 1, 2, 3, 4}, {5, 6, 7, 8, 9}};
+  const runs::PreparedRuns* parts[] = {&p, &q};
+  const Candidate* amplitude = nullptr;
+  for (const Candidate& c : candidate_registry())
+    if (!c.amplitude_indices().empty()) amplitude = &c;
+  ASSERT_NE(amplitude, nullptr);
+  bool searches_differ = false;
+  for (const Candidate* c : {&candidate("bounds"), &candidate("gyro_drift_instability"), amplitude}) {
+    std::vector<CandidateSums> together = evaluate_candidate(parts, *c, none, m0, {{}, files});
+    ASSERT_EQ(together.size(), 2U);
+    CandidateSums alone_p = evaluate_candidate(p, *c, none, m0);
+    CandidateSums alone_q = evaluate_candidate(q, *c, none, m0, files);
+    expect_same_sums(together[0], alone_p, c->name + ", first set");
+    expect_same_sums(together[1], alone_q, c->name + ", second set");
+    searches_differ = searches_differ || alone_p.evaluated != alone_q.evaluated;
+    // What a choice evaluates again is the part's own runs.
+    if (!c->amplitude_indices().empty()) continue;
+    int k = 0;
+    while (!alone_q.evaluated[static_cast<std::size_t>(k)]) ++k;
+    keep_keyed_at(together[1], {k});
+    keep_keyed_at(alone_q, {k});
+    EXPECT_TRUE(together[1].at[static_cast<std::size_t>(k)].keyed == alone_q.at[static_cast<std::size_t>(k)].keyed)
+        << c->name;
+  }
+  // Otherwise a part seeing the other's points would go unnoticed.
+  EXPECT_TRUE(searches_differ) << "the two sets' searches asked for the same points";
 }
 
 }  // namespace
