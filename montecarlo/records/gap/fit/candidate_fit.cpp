@@ -91,10 +91,11 @@ std::vector<CandidateSums> evaluate_on_grid(std::span<const runs::PreparedRuns* 
     o.sets.resize(static_cast<std::size_t>(K));
     o.evaluated.assign(static_cast<std::size_t>(K), false);
     o.keyed_kept.assign(static_cast<std::size_t>(K), false);
-    o.reevaluate = [p, &c, &selected, build, used](CandidateSums& s, std::span<const int> ks) {
+    // Its own layouts only: a null run may sit on a layout of its own.
+    o.reevaluate = [p, &c, &selected, build, own_used = used_layouts(*p)](CandidateSums& s, std::span<const int> ks) {
       CandidateSums* one[] = {&s};
       const runs::PreparedRuns* own[] = {p};
-      evaluate_points(one, own, c, selected, *build, used, ks, true);
+      evaluate_points(one, own, c, selected, *build, own_used, ks, true);
     };
     all.push_back(&o);
     if (groups[i].empty()) {

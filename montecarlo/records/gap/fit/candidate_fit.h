@@ -27,7 +27,8 @@ namespace insmc::gap {
 struct CandidateSums {
   bool amplitudes = false;
   /// Without amplitudes: every run at each grid point evaluated, and its
-  /// run set (empty where the coarse-to-fine search skipped the point).
+  /// run set (valid where `evaluated`: the points this search asked for;
+  /// evaluated with other sets of runs, others may hold values too).
   /// The runs' keyed values (what a run set of runs under different points
   /// is made from) are kept only where keyed_kept: each point's are as large
   /// as the file, and a choice needs those of one or two points
@@ -37,8 +38,10 @@ struct CandidateSums {
   std::vector<bool> evaluated;
   std::vector<bool> keyed_kept;
   /// Evaluates grid points again with their keyed values (the same bits as
-  /// the first time); valid while the prepared runs, the candidate and the
-  /// selected effects it was evaluated on live.
+  /// the first time); valid while the prepared runs (every part's, when
+  /// evaluated with others), the candidate and the selected effects it was
+  /// evaluated on live. Sums evaluated together share the candidate's
+  /// extension cache: re-evaluate them from one thread at a time.
   std::function<void(CandidateSums&, std::span<const int>)> reevaluate;
   /// With amplitudes: the fit without the candidate per layout, the runs'
   /// normalized values under it, and the normalized signature columns
@@ -69,9 +72,10 @@ CandidateSums evaluate_candidate(const runs::PreparedRuns& p, const Candidate& c
                                  const std::vector<std::vector<runs::Extension>>& selected,
                                  const NullCalibration& m0, const std::vector<std::vector<int>>& groups = {});
 
-/// The same on several sets of runs on p's layouts (the records and null
-/// files simulated in their layouts; parts[i] lives as long as the result's
-/// [i]): each grid point's and layout's model built once for all of them
+/// The same on several sets of runs on the same layouts (the records and
+/// null files simulated in their layouts; every part lives as long as any
+/// result: the extensions are built on parts[0]'s lattices, whose layouts
+/// the amplitude fits point into): each grid point's and layout's model built once for all of them
 /// (the cost), each part searched on its own (`groups[i]` as `groups`
 /// above) and seeing only the points its own search asked for, so each
 /// result is what evaluate_candidate gives its part alone, bit for bit.

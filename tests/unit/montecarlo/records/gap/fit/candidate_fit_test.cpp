@@ -104,7 +104,9 @@ void expect_same_sums(const CandidateSums& together, const CandidateSums& alone,
       EXPECT_TRUE(together.sets[k].gram[static_cast<std::size_t>(c)] == alone.sets[k].gram[static_cast<std::size_t>(c)])
           << what << ", point " << k << ", coherent group " << c;
     for (std::size_t r = 0; r < alone.sets[k].sums.size(); ++r)
-      EXPECT_TRUE(together.sets[k].sums[r].z2 == alone.sets[k].sums[r].z2) << what << ", point " << k << ", run " << r;
+      EXPECT_TRUE(together.sets[k].sums[r].z2 == alone.sets[k].sums[r].z2 &&
+                  together.sets[k].sums[r].expected == alone.sets[k].sums[r].expected)
+          << what << ", point " << k << ", run " << r;
   }
 }
 
@@ -131,14 +133,26 @@ TEST(GapCandidateFit, SetsOfRunsEvaluatedTogetherEachGetWhatTheyGetAlone) {
     expect_same_sums(together[0], alone_p, c->name + ", first set");
     expect_same_sums(together[1], alone_q, c->name + ", second set");
     searches_differ = searches_differ || alone_p.evaluated != alone_q.evaluated;
-    // What a choice evaluates again is the part's own runs.
+    // What a choice evaluates again is the part's own runs: at a point its
+    // own search asked for and the other's did not where there is one.
     if (!c->amplitude_indices().empty()) continue;
-    int k = 0;
-    while (!alone_q.evaluated[static_cast<std::size_t>(k)]) ++k;
-    keep_keyed_at(together[1], {k});
-    keep_keyed_at(alone_q, {k});
-    EXPECT_TRUE(together[1].at[static_cast<std::size_t>(k)].keyed == alone_q.at[static_cast<std::size_t>(k)].keyed)
-        << c->name;
+    CandidateSums* alone[] = {&alone_p, &alone_q};
+    for (std::size_t i = 0; i < 2; ++i) {
+      const std::vector<bool>& mine = alone[i]->evaluated;
+      const std::vector<bool>& other = alone[1 - i]->evaluated;
+      int k = -1;
+      for (std::size_t j = 0; j < mine.size(); ++j)
+        if (mine[j] && (k < 0 || !other[j])) k = static_cast<int>(j);
+      ASSERT_GE(k, 0);
+      keep_keyed_at(together[i], {k});
+      keep_keyed_at(*alone[i], {k});
+      const EvaluatedRuns& a = together[i].at[static_cast<std::size_t>(k)];
+      const EvaluatedRuns& b = alone[i]->at[static_cast<std::size_t>(k)];
+      EXPECT_TRUE(a.keyed.size() > 0 && a.keyed == b.keyed) << c->name << ", set " << i << ", point " << k;
+      for (std::size_t r = 0; r < b.sums.size(); ++r)
+        EXPECT_TRUE(a.sums[r].z2 == b.sums[r].z2 && a.sums[r].expected == b.sums[r].expected)
+            << c->name << ", set " << i << ", point " << k << ", run " << r;
+    }
   }
   // Otherwise a part seeing the other's points would go unnoticed.
   EXPECT_TRUE(searches_differ) << "the two sets' searches asked for the same points";
