@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <string>
 
 #include "tests/cli/run_program.h"
 
@@ -35,18 +36,25 @@ TEST(GapEstimates, SwitchOverStepsInsideTheScatterAreFoundByTheEstimatesAndNamed
   EXPECT_TRUE(has(read_file(std::filesystem::path(out) / "gap.md"), "estimates against the prior"));
 }
 
+/// `gap --max-effects 1` (with `gap_options`) on a 20-run file of the
+/// fuzzed layout with `effect`; a failed simulation is reported as the result.
+ProgramResult gap_on_fuzzed_file(int seed, const std::string& effect, const std::string& gap_options) {
+  TempDir dir;
+  const std::string records = (dir.path() / "records.csv").string();
+  const ProgramResult s = run_insmc("simulate --runs 20 --seed " + std::to_string(seed) +
+                                    " --layout fuzzed --test-duration 15min --nav-duration 90min --effect " + effect +
+                                    " --out " + records);
+  if (s.exit_code != 0) return s;
+  return run_insmc("gap --records " + records + " --max-effects 1" + gap_options);
+}
+
 TEST(GapEstimates, TheEstimatesDoNotOverruleRowsThatTellTheFirstRankedApart) {
   // A thermal transient ten times its default on a fuzzed layout: the runs'
   // estimates stand far beyond the prior, and on them alone widened priors
   // (bounds) fit best; the rows put thermal_transient far ahead (held-out G
   // about 0.5 against 5). The estimates are one group of the rows' G, so
   // they decide only between effects the rows do not tell apart.
-  TempDir dir;
-  const std::string records = (dir.path() / "thermal.csv").string();
-  const auto s = run_insmc("simulate --runs 20 --seed 2 --layout fuzzed --test-duration 15min --nav-duration 90min "
-                           "--effect thermal_transient:bias=1mg,drift=20meru --out " + records);
-  ASSERT_EQ(s.exit_code, 0) << s.err;
-  const auto r = run_insmc("gap --records " + records + " --max-effects 1");
+  const ProgramResult r = gap_on_fuzzed_file(2, "thermal_transient:bias=1mg,drift=20meru", "");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(has(r.out, "Top: **thermal_transient**")) << r.out.substr(0, 2000);
   EXPECT_TRUE(has(r.out, "and point to bounds, but the rows tell thermal_transient ahead of it")) << r.out;
@@ -59,12 +67,8 @@ TEST(GapEstimates, EstimatesThatFitWidenedPriorsBestKeepTheRowsClassThatHoldsThe
   // errors (a class); on the estimates alone widened priors fit best, as
   // they nest every effect acting inside them. Those estimates cannot split
   // the class: it is kept (naming `bounds` alone dropped the true effect).
-  TempDir dir;
-  const std::string records = (dir.path() / "alignment.csv").string();
-  const auto s = run_insmc("simulate --runs 20 --seed 7 --layout fuzzed --test-duration 15min --nav-duration 90min "
-                           "--effect alignment_transient:level_initial=150mrad,azimuth_initial=600mrad --out " + records);
-  ASSERT_EQ(s.exit_code, 0) << s.err;
-  const auto r = run_insmc("gap --records " + records + " --max-effects 1 --format json");
+  const ProgramResult r =
+      gap_on_fuzzed_file(7, "alignment_transient:level_initial=150mrad,azimuth_initial=600mrad", " --format json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto top = r.out.find("\"top\": \"");
   ASSERT_NE(top, std::string::npos);
