@@ -19,10 +19,10 @@
 
 namespace insmc::app {
 
-OutputFormat parse_output_format(const std::string& text) {
-  if (text == "markdown" || text == "md") return OutputFormat::kMarkdown;
-  if (text == "csv") return OutputFormat::kCsv;
-  if (text == "json") return OutputFormat::kJson;
+mc::ReportFormat parse_output_format(const std::string& text) {
+  if (text == "markdown" || text == "md") return mc::ReportFormat::kMarkdown;
+  if (text == "csv") return mc::ReportFormat::kCsv;
+  if (text == "json") return mc::ReportFormat::kJson;
   throw InputError("--format", text, "must be markdown, csv or json");
 }
 

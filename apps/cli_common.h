@@ -15,13 +15,15 @@
 #include "lib/common/input_text.h"
 #include "lib/common/model_options.h"
 #include "montecarlo/records/gap/validation/foreign_layout.h"
+#include "montecarlo/report/report.h"
 
 namespace insmc::app {
 
 namespace po = boost::program_options;
 
-enum class OutputFormat { kMarkdown, kCsv, kJson };
-OutputFormat parse_output_format(const std::string& text);
+/// "markdown" (or "md"), "csv" or "json"; what a command offers of them is
+/// its report layout's (apps/report_output.h).
+mc::ReportFormat parse_output_format(const std::string& text);
 
 /// Whether a comma list in a sweepable option (--latitude, --test-duration,
 /// --bound NAME=..., apps/sweep.h) is a sweep (`run`) or refused: every
@@ -71,9 +73,5 @@ auto read_input(const std::string& option, const std::string& path, Read&& read)
     throw InputError(option, echo_input(path, 256), e.why());
   }
 }
-
-/// Files to write into an output folder: (file name, contents); written
-/// as one set by apps/output_paths.h.
-using OutputFiles = std::vector<std::pair<std::string, std::string>>;
 
 }  // namespace insmc::app

@@ -9,7 +9,7 @@
 #include <algorithm>
 
 #include "apps/cli_common.h"
-#include "apps/output_paths.h"
+#include "apps/report_output.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
@@ -91,7 +91,8 @@ int run_compensate(const Args& args) {
   const auto vm = parse_args(args, "compensate", "--records FILE [--run ID] [--limit horizontal@84min=3nmi] [options]", opts);
   if (!vm) return 0;
   if (!vm->count("records")) throw InputError("--records", "(missing)", "give the record file of the unit's test run");
-  const OutputFormat format = parse_output_format((*vm)["format"].as<std::string>());
+  const mc::ReportLayout layout = mc::compensate_report_layout();
+  const mc::ReportFormat format = read_report_format(*vm, layout);
   mc::CompensateOptions options;
   options.prior = read_uncertainty_model(*vm);
   options.schemes = parse_schemes((*vm)["scheme"].as<std::string>());
@@ -111,9 +112,7 @@ int run_compensate(const Args& args) {
     options.site_gravity_mps2 =
         parse_quantity((*vm)["site-gravity"].as<std::string>(), Dimension::kAcceleration, "--site-gravity");
   mc::validate(options);
-  std::optional<OutputFolderOption> out = prepare_figure_folder(
-      *vm, "compensate", {"compensate.md", "estimates.csv", "compensation.csv", "envelope.csv", "compensate.json"},
-      {"compensate"});
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, layout);
 
   const std::string name = (*vm)["records"].as<std::string>();
   const RecordFile file = read_input("--records", name, [&] { return read_record_file(name); });
@@ -132,22 +131,7 @@ int run_compensate(const Args& args) {
       throw InputError(name + ": " + e.field(), e.value(), e.allowed());
     }
   }();
-  mc::CompensateFiles files = mc::render_compensate(result, options, name);
-  const std::string json = files.json.dump(2) + "\n";
-  if (out) {
-    OutputFiles written{{"compensate.md", files.markdown},
-                        {"estimates.csv", files.estimates_csv},
-                        {"compensation.csv", files.compensation_csv},
-                        {"envelope.csv", files.envelope_csv},
-                        {"compensate.json", json}};
-    for (auto& f : mc::figure_files("compensate", mc::render_panel_figure(files.plot))) written.push_back(std::move(f));
-    out->write(written);
-  }
-  switch (format) {
-    case OutputFormat::kCsv: fmt::print("{}", files.envelope_csv); break;
-    case OutputFormat::kJson: fmt::print("{}", json); break;
-    case OutputFormat::kMarkdown: fmt::print("{}", files.markdown); break;
-  }
+  write_report(mc::compensate_report(result, options, name), {format}, out, *vm);
   bool go = true;
   for (const mc::UnitResult& u : result.units) go = go && u.go;
   return go ? 0 : 1;

@@ -4,12 +4,10 @@
 #include <fmt/format.h>
 
 #include "apps/cli_common.h"
-#include "apps/output_paths.h"
-#include "apps/stdout_choice.h"
+#include "apps/report_output.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
-#include "montecarlo/study/model/study_map.h"
-#include "montecarlo/study/write/sensitivity_table.h"
+#include "montecarlo/study/write/covariance_report.h"
 
 namespace insmc::app {
 namespace {
@@ -45,37 +43,10 @@ int run_covariance(const Args& args) {
   const mc::StudyConfig config = read_study_config(*vm, false);
   const StdoutChoice shown = read_stdout_choice(*vm);
   const mc::LengthUnit unit = read_length_unit(*vm);
-  std::optional<OutputFolderOption> out = prepare_figure_folder(
-      *vm, "covariance", {"covariance.csv", "covariance_grid.csv", "budget.csv", "sensitivity.csv", "covariance.md"},
-      {"budget"});
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, mc::covariance_report_layout());
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
-  const mc::CovarianceFiles files = mc::render_covariance(config, layout, map, unit);
-  mc::Json json = mc::Json::object();
-  json["settings"] = mc::settings_json(config, mc::SettingsOf::kCovariance);
-  json["covariance"] = files.covariance_json;
-  if (out) {
-    OutputFiles written{{"covariance.csv", files.covariance_csv},
-                        {"covariance_grid.csv", files.covariance_grid_csv},
-                        {"budget.csv", files.budget_csv},
-                        {"sensitivity.csv", mc::render_sensitivity_csv(layout, map)},
-                        {"covariance.md", files.covariance_md}};
-    for (auto& f : mc::figure_files("budget", mc::render_bar_figure(files.budget_plot))) written.push_back(std::move(f));
-    out->write(written);
-  }
-  if (shown.quiet) return 0;
-  switch (shown.format) {
-    case OutputFormat::kCsv: fmt::print("{}", files.covariance_csv); break;
-    case OutputFormat::kJson: fmt::print("{}", json.dump()); break;
-    case OutputFormat::kMarkdown:
-      if (shown.full) {
-        fmt::print("{}", files.covariance_md);
-        break;
-      }
-      fmt::print("insmc covariance: fidelity {}\n\n{}\n{}", to_string(config.fidelity), files.summary_text,
-                 full_tables_line(*vm, "covariance", {"covariance.md", "covariance.csv"}));
-      break;
-  }
+  write_report(mc::covariance_report(config, layout, map, unit), shown, out, *vm);
   return 0;
 }
 

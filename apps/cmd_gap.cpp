@@ -4,7 +4,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli_common.h"
-#include "apps/output_paths.h"
+#include "apps/report_output.h"
 #include "apps/progress.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
@@ -38,8 +38,8 @@ int run_gap(const Args& args) {
   const auto vm = parse_args(args, "gap", "--records FILE [--records FILE...] [--out DIR] [--format json]", opts);
   if (!vm) return 0;
   if (!vm->count("records")) throw InputError("--records", "(missing)", "give at least one record file");
-  const OutputFormat format = parse_output_format((*vm)["format"].as<std::string>());
-  if (format == OutputFormat::kCsv) throw InputError("--format", "csv", "gap prints markdown or json");
+  const mc::ReportLayout layout = gap::diagnosis_report_layout();
+  const mc::ReportFormat format = read_report_format(*vm, layout);
   gap::DiagnosisOptions options;
   options.alpha = (*vm)["alpha"].as<double>();
   options.seed = read_count(*vm, "seed");
@@ -54,7 +54,7 @@ int run_gap(const Args& args) {
   else throw InputError("--rank", echo_input(rank), "always, significant or never");
   options.prior = read_uncertainty_model(*vm);
   gap::validate(options);
-  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "gap", gap::diagnosis_file_names(), gap::diagnosis_figure_stems());
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, layout);
 
   const std::vector<std::string> names = (*vm)["records"].as<std::vector<std::string>>();
   std::vector<RecordFile> files;
@@ -78,15 +78,7 @@ int run_gap(const Args& args) {
     d = gap::diagnose(merged, options);
   }
 
-  const std::string json = gap::diagnosis_json(d, names).dump(2) + "\n";
-  std::vector<std::pair<std::string, std::string>> report = gap::diagnosis_report(d, names);
-  if (out) {
-    OutputFiles files_out(report.begin(), report.end());
-    for (auto& f : gap::diagnosis_figures(d)) files_out.push_back(std::move(f));
-    files_out.emplace_back("gap.json", json);
-    out->write(files_out);
-  }
-  fmt::print("{}", format == OutputFormat::kJson ? json : report.front().second);
+  write_report(gap::diagnosis_report(d, names), {format}, out, *vm);
   return 0;
 }
 

@@ -5,8 +5,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli_common.h"
-#include "apps/output_paths.h"
-#include "montecarlo/report/plot/matrix_figure.h"
+#include "apps/report_output.h"
 #include "apps/progress.h"
 #include "apps/study_options.h"
 #include "lib/common/input_error.h"
@@ -49,7 +48,7 @@ int run_gap_validate(const Args& args) {
     }
   }
   gap::validate(options);
-  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "gap-validate", gap::validation_file_names(), {"confusion"});
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, gap::validation_report_layout());
   gap::ValidationResult r;
   {
     Progress progress(0, "files");
@@ -57,18 +56,7 @@ int run_gap_validate(const Args& args) {
                                    std::string_view unit) { progress.update(stage, done, total, unit); };
     r = gap::validate_diagnosis(options);
   }
-  const auto files = gap::validation_report(r, options);
-  if (out) {
-    OutputFiles written(files.begin(), files.end());
-    const gap::Confusion m = gap::confusion_of(r);
-    const mc::RenderedFigure figure = mc::render_matrix_figure(
-        {"confusion", fmt::format("gap-validate: the top candidate of each file against the effect it holds ({} files)",
-                                  r.cases.size()),
-         "reported top candidate", "true effect", m.rows, m.columns, m.counts});
-    for (auto& f : mc::figure_files("confusion", figure)) written.push_back(std::move(f));
-    out->write(written);
-  }
-  fmt::print("{}", files.front().second);
+  write_report(gap::validation_report(r, options), {}, out, *vm);
   for (const std::string& f : r.failures) fmt::print(stderr, "gap-validate: target not met: {}\n", f);
   return r.failures.empty() ? 0 : 1;
 }

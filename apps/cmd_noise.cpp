@@ -6,8 +6,8 @@
 
 #include "apps/cli_common.h"
 #include "apps/imu_csv_options.h"
-#include "apps/output_paths.h"
 #include "apps/progress.h"
+#include "apps/report_output.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 #include "lib/noise/noise_analysis.h"
@@ -17,11 +17,6 @@
 namespace insmc::app {
 
 using mc::Datasheet;
-using mc::noise_figure_stems;
-using mc::noise_figures;
-using mc::noise_file_names;
-using mc::noise_json;
-using mc::noise_report;
 using mc::parse_datasheet_entry;
 using mc::RecordingCalibration;
 
@@ -68,8 +63,8 @@ int run_noise(const Args& args) {
   if (vm->count("datasheet"))
     for (const std::string& entry : (*vm)["datasheet"].as<std::vector<std::string>>()) parse_datasheet_entry(entry, sheet);
   options.mask = mask == "on";
-  const std::string format = (*vm)["format"].as<std::string>();
-  if (format != "markdown" && format != "json") throw InputError("--format", echo_input(format), "must be markdown or json");
+  const mc::ReportLayout layout = mc::noise_report_layout();
+  const mc::ReportFormat format = read_report_format(*vm, layout);
   calibration::MultipositionOptions calibrate;
   calibrate.confidence = options.confidence;
   const std::string gravity_text = (*vm)["gravity"].as<std::string>();
@@ -80,7 +75,7 @@ int run_noise(const Args& args) {
     throw InputError("--gravity", echo_input(gravity_text),
                      "must lie in [9.7, 9.9] m/s2 (surface gravity, equator to poles, with room for altitude), "
                      "e.g. 9.80665mps2");
-  std::optional<OutputFolderOption> out = prepare_figure_folder(*vm, "noise", noise_file_names(), noise_figure_stems());
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, layout);
 
   std::vector<ImuSamples> recordings;
   for (const std::string& input : (*vm)["input"].as<std::vector<std::string>>()) {
@@ -106,15 +101,7 @@ int run_noise(const Args& args) {
     };
     analysis = noise::analyse_noise(rec, options);
   }
-  const std::string json = noise_json(rec, analysis, options.confidence, sheet, calibrations).dump(2) + "\n";
-  const auto report = noise_report(rec, analysis, options.confidence, sheet, calibrations);
-  if (out) {
-    OutputFiles files(report.begin(), report.end());
-    files.emplace_back("noise.json", json);
-    for (auto& f : noise_figures(rec, analysis, sheet)) files.push_back(std::move(f));
-    out->write(files);
-  }
-  fmt::print("{}", format == "json" ? json : report.front().second);
+  write_report(mc::noise_report(rec, analysis, options.confidence, sheet, calibrations), {format}, out, *vm);
   return 0;
 }
 

@@ -9,8 +9,7 @@
 
 #include "apps/cli_common.h"
 #include "apps/progress.h"
-#include "apps/output_paths.h"
-#include "apps/stdout_choice.h"
+#include "apps/report_output.h"
 #include "apps/study_options.h"
 #include "apps/sweep.h"
 #include "lib/common/input_error.h"
@@ -46,8 +45,7 @@ int run_rank(const Args& args) {
   mc::StudyConfig config = read_study_config(*vm, true);
   const mc::LengthUnit unit = read_length_unit(*vm);
   const StdoutChoice shown = read_stdout_choice(*vm);
-  std::optional<OutputFolderOption> out =
-      prepare_figure_folder(*vm, "rank", {"ranking.csv", "breakeven.csv", "rank.md", "rank.json"}, {"rank"});
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, mc::rank_report_layout());
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
   mc::BreakEven even;
@@ -65,32 +63,7 @@ int run_rank(const Args& args) {
                             progress.update(stage, done, total, "study maps");
                           });
   }
-  mc::RankFiles files = mc::render_rank(config, orders, even, unit);
-  mc::Json json = mc::Json::object();
-  json["settings"] = mc::settings_json(config);
-  json["rank"] = std::move(files.rank_json);
-  const std::string json_text = json.dump();
-  if (out) {
-    OutputFiles written{{"ranking.csv", files.ranking_csv},
-                        {"breakeven.csv", files.breakeven_csv},
-                        {"rank.md", files.rank_md},
-                        {"rank.json", json_text}};
-    for (auto& f : mc::figure_files("rank", mc::render_panel_figure(files.plot))) written.push_back(std::move(f));
-    out->write(written);
-  }
-  if (shown.quiet) return 0;
-  switch (shown.format) {
-    case OutputFormat::kCsv: fmt::print("{}", files.ranking_csv); break;
-    case OutputFormat::kJson: fmt::print("{}", json_text); break;
-    case OutputFormat::kMarkdown:
-      if (shown.full) {
-        fmt::print("{}", files.rank_md);
-        break;
-      }
-      fmt::print("insmc rank: fidelity {}, {} samples\n\n{}\n{}", to_string(config.fidelity), config.samples,
-                 files.summary_text, full_tables_line(*vm, "rank", {"rank.md", "ranking.csv", "breakeven.csv"}));
-      break;
-  }
+  write_report(mc::rank_report(config, orders, even, unit), shown, out, *vm);
   return 0;
 }
 

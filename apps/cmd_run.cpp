@@ -16,10 +16,9 @@
 #include "apps/cli_common.h"
 #include "apps/interrupt.h"
 #include "apps/option_sources.h"
-#include "apps/output_paths.h"
+#include "apps/report_output.h"
 #include "apps/ranks.h"
 #include "apps/run_watch.h"
-#include "apps/stdout_choice.h"
 #include "apps/study_options.h"
 #include "apps/sweep.h"
 #include "lib/common/input_error.h"
@@ -33,6 +32,7 @@
 #include "montecarlo/study/sampler/sampler.h"
 #include "montecarlo/study/run/checkpoint.h"
 #include "montecarlo/study/run/run_file.h"
+#include "montecarlo/study/run/run_report.h"
 #include "montecarlo/report/csv.h"
 #include "montecarlo/report/plot/gnuplot.h"
 
@@ -194,7 +194,7 @@ int run_sweep_points(const po::variables_map& vm, const mc::StudyConfig& config,
     points_progress.emplace(points_total, "points");
     points_progress->update("sweep", 0, points_total, "points");
   }
-  const mc::SweepFiles files =
+  mc::SweepFiles files =
       mc::run_sweep(config, sweeps, unit, [&](const mc::StudyConfig& c, const mc::StudyMap& m) {
         mc::RunPlan plan;
         plan.result_everywhere = true;
@@ -207,36 +207,11 @@ int run_sweep_points(const po::variables_map& vm, const mc::StudyConfig& config,
       });
   points_progress.reset();
   if (!ranks.root()) return 0;
-  mc::Json json = files.json;
-  json["settings"] = settings;
-  const std::string sweep_json = json.dump();
-  if (out) {
-    OutputFiles written{{"sweep.csv", files.sweep_csv}, {"sweep.md", files.summary_md}, {"sweep.json", sweep_json}};
-    for (auto& f : mc::figure_files("sweep", mc::render_panel_figure(files.plot))) written.push_back(std::move(f));
-    out->write(written);
-  }
-  if (shown.quiet) return 0;
-  if (shown.format != OutputFormat::kMarkdown) {
-    fmt::print("{}", shown.format == OutputFormat::kCsv ? files.sweep_csv : sweep_json);
-    return 0;
-  }
-  std::vector<std::string> swept;
-  std::size_t points = 1;
-  for (const SweepAxis& a : sweeps) {
-    swept.push_back(mc::quantity_name(a.column));
-    points *= a.texts.size();
-  }
-  fmt::print("insmc run: sweep of {} over {} points, {} samples each, seed {}, fidelity {}, {:.2f} s\n\n"
-             "Horizontal RMS position error [{}] ± half its {}% interval at each report time.\n\n{}",
-             fmt::join(swept, " × "), points, config.samples, config.seed, to_string(config.fidelity),
-             std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count(),
-             mc::length_suffix(unit), mc::format_number(100 * config.confidence), files.summary_md);
-  if (out)
-    fmt::print("\nFiles written in {}: sweep.csv (every axis and time), sweep.md, sweep.json, sweep.gp, sweep.svg, "
-               "sweep.png\n", vm["out"].as<std::string>());
-  else
-    fmt::print("\nEvery axis and time: --format csv, or --out DIR for sweep.csv, sweep.md, sweep.json and the "
-               "figure\n");
+  mc::SweepFacts facts;
+  facts.points = points_total;
+  for (const SweepAxis& a : sweeps) facts.swept.push_back(mc::quantity_name(a.column));
+  facts.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count();
+  write_report(mc::sweep_report(config, std::move(files), settings, facts, unit), shown, out, vm);
   return 0;
 }
 
@@ -361,11 +336,9 @@ int run_command(const Args& args, Ranks& ranks) {
   std::optional<OutputFileOption> checkpoint_file;
   if (!vm->count("replay")) {
     on_root_input_errors(ranks, [&] {
-      const std::vector<std::string> names =
-          sweeps.empty() ? std::vector<std::string>{"envelope.csv", "envelope_grid.csv", "envelope.md", "run.json"}
-                         : std::vector<std::string>{"sweep.csv", "sweep.md", "sweep.json"};
       for (InputFile& in : input_files(*vm)) inputs.push_back(std::move(in));
-      out = prepare_figure_folder(*vm, "run", names, {sweeps.empty() ? "envelope" : "sweep"}, inputs);
+      out = prepare_report_folder(*vm, sweeps.empty() ? mc::envelope_report_layout() : mc::sweep_report_layout(),
+                                  inputs);
       if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path, inputs);
     });
   }
@@ -422,28 +395,9 @@ int run_command(const Args& args, Ranks& ranks) {
   if (!ranks.root()) return 0;
   const mc::StudyAccumulator& acc = outcome.progress.state;
 
-  const mc::EnvelopeFiles files = mc::render_envelope(config, layout, map, acc, unit);
-  const std::string run_json = run_json_of(settings, elapsed_s, resumed_from_sample, config, ranks, outcome, files).dump();
-
-  if (out) {
-    OutputFiles written{{"envelope.csv", files.envelope_csv},
-                        {"envelope_grid.csv", files.envelope_grid_csv},
-                        {"envelope.md", files.envelope_md},
-                        {"run.json", run_json}};
-    for (auto& f : mc::figure_files("envelope", mc::render_panel_figure(files.envelope_plot)))
-      written.push_back(std::move(f));
-    out->write(written);
-  }
-  if (shown.quiet) return 0;
-  switch (shown.format) {
-    case OutputFormat::kCsv: fmt::print("{}", files.envelope_csv); break;
-    case OutputFormat::kJson: fmt::print("{}", run_json); break;
-    case OutputFormat::kMarkdown:
-      fmt::print("insmc run: {} samples, seed {}, fidelity {}, {:.2f} s\n\n{}", config.samples, config.seed,
-                 to_string(config.fidelity), elapsed_s, shown.full ? files.full_text : files.summary_text);
-      if (!shown.full || out) fmt::print("\n{}", full_tables_line(*vm, "run", {"envelope.md", "envelope.csv"}));
-      break;
-  }
+  mc::EnvelopeFiles files = mc::render_envelope(config, layout, map, acc, unit);
+  std::string run_json = run_json_of(settings, elapsed_s, resumed_from_sample, config, ranks, outcome, files).dump();
+  write_report(mc::envelope_report(config, std::move(files), std::move(run_json), elapsed_s), shown, out, *vm);
   return 0;
 }
 

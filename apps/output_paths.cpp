@@ -81,21 +81,11 @@ OutputFolderOption::OutputFolderOption(std::string option, std::string path, con
   as_input_errors(option_, text_, [&] { folder_.emplace(text_, command, expected_files); });
 }
 
-void OutputFolderOption::write(const OutputFiles& files) {
+void OutputFolderOption::write(const mc::OutputSetFiles& files) {
   for (const auto& f : files)  // what was checked before the work is what is written
     INSMC_ASSERT(expected_.empty() || std::find(expected_.begin(), expected_.end(), f.first) != expected_.end(),
                  "{} writes {}, which it did not name before the work", option_, f.first);
-  as_input_errors(option_, text_, [&] { folder_->write(mc::OutputSetFiles(files.begin(), files.end())); });
-}
-
-std::optional<OutputFolderOption> prepare_output_folder(const po::variables_map& vm, const std::string& command,
-                                                        const std::vector<std::string>& expected_files,
-                                                        const std::vector<InputFile>& read_before) {
-  std::optional<OutputFolderOption> out;
-  std::vector<InputFile> inputs = input_files(vm);
-  inputs.insert(inputs.end(), read_before.begin(), read_before.end());
-  if (vm.count("out")) out.emplace("--out", vm["out"].as<std::string>(), command, expected_files, inputs);
-  return out;
+  as_input_errors(option_, text_, [&] { folder_->write(files); });
 }
 
 OutputFileOption::OutputFileOption(std::string option, std::string path, const std::vector<InputFile>& inputs)
@@ -108,14 +98,15 @@ void OutputFileOption::write(std::string_view contents) const {
   as_input_errors(option_, text_, [&] { file_->write(contents); });
 }
 
-std::optional<OutputFolderOption> prepare_figure_folder(const po::variables_map& vm, const std::string& command,
-                                                        std::vector<std::string> other_files,
-                                                        const std::vector<std::string>& figure_stems,
+std::optional<OutputFolderOption> prepare_report_folder(const po::variables_map& vm, const mc::ReportLayout& layout,
                                                         const std::vector<InputFile>& read_before) {
-  for (const std::string& stem : figure_stems)
-    for (std::string& name : mc::figure_file_names(stem)) other_files.push_back(std::move(name));
-  std::optional<OutputFolderOption> out = prepare_output_folder(vm, command, other_files, read_before);
-  if (out && !mc::gnuplot_available()) throw InputError("--out", vm["out"].as<std::string>(), mc::gnuplot_missing_message());
+  std::optional<OutputFolderOption> out;
+  if (!vm.count("out")) return out;
+  std::vector<InputFile> inputs = input_files(vm);
+  inputs.insert(inputs.end(), read_before.begin(), read_before.end());
+  out.emplace("--out", vm["out"].as<std::string>(), layout.command, layout.set_names(), inputs);
+  if (!layout.figure_stems.empty() && !mc::gnuplot_available())
+    throw InputError("--out", vm["out"].as<std::string>(), mc::gnuplot_missing_message());
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include "apps/cli_common.h"
 #include "montecarlo/report/output_file.h"
 #include "montecarlo/report/output_set.h"
+#include "montecarlo/report/report.h"
 
 namespace insmc::app {
 
@@ -32,7 +33,7 @@ class OutputFolderOption {
   OutputFolderOption(std::string option, std::string path, const std::string& command,
                      const std::vector<std::string>& expected_files, const std::vector<InputFile>& inputs);
   /// Writes the whole set (a failure the user can fix: InputError).
-  void write(const OutputFiles& files);
+  void write(const mc::OutputSetFiles& files);
 
  private:
   std::string option_, text_;
@@ -40,19 +41,12 @@ class OutputFolderOption {
   std::optional<mc::OutputFolder> folder_;
 };
 
-/// The folder of option "out" when it was given, with the names the set
-/// will hold; `read_before`: inputs of an earlier parse that `vm` no longer
-/// names (the --from or --resume file a command line was rebuilt from).
-std::optional<OutputFolderOption> prepare_output_folder(const po::variables_map& vm, const std::string& command,
-                                                        const std::vector<std::string>& expected_files,
-                                                        const std::vector<InputFile>& read_before = {});
-
-/// The same for a set that also holds the figures `figure_stems` (.gp,
-/// .svg, .png each): gnuplot must be there, or the command stops now
-/// (exit 2, naming the package), before any work.
-std::optional<OutputFolderOption> prepare_figure_folder(const po::variables_map& vm, const std::string& command,
-                                                        std::vector<std::string> other_files,
-                                                        const std::vector<std::string>& figure_stems,
+/// The folder of option "out" when it was given, checked and locked for
+/// the set `layout` names; gnuplot must be there when the set has figures,
+/// or the command stops now (exit 2, naming the package), before any work.
+/// `read_before`: inputs of an earlier parse that `vm` no longer names (the
+/// --from or --resume file a command line was rebuilt from).
+std::optional<OutputFolderOption> prepare_report_folder(const po::variables_map& vm, const mc::ReportLayout& layout,
                                                         const std::vector<InputFile>& read_before = {});
 
 /// One output file (`--out FILE`, `--checkpoint FILE`), checked and locked;

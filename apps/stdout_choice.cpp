@@ -1,6 +1,5 @@
 #include "apps/stdout_choice.h"
 
-#include <filesystem>
 #include <fmt/format.h>
 
 namespace insmc::app {
@@ -17,19 +16,6 @@ StdoutChoice read_stdout_choice(const po::variables_map& vm) {
   c.quiet = vm["quiet"].as<bool>();
   c.full = vm["full"].as<bool>();
   return c;
-}
-
-std::string full_tables_line(const po::variables_map& vm, const std::string& command,
-                             const std::vector<std::string>& files) {
-  std::string names;
-  if (vm.count("out")) {
-    const std::filesystem::path out(vm["out"].as<std::string>());
-    for (const std::string& f : files) names += fmt::format("{}{}", names.empty() ? "" : ", ", (out / f).string());
-    return fmt::format("Full tables (every axis and time): {}\n", names);
-  }
-  for (const std::string& f : files) names += fmt::format("{}{}", names.empty() ? "" : " and ", f);
-  return fmt::format("Full tables (every axis and time): insmc {} --full, or --out DIR for {}, or --format csv\n",
-                     command, names);
 }
 
 }  // namespace insmc::app

@@ -12,7 +12,7 @@
 namespace insmc::app {
 
 struct StdoutChoice {
-  OutputFormat format = OutputFormat::kMarkdown;
+  mc::ReportFormat format = mc::ReportFormat::kMarkdown;
   bool quiet = false;  ///< nothing on stdout
   bool full = false;   ///< markdown: the full table instead of the summary
 };
@@ -22,10 +22,5 @@ void add_stdout_switches(po::options_description& opts, const std::string& full_
 
 /// --format, --quiet, --full.
 StdoutChoice read_stdout_choice(const po::variables_map& vm);
-
-/// The line under the summary: the full tables' paths in --out, or how to
-/// get them. `files`: the full tables' names, `command`: the subcommand.
-std::string full_tables_line(const po::variables_map& vm, const std::string& command,
-                             const std::vector<std::string>& files);
 
 }  // namespace insmc::app

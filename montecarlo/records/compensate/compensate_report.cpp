@@ -8,7 +8,9 @@
 #include "lib/units/units.h"
 #include "montecarlo/records/runs/files/site_values.h"
 #include "montecarlo/report/csv.h"
+#include "montecarlo/report/json.h"
 #include "montecarlo/report/markdown.h"
+#include "montecarlo/report/plot/panel_figure.h"
 
 namespace insmc::mc {
 namespace {
@@ -479,9 +481,13 @@ std::string scheme_to_use_line(const UnitResult& u, const CompensateOptions& opt
 
 }  // namespace
 
-CompensateFiles render_compensate(const CompensateResult& result, const CompensateOptions& options,
-                                  const std::string& source) {
-  CompensateFiles f;
+ReportLayout compensate_report_layout() {
+  return {"compensate",
+          {"compensate.md", "estimates.csv", "compensation.csv", "envelope.csv", "compensate.json"},
+          {"compensate"}};
+}
+
+Report compensate_report(const CompensateResult& result, const CompensateOptions& options, const std::string& source) {
   const UnitRecords& rec = result.records;
   Table estimates({"run", "name", "value", "sigma", "prior_sigma", "report_estimator", "unit", "resolved"});
   Table compensation({"run", "scheme", "quantity", "axis", "value", "unit"});
@@ -526,7 +532,6 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
     md += envelope_markdown(u, options);
     Json against_limits = verdict_section(u, options, md);
     md += scheme_to_use_line(u, options);
-    f.summary_text += fmt::format("run {}: {}\n", run, scheme_to_use_summary(u, options));
     Json uj = Json::object();
     uj["run"] = static_cast<long long>(u.run);
     uj["estimates"] = std::move(est_json);
@@ -557,24 +562,30 @@ CompensateFiles render_compensate(const CompensateResult& result, const Compensa
   }
   bool go = true;
   for (const UnitResult& u : result.units) go = go && u.go;
-  f.json = Json::object();
-  f.json["source"] = source;
-  f.json["identifiability"] = std::move(identifiability_json);
-  f.json["site"] = site_json(rec);
+  Json json = Json::object();
+  json["source"] = source;
+  json["identifiability"] = std::move(identifiability_json);
+  json["site"] = site_json(rec);
   Json statements = Json::array();
   for (const std::string& s : rec.statements) statements.push_back(s);
-  f.json["statements"] = std::move(statements);
-  f.json["flight_time_s"] = options.flight_time_s;
-  f.json["risk"] = options.risk;
-  f.json["units"] = std::move(units);
-  f.json["go"] = go;
-  f.markdown = md;
-  f.estimates_csv = render_csv(estimates);
-  f.compensation_csv = render_csv(compensation);
-  f.envelope_csv = render_csv(envelope);
+  json["statements"] = std::move(statements);
+  json["flight_time_s"] = options.flight_time_s;
+  json["risk"] = options.risk;
+  json["units"] = std::move(units);
+  json["go"] = go;
+  const std::string json_text = json.dump(2) + "\n", envelope_csv = render_csv(envelope);
 
-  f.plot = compensate_plot(result, options, source);
-  return f;
+  Report report(compensate_report_layout());
+  report.file("compensate.md", md)
+      .file("estimates.csv", render_csv(estimates))
+      .file("compensation.csv", render_csv(compensation))
+      .file("envelope.csv", envelope_csv)
+      .file("compensate.json", json_text)
+      .figure("compensate", [plot = compensate_plot(result, options, source)] { return render_panel_figure(plot); })
+      .shown(ReportFormat::kMarkdown, std::move(md))
+      .shown(ReportFormat::kCsv, envelope_csv)
+      .shown(ReportFormat::kJson, json_text);
+  return report;
 }
 
 }  // namespace insmc::mc

@@ -7,19 +7,15 @@
 #include <string>
 
 #include "montecarlo/records/compensate/compensate.h"
-#include "montecarlo/report/json.h"
-#include "montecarlo/report/plot/panel_figure.h"
+#include "montecarlo/report/report.h"
 
 namespace insmc::mc {
 
-struct CompensateFiles {
-  std::string markdown, estimates_csv, compensation_csv, envelope_csv;
-  std::string summary_text;  ///< stdout: one line per unit (scheme to use, margin, verdict)
-  Json json;
-  PanelFigure plot;
-};
+/// compensate's set and stdout: markdown (compensate.md), csv
+/// (envelope.csv), json (compensate.json).
+ReportLayout compensate_report_layout();
 
-CompensateFiles render_compensate(const CompensateResult& result, const CompensateOptions& options,
-                                  const std::string& source);
+/// The report of `result`; `source`: the record file as the user named it.
+Report compensate_report(const CompensateResult& result, const CompensateOptions& options, const std::string& source);
 
 }  // namespace insmc::mc

@@ -43,7 +43,7 @@ PlotLine reference(std::string name, double tau0, double tau1, double y0, double
 
 }  // namespace
 
-RenderedFigure render_noise_allan_figure(const noise::NoiseAnalysis& a, const std::array<SheetLevels, 2>& sheet) {
+PanelFigure noise_allan_figure(const noise::NoiseAnalysis& a, const std::array<SheetLevels, 2>& sheet) {
   PanelFigure f;
   f.stem = "allan";
   f.title = "Overlapping Allan deviation: data (shaded and bars: its interval) and fitted model (dashed)";
@@ -110,10 +110,10 @@ RenderedFigure render_noise_allan_figure(const noise::NoiseAnalysis& a, const st
     }
     f.panels.push_back(std::move(panel));
   }
-  return render_panel_figure(f);
+  return f;
 }
 
-RenderedFigure render_stationarity_figure(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a) {
+PanelFigure stationarity_figure(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a) {
   const double alpha = a.alpha;
   PanelFigure f;
   f.stem = "stationarity";
@@ -186,7 +186,7 @@ RenderedFigure render_stationarity_figure(const noise::SensorRecording& rec, con
     }
     f.panels.push_back(std::move(panel));
   }
-  return render_panel_figure(f);
+  return f;
 }
 
 }  // namespace insmc::mc

@@ -8,7 +8,7 @@
 
 #include "lib/noise/noise_analysis.h"
 #include "lib/noise/recording.h"
-#include "montecarlo/report/plot/gnuplot.h"
+#include "montecarlo/report/plot/panel_figure.h"
 
 namespace insmc::mc {
 
@@ -22,12 +22,12 @@ struct SheetLevels {
 /// deviation with its interval (shaded, bars) and the fitted model
 /// (dashed); Table 3.1's bound and the data sheet's lines in the legend.
 /// `sheet`: [gyro, accelerometer].
-RenderedFigure render_noise_allan_figure(const noise::NoiseAnalysis& a, const std::array<SheetLevels, 2>& sheet);
+PanelFigure noise_allan_figure(const noise::NoiseAnalysis& a, const std::array<SheetLevels, 2>& sheet);
 
 /// `stationarity`: per channel, each recording's block means minus its
 /// mean after the first part, against time; the first part shaded, its
 /// mean drawn across it (the stationarity test's statistic) inside the band
 /// a first part like the rest stays in at the test's level (docs/noise.md §5).
-RenderedFigure render_stationarity_figure(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a);
+PanelFigure stationarity_figure(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a);
 
 }  // namespace insmc::mc

@@ -14,6 +14,8 @@
 #include "lib/units/quantity.h"
 #include "lib/units/units.h"
 #include "montecarlo/records/noise/noise_figures.h"
+#include "montecarlo/report/json.h"
+#include "montecarlo/report/plot/panel_figure.h"
 
 namespace insmc::mc {
 namespace {
@@ -415,8 +417,10 @@ std::pair<double, std::string> spec_value(NoiseTerm t, SensorKind kind, double v
   return {v, ""};
 }
 
-mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
-                    const Datasheet& sheet, const std::vector<RecordingCalibration>& calibrations) {
+namespace {
+
+Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
+                const Datasheet& sheet, const std::vector<RecordingCalibration>& calibrations) {
   mc::Json j = mc::Json::object();
   j["sample_interval_s"] = rec.dt_s;
   j["samples"] = rec.size();
@@ -500,6 +504,8 @@ mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysi
   return j;
 }
 
+}  // namespace
+
 std::optional<double> Datasheet::white(noise::SensorKind kind) const {
   return kind == SensorKind::kGyro ? gyro_arw_radprts : accel_vrw_mpsprts;
 }
@@ -534,31 +540,31 @@ void parse_datasheet_entry(const std::string& text, Datasheet& sheet) {
                    "accel_vrw (0.03mpsprth) or accel_bias_instability (50ug)");
 }
 
-std::vector<std::pair<std::string, std::string>> noise_report(const noise::SensorRecording& rec,
-                                                              const noise::NoiseAnalysis& a, double confidence,
-                                                              const Datasheet& sheet,
-                                                              const std::vector<RecordingCalibration>& calibrations) {
-  return {{"noise.md", markdown(rec, a, confidence, sheet, calibrations)},
-          {"allan.csv", allan_csv(a)},
-          {"noise_terms.csv", terms_csv(a)},
-          {"calibration.csv", calibration_csv(calibrations)}};
+ReportLayout noise_report_layout() {
+  return {"noise",
+          {"noise.md", "allan.csv", "noise_terms.csv", "calibration.csv", "noise.json"},
+          {"allan", "stationarity"},
+          {ReportFormat::kMarkdown, ReportFormat::kJson}};
 }
 
-std::vector<std::string> noise_file_names() {
-  return {"noise.md", "allan.csv", "noise_terms.csv", "calibration.csv", "noise.json"};
-}
-
-std::vector<std::string> noise_figure_stems() { return {"allan", "stationarity"}; }
-
-std::vector<std::pair<std::string, std::string>> noise_figures(const noise::SensorRecording& rec,
-                                                               const noise::NoiseAnalysis& a, const Datasheet& sheet) {
-  const std::array<mc::SheetLevels, 2> levels{
-      mc::SheetLevels{sheet.white(SensorKind::kGyro), sheet.instability(SensorKind::kGyro)},
-      mc::SheetLevels{sheet.white(SensorKind::kAccelerometer), sheet.instability(SensorKind::kAccelerometer)}};
-  std::vector<std::pair<std::string, std::string>> files =
-      mc::figure_files("allan", mc::render_noise_allan_figure(a, levels));
-  for (auto& f : mc::figure_files("stationarity", mc::render_stationarity_figure(rec, a))) files.push_back(std::move(f));
-  return files;
+Report noise_report(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
+                    const Datasheet& sheet, const std::vector<RecordingCalibration>& calibrations) {
+  std::string md = markdown(rec, a, confidence, sheet, calibrations);
+  const std::string json = noise_json(rec, a, confidence, sheet, calibrations).dump(2) + "\n";
+  const std::array<SheetLevels, 2> levels{
+      SheetLevels{sheet.white(SensorKind::kGyro), sheet.instability(SensorKind::kGyro)},
+      SheetLevels{sheet.white(SensorKind::kAccelerometer), sheet.instability(SensorKind::kAccelerometer)}};
+  Report report(noise_report_layout());
+  report.file("noise.md", md)
+      .file("allan.csv", allan_csv(a))
+      .file("noise_terms.csv", terms_csv(a))
+      .file("calibration.csv", calibration_csv(calibrations))
+      .file("noise.json", json)
+      .figure("allan", [figure = noise_allan_figure(a, levels)] { return render_panel_figure(figure); })
+      .figure("stationarity", [figure = stationarity_figure(rec, a)] { return render_panel_figure(figure); })
+      .shown(ReportFormat::kMarkdown, std::move(md))
+      .shown(ReportFormat::kJson, json);
+  return report;
 }
 
 }  // namespace insmc::mc

@@ -10,7 +10,7 @@
 
 #include "montecarlo/records/noise/calibration_report.h"
 #include "lib/noise/noise_analysis.h"
-#include "montecarlo/report/json.h"
+#include "montecarlo/report/report.h"
 
 namespace insmc::mc {
 
@@ -37,21 +37,14 @@ void parse_datasheet_entry(const std::string& text, Datasheet& sheet);
 /// The value of a fitted term in the units engineers quote: (value, unit).
 std::pair<double, std::string> spec_value(noise::NoiseTerm term, noise::SensorKind kind, double value_si);
 
-/// The names of the files noise_report returns, and noise.json beside them.
-std::vector<std::string> noise_file_names();
-/// The figures' stems (gnuplot: `.gp`, `.svg`, `.png` each).
-std::vector<std::string> noise_figure_stems();
-/// The figures (montecarlo/records/noise/noise_figures.h), as (file name, contents).
-std::vector<std::pair<std::string, std::string>> noise_figures(const noise::SensorRecording& rec,
-                                                               const noise::NoiseAnalysis& a, const Datasheet& sheet);
+/// noise's set: noise.md, allan.csv, noise_terms.csv, calibration.csv (the
+/// multi-position calibrations, montecarlo/records/noise/calibration_report.h),
+/// noise.json and the figures allan and stationarity
+/// (montecarlo/records/noise/noise_figures.h); stdout noise.md (markdown) or
+/// noise.json.
+ReportLayout noise_report_layout();
 
-/// The files of the report: noise.md first, then allan.csv, noise_terms.csv,
-/// calibration.csv (the multi-position calibrations, montecarlo/records/noise/calibration_report.h).
-
-std::vector<std::pair<std::string, std::string>> noise_report(
-    const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence, const Datasheet& sheet = {},
-    const std::vector<RecordingCalibration>& calibrations = {});
-mc::Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
+Report noise_report(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
                     const Datasheet& sheet = {}, const std::vector<RecordingCalibration>& calibrations = {});
 
 }  // namespace insmc::mc

@@ -8,7 +8,10 @@
 #include "lib/units/units.h"
 #include "montecarlo/report/csv.h"
 #include "montecarlo/report/interval_format.h"
+#include "montecarlo/report/json.h"
 #include "montecarlo/report/markdown.h"
+#include "montecarlo/report/plot/panel_figure.h"
+#include "montecarlo/study/write/study_writer.h"
 
 namespace insmc::mc {
 namespace {
@@ -149,6 +152,11 @@ double curve_value(const AssumptionCurve& c, std::size_t j, std::size_t k, std::
 }  // namespace
 
 namespace {
+
+/// The two tables the sections fill as they go.
+struct RankFiles {
+  std::string ranking_csv, breakeven_csv;
+};
 
 /// ranking.csv's rows and the orders' JSON: every order with its intervals and tests.
 Json orders_section(const std::vector<SchemeOrder>& orders, const std::string& fidelity, LengthUnit unit,
@@ -350,19 +358,39 @@ PanelFigure rank_plot(const StudyConfig& config, const BreakEven& even, const st
 
 }  // namespace
 
-RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even,
-                      LengthUnit unit) {
+ReportLayout rank_report_layout() {
+  return {"rank", {"ranking.csv", "breakeven.csv", "rank.md", "rank.json"}, {"rank"}};
+}
+
+Report rank_report(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even,
+                   LengthUnit unit) {
   RankFiles f;
   const std::string fidelity(to_string(config.fidelity));
   Json orders_json = orders_section(orders, fidelity, unit, f);
   Json crossings_json = crossings_section(even, fidelity, f);
-  f.rank_md = rank_markdown(config, orders, even, fidelity, unit);
-  f.summary_text = rank_summary(config, orders, even, unit);
-  f.plot = rank_plot(config, even, fidelity, unit);
-  f.rank_json = Json::object();
-  f.rank_json["orders"] = std::move(orders_json);
-  f.rank_json["breakeven"] = std::move(crossings_json);
-  return f;
+  std::string rank_md = rank_markdown(config, orders, even, fidelity, unit);
+  Json rank_json = Json::object();
+  rank_json["orders"] = std::move(orders_json);
+  rank_json["breakeven"] = std::move(crossings_json);
+  Json json = Json::object();
+  json["settings"] = settings_json(config);
+  json["rank"] = std::move(rank_json);
+  const std::string json_text = json.dump();
+  Report report(rank_report_layout());
+  report.file("ranking.csv", f.ranking_csv)
+      .file("breakeven.csv", std::move(f.breakeven_csv))
+      .file("rank.md", rank_md)
+      .file("rank.json", json_text)
+      .figure("rank", [plot = rank_plot(config, even, fidelity, unit)] { return render_panel_figure(plot); })
+      .shown(ReportFormat::kMarkdown, std::move(rank_md))
+      .shown(ReportFormat::kCsv, std::move(f.ranking_csv))
+      .shown(ReportFormat::kJson, json_text)
+      .summary({fmt::format("insmc rank: fidelity {}, {} samples\n\n{}", fidelity, config.samples,
+                            rank_summary(config, orders, even, unit)),
+                [](const std::optional<std::string>& out) {
+                  return full_tables_line("rank", {"rank.md", "ranking.csv", "breakeven.csv"}, out);
+                }});
+  return report;
 }
 
 }  // namespace insmc::mc

@@ -8,22 +8,19 @@
 
 #include "montecarlo/study/rank/break_even.h"
 #include "montecarlo/study/rank/scheme_order.h"
-#include "montecarlo/report/json.h"
 #include "montecarlo/report/length_unit.h"
-#include "montecarlo/report/plot/panel_figure.h"
+#include "montecarlo/report/report.h"
 
 namespace insmc::mc {
 
-struct RankFiles {
-  std::string ranking_csv, breakeven_csv, rank_md;
-  std::string summary_text;  ///< stdout: the order at the last report time and the first place's limits
-  PanelFigure plot;          ///< RMS at the last report time along each assumption, a panel per system
-  Json rank_json;
-};
+/// rank's set; stdout the summary (the order at the last report time and
+/// the first place's limits), rank.md (--full), ranking.csv or rank.json.
+ReportLayout rank_report_layout();
 
 /// Lengths in `unit` (--units) in the CSV, Markdown, summary and figure;
-/// rank.json stays in SI (`rms_m`), as run.json does.
-RankFiles render_rank(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even,
-                      LengthUnit unit);
+/// rank.json (the settings and the results) stays in SI (`rms_m`), as
+/// run.json does.
+Report rank_report(const StudyConfig& config, const std::vector<SchemeOrder>& orders, const BreakEven& even,
+                   LengthUnit unit);
 
 }  // namespace insmc::mc

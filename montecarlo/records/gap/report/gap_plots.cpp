@@ -24,7 +24,7 @@ Side side_of(const GroupResult& g) {
 
 }  // namespace
 
-mc::RenderedFigure render_groups_figure(const Diagnosis& d) {
+std::string groups_figure_script(const Diagnosis& d) {
   const std::size_t n = d.where.groups.size();
   std::string data = "$band << EOD\n";
   for (std::size_t i = 0; i < n; ++i)
@@ -86,10 +86,10 @@ mc::RenderedFigure render_groups_figure(const Diagnosis& d) {
                 : "Where the records depart from the model: ln(observed/expected) per group, against the model's null files";
   mc::FigureScript script{"gap_groups", title,
                       settings + "set title " + mc::gnuplot_quote(title) + " font \",12\"\n", body, width, 640};
-  return mc::render_figure(script.stem, mc::figure_script(script));
+  return mc::figure_script(script);
 }
 
-mc::RenderedFigure render_allan_figure(const Diagnosis& d) {
+mc::PanelFigure allan_figure(const Diagnosis& d) {
   bool own_noise = false;
   for (const AllanCurve& c : d.where.allan)
     for (const AllanPoint& p : c.points) own_noise = own_noise || p.own_noise > 0;
@@ -133,7 +133,7 @@ mc::RenderedFigure render_allan_figure(const Diagnosis& d) {
   };
   f.panels.push_back(panel_of(false));
   if (own_noise) f.panels.push_back(panel_of(true));
-  return mc::render_panel_figure(f);
+  return f;
 }
 
 }  // namespace insmc::gap

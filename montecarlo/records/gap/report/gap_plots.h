@@ -5,14 +5,16 @@
 /// against the null runs' band, in µg.
 #include "montecarlo/records/gap/diagnosis.h"
 #include "montecarlo/report/plot/gnuplot.h"
+#include "montecarlo/report/plot/panel_figure.h"
 
 namespace insmc::gap {
 
 /// `gap_groups`: one slot per group, the null files' band as a grey box,
 /// the observed ln ratio as a stem coloured by where it lies (legend).
-mc::RenderedFigure render_groups_figure(const Diagnosis& d);
+/// Its gnuplot script (mc::render_figure draws it).
+std::string groups_figure_script(const Diagnosis& d);
 /// `gap_allan`: per axis, the data (solid, points) and the null runs
 /// (dashed, shaded 5–95 % band).
-mc::RenderedFigure render_allan_figure(const Diagnosis& d);
+mc::PanelFigure allan_figure(const Diagnosis& d);
 
 }  // namespace insmc::gap

@@ -252,8 +252,7 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
   return j;
 }
 
-std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosis& d,
-                                                                  const std::vector<std::string>& record_files) {
+mc::Report diagnosis_report(const Diagnosis& d, const std::vector<std::string>& record_files) {
   std::string md = "# Sim-to-real gap diagnosis\n\n**" + leading_finding(d) + "**\n\n";
   md += fmt::format("Records: {} ({} runs, scheme {}). Null files are drawn from {} truth-level runs at the "
                     "records' times, pulse weight, site and scheme{}.\n\n",
@@ -350,17 +349,22 @@ std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosi
                  fmt::format("{:.3g}", d.greedy[i].heldout_gap), fmt::format("{:.3g}", d.greedy[i].p_value)});
     md += fmt::format("From held-out G = {:.3g} (against the model):\n\n", d.heldout_gap_before) + mc::render_markdown(g);
   }
-  return {{"gap.md", md}};
+  const std::string json = diagnosis_json(d, record_files).dump(2) + "\n";
+  mc::Report report(diagnosis_report_layout());
+  report.file("gap.md", md)
+      .file("gap.json", json)
+      .figure("gap_groups", [script = groups_figure_script(d)] { return mc::render_figure("gap_groups", script); })
+      .figure("gap_allan", [figure = allan_figure(d)] { return mc::render_panel_figure(figure); })
+      .shown(mc::ReportFormat::kMarkdown, std::move(md))
+      .shown(mc::ReportFormat::kJson, json);
+  return report;
 }
 
-std::vector<std::pair<std::string, std::string>> diagnosis_figures(const Diagnosis& d) {
-  std::vector<std::pair<std::string, std::string>> files = mc::figure_files("gap_groups", render_groups_figure(d));
-  for (auto& f : figure_files("gap_allan", render_allan_figure(d))) files.push_back(std::move(f));
-  return files;
+mc::ReportLayout diagnosis_report_layout() {
+  return {"gap",
+          {"gap.md", "gap.json"},
+          {"gap_groups", "gap_allan"},
+          {mc::ReportFormat::kMarkdown, mc::ReportFormat::kJson}};
 }
-
-std::vector<std::string> diagnosis_figure_stems() { return {"gap_groups", "gap_allan"}; }
-
-std::vector<std::string> diagnosis_file_names() { return {"gap.md", "gap.json"}; }
 
 }  // namespace insmc::gap

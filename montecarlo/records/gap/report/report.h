@@ -7,6 +7,7 @@
 
 #include "montecarlo/records/gap/diagnosis.h"
 #include "montecarlo/report/json.h"
+#include "montecarlo/report/report.h"
 
 namespace insmc::gap {
 
@@ -15,18 +16,11 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
 /// The site's values with their sources and reasons, keyed by header key
 /// (gap.json's and compensate.json's "site").
 
-/// The names of the files besides the figures: gap.md (diagnosis_report)
-/// and gap.json (the output folder is checked for them before the work).
-std::vector<std::string> diagnosis_file_names();
-/// The figures' stems (gnuplot: `.gp`, `.svg`, `.png` each).
-std::vector<std::string> diagnosis_figure_stems();
+/// gap's set: gap.md (which shows the figures' PNGs), gap.json and the
+/// figures gap_groups and gap_allan; stdout gap.md (markdown) or gap.json.
+mc::ReportLayout diagnosis_report_layout();
 
-/// gnuplot's renderings of the figures (diagnosis_figure_stems), as
-/// (file name, contents).
-std::vector<std::pair<std::string, std::string>> diagnosis_figures(const Diagnosis& d);
-
-/// (file name, contents): gap.md (which shows the figures' PNGs).
-std::vector<std::pair<std::string, std::string>> diagnosis_report(const Diagnosis& d,
-                                                                  const std::vector<std::string>& record_files);
+/// The report of `d`; `record_files`: the record files as the user named them.
+mc::Report diagnosis_report(const Diagnosis& d, const std::vector<std::string>& record_files);
 
 }  // namespace insmc::gap

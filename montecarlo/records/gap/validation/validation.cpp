@@ -17,6 +17,7 @@
 #include "montecarlo/report/csv.h"
 #include "montecarlo/report/json.h"
 #include "montecarlo/report/markdown.h"
+#include "montecarlo/report/plot/matrix_figure.h"
 
 namespace insmc::gap {
 namespace {
@@ -277,8 +278,7 @@ Confusion confusion_of(const ValidationResult& r) {
   return m;
 }
 
-std::vector<std::pair<std::string, std::string>> validation_report(const ValidationResult& r,
-                                                                   const ValidationOptions& options) {
+mc::Report validation_report(const ValidationResult& r, const ValidationOptions& options) {
   // Confusion: true effect (rows) × reported top (columns).
   const Confusion m = confusion_of(r);
   std::vector<std::string> header = {"true effect"};
@@ -376,12 +376,25 @@ std::vector<std::pair<std::string, std::string>> validation_report(const Validat
   mc::Json u = mc::Json::array();
   for (const std::string& x : r.undetectable) u.push_back(x);
   j["undetectable"] = u;
-  return {{"validation.md", md}, {"confusion.md", render_markdown(confusion)}, {"confusion.csv", mc::render_csv(confusion)},
-          {"validation.json", j.dump(2) + "\n"}};
+  mc::MatrixFigure figure{"confusion",
+                          fmt::format("gap-validate: the top candidate of each file against the effect it holds ({} files)",
+                                      r.cases.size()),
+                          "reported top candidate", "true effect", m.rows, m.columns, m.counts};
+  mc::Report report(validation_report_layout());
+  report.file("validation.md", md)
+      .file("confusion.md", render_markdown(confusion))
+      .file("confusion.csv", mc::render_csv(confusion))
+      .file("validation.json", j.dump(2) + "\n")
+      .figure("confusion", [figure = std::move(figure)] { return mc::render_matrix_figure(figure); })
+      .shown(mc::ReportFormat::kMarkdown, std::move(md));
+  return report;
 }
 
-std::vector<std::string> validation_file_names() {
-  return {"validation.md", "confusion.md", "confusion.csv", "validation.json"};
+mc::ReportLayout validation_report_layout() {
+  return {"gap-validate",
+          {"validation.md", "confusion.md", "confusion.csv", "validation.json"},
+          {"confusion"},
+          {mc::ReportFormat::kMarkdown}};
 }
 
 }  // namespace insmc::gap

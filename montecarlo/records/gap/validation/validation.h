@@ -10,6 +10,7 @@
 
 #include "montecarlo/records/gap/diagnosis.h"
 #include "montecarlo/records/gap/validation/foreign_layout.h"
+#include "montecarlo/report/report.h"
 #include "lib/records/record.h"
 #include "lib/truth/effect.h"
 
@@ -103,11 +104,11 @@ struct Confusion {
 };
 Confusion confusion_of(const ValidationResult& r);
 
-/// validation.md, confusion.md, confusion.csv, validation.json.
-/// The names of the files validation_report returns.
-std::vector<std::string> validation_file_names();
+/// gap-validate's set: validation.md, confusion.md, confusion.csv,
+/// validation.json and the confusion matrix drawn (confusion); stdout
+/// validation.md.
+mc::ReportLayout validation_report_layout();
 
-std::vector<std::pair<std::string, std::string>> validation_report(const ValidationResult& r,
-                                                                   const ValidationOptions& options);
+mc::Report validation_report(const ValidationResult& r, const ValidationOptions& options);
 
 }  // namespace insmc::gap

@@ -1,0 +1,36 @@
+#include "apps/report_output.h"
+
+#include <fmt/format.h>
+
+#include "lib/common/input_error.h"
+
+namespace insmc::app {
+
+mc::ReportFormat read_report_format(const po::variables_map& vm, const mc::ReportLayout& layout) {
+  const std::string text = vm["format"].as<std::string>();
+  const mc::ReportFormat format = parse_output_format(text);
+  if (!layout.offers(format))
+    throw InputError("--format", echo_input(text), fmt::format("{} prints {}", layout.command, layout.offered_text()));
+  return format;
+}
+
+void write_report(const mc::Report& report, const StdoutChoice& shown, std::optional<OutputFolderOption>& out,
+                  const po::variables_map& vm) {
+  if (out) out->write(report.draw_set());
+  if (shown.quiet) return;
+  const auto& summary = report.summary();
+  if (shown.format != mc::ReportFormat::kMarkdown || !summary) {
+    fmt::print("{}", report.shown(shown.format));
+    return;
+  }
+  const std::string line = summary->where_the_rest_is(
+      vm.count("out") ? std::optional<std::string>(vm["out"].as<std::string>()) : std::nullopt);
+  if (!shown.full || !summary->full_replaces) {
+    fmt::print("{}\n{}", summary->text, line);
+    return;
+  }
+  fmt::print("{}", report.shown(shown.format));
+  if (out && summary->line_after_full_with_out) fmt::print("\n{}", line);
+}
+
+}  // namespace insmc::app

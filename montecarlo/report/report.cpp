@@ -1,0 +1,102 @@
+#include "montecarlo/report/report.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "lib/common/assert.h"
+
+namespace insmc::mc {
+
+std::string_view format_name(ReportFormat format) {
+  switch (format) {
+    case ReportFormat::kMarkdown: return "markdown";
+    case ReportFormat::kCsv: return "csv";
+    case ReportFormat::kJson: return "json";
+  }
+  return "";
+}
+
+std::vector<std::string> ReportLayout::set_names() const {
+  std::vector<std::string> names = files;
+  for (const std::string& stem : figure_stems)
+    for (std::string& name : figure_file_names(stem)) names.push_back(std::move(name));
+  return names;
+}
+
+bool ReportLayout::offers(ReportFormat format) const {
+  return std::find(formats.begin(), formats.end(), format) != formats.end();
+}
+
+std::string ReportLayout::offered_text() const {
+  std::string text;
+  for (std::size_t i = 0; i < formats.size(); ++i) {
+    if (i > 0) text += i + 1 == formats.size() ? " or " : ", ";
+    text += format_name(formats[i]);
+  }
+  return text;
+}
+
+std::string full_tables_line(const std::string& command, const std::vector<std::string>& files,
+                             const std::optional<std::string>& out_folder) {
+  std::string names;
+  if (out_folder) {
+    const std::filesystem::path out(*out_folder);
+    for (const std::string& f : files) names += fmt::format("{}{}", names.empty() ? "" : ", ", (out / f).string());
+    return fmt::format("Full tables (every axis and time): {}\n", names);
+  }
+  for (const std::string& f : files) names += fmt::format("{}{}", names.empty() ? "" : " and ", f);
+  return fmt::format("Full tables (every axis and time): insmc {} --full, or --out DIR for {}, or --format csv\n",
+                     command, names);
+}
+
+Report::Report(ReportLayout layout) : layout_(std::move(layout)) {}
+
+Report& Report::file(const std::string& name, std::string contents) {
+  INSMC_ASSERT(std::find(layout_.files.begin(), layout_.files.end(), name) != layout_.files.end(),
+               "{} writes {}, which its layout does not name", layout_.command, name);
+  INSMC_ASSERT(std::none_of(files_.begin(), files_.end(), [&](const auto& f) { return f.first == name; }),
+               "{} writes {} twice", layout_.command, name);
+  files_.emplace_back(name, std::move(contents));
+  return *this;
+}
+
+Report& Report::figure(const std::string& stem, std::function<RenderedFigure()> draw) {
+  INSMC_ASSERT(std::find(layout_.figure_stems.begin(), layout_.figure_stems.end(), stem) != layout_.figure_stems.end(),
+               "{} draws {}, which its layout does not name", layout_.command, stem);
+  figures_.emplace_back(stem, std::move(draw));
+  return *this;
+}
+
+OutputSetFiles Report::draw_set() const {
+  OutputSetFiles set = files_;
+  for (const auto& [stem, draw] : figures_)
+    for (auto& f : figure_files(stem, draw())) set.push_back(std::move(f));
+  return set;
+}
+
+Report& Report::shown(ReportFormat format, std::string text) {
+  INSMC_ASSERT(layout_.offers(format), "{} shows {}, which its layout does not offer", layout_.command,
+               format_name(format));
+  shown_[static_cast<std::size_t>(format)] = std::move(text);
+  return *this;
+}
+
+Report& Report::summary(ReportSummary summary) {
+  summary_ = std::move(summary);
+  return *this;
+}
+
+const std::string& Report::file_text(std::string_view name) const {
+  const auto it = std::find_if(files_.begin(), files_.end(), [&](const auto& f) { return f.first == name; });
+  INSMC_ASSERT(it != files_.end(), "{} has no file {}", layout_.command, name);
+  return it->second;
+}
+
+const std::string& Report::shown(ReportFormat format) const {
+  const auto& text = shown_[static_cast<std::size_t>(format)];
+  INSMC_ASSERT(text.has_value(), "{} shows nothing in {}", layout_.command, format_name(format));
+  return *text;
+}
+
+}  // namespace insmc::mc

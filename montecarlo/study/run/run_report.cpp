@@ -1,0 +1,66 @@
+#include "montecarlo/study/run/run_report.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "montecarlo/report/csv.h"
+#include "montecarlo/report/plot/panel_figure.h"
+
+namespace insmc::mc {
+
+ReportLayout envelope_report_layout() {
+  return {"run", {"envelope.csv", "envelope_grid.csv", "envelope.md", "run.json"}, {"envelope"}};
+}
+
+Report envelope_report(const StudyConfig& config, EnvelopeFiles files, std::string run_json, double elapsed_s) {
+  const std::string head = fmt::format("insmc run: {} samples, seed {}, fidelity {}, {:.2f} s\n\n", config.samples,
+                                       config.seed, to_string(config.fidelity), elapsed_s);
+  Report report(envelope_report_layout());
+  report.file("envelope.csv", files.envelope_csv)
+      .file("envelope_grid.csv", std::move(files.envelope_grid_csv))
+      .file("envelope.md", std::move(files.envelope_md))
+      .file("run.json", run_json)
+      .figure("envelope", [plot = std::move(files.envelope_plot)] { return render_panel_figure(plot); })
+      .shown(ReportFormat::kMarkdown, head + files.full_text)
+      .shown(ReportFormat::kCsv, std::move(files.envelope_csv))
+      .shown(ReportFormat::kJson, std::move(run_json))
+      .summary({head + files.summary_text,
+                [](const std::optional<std::string>& out) {
+                  return full_tables_line("run", {"envelope.md", "envelope.csv"}, out);
+                },
+                true, true});
+  return report;
+}
+
+ReportLayout sweep_report_layout() { return {"run", {"sweep.csv", "sweep.md", "sweep.json"}, {"sweep"}}; }
+
+Report sweep_report(const StudyConfig& config, SweepFiles files, const Json& settings, const SweepFacts& facts,
+                    LengthUnit unit) {
+  files.json["settings"] = settings;
+  const std::string json = files.json.dump();
+  const std::string summary = fmt::format(
+      "insmc run: sweep of {} over {} points, {} samples each, seed {}, fidelity {}, {:.2f} s\n\n"
+      "Horizontal RMS position error [{}] ± half its {}% interval at each report time.\n\n{}",
+      fmt::join(facts.swept, " × "), facts.points, config.samples, config.seed, to_string(config.fidelity),
+      facts.elapsed_s, length_suffix(unit), format_number(100 * config.confidence), files.summary_md);
+  Report report(sweep_report_layout());
+  report.file("sweep.csv", files.sweep_csv)
+      .file("sweep.md", files.summary_md)
+      .file("sweep.json", json)
+      .figure("sweep", [plot = std::move(files.plot)] { return render_panel_figure(plot); })
+      .shown(ReportFormat::kMarkdown, std::move(files.summary_md))
+      .shown(ReportFormat::kCsv, std::move(files.sweep_csv))
+      .shown(ReportFormat::kJson, json)
+      .summary({summary,
+                [](const std::optional<std::string>& out) {
+                  return out ? fmt::format("Files written in {}: sweep.csv (every axis and time), sweep.md, sweep.json, "
+                                           "sweep.gp, sweep.svg, sweep.png\n",
+                                           *out)
+                             : std::string("Every axis and time: --format csv, or --out DIR for sweep.csv, sweep.md, "
+                                           "sweep.json and the figure\n");
+                },
+                false});
+  return report;
+}
+
+}  // namespace insmc::mc

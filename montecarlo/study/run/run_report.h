@@ -1,0 +1,34 @@
+#pragma once
+/// The reports of `insmc run` (montecarlo/report/report.h): a study's
+/// envelope (envelope.csv, envelope_grid.csv, envelope.md, run.json and the
+/// envelope figure) and a sweep's (sweep.csv, sweep.md, sweep.json and the
+/// sweep figure). Stdout: the summary, the full envelope (--full),
+/// envelope.csv / sweep.csv (csv) or run.json / sweep.json (json).
+#include <string>
+#include <vector>
+
+#include "montecarlo/report/report.h"
+#include "montecarlo/study/run/sweep_study.h"
+#include "montecarlo/study/write/study_writer.h"
+
+namespace insmc::mc {
+
+ReportLayout envelope_report_layout();
+
+/// `run_json`: run.json as written; `elapsed_s`: the study's wall time.
+Report envelope_report(const StudyConfig& config, EnvelopeFiles files, std::string run_json, double elapsed_s);
+
+ReportLayout sweep_report_layout();
+
+/// What the sweep's summary line says of it.
+struct SweepFacts {
+  std::vector<std::string> swept;  ///< the swept quantities' names
+  std::size_t points = 0;
+  double elapsed_s = 0;
+};
+
+/// `settings`: run.json's settings, kept in sweep.json.
+Report sweep_report(const StudyConfig& config, SweepFiles files, const Json& settings, const SweepFacts& facts,
+                    LengthUnit unit);
+
+}  // namespace insmc::mc
