@@ -5,11 +5,8 @@
 // ranks share the blocks (montecarlo/study/run/study_runner.h, apps/ranks.h).
 #include <algorithm>
 #include <chrono>
-#include <fmt/ranges.h>
 #include <fmt/format.h>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 #include "apps/progress.h"
@@ -26,47 +23,14 @@
 #include "lib/units/physical_range.h"
 #include "lib/common/version.h"
 #include "lib/units/quantity.h"
-#include "lib/uncertainty/catalogue.h"
 #include "montecarlo/study/engine/engine.h"
-#include "lib/compensation/extended_vector.h"
-#include "montecarlo/study/sampler/sampler.h"
 #include "montecarlo/study/run/checkpoint.h"
 #include "montecarlo/study/run/run_file.h"
 #include "montecarlo/study/run/run_report.h"
-#include "montecarlo/report/csv.h"
-#include "montecarlo/report/plot/gnuplot.h"
+#include "montecarlo/study/run/sample_replay.h"
 
 namespace insmc::app {
 namespace {
-
-/// --replay: one sample alone: its uncertainties, what its test run and
-/// alignment produced (the extended vector z per system) and its errors.
-int replay(const mc::StudyConfig& c, const mc::StudyLayout& l, const mc::StudyMap& map, std::uint64_t index) {
-  const UncertaintyVector x = mc::Sampler(c.uncertainties).draw(c.seed, index);
-  fmt::print("# sample {} (seed {}, fidelity {})\n\nuncertainty,value_si\n", index, c.seed, to_string(c.fidelity));
-  for (const auto& spec : catalogue()) fmt::print("{},{}\n", spec.name, mc::format_number(x[spec.index]));
-  Eigen::MatrixXd xm = x, z(ez::kDim, 1);
-  for (std::size_t j = 0; j < c.systems.size(); ++j) {
-    map.pipeline(static_cast<int>(j)).extended_vectors(index, 1, xm, z);
-    fmt::print("\nsystem {}: estimates and measurements (fitted {})\nquantity,x,y,z\n", system_number(c.systems[j]),
-               map.fitted_terms(static_cast<int>(j)));
-    for (int q = 0; q < ez::kSlotCount; ++q) {
-      const ExtendedSlot& slot = ez::kSlots[q];
-      std::string row = fmt::format("{}{}", slot.name, slot.unit.empty() ? "" : fmt::format(" [{}]", slot.unit));
-      for (int i = ez::slot_start(q); i < ez::slot_start(q + 1); ++i) row += fmt::format(",{}", mc::format_number(z(i, 0)));
-      fmt::print("{}\n", row);
-    }
-  }
-  const std::vector<double> out = mc::evaluate_sample(c, map, l, index, x);
-  fmt::print("\nscheme,system,clock,axis,t_min,error_m\n");
-  for (size_t o = 0; o < l.outputs.size(); ++o) {
-    const auto& s = l.outputs[o];
-    if (!l.is_report_time[s.time_index]) continue;
-    fmt::print("{},{},{},{},{},{}\n", to_string(s.scheme), system_number(s.system), clock_of(s.scheme),
-               to_string(s.axis), mc::format_number(l.times_s[s.time_index] / 60), mc::format_number(out[o]));
-  }
-  return 0;
-}
 
 /// settings_json with the arguments that made the numbers (apps/option_sources.h,
 /// read back by montecarlo/study/run/run_file.h).
@@ -82,14 +46,6 @@ mc::Json run_settings(const mc::StudyConfig& config, const po::variables_map& vm
 /// from the checkpoint.
 const std::vector<std::string> kResumeOptions = {"out",     "format",     "quiet",           "full",
                                                  "threads", "checkpoint", "checkpoint-every"};
-
-/// Of the settings (threads aside) and of every output's predicted mean and
-/// RMS: a resumed run must compute exactly the study it continues.
-std::uint64_t study_fingerprint(const mc::StudyConfig& config, const mc::StudyMap& map) {
-  mc::StudyConfig c = config;
-  c.threads = 0;
-  return mc::fnv1a64(mc::settings_json(c).dump() + mc::StudyAccumulator(map).serialize());
-}
 
 /// Runs `f` on rank 0; a failure there becomes the same InputError on every
 /// rank (the others would otherwise wait for rank 0 in the next collective).
@@ -141,7 +97,7 @@ mc::Checkpoint load_checkpoint(const std::string& path, Ranks& ranks) {
 /// The finished blocks and their state from a checkpoint of this study.
 mc::StudyProgress restore_progress(const mc::Checkpoint& ck, const std::string& path, const mc::StudyConfig& config,
                                    const mc::StudyLayout& layout, const mc::StudyMap& map, Ranks& ranks) {
-  if (ck.fingerprint != study_fingerprint(config, map) || ck.samples != config.samples)
+  if (ck.fingerprint != mc::study_fingerprint(config, map) || ck.samples != config.samples)
     throw InputError("--resume", path,
                      "the study no longer matches the checkpoint's (was its --config file changed?)");
   const std::uint64_t blocks = mc::block_count(config.samples);
@@ -230,33 +186,6 @@ std::uint64_t replay_index(const std::string& text, std::uint64_t samples) {
 }
 
 /// run.json: the settings, the time, where a resumed run started, the
-/// ranks' shares and the envelope.
-mc::Json run_json_of(const mc::Json& settings, double elapsed_s, std::uint64_t resumed_from_sample,
-                     const mc::StudyConfig& config, const Ranks& ranks, const mc::RunOutcome& outcome,
-                     const mc::EnvelopeFiles& files) {
-  mc::Json run = mc::Json::object();
-  run["settings"] = settings;
-  run["elapsed_s"] = elapsed_s;
-  run["resumed_from_sample"] = resumed_from_sample;
-  if (ranks.distributed()) {
-    run["ranks"] = ranks.size();
-    mc::Json shares = mc::Json::array();  // per rank: its [first, end) sample ranges in this run
-    for (const mc::BlockSet& share : outcome.shares) {
-      mc::Json ranges = mc::Json::array();
-      for (const mc::BlockRange& r : share) {
-        mc::Json range = mc::Json::array();
-        range.push_back(std::min(config.samples, r.begin * mc::kBlockSize));
-        range.push_back(std::min(config.samples, r.end * mc::kBlockSize));
-        ranges.push_back(range);
-      }
-      shares.push_back(ranges);
-    }
-    run["rank_sample_ranges"] = shares;
-  }
-  run["envelope"] = files.envelope_json;
-  return run;
-}
-
 /// run's options: its outputs, --replay, checkpoints, --resume, --from,
 /// and the study's.
 po::options_description run_options() {
@@ -351,7 +280,11 @@ int run_command(const Args& args, Ranks& ranks) {
     if (!checkpoint_path.empty()) throw InputError("--checkpoint", checkpoint_path, "cannot be combined with --replay");
     if (shown.quiet) throw InputError("--replay", text, "prints one sample: cannot be combined with --quiet");
     const std::uint64_t index = replay_index(text, config.samples);
-    return ranks.root() ? replay(config, layout, map, index) : 0;
+    if (ranks.root()) {
+      std::optional<OutputFolderOption> no_set;
+      write_report(mc::replay_report(config, layout, map, index), {}, no_set, *vm);
+    }
+    return 0;
   }
 
   mc::StudyProgress start{{}, mc::StudyAccumulator(map)};
@@ -366,7 +299,7 @@ int run_command(const Args& args, Ranks& ranks) {
     ck.version = kVersion;
     ck.args = explicit_arguments(*vm, opts, not_in_run_files());  // what defines the study, as run.json keeps it
     ck.settings = mc::settings_json(settings).dump();
-    ck.fingerprint = study_fingerprint(config, map);
+    ck.fingerprint = mc::study_fingerprint(config, map);
     ck.samples = config.samples;
     plan.checkpoint_every_s = checkpoint_every_s;
     stop_on_signals = true;
@@ -395,9 +328,8 @@ int run_command(const Args& args, Ranks& ranks) {
   if (!ranks.root()) return 0;
   const mc::StudyAccumulator& acc = outcome.progress.state;
 
-  mc::EnvelopeFiles files = mc::render_envelope(config, layout, map, acc, unit);
-  std::string run_json = run_json_of(settings, elapsed_s, resumed_from_sample, config, ranks, outcome, files).dump();
-  write_report(mc::envelope_report(config, std::move(files), std::move(run_json), elapsed_s), shown, out, *vm);
+  mc::RunFacts facts{settings, elapsed_s, resumed_from_sample, ranks.distributed() ? ranks.size() : 0, outcome.shares};
+  write_report(mc::envelope_report(config, mc::render_envelope(config, layout, map, acc, unit), facts), shown, out, *vm);
   return 0;
 }
 

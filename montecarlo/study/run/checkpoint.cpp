@@ -7,6 +7,7 @@
 #include "lib/common/input_text.h"
 #include "lib/common/version.h"
 #include "montecarlo/study/aggregate/byte_io.h"
+#include "montecarlo/study/write/study_writer.h"
 
 namespace insmc::mc {
 namespace {
@@ -143,6 +144,12 @@ std::string read_checkpoint_file(const std::string& path) {
   while (read_more(std::size_t{1} << 16) > 0) {
   }
   return bytes;
+}
+
+std::uint64_t study_fingerprint(const StudyConfig& config, const StudyMap& map) {
+  StudyConfig c = config;
+  c.threads = 0;
+  return fnv1a64(settings_json(c).dump() + StudyAccumulator(map).serialize());
 }
 
 }  // namespace insmc::mc

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "montecarlo/study/engine/block_ranges.h"
+#include "montecarlo/study/model/study_map.h"
 
 namespace insmc::mc {
 
@@ -57,6 +58,10 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& path);
 /// bytes are returned, which decode_checkpoint refuses): `--resume
 /// /dev/zero` holds 17 bytes, not the cap.
 std::string read_checkpoint_file(const std::string& path);
+
+/// Of the settings (threads aside) and of every output's predicted mean and
+/// RMS: a resumed run must compute exactly the study it continues.
+std::uint64_t study_fingerprint(const StudyConfig& config, const StudyMap& map);
 
 /// 64-bit FNV-1a over the bytes (the checksum and fingerprint: detects
 /// corruption, not tampering).

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+
 #include "montecarlo/report/csv.h"
 #include "montecarlo/report/plot/panel_figure.h"
 
@@ -12,18 +14,49 @@ ReportLayout envelope_report_layout() {
   return {"run", {"envelope.csv", "envelope_grid.csv", "envelope.md", "run.json"}, {"envelope"}};
 }
 
-Report envelope_report(const StudyConfig& config, EnvelopeFiles files, std::string run_json, double elapsed_s) {
+namespace {
+
+/// run.json: the settings, the time taken, where a resumed run started, the
+/// ranks' shares and the envelope.
+Json run_json(const StudyConfig& config, const RunFacts& facts, const Json& envelope) {
+  Json run = Json::object();
+  run["settings"] = facts.settings;
+  run["elapsed_s"] = facts.elapsed_s;
+  run["resumed_from_sample"] = facts.resumed_from_sample;
+  if (facts.ranks > 0) {
+    run["ranks"] = facts.ranks;
+    Json shares = Json::array();  // per rank: its [first, end) sample ranges in this run
+    for (const BlockSet& share : facts.shares) {
+      Json ranges = Json::array();
+      for (const BlockRange& r : share) {
+        Json range = Json::array();
+        range.push_back(std::min(config.samples, r.begin * kBlockSize));
+        range.push_back(std::min(config.samples, r.end * kBlockSize));
+        ranges.push_back(range);
+      }
+      shares.push_back(ranges);
+    }
+    run["rank_sample_ranges"] = shares;
+  }
+  run["envelope"] = envelope;
+  return run;
+}
+
+}  // namespace
+
+Report envelope_report(const StudyConfig& config, EnvelopeFiles files, const RunFacts& facts) {
   const std::string head = fmt::format("insmc run: {} samples, seed {}, fidelity {}, {:.2f} s\n\n", config.samples,
-                                       config.seed, to_string(config.fidelity), elapsed_s);
+                                       config.seed, to_string(config.fidelity), facts.elapsed_s);
+  std::string run_json_text = run_json(config, facts, files.envelope_json).dump();
   Report report(envelope_report_layout());
   report.file("envelope.csv", files.envelope_csv)
       .file("envelope_grid.csv", std::move(files.envelope_grid_csv))
       .file("envelope.md", std::move(files.envelope_md))
-      .file("run.json", run_json)
+      .file("run.json", run_json_text)
       .figure("envelope", [plot = std::move(files.envelope_plot)] { return render_panel_figure(plot); })
       .shown(ReportFormat::kMarkdown, head + files.full_text)
       .shown(ReportFormat::kCsv, std::move(files.envelope_csv))
-      .shown(ReportFormat::kJson, std::move(run_json))
+      .shown(ReportFormat::kJson, std::move(run_json_text))
       .summary({head + files.summary_text,
                 [](const std::optional<std::string>& out) {
                   return full_tables_line("run", {"envelope.md", "envelope.csv"}, out);

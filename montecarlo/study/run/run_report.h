@@ -4,10 +4,12 @@
 /// envelope figure) and a sweep's (sweep.csv, sweep.md, sweep.json and the
 /// sweep figure). Stdout: the summary, the full envelope (--full),
 /// envelope.csv / sweep.csv (csv) or run.json / sweep.json (json).
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "montecarlo/report/report.h"
+#include "montecarlo/study/engine/block_ranges.h"
 #include "montecarlo/study/run/sweep_study.h"
 #include "montecarlo/study/write/study_writer.h"
 
@@ -15,8 +17,16 @@ namespace insmc::mc {
 
 ReportLayout envelope_report_layout();
 
-/// `run_json`: run.json as written; `elapsed_s`: the study's wall time.
-Report envelope_report(const StudyConfig& config, EnvelopeFiles files, std::string run_json, double elapsed_s);
+/// What run.json says of the run besides its envelope.
+struct RunFacts {
+  Json settings;                        ///< the settings with the arguments that made the numbers
+  double elapsed_s = 0;                 ///< the study's wall time
+  std::uint64_t resumed_from_sample = 0;
+  int ranks = 0;                        ///< MPI ranks, 0 when not distributed
+  std::vector<BlockSet> shares;         ///< each rank's blocks in this run (distributed)
+};
+
+Report envelope_report(const StudyConfig& config, EnvelopeFiles files, const RunFacts& facts);
 
 ReportLayout sweep_report_layout();
 
