@@ -1,27 +1,13 @@
-// insmc: dispatches `insmc <subcommand> [options]` to apps/cmd_<subcommand>.cpp
-// and turns bad input into one line on stderr and exit code 2.
-#include <boost/program_options/errors.hpp>
-#include <cstdio>
-#include <exception>
-#include <fmt/core.h>
+// insmc: the subcommands (one file each, apps/cmd_<name>.cpp) and main;
+// apps/dispatch.h finds the one named and turns its failures into one line
+// on stderr and an exit code.
 #include <malloc.h>
-#include <new>
-#include <string_view>
 
-#include "apps/option_sources.h"
-#include "apps/subcommands.h"
-#include "lib/common/input_error.h"
-#include "lib/common/version.h"
+#include "apps/dispatch.h"
 
 namespace {
 
-struct Subcommand {
-  std::string_view name;
-  int (*run)(const insmc::app::Args&);
-  std::string_view summary;
-};
-
-constexpr Subcommand kSubcommands[] = {
+constexpr insmc::app::Subcommand kSubcommands[] = {
     {"run", insmc::app::run_run, "Monte Carlo study: RMS position-error envelopes with confidence intervals"},
     {"covariance", insmc::app::run_covariance, "exact linear-covariance envelopes and the error budget"},
     {"rank", insmc::app::run_rank, "the schemes in order with its significance, and the break-even assumptions"},
@@ -38,16 +24,6 @@ constexpr Subcommand kSubcommands[] = {
     {"bench", insmc::app::run_bench, "throughput of the Monte Carlo paths against the machine's floor"},
 };
 
-void print_usage(std::FILE* out) {
-  fmt::print(out,
-             "insmc {}: Monte Carlo covariance analysis of preflight test procedures for a\n"
-             "space-stabilized inertial navigation system (Johansen, MIT RE-59, 1969).\n\n"
-             "usage: insmc <subcommand> [options]     insmc <subcommand> --help\n"
-             "       insmc --version\n\nsubcommands:\n",
-             insmc::kVersion);
-  for (const auto& s : kSubcommands) fmt::print(out, "  {:<12} {}\n", s.name, s.summary);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -57,42 +33,5 @@ int main(int argc, char** argv) {
   // wall time in page faults). Keep them in the heap instead.
   mallopt(M_MMAP_THRESHOLD, 256 << 20);
   mallopt(M_TRIM_THRESHOLD, 512 << 20);
-  if (argc < 2) {
-    print_usage(stderr);
-    return 2;
-  }
-  const std::string_view first = argv[1];
-  if (first == "--help" || first == "-h" || first == "help") {
-    print_usage(stdout);
-    return 0;
-  }
-  if (first == "--version") {
-    fmt::print("insmc {}\n", insmc::kVersion);
-    return 0;
-  }
-  for (const auto& sub : kSubcommands) {
-    if (sub.name != first) continue;
-    const insmc::app::Args args(argv + 2, argv + argc);
-    try {
-      return sub.run(args);
-    } catch (const insmc::InputError& e) {
-      fmt::print(stderr, "insmc {}: {}\n", sub.name, e.what());
-      return 2;
-    } catch (const boost::program_options::error& e) {
-      fmt::print(stderr, "insmc {}: {} (see insmc {} --help)\n", sub.name, insmc::app::parse_error_message(e),
-                 sub.name);
-      return 2;
-    } catch (const std::bad_alloc&) {
-      // Every input is capped (docs/robustness.md), but the caps allow more
-      // than a small machine holds: the user can fix this one.
-      fmt::print(stderr, "insmc {}: not enough memory for this input (fewer samples, threads, runs or rows)\n",
-                 sub.name);
-      return 2;
-    } catch (const std::exception& e) {
-      fmt::print(stderr, "insmc {}: error: {}\n", sub.name, e.what());
-      return 3;
-    }
-  }
-  fmt::print(stderr, "insmc: unknown subcommand '{}'; run insmc --help for the list\n", first);
-  return 2;
+  return insmc::app::dispatch(kSubcommands, argc, argv);
 }
