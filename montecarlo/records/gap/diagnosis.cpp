@@ -1,7 +1,6 @@
+// The orchestrator: one call per stage, in the order of README.md; each
+// stage returns its result, which diagnose() keeps in the Diagnosis.
 #include "montecarlo/records/gap/diagnosis.h"
-
-#include "montecarlo/records/gap/candidates/raw_limits.h"
-// The orchestrator: one call per stage, in the order of README.md.
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +11,7 @@
 
 #include "lib/common/input_error.h"
 #include "lib/truth/simulator.h"
+#include "montecarlo/records/gap/candidates/raw_limits.h"
 #include "montecarlo/records/gap/fit/candidate_fit.h"
 #include "montecarlo/records/gap/null/bootstrap.h"
 #include "montecarlo/records/gap/null/import_null.h"
@@ -28,7 +28,6 @@
 namespace insmc::gap {
 namespace {
 
-
 /// Every run under the base model of its layout.
 EvaluatedRuns evaluate_under_base(const runs::PreparedRuns& p, std::vector<std::optional<runs::RunAnalyser>>& analysers) {
   analysers = runs::layout_analysers(p, {});
@@ -37,36 +36,39 @@ EvaluatedRuns evaluate_under_base(const runs::PreparedRuns& p, std::vector<std::
   return evaluate_runs(p.runs, p.layout_of, pointers, p.keys);
 }
 
-}  // namespace
-
-namespace {
 /// The raw-sensor stage's verdict, when import-imu left one in the header.
-void add_raw_stage(Diagnosis& d, const RecordFile& file) {
+struct RawStage {
+  std::vector<std::string> statements;
+  double gyro_ratio = 0, accel_ratio = 0;
+};
+RawStage raw_stage_of(const RecordFile& file, const std::string& top) {
+  RawStage out;
   if (const auto raw = runs::raw_stage_from_header(file.header)) {
-    for (std::string& s : raw_stage_statements(*raw, d.first.top)) d.statements.push_back(std::move(s));
-    d.raw_gyro_ratio = raw->gyro_ratio;
-    d.raw_accel_ratio = raw->accel_ratio;
+    out.statements = raw_stage_statements(*raw, top);
+    out.gyro_ratio = raw->gyro_ratio;
+    out.accel_ratio = raw->accel_ratio;
   }
+  return out;
 }
+
 /// The per-run estimates against the prior (where/estimate_test.h): tested
 /// jointly with G₊ over the same null files, so that the file is
 /// significant at alpha by either; when they stand beyond it, the
 /// candidates acting inside the priors are scored on them.
-RunEstimates test_run_estimates(Diagnosis& d, const runs::PreparedRuns& p,
+/// `rows_p`: the rows' own p-value (G₊ against the null files).
+EstimateTest test_run_estimates(const runs::PreparedRuns& p,
                                 const std::vector<std::optional<runs::RunAnalyser>>& analysers, const ModelNull& null,
-                                const DiagnosisOptions& options) {
+                                const DiagnosisOptions& options, double rows_p) {
   std::vector<const runs::RunAnalyser*> pointers;
   for (const auto& a : analysers) pointers.push_back(&*a);
-  RunEstimates e = run_estimates(p, pointers, null);
-  d.estimate_test = test_estimates(e, null, options, d.p_value);
-  if (!d.estimate_test.measured) return e;
-  d.significant = d.estimate_test.combined_p < options.alpha;
-  if (d.estimate_test.significant) {
+  const RunEstimates e = run_estimates(p, pointers, null);
+  EstimateTest t = test_estimates(e, null, options, rows_p);
+  if (t.measured && t.significant) {
     const int L = p.layout_of.front();
-    name_from_estimates(d.estimate_test, e, p, *analysers[static_cast<std::size_t>(L)], L,
+    name_from_estimates(t, e, p, *analysers[static_cast<std::size_t>(L)], L,
                         options.candidates ? *options.candidates : candidate_registry());
   }
-  return e;
+  return t;
 }
 
 /// The estimates name the effect when the rows' scatter does not see it
@@ -78,16 +80,20 @@ RunEstimates test_run_estimates(Diagnosis& d, const runs::PreparedRuns& p,
 /// unless what the rows rank first is widened priors (`bounds`, which nests
 /// every effect acting inside them); estimates that fit `bounds` best do not
 /// narrow a class of the rows holding it and another effect.
-void name_inside_priors(Diagnosis& d) {
+struct InsidePriors {
+  std::optional<std::string> statement;
+  std::optional<std::string> top;  ///< the estimates' name, replacing the ranking's top
+};
+InsidePriors name_inside_priors(const Diagnosis& d) {
   const EstimateTest& t = d.estimate_test;
-  if (!d.ranked() || !t.significant || t.named.empty() || t.named == d.first.top) return;
+  if (!d.ranked() || !t.significant || t.named.empty() || t.named == d.first.top) return {};
   const auto scored = [&](const std::string& name) {
     return std::any_of(t.scores.begin(), t.scores.end(), [&](const EstimateScore& s) { return s.effect == name; });
   };
   const std::vector<std::string> first_members = class_members(d.first.top);
   const bool inside = !d.first.top.empty() && std::all_of(first_members.begin(), first_members.end(), scored);
   const bool rows_see_it = d.p_value < d.alpha;
-  if (rows_see_it && !inside) return;
+  if (rows_see_it && !inside) return {};
   const bool first_is_widened_priors =
       std::find(first_members.begin(), first_members.end(), "bounds") != first_members.end();
   if (rows_see_it && first_is_widened_priors && first_members.size() > 1 && t.named == "bounds") {
@@ -95,11 +101,12 @@ void name_inside_priors(Diagnosis& d) {
     // fit them best cannot split a class the rows made of them and another
     // such effect: on the estimates alone the nesting one wins whenever the
     // other's signature fits the truth imperfectly. The rows' class stands.
-    d.statements.push_back(fmt::format(
-        "the test run's estimates stand beyond the prior (least p {:.3g}, over the table {:.3g}) and fit widened "
-        "priors best, which nest every effect acting inside them: they do not split the rows' class {}, which is kept",
-        t.min_p, t.family_p, d.first.top));
-    return;
+    return {fmt::format(
+                "the test run's estimates stand beyond the prior (least p {:.3g}, over the table {:.3g}) and fit "
+                "widened priors best, which nest every effect acting inside them: they do not split the rows' class "
+                "{}, which is kept",
+                t.min_p, t.family_p, d.first.top),
+            std::nullopt};
   }
   if (rows_see_it && !first_is_widened_priors) {
     // The estimates are one group of the rows' G: between effects the rows
@@ -115,23 +122,31 @@ void name_inside_priors(Diagnosis& d) {
     const CandidateResult& first = d.first.ranking.front();
     if (closest != nullptr && closest != &first && std::isfinite(closest->behind_first_se) &&
         closest->heldout_gap_after - first.heldout_gap_after >= 2.0 * closest->behind_first_se) {
-      d.statements.push_back(fmt::format(
-          "the test run's estimates stand beyond the prior (least p {:.3g}, over the table {:.3g}) and point to {}, "
-          "but the rows tell {} ahead of it (held-out G {:.3g} against {:.3g}, more than twice the margin's resampled "
-          "standard error {:.2g}): {} is kept",
-          t.min_p, t.family_p, t.named, d.first.top, first.heldout_gap_after, closest->heldout_gap_after,
-          closest->behind_first_se, d.first.top));
-      return;
+      return {fmt::format(
+                  "the test run's estimates stand beyond the prior (least p {:.3g}, over the table {:.3g}) and point "
+                  "to {}, but the rows tell {} ahead of it (held-out G {:.3g} against {:.3g}, more than twice the "
+                  "margin's resampled standard error {:.2g}): {} is kept",
+                  t.min_p, t.family_p, t.named, d.first.top, first.heldout_gap_after, closest->heldout_gap_after,
+                  closest->behind_first_se, d.first.top),
+              std::nullopt};
     }
   }
-  d.statements.push_back(fmt::format(
-      "the test run's estimates stand beyond the prior (least p {:.3g}, over the table {:.3g}) and name {}{} where "
-      "the ranking by held-out G named {}: {}",
-      t.min_p, t.family_p, t.named, t.told_apart_by.empty() ? "" : " (" + t.told_apart_by + ")", d.first.top,
-      rows_see_it ? "the estimates tell apart effects that act inside the priors"
-                  : "the rows' scatter alone is within the null"));
-  d.estimate_test.replaced_top = d.first.top.empty() ? "(none)" : d.first.top;
-  d.first.top = t.named;
+  return {fmt::format("the test run's estimates stand beyond the prior (least p {:.3g}, over the table {:.3g}) and "
+                      "name {}{} where the ranking by held-out G named {}: {}",
+                      t.min_p, t.family_p, t.named, t.told_apart_by.empty() ? "" : " (" + t.told_apart_by + ")",
+                      d.first.top,
+                      rows_see_it ? "the estimates tell apart effects that act inside the priors"
+                                  : "the rows' scatter alone is within the null"),
+          t.named};
+}
+
+/// The raw stage's statements and ratios added to `d` (the last stage).
+Diagnosis with_raw_stage(Diagnosis d, const RecordFile& file) {
+  RawStage raw = raw_stage_of(file, d.first.top);
+  for (std::string& s : raw.statements) d.statements.push_back(std::move(s));
+  d.raw_gyro_ratio = raw.gyro_ratio;
+  d.raw_accel_ratio = raw.accel_ratio;
+  return d;
 }
 
 }  // namespace
@@ -223,7 +238,10 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
     d.null_kind = "the model and the sensor's noise through the import";
     d.statements.push_back(import->description);
   }
-  if (!d.against_model.reported) test_run_estimates(d, p, analysers, null, options);
+  if (!d.against_model.reported) {
+    d.estimate_test = test_run_estimates(p, analysers, null, options, d.p_value);
+    if (d.estimate_test.measured) d.significant = d.estimate_test.combined_p < options.alpha;
+  }
   if (n < 20)
     d.statements.push_back(fmt::format("{} runs: the gap's power is reduced (a null file of {} runs scatters "
                                        "up to G = {:.3g} at alpha = {})", n, n, d.null_gap_critical, options.alpha));
@@ -237,8 +255,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   if (n < options.minimum_runs) {
     d.statements.push_back(fmt::format("{} runs: too few to fit candidate effects on one half and score them on "
                                        "the other (at least {} needed); no ranking", n, options.minimum_runs));
-    add_raw_stage(d, file);
-    return d;
+    return with_raw_stage(std::move(d), file);
   }
   if (!d.model_gap_significant()) {
     d.statements.push_back(fmt::format("no significant gap against the model (p = {:.3g} >= alpha = {}): no effect is selected",
@@ -249,15 +266,20 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   }
   if (options.rank == RankWhen::kNever || (options.rank == RankWhen::kIfSignificant && !d.model_gap_significant())) {
     d.statements.push_back("candidate effects not fitted (--rank)");
-    add_raw_stage(d, file);
-    return d;
+    return with_raw_stage(std::move(d), file);
   }
   Selection selection = rank_and_select(d, p, null, options);
   d.first = std::move(selection.first);
   d.greedy = std::move(selection.greedy);
   d.selected = std::move(selection.selected);
   for (std::string& s : selection.statements) d.statements.push_back(std::move(s));
-  name_inside_priors(d);
+  if (InsidePriors named = name_inside_priors(d); named.statement) {
+    d.statements.push_back(std::move(*named.statement));
+    if (named.top) {
+      d.estimate_test.replaced_top = d.first.top.empty() ? "(none)" : d.first.top;
+      d.first.top = std::move(*named.top);
+    }
+  }
   if (d.model_gap_significant() && d.ranked())
     if (std::optional<CandidateResult> checked = check_finding(d.first.ranking[0], p, records.file, null, options)) {
       // The greedy search's first step is the same finding when it names the same effect.
@@ -265,8 +287,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
       d.first.ranking[0] = std::move(*checked);
     }
   for (std::string& s : ranking_limits(d)) d.statements.push_back(std::move(s));
-  add_raw_stage(d, file);
-  return d;
+  return with_raw_stage(std::move(d), file);
 }
 
 }  // namespace insmc::gap
