@@ -9,13 +9,13 @@
 #include <cmath>
 #include <map>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "lib/noise/noise_analysis.h"
 #include "lib/noise/recording.h"
 #include "lib/units/units.h"
+#include "tests/cli/csv_rows.h"
 
 namespace insmc::mc {
 namespace {
@@ -45,17 +45,7 @@ noise::SensorRecording white_recording() {
   return noise::make_recording(one);
 }
 
-std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);) {
-    std::vector<std::string> cells;
-    std::istringstream fields(line);
-    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
+using testing::csv_rows;
 
 class NoiseReport : public ::testing::Test {
  protected:
