@@ -91,8 +91,8 @@ int run_compensate(const Args& args) {
   const auto vm = parse_args(args, "compensate", "--records FILE [--run ID] [--limit horizontal@84min=3nmi] [options]", opts);
   if (!vm) return 0;
   if (!vm->count("records")) throw InputError("--records", "(missing)", "give the record file of the unit's test run");
-  const mc::ReportLayout layout = mc::compensate_report_layout();
-  const mc::ReportFormat format = read_report_format(*vm, layout);
+  const mc::ReportOutline outline = mc::compensate_report_outline();
+  const mc::ReportFormat format = read_report_format(*vm, outline);
   mc::CompensateOptions options;
   options.prior = read_uncertainty_model(*vm);
   options.schemes = parse_schemes((*vm)["scheme"].as<std::string>());
@@ -112,7 +112,7 @@ int run_compensate(const Args& args) {
     options.site_gravity_mps2 =
         parse_quantity((*vm)["site-gravity"].as<std::string>(), Dimension::kAcceleration, "--site-gravity");
   mc::validate(options);
-  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, layout);
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, outline);
 
   const std::string name = (*vm)["records"].as<std::string>();
   const RecordFile file = read_input("--records", name, [&] { return read_record_file(name); });

@@ -43,7 +43,7 @@ int run_covariance(const Args& args) {
   const mc::StudyConfig config = read_study_config(*vm, false);
   const StdoutChoice shown = read_stdout_choice(*vm);
   const mc::LengthUnit unit = read_length_unit(*vm);
-  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, mc::covariance_report_layout());
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, mc::covariance_report_outline());
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
   write_report(mc::covariance_report(config, layout, map, unit), shown, out, *vm);

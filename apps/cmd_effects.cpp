@@ -11,7 +11,7 @@ int run_effects(const Args& args) {
   opts.add_options()("format", po::value<std::string>()->default_value("markdown"), "markdown or csv");
   const auto vm = parse_args(args, "effects", "[--format markdown|csv]", opts);
   if (!vm) return 0;
-  const mc::ReportFormat format = read_report_format(*vm, mc::effects_report_layout());
+  const mc::ReportFormat format = read_report_format(*vm, mc::effects_report_outline());
   std::optional<OutputFolderOption> no_set;
   write_report(mc::effects_report(), {format}, no_set, *vm);
   return 0;

@@ -38,8 +38,8 @@ int run_gap(const Args& args) {
   const auto vm = parse_args(args, "gap", "--records FILE [--records FILE...] [--out DIR] [--format json]", opts);
   if (!vm) return 0;
   if (!vm->count("records")) throw InputError("--records", "(missing)", "give at least one record file");
-  const mc::ReportLayout layout = gap::diagnosis_report_layout();
-  const mc::ReportFormat format = read_report_format(*vm, layout);
+  const mc::ReportOutline outline = gap::diagnosis_report_outline();
+  const mc::ReportFormat format = read_report_format(*vm, outline);
   gap::DiagnosisOptions options;
   options.alpha = (*vm)["alpha"].as<double>();
   options.seed = read_count(*vm, "seed");
@@ -54,7 +54,7 @@ int run_gap(const Args& args) {
   else throw InputError("--rank", echo_input(rank), "always, significant or never");
   options.prior = read_uncertainty_model(*vm);
   gap::validate(options);
-  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, layout);
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, outline);
 
   const std::vector<std::string> names = (*vm)["records"].as<std::vector<std::string>>();
   std::vector<RecordFile> files;

@@ -48,7 +48,7 @@ int run_gap_validate(const Args& args) {
     }
   }
   gap::validate(options);
-  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, gap::validation_report_layout());
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, gap::validation_report_outline());
   gap::ValidationResult r;
   {
     Progress progress(0, "files");

@@ -63,8 +63,8 @@ int run_noise(const Args& args) {
   if (vm->count("datasheet"))
     for (const std::string& entry : (*vm)["datasheet"].as<std::vector<std::string>>()) parse_datasheet_entry(entry, sheet);
   options.mask = mask == "on";
-  const mc::ReportLayout layout = mc::noise_report_layout();
-  const mc::ReportFormat format = read_report_format(*vm, layout);
+  const mc::ReportOutline outline = mc::noise_report_outline();
+  const mc::ReportFormat format = read_report_format(*vm, outline);
   calibration::MultipositionOptions calibrate;
   calibrate.confidence = options.confidence;
   const std::string gravity_text = (*vm)["gravity"].as<std::string>();
@@ -75,7 +75,7 @@ int run_noise(const Args& args) {
     throw InputError("--gravity", echo_input(gravity_text),
                      "must lie in [9.7, 9.9] m/s2 (surface gravity, equator to poles, with room for altitude), "
                      "e.g. 9.80665mps2");
-  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, layout);
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, outline);
 
   std::vector<ImuSamples> recordings;
   for (const std::string& input : (*vm)["input"].as<std::vector<std::string>>()) {

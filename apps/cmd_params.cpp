@@ -13,8 +13,8 @@ int run_params(const Args& args) {
   opts.add(uncertainty_options_description());
   const auto vm = parse_args(args, "params", "[--format markdown|csv|json] [--bound ...] [--dist ...]", opts);
   if (!vm) return 0;
-  const mc::ReportLayout layout = mc::params_report_layout();
-  const mc::ReportFormat format = read_report_format(*vm, layout);
+  const mc::ReportOutline outline = mc::params_report_outline();
+  const mc::ReportFormat format = read_report_format(*vm, outline);
   std::optional<OutputFolderOption> no_set;
   write_report(mc::params_report(read_uncertainty_model(*vm)), {format}, no_set, *vm);
   return 0;

@@ -45,7 +45,7 @@ int run_rank(const Args& args) {
   mc::StudyConfig config = read_study_config(*vm, true);
   const mc::LengthUnit unit = read_length_unit(*vm);
   const StdoutChoice shown = read_stdout_choice(*vm);
-  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, mc::rank_report_layout());
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, mc::rank_report_outline());
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
   mc::BreakEven even;

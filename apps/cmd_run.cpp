@@ -266,7 +266,7 @@ int run_command(const Args& args, Ranks& ranks) {
   if (!vm->count("replay")) {
     on_root_input_errors(ranks, [&] {
       for (InputFile& in : input_files(*vm)) inputs.push_back(std::move(in));
-      out = prepare_report_folder(*vm, sweeps.empty() ? mc::envelope_report_layout() : mc::sweep_report_layout(),
+      out = prepare_report_folder(*vm, sweeps.empty() ? mc::envelope_report_outline() : mc::sweep_report_outline(),
                                   inputs);
       if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path, inputs);
     });

@@ -17,12 +17,12 @@ int run_tables(const Args& args) {
   opts.add(model_options_description());
   const auto vm = parse_args(args, "tables", "[--format markdown|csv] [--convention paper|corrected] [--out DIR]", opts);
   if (!vm) return 0;
-  const mc::ReportLayout layout = tables::tables_report_layout();
-  const mc::ReportFormat format = read_report_format(*vm, layout);
+  const mc::ReportOutline outline = tables::tables_report_outline();
+  const mc::ReportFormat format = read_report_format(*vm, outline);
   const tables::TableConvention conv =
       tables::parse_table_convention((*vm)["convention"].as<std::string>(), "--convention");
   const ModelOptions model = read_model_options(*vm, true);
-  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, layout);
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, outline);
   write_report(tables::tables_report(tables::compute_tables(model, conv), conv), {format}, out, *vm);
   return 0;
 }

@@ -98,14 +98,14 @@ void OutputFileOption::write(std::string_view contents) const {
   as_input_errors(option_, text_, [&] { file_->write(contents); });
 }
 
-std::optional<OutputFolderOption> prepare_report_folder(const po::variables_map& vm, const mc::ReportLayout& layout,
+std::optional<OutputFolderOption> prepare_report_folder(const po::variables_map& vm, const mc::ReportOutline& outline,
                                                         const std::vector<InputFile>& read_before) {
   std::optional<OutputFolderOption> out;
   if (!vm.count("out")) return out;
   std::vector<InputFile> inputs = input_files(vm);
   inputs.insert(inputs.end(), read_before.begin(), read_before.end());
-  out.emplace("--out", vm["out"].as<std::string>(), layout.command, layout.set_names(), inputs);
-  if (!layout.figure_stems.empty() && !mc::gnuplot_available())
+  out.emplace("--out", vm["out"].as<std::string>(), outline.command, outline.set_names(), inputs);
+  if (!outline.figure_stems.empty() && !mc::gnuplot_available())
     throw InputError("--out", vm["out"].as<std::string>(), mc::gnuplot_missing_message());
   return out;
 }

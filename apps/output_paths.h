@@ -42,11 +42,11 @@ class OutputFolderOption {
 };
 
 /// The folder of option "out" when it was given, checked and locked for
-/// the set `layout` names; gnuplot must be there when the set has figures,
+/// the set `outline` names; gnuplot must be there when the set has figures,
 /// or the command stops now (exit 2, naming the package), before any work.
 /// `read_before`: inputs of an earlier parse that `vm` no longer names (the
 /// --from or --resume file a command line was rebuilt from).
-std::optional<OutputFolderOption> prepare_report_folder(const po::variables_map& vm, const mc::ReportLayout& layout,
+std::optional<OutputFolderOption> prepare_report_folder(const po::variables_map& vm, const mc::ReportOutline& outline,
                                                         const std::vector<InputFile>& read_before = {});
 
 /// One output file (`--out FILE`, `--checkpoint FILE`), checked and locked;

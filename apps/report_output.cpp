@@ -6,11 +6,11 @@
 
 namespace insmc::app {
 
-mc::ReportFormat read_report_format(const po::variables_map& vm, const mc::ReportLayout& layout) {
+mc::ReportFormat read_report_format(const po::variables_map& vm, const mc::ReportOutline& outline) {
   const std::string text = vm["format"].as<std::string>();
   const mc::ReportFormat format = parse_output_format(text);
-  if (!layout.offers(format))
-    throw InputError("--format", echo_input(text), fmt::format("{} prints {}", layout.command, layout.offered_text()));
+  if (!outline.offers(format))
+    throw InputError("--format", echo_input(text), fmt::format("{} prints {}", outline.command, outline.offered_text()));
   return format;
 }
 

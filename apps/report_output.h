@@ -12,9 +12,9 @@
 
 namespace insmc::app {
 
-/// --format of a command whose report has `layout`; one it does not offer
+/// --format of a command whose report has `outline`; one it does not offer
 /// is refused now (InputError naming what it offers).
-mc::ReportFormat read_report_format(const po::variables_map& vm, const mc::ReportLayout& layout);
+mc::ReportFormat read_report_format(const po::variables_map& vm, const mc::ReportOutline& outline);
 
 /// Writes `report`'s set into `out` when given, then prints what `shown`
 /// asks: nothing (--quiet), the summary and where the full tables are

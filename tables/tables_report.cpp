@@ -72,13 +72,13 @@ mc::PanelFigure figure_3_2(const std::vector<TableCell>& cells, TableConvention 
 
 }  // namespace
 
-mc::ReportLayout tables_report_layout() {
+mc::ReportOutline tables_report_outline() {
   return {"tables", {"tables.md", "tables.csv"}, {"fig3_2"}, {mc::ReportFormat::kMarkdown, mc::ReportFormat::kCsv}};
 }
 
 mc::Report tables_report(const std::vector<TableCell>& cells, TableConvention conv) {
   std::string csv = mc::render_csv(cells_table(cells, true)), md = render_markdown_report(cells, conv);
-  mc::Report report(tables_report_layout());
+  mc::Report report(tables_report_outline());
   report.file("tables.md", md)
       .file("tables.csv", csv)
       .figure("fig3_2", [figure = figure_3_2(cells, conv)] { return mc::render_panel_figure(figure); })

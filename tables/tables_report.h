@@ -9,7 +9,7 @@
 namespace insmc::tables {
 
 /// Markdown (one table per printed table) or csv (one long table).
-mc::ReportLayout tables_report_layout();
+mc::ReportOutline tables_report_outline();
 
 mc::Report tables_report(const std::vector<TableCell>& cells, TableConvention convention);
 

@@ -17,18 +17,18 @@ std::string_view format_name(ReportFormat format) {
   return "";
 }
 
-std::vector<std::string> ReportLayout::set_names() const {
+std::vector<std::string> ReportOutline::set_names() const {
   std::vector<std::string> names = files;
   for (const std::string& stem : figure_stems)
     for (std::string& name : figure_file_names(stem)) names.push_back(std::move(name));
   return names;
 }
 
-bool ReportLayout::offers(ReportFormat format) const {
+bool ReportOutline::offers(ReportFormat format) const {
   return std::find(formats.begin(), formats.end(), format) != formats.end();
 }
 
-std::string ReportLayout::offered_text() const {
+std::string ReportOutline::offered_text() const {
   std::string text;
   for (std::size_t i = 0; i < formats.size(); ++i) {
     if (i > 0) text += i + 1 == formats.size() ? " or " : ", ";
@@ -50,20 +50,20 @@ std::string full_tables_line(const std::string& command, const std::vector<std::
                      command, names);
 }
 
-Report::Report(ReportLayout layout) : layout_(std::move(layout)) {}
+Report::Report(ReportOutline outline) : outline_(std::move(outline)) {}
 
 Report& Report::file(const std::string& name, std::string contents) {
-  INSMC_ASSERT(std::find(layout_.files.begin(), layout_.files.end(), name) != layout_.files.end(),
-               "{} writes {}, which its layout does not name", layout_.command, name);
+  INSMC_ASSERT(std::find(outline_.files.begin(), outline_.files.end(), name) != outline_.files.end(),
+               "{} writes {}, which its outline does not name", outline_.command, name);
   INSMC_ASSERT(std::none_of(files_.begin(), files_.end(), [&](const auto& f) { return f.first == name; }),
-               "{} writes {} twice", layout_.command, name);
+               "{} writes {} twice", outline_.command, name);
   files_.emplace_back(name, std::move(contents));
   return *this;
 }
 
 Report& Report::figure(const std::string& stem, std::function<RenderedFigure()> draw) {
-  INSMC_ASSERT(std::find(layout_.figure_stems.begin(), layout_.figure_stems.end(), stem) != layout_.figure_stems.end(),
-               "{} draws {}, which its layout does not name", layout_.command, stem);
+  INSMC_ASSERT(std::find(outline_.figure_stems.begin(), outline_.figure_stems.end(), stem) != outline_.figure_stems.end(),
+               "{} draws {}, which its outline does not name", outline_.command, stem);
   figures_.emplace_back(stem, std::move(draw));
   return *this;
 }
@@ -76,7 +76,7 @@ OutputSetFiles Report::draw_set() const {
 }
 
 Report& Report::shown(ReportFormat format, std::string text) {
-  INSMC_ASSERT(layout_.offers(format), "{} shows {}, which its layout does not offer", layout_.command,
+  INSMC_ASSERT(outline_.offers(format), "{} shows {}, which its outline does not offer", outline_.command,
                format_name(format));
   shown_[static_cast<std::size_t>(format)] = std::move(text);
   return *this;
@@ -89,13 +89,13 @@ Report& Report::summary(ReportSummary summary) {
 
 const std::string& Report::file_text(std::string_view name) const {
   const auto it = std::find_if(files_.begin(), files_.end(), [&](const auto& f) { return f.first == name; });
-  INSMC_ASSERT(it != files_.end(), "{} has no file {}", layout_.command, name);
+  INSMC_ASSERT(it != files_.end(), "{} has no file {}", outline_.command, name);
   return it->second;
 }
 
 const std::string& Report::shown(ReportFormat format) const {
   const auto& text = shown_[static_cast<std::size_t>(format)];
-  INSMC_ASSERT(text.has_value(), "{} shows nothing in {}", layout_.command, format_name(format));
+  INSMC_ASSERT(text.has_value(), "{} shows nothing in {}", outline_.command, format_name(format));
   return *text;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 /// A command's report: the files of its `--out` set and what stdout shows
 /// in each `--format`. A command names its set before the work
-/// (ReportLayout), so that the folder is checked and locked, and a format
+/// (ReportOutline), so that the folder is checked and locked, and a format
 /// it does not offer refused, before any of it; the report it returns
 /// after the work holds those names and no other. One writer in apps/
 /// (apps/report_output.h) writes any report in any format.
@@ -26,7 +26,7 @@ std::string_view format_name(ReportFormat format);
 
 /// What a command's set holds and what its stdout offers, known before the
 /// work.
-struct ReportLayout {
+struct ReportOutline {
   std::string command;                    ///< the subcommand (the set's manifest records it)
   std::vector<std::string> files;         ///< the data files, by name
   std::vector<std::string> figure_stems;  ///< each drawn to <stem>.gp, .svg, .png
@@ -58,20 +58,20 @@ std::string full_tables_line(const std::string& command, const std::vector<std::
 
 class Report {
  public:
-  explicit Report(ReportLayout layout);
+  explicit Report(ReportOutline outline);
 
-  /// A file of the set: `name` is one of the layout's files, given once.
+  /// A file of the set: `name` is one of the outline's files, given once.
   Report& file(const std::string& name, std::string contents);
-  /// A figure of the set: `stem` is one of the layout's figure stems;
+  /// A figure of the set: `stem` is one of the outline's figure stems;
   /// `draw` runs gnuplot only when the set is written (stdout alone needs
   /// no gnuplot).
   Report& figure(const std::string& stem, std::function<RenderedFigure()> draw);
-  /// What stdout shows in `format`, one the layout offers.
+  /// What stdout shows in `format`, one the outline offers.
   Report& shown(ReportFormat format, std::string text);
   /// Stdout in markdown without --full, for a command with a compact summary.
   Report& summary(ReportSummary summary);
 
-  const ReportLayout& layout() const { return layout_; }
+  const ReportOutline& outline() const { return outline_; }
   /// The set: the files in the order given, then each figure drawn.
   OutputSetFiles draw_set() const;
   /// The text of one of the set's files (an internal error when absent).
@@ -81,7 +81,7 @@ class Report {
   const std::optional<ReportSummary>& summary() const { return summary_; }
 
  private:
-  ReportLayout layout_;
+  ReportOutline outline_;
   OutputSetFiles files_;
   std::vector<std::pair<std::string, std::function<RenderedFigure()>>> figures_;
   std::array<std::optional<std::string>, kReportFormats.size()> shown_;

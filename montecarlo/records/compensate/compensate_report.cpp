@@ -481,7 +481,7 @@ std::string scheme_to_use_line(const UnitResult& u, const CompensateOptions& opt
 
 }  // namespace
 
-ReportLayout compensate_report_layout() {
+ReportOutline compensate_report_outline() {
   return {"compensate",
           {"compensate.md", "estimates.csv", "compensation.csv", "envelope.csv", "compensate.json"},
           {"compensate"}};
@@ -575,7 +575,7 @@ Report compensate_report(const CompensateResult& result, const CompensateOptions
   json["go"] = go;
   const std::string json_text = json.dump(2) + "\n", envelope_csv = render_csv(envelope);
 
-  Report report(compensate_report_layout());
+  Report report(compensate_report_outline());
   report.file("compensate.md", md)
       .file("estimates.csv", render_csv(estimates))
       .file("compensation.csv", render_csv(compensation))

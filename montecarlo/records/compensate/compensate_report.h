@@ -13,7 +13,7 @@ namespace insmc::mc {
 
 /// compensate's set and stdout: markdown (compensate.md), csv
 /// (envelope.csv), json (compensate.json).
-ReportLayout compensate_report_layout();
+ReportOutline compensate_report_outline();
 
 /// The report of `result`; `source`: the record file as the user named it.
 Report compensate_report(const CompensateResult& result, const CompensateOptions& options, const std::string& source);

@@ -540,7 +540,7 @@ void parse_datasheet_entry(const std::string& text, Datasheet& sheet) {
                    "accel_vrw (0.03mpsprth) or accel_bias_instability (50ug)");
 }
 
-ReportLayout noise_report_layout() {
+ReportOutline noise_report_outline() {
   return {"noise",
           {"noise.md", "allan.csv", "noise_terms.csv", "calibration.csv", "noise.json"},
           {"allan", "stationarity"},
@@ -554,7 +554,7 @@ Report noise_report(const noise::SensorRecording& rec, const noise::NoiseAnalysi
   const std::array<SheetLevels, 2> levels{
       SheetLevels{sheet.white(SensorKind::kGyro), sheet.instability(SensorKind::kGyro)},
       SheetLevels{sheet.white(SensorKind::kAccelerometer), sheet.instability(SensorKind::kAccelerometer)}};
-  Report report(noise_report_layout());
+  Report report(noise_report_outline());
   report.file("noise.md", md)
       .file("allan.csv", allan_csv(a))
       .file("noise_terms.csv", terms_csv(a))

@@ -42,7 +42,7 @@ std::pair<double, std::string> spec_value(noise::NoiseTerm term, noise::SensorKi
 /// noise.json and the figures allan and stationarity
 /// (montecarlo/records/noise/noise_figures.h); stdout noise.md (markdown) or
 /// noise.json.
-ReportLayout noise_report_layout();
+ReportOutline noise_report_outline();
 
 Report noise_report(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
                     const Datasheet& sheet = {}, const std::vector<RecordingCalibration>& calibrations = {});

@@ -59,7 +59,7 @@ std::vector<BenchRound> run_bench_rounds(const BenchOptions& o) {
   return results;
 }
 
-ReportLayout bench_report_layout() { return {"bench", {}, {}, {ReportFormat::kMarkdown, ReportFormat::kJson}}; }
+ReportOutline bench_report_outline() { return {"bench", {}, {}, {ReportFormat::kMarkdown, ReportFormat::kJson}}; }
 
 Report bench_report(const BenchOptions& o, const std::vector<BenchRound>& results) {
   const double engine_median = median(results, &BenchRound::engine_over_floor);
@@ -137,7 +137,7 @@ Report bench_report(const BenchOptions& o, const std::vector<BenchRound>& result
                     "(time ratio {:.2f})\n",
                     engine_median, o.threads, scaling_median, linear_engine_median, paper_full_median, linear_median,
                     truth_median, 1.0 / truth_median);
-  Report report(bench_report_layout());
+  Report report(bench_report_outline());
   report.shown(ReportFormat::kJson, j.dump()).shown(ReportFormat::kMarkdown, std::move(md));
   return report;
 }

@@ -45,7 +45,7 @@ struct BenchRound {
 
 std::vector<BenchRound> run_bench_rounds(const BenchOptions& options);
 
-ReportLayout bench_report_layout();
+ReportOutline bench_report_outline();
 Report bench_report(const BenchOptions& options, const std::vector<BenchRound>& rounds);
 
 }  // namespace insmc::mc

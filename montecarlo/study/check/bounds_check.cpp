@@ -79,7 +79,7 @@ std::vector<BoundVerdict> judge_bounds(const std::vector<Bound>& bounds, const S
   return verdicts;
 }
 
-ReportLayout check_report_layout() { return {"check", {}, {}, {ReportFormat::kMarkdown}}; }
+ReportOutline check_report_outline() { return {"check", {}, {}, {ReportFormat::kMarkdown}}; }
 
 Report check_report(const std::vector<BoundVerdict>& verdicts, std::optional<LengthUnit> units) {
   std::string text;
@@ -98,7 +98,7 @@ Report check_report(const std::vector<BoundVerdict>& verdicts, std::optional<Len
                         length_suffix(u), format_number(100 * v.confidence), at_place(k * e.hi), length_suffix(u),
                         v.holds ? "<=" : ">", fmt::format("{:.6g}", k * b.limit_m), length_suffix(u));
   }
-  Report report(check_report_layout());
+  Report report(check_report_outline());
   report.shown(ReportFormat::kMarkdown, std::move(text));
   return report;
 }

@@ -30,7 +30,7 @@ std::vector<BoundVerdict> judge_bounds(const std::vector<Bound>& bounds, const S
 
 /// check prints a line per verdict (markdown only, no set): lengths in
 /// `units` when given, else in the unit each bound was written in.
-ReportLayout check_report_layout();
+ReportOutline check_report_outline();
 Report check_report(const std::vector<BoundVerdict>& verdicts, std::optional<LengthUnit> units);
 
 }  // namespace insmc::mc

@@ -358,7 +358,7 @@ PanelFigure rank_plot(const StudyConfig& config, const BreakEven& even, const st
 
 }  // namespace
 
-ReportLayout rank_report_layout() {
+ReportOutline rank_report_outline() {
   return {"rank", {"ranking.csv", "breakeven.csv", "rank.md", "rank.json"}, {"rank"}};
 }
 
@@ -376,7 +376,7 @@ Report rank_report(const StudyConfig& config, const std::vector<SchemeOrder>& or
   json["settings"] = settings_json(config);
   json["rank"] = std::move(rank_json);
   const std::string json_text = json.dump();
-  Report report(rank_report_layout());
+  Report report(rank_report_outline());
   report.file("ranking.csv", f.ranking_csv)
       .file("breakeven.csv", std::move(f.breakeven_csv))
       .file("rank.md", rank_md)

@@ -15,7 +15,7 @@ namespace insmc::mc {
 
 /// rank's set; stdout the summary (the order at the last report time and
 /// the first place's limits), rank.md (--full), ranking.csv or rank.json.
-ReportLayout rank_report_layout();
+ReportOutline rank_report_outline();
 
 /// Lengths in `unit` (--units) in the CSV, Markdown, summary and figure;
 /// rank.json (the settings and the results) stays in SI (`rms_m`), as

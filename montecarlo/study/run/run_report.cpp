@@ -10,7 +10,7 @@
 
 namespace insmc::mc {
 
-ReportLayout envelope_report_layout() {
+ReportOutline envelope_report_outline() {
   return {"run", {"envelope.csv", "envelope_grid.csv", "envelope.md", "run.json"}, {"envelope"}};
 }
 
@@ -48,7 +48,7 @@ Report envelope_report(const StudyConfig& config, EnvelopeFiles files, const Run
   const std::string head = fmt::format("insmc run: {} samples, seed {}, fidelity {}, {:.2f} s\n\n", config.samples,
                                        config.seed, to_string(config.fidelity), facts.elapsed_s);
   std::string run_json_text = run_json(config, facts, files.envelope_json).dump();
-  Report report(envelope_report_layout());
+  Report report(envelope_report_outline());
   report.file("envelope.csv", files.envelope_csv)
       .file("envelope_grid.csv", std::move(files.envelope_grid_csv))
       .file("envelope.md", std::move(files.envelope_md))
@@ -65,7 +65,7 @@ Report envelope_report(const StudyConfig& config, EnvelopeFiles files, const Run
   return report;
 }
 
-ReportLayout sweep_report_layout() { return {"run", {"sweep.csv", "sweep.md", "sweep.json"}, {"sweep"}}; }
+ReportOutline sweep_report_outline() { return {"run", {"sweep.csv", "sweep.md", "sweep.json"}, {"sweep"}}; }
 
 Report sweep_report(const StudyConfig& config, SweepFiles files, const Json& settings, const SweepFacts& facts,
                     LengthUnit unit) {
@@ -76,7 +76,7 @@ Report sweep_report(const StudyConfig& config, SweepFiles files, const Json& set
       "Horizontal RMS position error [{}] ± half its {}% interval at each report time.\n\n{}",
       fmt::join(facts.swept, " × "), facts.points, config.samples, config.seed, to_string(config.fidelity),
       facts.elapsed_s, length_suffix(unit), format_number(100 * config.confidence), files.summary_md);
-  Report report(sweep_report_layout());
+  Report report(sweep_report_outline());
   report.file("sweep.csv", files.sweep_csv)
       .file("sweep.md", files.summary_md)
       .file("sweep.json", json)

@@ -15,7 +15,7 @@
 
 namespace insmc::mc {
 
-ReportLayout envelope_report_layout();
+ReportOutline envelope_report_outline();
 
 /// What run.json says of the run besides its envelope.
 struct RunFacts {
@@ -28,7 +28,7 @@ struct RunFacts {
 
 Report envelope_report(const StudyConfig& config, EnvelopeFiles files, const RunFacts& facts);
 
-ReportLayout sweep_report_layout();
+ReportOutline sweep_report_outline();
 
 /// What the sweep's summary line says of it.
 struct SweepFacts {

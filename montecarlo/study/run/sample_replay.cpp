@@ -10,7 +10,7 @@
 
 namespace insmc::mc {
 
-ReportLayout replay_report_layout() { return {"run", {}, {}, {ReportFormat::kMarkdown}}; }
+ReportOutline replay_report_outline() { return {"run", {}, {}, {ReportFormat::kMarkdown}}; }
 
 Report replay_report(const StudyConfig& c, const StudyLayout& l, const StudyMap& map, std::uint64_t index) {
   std::string text;
@@ -37,7 +37,7 @@ Report replay_report(const StudyConfig& c, const StudyLayout& l, const StudyMap&
     text += fmt::format("{},{},{},{},{},{}\n", to_string(s.scheme), system_number(s.system), clock_of(s.scheme),
                to_string(s.axis), format_number(l.times_s[s.time_index] / 60), format_number(out[o]));
   }
-    Report report(replay_report_layout());
+    Report report(replay_report_outline());
   report.shown(ReportFormat::kMarkdown, std::move(text));
   return report;
 }

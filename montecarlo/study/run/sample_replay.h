@@ -9,7 +9,7 @@
 
 namespace insmc::mc {
 
-ReportLayout replay_report_layout();
+ReportOutline replay_report_outline();
 
 /// `index` < config.samples.
 Report replay_report(const StudyConfig& c, const StudyLayout& l, const StudyMap& map, std::uint64_t index);

@@ -12,7 +12,7 @@
 
 namespace insmc::mc {
 
-ReportLayout params_report_layout() { return {"params", {}, {}}; }
+ReportOutline params_report_outline() { return {"params", {}, {}}; }
 
 Report params_report(const UncertaintyModel& model) {
   Table table({"name", "group", "symbol", "si_unit", "bound_si", "bound_paper", "distribution", "fixed_si",
@@ -41,7 +41,7 @@ Report params_report(const UncertaintyModel& model) {
     row["source"] = std::string(spec.source);
     json.push_back(row);
   }
-  Report report(params_report_layout());
+  Report report(params_report_outline());
   report.shown(ReportFormat::kCsv, render_csv(table))
       .shown(ReportFormat::kJson, json.dump())
       .shown(ReportFormat::kMarkdown,
@@ -51,7 +51,7 @@ Report params_report(const UncertaintyModel& model) {
   return report;
 }
 
-ReportLayout effects_report_layout() {
+ReportOutline effects_report_outline() {
   return {"effects", {}, {}, {ReportFormat::kMarkdown, ReportFormat::kCsv}};
 }
 
@@ -63,7 +63,7 @@ Report effects_report() {
       t.add_row({std::string(e.name), std::string(p.name), format_quantity(p.default_si, p.dimension),
                  std::string(si_suffix(p.dimension)), std::string(p.description)});
   }
-  Report report(effects_report_layout());
+  Report report(effects_report_outline());
   report.shown(ReportFormat::kCsv, render_csv(t))
       .shown(ReportFormat::kMarkdown,
              fmt::format("# Truth-simulator effects\n\nUse as --effect NAME or --effect NAME:param=value,... "

@@ -9,10 +9,10 @@
 
 namespace insmc::mc {
 
-ReportLayout params_report_layout();
+ReportOutline params_report_outline();
 Report params_report(const UncertaintyModel& model);
 
-ReportLayout effects_report_layout();
+ReportOutline effects_report_outline();
 Report effects_report();
 
 }  // namespace insmc::mc

@@ -8,7 +8,7 @@
 
 namespace insmc::mc {
 
-ReportLayout covariance_report_layout() {
+ReportOutline covariance_report_outline() {
   return {"covariance",
           {"covariance.csv", "covariance_grid.csv", "budget.csv", "sensitivity.csv", "covariance.md"},
           {"budget"}};
@@ -19,7 +19,7 @@ Report covariance_report(const StudyConfig& config, const StudyLayout& layout, c
   Json json = Json::object();
   json["settings"] = settings_json(config, SettingsOf::kCovariance);
   json["covariance"] = std::move(files.covariance_json);
-  Report report(covariance_report_layout());
+  Report report(covariance_report_outline());
   report.file("covariance.csv", files.covariance_csv)
       .file("covariance_grid.csv", std::move(files.covariance_grid_csv))
       .file("budget.csv", std::move(files.budget_csv))

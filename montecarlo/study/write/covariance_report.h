@@ -9,7 +9,7 @@
 
 namespace insmc::mc {
 
-ReportLayout covariance_report_layout();
+ReportOutline covariance_report_outline();
 
 Report covariance_report(const StudyConfig& config, const StudyLayout& layout, const StudyMap& map, LengthUnit unit);
 

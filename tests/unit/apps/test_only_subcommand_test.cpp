@@ -2,7 +2,7 @@
 // subcommand"): one function that parses its options and returns its
 // report, and one entry in a list. Dispatch gives it what every
 // subcommand has: --help and the usage line, --format checked against its
-// report's layout before the work, --out written as a whole set, and its
+// report's outline before the work, --out written as a whole set, and its
 // failures as one line on stderr with exit code 2 (bad input) or 3 (defect).
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -31,14 +31,14 @@ int run_echo(const Args& args) {
       "out", po::value<std::string>(), "folder for echo.md and echo.csv")("fail", po::bool_switch(), "a defect");
   const auto vm = parse_args(args, "echo", "[--text TEXT] [--format markdown|csv] [--out DIR]", opts);
   if (!vm) return 0;
-  const mc::ReportLayout layout{
+  const mc::ReportOutline outline{
       "echo", {"echo.md", "echo.csv"}, {}, {mc::ReportFormat::kMarkdown, mc::ReportFormat::kCsv}};
-  const mc::ReportFormat format = read_report_format(*vm, layout);
-  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, layout);
+  const mc::ReportFormat format = read_report_format(*vm, outline);
+  std::optional<OutputFolderOption> out = prepare_report_folder(*vm, outline);
   if ((*vm)["fail"].as<bool>()) throw std::logic_error("echo failed");
   const std::string text = (*vm)["text"].as<std::string>();
   if (text.empty()) throw InputError("--text", "(empty)", "give something to print");
-  mc::Report report(layout);
+  mc::Report report(outline);
   report.file("echo.md", "# " + text + "\n")
       .file("echo.csv", "text\n" + text + "\n")
       .shown(mc::ReportFormat::kMarkdown, "# " + text + "\n")

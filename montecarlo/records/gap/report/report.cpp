@@ -350,7 +350,7 @@ mc::Report diagnosis_report(const Diagnosis& d, const std::vector<std::string>& 
     md += fmt::format("From held-out G = {:.3g} (against the model):\n\n", d.heldout_gap_before) + mc::render_markdown(g);
   }
   const std::string json = diagnosis_json(d, record_files).dump(2) + "\n";
-  mc::Report report(diagnosis_report_layout());
+  mc::Report report(diagnosis_report_outline());
   report.file("gap.md", md)
       .file("gap.json", json)
       .figure("gap_groups", [script = groups_figure_script(d)] { return mc::render_figure("gap_groups", script); })
@@ -360,7 +360,7 @@ mc::Report diagnosis_report(const Diagnosis& d, const std::vector<std::string>& 
   return report;
 }
 
-mc::ReportLayout diagnosis_report_layout() {
+mc::ReportOutline diagnosis_report_outline() {
   return {"gap",
           {"gap.md", "gap.json"},
           {"gap_groups", "gap_allan"},

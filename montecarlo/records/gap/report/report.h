@@ -18,7 +18,7 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
 
 /// gap's set: gap.md (which shows the figures' PNGs), gap.json and the
 /// figures gap_groups and gap_allan; stdout gap.md (markdown) or gap.json.
-mc::ReportLayout diagnosis_report_layout();
+mc::ReportOutline diagnosis_report_outline();
 
 /// The report of `d`; `record_files`: the record files as the user named them.
 mc::Report diagnosis_report(const Diagnosis& d, const std::vector<std::string>& record_files);

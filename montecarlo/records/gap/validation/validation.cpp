@@ -380,7 +380,7 @@ mc::Report validation_report(const ValidationResult& r, const ValidationOptions&
                           fmt::format("gap-validate: the top candidate of each file against the effect it holds ({} files)",
                                       r.cases.size()),
                           "reported top candidate", "true effect", m.rows, m.columns, m.counts};
-  mc::Report report(validation_report_layout());
+  mc::Report report(validation_report_outline());
   report.file("validation.md", md)
       .file("confusion.md", render_markdown(confusion))
       .file("confusion.csv", mc::render_csv(confusion))
@@ -390,7 +390,7 @@ mc::Report validation_report(const ValidationResult& r, const ValidationOptions&
   return report;
 }
 
-mc::ReportLayout validation_report_layout() {
+mc::ReportOutline validation_report_outline() {
   return {"gap-validate",
           {"validation.md", "confusion.md", "confusion.csv", "validation.json"},
           {"confusion"},

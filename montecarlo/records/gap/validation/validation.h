@@ -107,7 +107,7 @@ Confusion confusion_of(const ValidationResult& r);
 /// gap-validate's set: validation.md, confusion.md, confusion.csv,
 /// validation.json and the confusion matrix drawn (confusion); stdout
 /// validation.md.
-mc::ReportLayout validation_report_layout();
+mc::ReportOutline validation_report_outline();
 
 mc::Report validation_report(const ValidationResult& r, const ValidationOptions& options);
 

@@ -1,4 +1,4 @@
-// A command's report (montecarlo/report/report.h): the names a layout
+// A command's report (montecarlo/report/report.h): the names a outline
 // declares before the work are the only ones its report may hold, figures
 // are drawn only when the set is, and each format shows what was given for it.
 #include "montecarlo/report/report.h"
@@ -12,22 +12,22 @@
 namespace insmc::mc {
 namespace {
 
-ReportLayout two_formats() {
+ReportOutline two_formats() {
   return {"demo", {"demo.md", "demo.json"}, {"fig"}, {ReportFormat::kMarkdown, ReportFormat::kJson}};
 }
 
-TEST(ReportLayout, SetNamesAreTheFilesThenEachFiguresThree) {
+TEST(ReportOutline, SetNamesAreTheFilesThenEachFiguresThree) {
   EXPECT_EQ(two_formats().set_names(),
             (std::vector<std::string>{"demo.md", "demo.json", "fig.gp", "fig.svg", "fig.png"}));
 }
 
-TEST(ReportLayout, OffersOnlyTheFormatsItNamesAndSaysSo) {
-  const ReportLayout two = two_formats();
+TEST(ReportOutline, OffersOnlyTheFormatsItNamesAndSaysSo) {
+  const ReportOutline two = two_formats();
   EXPECT_TRUE(two.offers(ReportFormat::kJson));
   EXPECT_FALSE(two.offers(ReportFormat::kCsv));
   EXPECT_EQ(two.offered_text(), "markdown or json");
-  EXPECT_EQ((ReportLayout{"all", {}, {}}.offered_text()), "markdown, csv or json");
-  EXPECT_EQ((ReportLayout{"one", {}, {}, {ReportFormat::kCsv}}.offered_text()), "csv");
+  EXPECT_EQ((ReportOutline{"all", {}, {}}.offered_text()), "markdown, csv or json");
+  EXPECT_EQ((ReportOutline{"one", {}, {}, {ReportFormat::kCsv}}.offered_text()), "csv");
 }
 
 TEST(Report, FiguresAreDrawnOnlyWhenTheSetIsAndEachTimeItIs) {
@@ -54,9 +54,9 @@ TEST(Report, FiguresAreDrawnOnlyWhenTheSetIsAndEachTimeItIs) {
 
 TEST(ReportDeathTest, ANameOrFormatTheLayoutDoesNotHoldIsAnInternalError) {
   Report report(two_formats());
-  EXPECT_DEATH(report.file("other.csv", ""), "demo writes other.csv, which its layout does not name");
+  EXPECT_DEATH(report.file("other.csv", ""), "demo writes other.csv, which its outline does not name");
   EXPECT_DEATH(report.figure("other", [] { return RenderedFigure{}; }), "demo draws other");
-  EXPECT_DEATH(report.shown(ReportFormat::kCsv, ""), "demo shows csv, which its layout does not offer");
+  EXPECT_DEATH(report.shown(ReportFormat::kCsv, ""), "demo shows csv, which its outline does not offer");
   EXPECT_DEATH((void)report.shown(ReportFormat::kJson), "demo shows nothing in json");
   report.file("demo.md", "");
   EXPECT_DEATH(report.file("demo.md", ""), "demo writes demo.md twice");

@@ -67,11 +67,11 @@ noise::NoiseAnalysis* NoiseReport::analysis_ = nullptr;
 
 TEST_F(NoiseReport, HoldsItsLayoutsFilesAndShowsMarkdownOrJson) {
   const Report r = noise_report(*rec_, *analysis_, kConfidence);
-  const ReportLayout& layout = r.layout();
-  EXPECT_EQ(layout.command, "noise");
-  EXPECT_TRUE(layout.offers(ReportFormat::kMarkdown) && layout.offers(ReportFormat::kJson));
-  EXPECT_FALSE(layout.offers(ReportFormat::kCsv));
-  for (const std::string& name : layout.files) EXPECT_FALSE(r.file_text(name).empty()) << name;
+  const ReportOutline& outline = r.outline();
+  EXPECT_EQ(outline.command, "noise");
+  EXPECT_TRUE(outline.offers(ReportFormat::kMarkdown) && outline.offers(ReportFormat::kJson));
+  EXPECT_FALSE(outline.offers(ReportFormat::kCsv));
+  for (const std::string& name : outline.files) EXPECT_FALSE(r.file_text(name).empty()) << name;
   EXPECT_EQ(r.shown(ReportFormat::kMarkdown), r.file_text("noise.md"));
   EXPECT_EQ(r.shown(ReportFormat::kJson), r.file_text("noise.json"));
   const nlohmann::json j = nlohmann::json::parse(r.file_text("noise.json"));
