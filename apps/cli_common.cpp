@@ -19,13 +19,6 @@
 
 namespace insmc::app {
 
-mc::ReportFormat parse_output_format(const std::string& text) {
-  if (text == "markdown" || text == "md") return mc::ReportFormat::kMarkdown;
-  if (text == "csv") return mc::ReportFormat::kCsv;
-  if (text == "json") return mc::ReportFormat::kJson;
-  throw InputError("--format", text, "must be markdown, csv or json");
-}
-
 namespace {
 
 /// The options of a subcommand with the --help and --config every one takes.

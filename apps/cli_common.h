@@ -21,9 +21,6 @@ namespace insmc::app {
 
 namespace po = boost::program_options;
 
-/// "markdown" (or "md"), "csv" or "json"; what a command offers of them is
-/// its report layout's (apps/report_output.h).
-mc::ReportFormat parse_output_format(const std::string& text);
 
 /// Whether a comma list in a sweepable option (--latitude, --test-duration,
 /// --bound NAME=..., apps/sweep.h) is a sweep (`run`) or refused: every

@@ -52,6 +52,7 @@ int run_bench(const Args& args) {
     Progress progress(static_cast<std::uint64_t>(4 * rounds), "measurements");
     options.measured = [&](int i, int k) { progress.update(static_cast<std::uint64_t>(4 * i + k)); };
     results = mc::run_bench_rounds(options);
+    options.measured = nullptr;  // it refers to `progress`, which ends here
   }
   const StdoutChoice shown{(*vm)["json"].as<bool>() ? mc::ReportFormat::kJson : mc::ReportFormat::kMarkdown};
   std::optional<OutputFolderOption> no_set;

@@ -26,9 +26,10 @@ int run_check(const Args& args) {
   const std::string bounds_path = (*vm)["bounds"].as<std::string>();
   const std::vector<mc::Bound> bounds =
       read_input("--bounds", bounds_path, [&] { return mc::read_bounds_file(bounds_path); });
-  const mc::StudyConfig config = mc::config_for_bounds(read_study_config(*vm, true), bounds);
+  const mc::StudyConfig study = read_study_config(*vm, true);
   const std::optional<mc::LengthUnit> units =
       (*vm)["units"].defaulted() ? std::nullopt : std::optional<mc::LengthUnit>(read_length_unit(*vm));
+  const mc::StudyConfig config = mc::config_for_bounds(study, bounds);
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
   const mc::StudyAccumulator acc = mc::run_blocks(config, map, 0, mc::block_count(config.samples));

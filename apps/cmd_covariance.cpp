@@ -41,7 +41,7 @@ int run_covariance(const Args& args) {
   if (!vm) return 0;
   refuse_unused_options(*vm);
   const mc::StudyConfig config = read_study_config(*vm, false);
-  const StdoutChoice shown = read_stdout_choice(*vm);
+  const StdoutChoice shown = read_stdout_choice(*vm, mc::covariance_report_outline());
   const mc::LengthUnit unit = read_length_unit(*vm);
   std::optional<OutputFolderOption> out = prepare_report_folder(*vm, mc::covariance_report_outline());
   const mc::StudyLayout layout = mc::make_layout(config);

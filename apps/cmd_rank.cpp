@@ -44,7 +44,7 @@ int run_rank(const Args& args) {
   refuse_unused_options(*vm);
   mc::StudyConfig config = read_study_config(*vm, true);
   const mc::LengthUnit unit = read_length_unit(*vm);
-  const StdoutChoice shown = read_stdout_choice(*vm);
+  const StdoutChoice shown = read_stdout_choice(*vm, mc::rank_report_outline());
   std::optional<OutputFolderOption> out = prepare_report_folder(*vm, mc::rank_report_outline());
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);

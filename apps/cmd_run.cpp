@@ -250,7 +250,7 @@ int run_command(const Args& args, Ranks& ranks) {
   // Now, before any work: an option run.json cannot keep fails here rather
   // than after a finished study.
   const mc::Json settings = run_settings(config, *vm, opts);
-  const StdoutChoice shown = read_stdout_choice(*vm);
+  const StdoutChoice shown = read_stdout_choice(*vm, mc::envelope_report_outline());  // a sweep's offers the same
   const mc::LengthUnit unit = read_length_unit(*vm);
   const std::string checkpoint_path = vm->count("checkpoint") ? (*vm)["checkpoint"].as<std::string>() : "";
   const std::string every_text = (*vm)["checkpoint-every"].as<std::string>();

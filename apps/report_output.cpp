@@ -8,10 +8,9 @@ namespace insmc::app {
 
 mc::ReportFormat read_report_format(const po::variables_map& vm, const mc::ReportOutline& outline) {
   const std::string text = vm["format"].as<std::string>();
-  const mc::ReportFormat format = parse_output_format(text);
-  if (!outline.offers(format))
-    throw InputError("--format", echo_input(text), fmt::format("{} prints {}", outline.command, outline.offered_text()));
-  return format;
+  for (const mc::ReportFormat format : outline.formats)
+    if (text == mc::format_name(format) || (format == mc::ReportFormat::kMarkdown && text == "md")) return format;
+  throw InputError("--format", echo_input(text), fmt::format("{} prints {}", outline.command, outline.offered_text()));
 }
 
 void write_report(const mc::Report& report, const StdoutChoice& shown, std::optional<OutputFolderOption>& out,

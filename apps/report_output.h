@@ -12,8 +12,9 @@
 
 namespace insmc::app {
 
-/// --format of a command whose report has `outline`; one it does not offer
-/// is refused now (InputError naming what it offers).
+/// --format of a command whose report has `outline` ("markdown" or "md",
+/// "csv", "json"); one it does not offer is refused now (InputError naming
+/// what it offers).
 mc::ReportFormat read_report_format(const po::variables_map& vm, const mc::ReportOutline& outline);
 
 /// Writes `report`'s set into `out` when given, then prints what `shown`

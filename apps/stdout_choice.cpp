@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "apps/report_output.h"
+
 namespace insmc::app {
 
 void add_stdout_switches(po::options_description& opts, const std::string& full_table) {
@@ -10,9 +12,9 @@ void add_stdout_switches(po::options_description& opts, const std::string& full_
       "full", po::bool_switch(), fmt::format("--format markdown: print {} instead of the summary", full_table).c_str());
 }
 
-StdoutChoice read_stdout_choice(const po::variables_map& vm) {
+StdoutChoice read_stdout_choice(const po::variables_map& vm, const mc::ReportOutline& outline) {
   StdoutChoice c;
-  c.format = parse_output_format(vm["format"].as<std::string>());
+  c.format = read_report_format(vm, outline);
   c.quiet = vm["quiet"].as<bool>();
   c.full = vm["full"].as<bool>();
   return c;

@@ -20,7 +20,7 @@ struct StdoutChoice {
 /// --quiet and --full (`full_table`: what --full prints).
 void add_stdout_switches(po::options_description& opts, const std::string& full_table);
 
-/// --format, --quiet, --full.
-StdoutChoice read_stdout_choice(const po::variables_map& vm);
+/// --format (one `outline` offers), --quiet, --full.
+StdoutChoice read_stdout_choice(const po::variables_map& vm, const mc::ReportOutline& outline);
 
 }  // namespace insmc::app
