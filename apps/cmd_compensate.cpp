@@ -79,9 +79,7 @@ int run_compensate(const Args& args) {
       "report's g = 9.80665 m/s^2 (a site's differs by up to 0.3 %, which the finest estimates resolve)")(
       "realignment-duration", po::value<std::string>()->default_value("600s"),
       "duration of the realignment of 5.1.1, 5.1.2 and combined, in [0, 6h]")(
-      "out", po::value<std::string>(),
-      "folder for compensate.md, estimates.csv, compensation.csv, envelope.csv, compensate.json and "
-      "compensate.gp/.svg/.png")(
+      "out", po::value<std::string>(), out_folder_help(mc::compensate_report_outline()).c_str())(
       "format", po::value<std::string>()->default_value("markdown"),
       "stdout: markdown (compensate.md), csv (envelope.csv) or json (compensate.json)")(
       "units", po::value<std::string>()->default_value("si"),
@@ -132,9 +130,7 @@ int run_compensate(const Args& args) {
     }
   }();
   write_report(mc::compensate_report(result, options, name), {format}, out, *vm);
-  bool go = true;
-  for (const mc::UnitResult& u : result.units) go = go && u.go;
-  return go ? 0 : 1;
+  return result.all_go() ? 0 : 1;
 }
 
 }  // namespace insmc::app

@@ -28,11 +28,7 @@ void refuse_unused_options(const po::variables_map& vm) {
 
 int run_covariance(const Args& args) {
   po::options_description opts("Options");
-  opts.add_options()("out", po::value<std::string>(), "folder for covariance.csv, covariance_grid.csv, budget.csv, "
-                                                      "budget.gp/.svg/.png (the error budget as bars, drawn by "
-                                                      "gnuplot), sensitivity.csv (the map of every output linear "
-                                                      "in the uncertainties alone) and covariance.md (created if "
-                                                      "needed)")(
+  opts.add_options()("out", po::value<std::string>(), out_folder_help(mc::covariance_report_outline()).c_str())(
       "format", po::value<std::string>()->default_value("markdown"),
       "stdout: markdown (horizontal RMS per scheme and system), csv (covariance.csv alone) or json");
   add_stdout_switches(opts, "covariance.md (the RMS of every axis at every report time)");

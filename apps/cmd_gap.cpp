@@ -20,7 +20,7 @@ int run_gap(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("records", po::value<std::vector<std::string>>()->composing(),
                      "record file (format v1), repeatable; all of one site")(
-      "out", po::value<std::string>(), "folder for gap.md, its plots and gap.json")(
+      "out", po::value<std::string>(), out_folder_help(gap::diagnosis_report_outline()).c_str())(
       "format", po::value<std::string>()->default_value("markdown"), "what to print: markdown or json")(
       "alpha", po::value<double>()->default_value(0.01), "false-alarm rate of a significant gap, (0, 0.5)")(
       "seed", po::value<std::string>()->default_value("1"), "seed of the null runs and the resampling")(

@@ -17,7 +17,7 @@ namespace insmc::app {
 int run_gap_validate(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("quick", "the CI subset (10-run files, magnitude 30x the defaults, 4 null files)")(
-      "out", po::value<std::string>(), "folder for validation.md, confusion.md/csv, confusion.svg/png/gp (drawn by gnuplot), validation.json")(
+      "out", po::value<std::string>(), out_folder_help(gap::validation_report_outline()).c_str())(
       "seed", po::value<std::string>()->default_value("1000"), "seed of the first simulated file")(
       "null-files", po::value<int>(), "null files (default 100, quick 4)")(
       "seeds", po::value<int>(), "files per effect and magnitude (default 3, quick 1)")(

@@ -5,31 +5,24 @@
 // and latitude from the user, gyro bias from the alignment window, then test
 // run and navigation.
 #include <cmath>
-#include <limits>
-#include <numbers>
 #include <fmt/format.h>
-#include <sstream>
 
 #include "apps/cli_common.h"
 #include "apps/imu_csv_options.h"
 #include "apps/output_paths.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
-#include "lib/records/import_keys.h"
 #include "lib/imu/imu_samples.h"
 #include "lib/imu/strapdown.h"
 #include "lib/imu/strapdown_records.h"
 #include "lib/records/record_budget.h"
 #include "lib/records/record_io.h"
 #include "lib/units/quantity.h"
-#include "lib/units/units.h"
 #include "montecarlo/records/gap/diagnosis.h"
 #include "montecarlo/records/noise/noise_header.h"
 
 namespace insmc::app {
 namespace {
-
-enum class RunsFrom { kFile, kSplit };
 
 RunsFrom parse_runs_from(const std::string& text) {
   if (text == "file") return RunsFrom::kFile;
@@ -38,8 +31,6 @@ RunsFrom parse_runs_from(const std::string& text) {
                    "must be file (one run from the start of each input) or split (consecutive runs of "
                    "alignment + test + navigation from each input)");
 }
-
-std::string join_columns(const std::array<std::string, 3>& c) { return fmt::format("{},{},{}", c[0], c[1], c[2]); }
 
 }  // namespace
 
@@ -122,27 +113,7 @@ int run_import_imu(const Args& args) {
   check_rows(inputs_given);  // at least one run per input
   const OutputFileOption out_file("--out", (*vm)["out"].as<std::string>(), input_files(*vm));  // checked and locked before the work
 
-  RecordFile file;
-  file.header = RecordHeader::make(nav.latitude_rad / kDegToRad, System::kTheodolite, nav.test_duration_s, Scheme::kNone);
-  file.header.set(kKeyDvPulseMps, 0.0);  // continuous accelerometer output
-  file.header.set(kKeyPositionResolutionM, 0.0);
-  file.header.set("filter_interval_s", nav.output_interval_s);
-  // Informational (imu.*): how the records were made.
-  file.header.set(import_keys::kGyroUnit, std::string(to_string(csv.gyro_unit)));
-  file.header.set(import_keys::kAccelUnit, std::string(to_string(csv.accel_unit)));
-  file.header.set(import_keys::kGyroColumns, join_columns(csv.gyro_columns));
-  file.header.set(import_keys::kAccelColumns, join_columns(csv.accel_columns));
-  if (csv.time_column.empty())
-    file.header.set(import_keys::kRateHz, csv.rate_hz);
-  else
-    file.header.set(import_keys::kTimeColumn, csv.time_column);
-  file.header.set(import_keys::kAltitudeM, nav.altitude_m);
-  file.header.set(import_keys::kAzimuthDeg, nav.azimuth_rad / kDegToRad);
-  file.header.set(import_keys::kAlignDurationS, nav.align_duration_s);
-  file.header.set(import_keys::kNavDurationS, nav.nav_duration_s);
-  file.header.set(import_keys::kGyroBias, std::string(to_string(nav.gyro_bias)));
-  file.header.set(import_keys::kRunsFrom, std::string(runs_from == RunsFrom::kFile ? "file" : "split"));
-  file.header.set(import_keys::kSiteGravityMps2, stationary_site(nav).gravity_mps2);
+  RecordFile file = imported_file_header(nav, csv, runs_from);
 
   const std::string noise_mode = (*vm)["noise"].as<std::string>();
   if (noise_mode != "on" && noise_mode != "off") throw InputError("--noise", echo_input(noise_mode), "must be on or off");
@@ -155,7 +126,7 @@ int run_import_imu(const Args& args) {
   // Only files insmc itself reads: at most the runs one diagnosis takes.
   std::size_t total_runs = 0;
   for (const ImuSamples& samples : all_samples)
-    total_runs += runs_from == RunsFrom::kFile ? 1 : static_cast<std::size_t>(std::max(1, runs_available(samples, nav)));
+    total_runs += static_cast<std::size_t>(runs_from_input(samples, nav, runs_from));
   if (total_runs > gap::kMaxDiagnosedRuns)
     throw InputError("--runs-from", runs_from == RunsFrom::kFile ? "file" : "split",
                      fmt::format("the inputs make {} runs: a record file for insmc gap holds at most {} (lengthen "
@@ -164,26 +135,7 @@ int run_import_imu(const Args& args) {
   check_rows(total_runs);  // the runs the inputs make (split: several an input)
   if (noise_mode == "on") mc::write_noise_header(all_samples, file.header);
 
-  const double T = nav.test_duration_s;
-  std::int64_t run_id = 0;
-  for (std::size_t input_index = 0; input_index < inputs.size(); ++input_index) {
-    const std::string& input = inputs[input_index];
-    const ImuSamples& samples = all_samples[input_index];
-    const int runs = runs_from == RunsFrom::kFile ? 1 : std::max(1, runs_available(samples, nav));
-    for (int j = 0; j < runs; ++j, ++run_id) {
-      const StrapdownRun r = run_strapdown(samples, j * nav.run_duration_s(), nav);
-      const auto key = [run_id](std::string_view what) { return import_keys::run_key(run_id, what); };
-      file.header.set(key("source"), one_line_value(input));  // escaped: a path may hold any byte
-      file.header.set(key("switch_time_s"), r.switch_time_s);
-      const StrapdownAlignment& a = r.alignment;
-      for (int k = 0; k < 3; ++k)
-        file.header.set(key(fmt::format("gyro_bias_{}_radps", "xyz"[k])), a.gyro_bias_b_radps[k]);
-      file.header.set(key("accel_magnitude_mps2"), a.mean_accel_b_mps2.norm());
-      file.header.set(key(import_keys::kRunRollDeg), a.roll_rad / kDegToRad);
-      file.header.set(key(import_keys::kRunPitchDeg), a.pitch_rad / kDegToRad);
-      file.runs.push_back(record_run_of(r, T, run_id));
-    }
-  }
+  append_imported_runs(file, all_samples, inputs, nav, runs_from);
   out_file.write(write_record_file(file));
   return 0;
 }

@@ -28,7 +28,7 @@ int run_noise(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("input", po::value<std::vector<std::string>>()->composing(),
                      "IMU CSV file of a static recording (plain text), repeatable: one recording each")(
-      "out", po::value<std::string>(), "folder for noise.md, noise.json, allan.csv, noise_terms.csv, calibration.csv and the figures allan and stationarity (.gp, .svg, .png)")(
+      "out", po::value<std::string>(), out_folder_help(mc::noise_report_outline()).c_str())(
       "format", po::value<std::string>()->default_value("markdown"), "what to print: markdown or json")(
       "alpha", po::value<double>()->default_value(0.01, "0.01"),
       "family-wise level of the masking, the stationarity test and the term selection, in [1e-6, 0.2]")(

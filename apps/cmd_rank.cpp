@@ -31,9 +31,7 @@ void refuse_unused_options(const po::variables_map& vm) {
 
 int run_rank(const Args& args) {
   po::options_description opts("Options");
-  opts.add_options()("out", po::value<std::string>(),
-                     "folder for ranking.csv, breakeven.csv, rank.md, rank.json and rank.gp/.svg/.png (RMS along "
-                     "each assumption, drawn by gnuplot; created if needed)")(
+  opts.add_options()("out", po::value<std::string>(), out_folder_help(mc::rank_report_outline()).c_str())(
       "format", po::value<std::string>()->default_value("markdown"),
       "stdout: markdown (the order and the first place's limits at the last report time), csv (ranking.csv "
       "alone) or json (rank.json alone)");

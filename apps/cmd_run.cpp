@@ -2,7 +2,7 @@
 // (apps/stdout_choice.h), writes the output files of the README's contract
 // into --out DIR. With --checkpoint it saves its progress
 // (montecarlo/study/run/checkpoint.h) and --resume continues it; under MPI the
-// ranks share the blocks (montecarlo/study/run/study_runner.h, apps/ranks.h).
+// ranks share the blocks (montecarlo/study/run/study_runner.h, montecarlo/study/run/join_processes.h).
 #include <algorithm>
 #include <chrono>
 #include <fmt/format.h>
@@ -14,17 +14,17 @@
 #include "apps/interrupt.h"
 #include "apps/option_sources.h"
 #include "apps/report_output.h"
-#include "apps/ranks.h"
+#include "montecarlo/study/run/join_processes.h"
 #include "apps/run_watch.h"
 #include "apps/study_options.h"
 #include "apps/sweep.h"
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 #include "lib/units/physical_range.h"
-#include "lib/common/version.h"
 #include "lib/units/quantity.h"
 #include "montecarlo/study/engine/engine.h"
 #include "montecarlo/study/run/checkpoint.h"
+#include "montecarlo/study/run/resume.h"
 #include "montecarlo/study/run/run_file.h"
 #include "montecarlo/study/run/run_report.h"
 #include "montecarlo/study/run/sample_replay.h"
@@ -44,99 +44,23 @@ mc::Json run_settings(const mc::StudyConfig& config, const po::variables_map& vm
 
 /// The options a --resume command line may give; every other setting comes
 /// from the checkpoint.
-const std::vector<std::string> kResumeOptions = {"out",     "format",     "quiet",           "full",
-                                                 "threads", "checkpoint", "checkpoint-every"};
-
-/// Runs `f` on rank 0; a failure there becomes the same InputError on every
-/// rank (the others would otherwise wait for rank 0 in the next collective).
-template <class F>
-void on_root_or_fail_everywhere(Ranks& ranks, const std::string& field, const std::string& value, F&& f) {
-  std::string error;
-  if (ranks.root()) {
-    try {
-      f();
-    } catch (const std::exception& e) {
-      error = e.what();
-      if (error.empty()) error = "failed";
-    }
-  }
-  error = ranks.broadcast(error);
-  if (!error.empty()) throw InputError(field, value, error);
-}
-
-/// Runs `f` (the checks of the output paths) on rank 0; its InputError
-/// becomes the same one-line error on every rank.
-template <class F>
-void on_root_input_errors(Ranks& ranks, F&& f) {
-  std::string error;
-  if (ranks.root()) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      error = e.what();
-    }
-  }
-  error = ranks.broadcast(error);
-  if (!error.empty()) throw InputError(error);
-}
-
-/// --resume FILE: read on rank 0 and sent to the others (no shared file
-/// system needed for it).
-mc::Checkpoint load_checkpoint(const std::string& path, Ranks& ranks) {
-  std::string bytes;
-  on_root_or_fail_everywhere(ranks, "--resume", path, [&] {
-    try {  // capped; a directory or a read error is an error
-      bytes = mc::read_checkpoint_file(path);
-    } catch (const FileReadError& e) {
-      throw std::runtime_error(e.why());  // named "--resume = PATH" below
-    }
-  });
-  return mc::decode_checkpoint(ranks.broadcast(std::move(bytes)), path);
-}
-
-/// The finished blocks and their state from a checkpoint of this study.
-mc::StudyProgress restore_progress(const mc::Checkpoint& ck, const std::string& path, const mc::StudyConfig& config,
-                                   const mc::StudyLayout& layout, const mc::StudyMap& map, Ranks& ranks) {
-  if (ck.fingerprint != mc::study_fingerprint(config, map) || ck.samples != config.samples)
-    throw InputError("--resume", path,
-                     "the study no longer matches the checkpoint's (was its --config file changed?)");
-  const std::uint64_t blocks = mc::block_count(config.samples);
-  for (std::size_t i = 0; i < ck.done.size(); ++i)
-    if (ck.done[i].end > blocks || (i > 0 && ck.done[i].begin < ck.done[i - 1].end))
-      throw InputError("--resume", path, "the checkpoint is corrupt (finished blocks)");
-  mc::StudyProgress p;
-  p.done = mc::normalize(ck.done);
-  p.state = mc::StudyAccumulator(map);
-  on_root_or_fail_everywhere(ranks, "--resume", path, [&] {  // rank 0 merges the states
-    try {
-      p.state = mc::StudyAccumulator::deserialize(ck.state);
-    } catch (const std::exception& e) {
-      throw std::runtime_error(fmt::format("the checkpoint is corrupt ({})", e.what()));
-    }
-    const std::uint64_t expected = mc::sample_total(p.done, config.samples);
-    if (p.state.outputs().size() != layout.outputs.size() ||
-        (!p.state.outputs().empty() && p.state.outputs().front().count() != expected))
-      throw std::runtime_error("the checkpoint is corrupt (its state does not match its finished blocks)");
-  });
-  return p;
-}
+const std::vector<std::string> kResumeOptions = {"--out",     "--format",     "--quiet",           "--full",
+                                                 "--threads", "--checkpoint", "--checkpoint-every"};
 
 /// --resume restores every setting: only --out, --format, ... may be given beside it.
 void refuse_options_beside_resume(const Args& args, const po::options_description& opts, const std::string& resume_path) {
   for (const GivenOption& o : given_options(args, opts))
-    if (o.name != "resume" && std::find(kResumeOptions.begin(), kResumeOptions.end(), o.name) == kResumeOptions.end())
+    if (o.name != "resume" && std::find(kResumeOptions.begin(), kResumeOptions.end(), "--" + o.name) == kResumeOptions.end())
       throw InputError("--resume", resume_path,
-                       fmt::format("the checkpoint restores every setting; --{} cannot be given with it (only "
-                                   "--out, --format, --quiet, --full, --threads, --checkpoint and "
-                                   "--checkpoint-every can)",
-                                   o.name));
+                       fmt::format("the checkpoint restores every setting; --{} cannot be given with it (only {} can)",
+                                   o.name, mc::listed(kResumeOptions)));
 }
 
-/// A sweep: each point's study split over the ranks, then sweep.csv,
+/// A sweep: each point's study split over the processes, then sweep.csv,
 /// sweep.md, sweep.json and the figure, and the summary on stdout.
 int run_sweep_points(const po::variables_map& vm, const mc::StudyConfig& config, const std::vector<SweepAxis>& sweeps,
                      const std::string& checkpoint_path, const mc::Json& settings, const StdoutChoice& shown,
-                     mc::LengthUnit unit, std::optional<OutputFolderOption>& out, Ranks& ranks) {
+                     mc::LengthUnit unit, std::optional<OutputFolderOption>& out, mc::Processes& processes) {
   if (vm.count("replay")) throw InputError("--replay", vm["replay"].as<std::string>(), "cannot be combined with a sweep");
   if (!checkpoint_path.empty())
     throw InputError("--checkpoint", checkpoint_path,
@@ -146,7 +70,7 @@ int run_sweep_points(const po::variables_map& vm, const mc::StudyConfig& config,
   std::uint64_t points_total = 1, points_done = 0;
   for (const SweepAxis& a : sweeps) points_total *= a.texts.size();
   std::optional<Progress> points_progress;
-  if (ranks.root()) {
+  if (processes.root()) {
     points_progress.emplace(points_total, "points");
     points_progress->update("sweep", 0, points_total, "points");
   }
@@ -155,14 +79,14 @@ int run_sweep_points(const po::variables_map& vm, const mc::StudyConfig& config,
         mc::RunPlan plan;
         plan.result_everywhere = true;
         mc::StudyAccumulator state =
-            run_study_watched(c, m, ranks, mc::StudyProgress{{}, mc::StudyAccumulator(m)}, plan, false)
+            run_study_watched(c, m, processes, mc::StudyProgress{{}, mc::StudyAccumulator(m)}, plan, false)
                 .progress.state;
         // The sweep's own count (a point's samples have their own line while it runs).
         if (points_progress) points_progress->update("sweep", ++points_done, points_total, "points");
         return state;
       });
   points_progress.reset();
-  if (!ranks.root()) return 0;
+  if (!processes.root()) return 0;
   mc::SweepFacts facts;
   facts.points = points_total;
   for (const SweepAxis& a : sweeps) facts.swept.push_back(mc::quantity_name(a.column));
@@ -190,9 +114,9 @@ std::uint64_t replay_index(const std::string& text, std::uint64_t samples) {
 /// and the study's.
 po::options_description run_options() {
   po::options_description opts("Options");
-  opts.add_options()("out", po::value<std::string>(), "folder for envelope.csv, envelope_grid.csv, envelope.md, "
-                                                      "envelope.gp with the envelope.svg and envelope.png gnuplot "
-                                                      "draws from it, and run.json (created if needed)")(
+  opts.add_options()("out", po::value<std::string>(), (out_folder_help(mc::envelope_report_outline()) + "; a sweep writes " +
+                                                       mc::sweep_report_outline().set_text())
+                                                          .c_str())(
       "format", po::value<std::string>()->default_value("markdown"),
       "stdout: markdown (horizontal RMS per scheme and system), csv (envelope.csv alone) or json (run.json alone)")(
       "replay", po::value<std::string>(), "recompute sample INDEX alone and print its uncertainties and errors")(
@@ -211,7 +135,7 @@ po::options_description run_options() {
   return opts;
 }
 
-int run_command(const Args& args, Ranks& ranks) {
+int run_command(const Args& args, mc::Processes& processes) {
   const po::options_description opts = run_options();
   const std::string synopsis = "[options]\n       insmc run --resume FILE [--out DIR] [--format F]";
   auto vm = parse_args(args, "run", synopsis, opts, Lists::kSweeps);
@@ -238,7 +162,7 @@ int run_command(const Args& args, Ranks& ranks) {
   const std::string resume_path = vm->count("resume") ? (*vm)["resume"].as<std::string>() : "";
   if (vm->count("resume")) {
     refuse_options_beside_resume(args, opts, resume_path);
-    resumed = load_checkpoint(resume_path, ranks);
+    resumed = mc::load_checkpoint(resume_path, processes);
     const po::parsed_options kept =
         run_file_options(resumed->args, opts, "--resume", resume_path, "the checkpoint's arguments");
     std::vector<po::option> added;
@@ -264,14 +188,14 @@ int run_command(const Args& args, Ranks& ranks) {
   std::optional<OutputFolderOption> out;
   std::optional<OutputFileOption> checkpoint_file;
   if (!vm->count("replay")) {
-    on_root_input_errors(ranks, [&] {
+    mc::on_root_input_errors(processes, [&] {
       for (InputFile& in : input_files(*vm)) inputs.push_back(std::move(in));
       out = prepare_report_folder(*vm, sweeps.empty() ? mc::envelope_report_outline() : mc::sweep_report_outline(),
                                   inputs);
       if (!checkpoint_path.empty() && sweeps.empty()) checkpoint_file.emplace("--checkpoint", checkpoint_path, inputs);
     });
   }
-  if (!sweeps.empty()) return run_sweep_points(*vm, config, sweeps, checkpoint_path, settings, shown, unit, out, ranks);
+  if (!sweeps.empty()) return run_sweep_points(*vm, config, sweeps, checkpoint_path, settings, shown, unit, out, processes);
   const mc::StudyLayout layout = mc::make_layout(config);
   const mc::StudyMap map(config, layout);
 
@@ -280,7 +204,7 @@ int run_command(const Args& args, Ranks& ranks) {
     if (!checkpoint_path.empty()) throw InputError("--checkpoint", checkpoint_path, "cannot be combined with --replay");
     if (shown.quiet) throw InputError("--replay", text, "prints one sample: cannot be combined with --quiet");
     const std::uint64_t index = replay_index(text, config.samples);
-    if (ranks.root()) {
+    if (processes.root()) {
       std::optional<OutputFolderOption> no_set;
       write_report(mc::replay_report(config, layout, map, index), {}, no_set, *vm);
     }
@@ -288,19 +212,13 @@ int run_command(const Args& args, Ranks& ranks) {
   }
 
   mc::StudyProgress start{{}, mc::StudyAccumulator(map)};
-  if (resumed) start = restore_progress(*resumed, resume_path, config, layout, map, ranks);
+  if (resumed) start = mc::restore_progress(*resumed, resume_path, config, layout, map, processes);
   const std::uint64_t resumed_from_sample = mc::sample_total(start.done, config.samples);
   mc::RunPlan plan;
   bool stop_on_signals = false;  // SIGINT/SIGTERM: a checkpoint, then exit
   if (!checkpoint_path.empty()) {
-    mc::StudyConfig settings = config;
-    settings.threads = 0;
-    mc::Checkpoint ck;
-    ck.version = kVersion;
-    ck.args = explicit_arguments(*vm, opts, not_in_run_files());  // what defines the study, as run.json keeps it
-    ck.settings = mc::settings_json(settings).dump();
-    ck.fingerprint = mc::study_fingerprint(config, map);
-    ck.samples = config.samples;
+    // What defines the study, as run.json keeps it.
+    mc::Checkpoint ck = mc::checkpoint_of(config, map, explicit_arguments(*vm, opts, not_in_run_files()));
     plan.checkpoint_every_s = checkpoint_every_s;
     stop_on_signals = true;
     plan.write_checkpoint = [ck = std::move(ck), &checkpoint_file](const mc::StudyProgress& p) mutable {
@@ -309,26 +227,26 @@ int run_command(const Args& args, Ranks& ranks) {
       checkpoint_file->write(mc::encode_checkpoint(ck));
     };
     // A path that cannot be written fails now, not after the first stretch of work.
-    on_root_input_errors(ranks, [&] { plan.write_checkpoint(start); });
+    mc::on_root_input_errors(processes, [&] { plan.write_checkpoint(start); });
   }
 
   const auto started = std::chrono::steady_clock::now();
-  const mc::RunOutcome outcome = run_study_watched(config, map, ranks, std::move(start), plan, stop_on_signals);
+  const mc::RunOutcome outcome = run_study_watched(config, map, processes, std::move(start), plan, stop_on_signals);
   const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (outcome.signal != 0) {
-    if (ranks.root())
+    if (processes.root())
       fmt::print(stderr, "insmc run: interrupted by {}: checkpoint {} written ({} of {} samples finished); continue "
                          "with: insmc run --resume {}{}\n",
                  signal_name(outcome.signal), checkpoint_path, mc::sample_total(outcome.progress.done, config.samples),
                  config.samples, checkpoint_path,
                  vm->count("out") ? " --out " + (*vm)["out"].as<std::string>() : std::string());
-    ranks.barrier();  // every rank exits after rank 0 has written and said so
+    processes.barrier();  // every rank exits after rank 0 has written and said so
     return 128 + outcome.signal;
   }
-  if (!ranks.root()) return 0;
+  if (!processes.root()) return 0;
   const mc::StudyAccumulator& acc = outcome.progress.state;
 
-  mc::RunFacts facts{settings, elapsed_s, resumed_from_sample, ranks.distributed() ? ranks.size() : 0, outcome.shares};
+  mc::RunFacts facts{settings, elapsed_s, resumed_from_sample, processes.distributed() ? processes.size() : 0, outcome.shares};
   write_report(mc::envelope_report(config, mc::render_envelope(config, layout, map, acc, unit), facts), shown, out, *vm);
   return 0;
 }
@@ -336,22 +254,22 @@ int run_command(const Args& args, Ranks& ranks) {
 }  // namespace
 
 int run_run(const Args& args) {
-  const std::unique_ptr<Ranks> ranks = join_ranks();
-  if (!ranks->distributed()) return run_command(args, *ranks);
+  const std::unique_ptr<mc::Processes> processes = mc::join_processes();
+  if (!processes->distributed()) return run_command(args, *processes);
   // Under MPI every rank parses the same arguments, so bad input fails on
   // every rank alike: rank 0 reports it, before MPI_Finalize (mpirun may end
   // the job once a rank has exited non-zero), and every rank exits 2.
   try {
-    return run_command(args, *ranks);
+    return run_command(args, *processes);
   } catch (const InputError& e) {
-    if (ranks->root()) fmt::print(stderr, "insmc run: {}\n", e.what());
+    if (processes->root()) fmt::print(stderr, "insmc run: {}\n", e.what());
     return 2;
   } catch (const po::error& e) {
-    if (ranks->root()) fmt::print(stderr, "insmc run: {} (see insmc run --help)\n", parse_error_message(e));
+    if (processes->root()) fmt::print(stderr, "insmc run: {} (see insmc run --help)\n", parse_error_message(e));
     return 2;
   } catch (const std::exception& e) {  // the other ranks may be waiting for this one: end them all
-    fmt::print(stderr, "insmc run: error on rank {}: {}\n", ranks->rank(), e.what());
-    ranks->abort(3);
+    fmt::print(stderr, "insmc run: error on rank {}: {}\n", processes->rank(), e.what());
+    processes->abort(3);
     return 3;
   }
 }

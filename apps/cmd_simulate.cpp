@@ -139,26 +139,15 @@ int run_simulate(const Args& args) {
   const Resolvability resolvable = resolvable_terms(system, model, test, uncertainties);
   const TruthSchemeSetup setup(truth, test, make_estimators(test, model, resolvable.u3, resolvable.u4));
 
-  const double T = test.duration_s, tau = test.filter_interval_s;
-  // After a realignment the second navigation starts at nav_start_s = T + the
-  // realignment; its rows follow on the same filter grid.
-  const double nav_start_s = realigns(scheme) ? ready_time_s(scheme, T, test.realignment_duration_s) : T;
-  std::vector<double> times = uniform_times(T, tau, false);
-  for (double t : uniform_times(nav_s, tau, false)) times.push_back(nav_start_s + t);
-  RecordFile file;
-  file.header = RecordHeader::make(model.latitude_rad / kDegToRad, system, T, scheme);
-  file.header.set("dv_pulse_mps", test.dv_pulse_mps);
-  file.header.set("position_resolution_m", test.position_resolution_m);
-  file.header.set("filter_interval_s", tau);
-  if (realigns(scheme)) file.header.set("nav_start_s", nav_start_s);
-  file.header.set("truth.seed", static_cast<double>(seed));
-  for (std::size_t i = 0; i < truth.effects.size(); ++i)
-    file.header.set(fmt::format("truth.effect.{}", i), format_effect(truth.effects[i]));
-  const mc::Sampler sampler(uncertainties);
-  const runs::RecordRunSpec spec{T, test.position_resolution_m, scheme, &setup, nav_start_s};
-  for (int run = 0; run < runs; ++run)
-    file.runs.push_back(runs::simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(run), times, spec));
-  out.write(write_record_file(file));
+  runs::OwnFileSpec spec;
+  spec.runs = runs;
+  spec.test_duration_s = test.duration_s;
+  spec.nav_duration_s = nav_s;
+  spec.position_resolution_m = test.position_resolution_m;
+  spec.scheme = scheme;
+  spec.setup = &setup;
+  spec.realignment_duration_s = test.realignment_duration_s;
+  out.write(write_record_file(runs::simulate_own_file(truth, mc::Sampler(uncertainties), seed, spec)));
   return 0;
 }
 

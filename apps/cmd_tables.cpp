@@ -12,8 +12,7 @@ int run_tables(const Args& args) {
                      "stdout: markdown (one table per printed table) or csv (one long table)")(
       "convention", po::value<std::string>()->default_value("paper"),
       "paper (the report's formulas as printed) or corrected (errors of the original fixed)")(
-      "out", po::value<std::string>(), "folder for tables.md, tables.csv and Figure 3.2 drawn by gnuplot (fig3_2.gp/.svg/.png; created if "
-                                       "needed)");
+      "out", po::value<std::string>(), out_folder_help(tables::tables_report_outline()).c_str());
   opts.add(model_options_description());
   const auto vm = parse_args(args, "tables", "[--format markdown|csv] [--convention paper|corrected] [--out DIR]", opts);
   if (!vm) return 0;

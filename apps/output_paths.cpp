@@ -110,4 +110,8 @@ std::optional<OutputFolderOption> prepare_report_folder(const po::variables_map&
   return out;
 }
 
+std::string out_folder_help(const mc::ReportOutline& outline) {
+  return fmt::format("folder for {}, created if needed", outline.set_text());
+}
+
 }  // namespace insmc::app

@@ -46,6 +46,9 @@ class OutputFolderOption {
 /// or the command stops now (exit 2, naming the package), before any work.
 /// `read_before`: inputs of an earlier parse that `vm` no longer names (the
 /// --from or --resume file a command line was rebuilt from).
+/// --out's help: "folder for <the outline's set> (created if needed)".
+std::string out_folder_help(const mc::ReportOutline& outline);
+
 std::optional<OutputFolderOption> prepare_report_folder(const po::variables_map& vm, const mc::ReportOutline& outline,
                                                         const std::vector<InputFile>& read_before = {});
 

@@ -24,12 +24,13 @@ void write_report(const mc::Report& report, const StdoutChoice& shown, std::opti
   }
   const std::string line = summary->where_the_rest_is(
       vm.count("out") ? std::optional<std::string>(vm["out"].as<std::string>()) : std::nullopt);
-  if (!shown.full || !summary->full_replaces) {
+  if (!shown.full) {
     fmt::print("{}\n{}", summary->text, line);
     return;
   }
+  // --full shows the full tables; where their files are still helps.
   fmt::print("{}", report.shown(shown.format));
-  if (out && summary->line_after_full_with_out) fmt::print("\n{}", line);
+  if (out) fmt::print("\n{}", line);
 }
 
 }  // namespace insmc::app

@@ -31,11 +31,11 @@ class TerminalWatch final : public mc::RunWatch {
 
 }  // namespace
 
-mc::RunOutcome run_study_watched(const mc::StudyConfig& config, const mc::StudyMap& map, Ranks& ranks,
+mc::RunOutcome run_study_watched(const mc::StudyConfig& config, const mc::StudyMap& map, mc::Processes& processes,
                                 mc::StudyProgress start, mc::RunPlan plan, bool stop_on_signals) {
   TerminalWatch watch(stop_on_signals);
   plan.watch = &watch;
-  return mc::run_study_blocks(config, map, ranks, std::move(start), plan);
+  return mc::run_study_blocks(config, map, processes, std::move(start), plan);
 }
 
 }  // namespace insmc::app

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "lib/common/assert.h"
 
@@ -29,12 +30,24 @@ bool ReportOutline::offers(ReportFormat format) const {
 }
 
 std::string ReportOutline::offered_text() const {
+  std::vector<std::string> names;
+  for (const ReportFormat format : formats) names.emplace_back(format_name(format));
+  return listed(names, "or");
+}
+
+std::string listed(const std::vector<std::string>& names, std::string_view conjunction) {
   std::string text;
-  for (std::size_t i = 0; i < formats.size(); ++i) {
-    if (i > 0) text += i + 1 == formats.size() ? " or " : ", ";
-    text += format_name(formats[i]);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) text += i + 1 == names.size() ? fmt::format(" {} ", conjunction) : std::string(", ");
+    text += names[i];
   }
   return text;
+}
+
+std::string ReportOutline::set_text() const {
+  if (figure_stems.empty()) return listed(files);
+  return fmt::format("{}{}the figure{} {} (.gp, .svg, .png, drawn by gnuplot)", fmt::join(files, ", "),
+                     files.empty() ? "" : " and ", figure_stems.size() > 1 ? "s" : "", listed(figure_stems));
 }
 
 std::string full_tables_line(const std::string& command, const std::vector<std::string>& files,
@@ -82,6 +95,15 @@ Report& Report::shown(ReportFormat format, std::string text) {
   return *this;
 }
 
+Report& Report::shown_file(ReportFormat format, std::string name) {
+  INSMC_ASSERT(outline_.offers(format), "{} shows {}, which its outline does not offer", outline_.command,
+               format_name(format));
+  INSMC_ASSERT(std::find(outline_.files.begin(), outline_.files.end(), name) != outline_.files.end(),
+               "{} shows {}, which its outline does not name", outline_.command, name);
+  shown_file_[static_cast<std::size_t>(format)] = std::move(name);
+  return *this;
+}
+
 Report& Report::summary(ReportSummary summary) {
   summary_ = std::move(summary);
   return *this;
@@ -94,6 +116,7 @@ const std::string& Report::file_text(std::string_view name) const {
 }
 
 const std::string& Report::shown(ReportFormat format) const {
+  if (const auto& name = shown_file_[static_cast<std::size_t>(format)]) return file_text(*name);
   const auto& text = shown_[static_cast<std::size_t>(format)];
   INSMC_ASSERT(text.has_value(), "{} shows nothing in {}", outline_.command, format_name(format));
   return *text;

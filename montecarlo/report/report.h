@@ -37,19 +37,23 @@ struct ReportOutline {
   bool offers(ReportFormat format) const;
   /// The formats offered, for a message: "markdown or json".
   std::string offered_text() const;
+  /// The set, for a help text: "a.md, b.csv and the figure c (.gp, .svg,
+  /// .png, drawn by gnuplot)".
+  std::string set_text() const;
 };
 
 /// The compact summary a command prints in markdown instead of its full
 /// tables (docs/outputs.md), and the line under it saying where the rest is.
 struct ReportSummary {
   std::string text;  ///< stdout in markdown without --full
-  /// The line under it; `out_folder`: --out's folder when given.
+  /// The line under it, and under the full markdown when --out is given
+  /// (docs/outputs.md); `out_folder`: --out's folder when given.
   std::function<std::string(const std::optional<std::string>& out_folder)> where_the_rest_is;
-  /// --full prints the full markdown instead (else the summary stays).
-  bool full_replaces = true;
-  /// With --full and --out, the full markdown is followed by that line too.
-  bool line_after_full_with_out = false;
 };
+
+/// Names for a message: "a", "a and b", "a, b and c" (`conjunction` "or":
+/// "a, b or c").
+std::string listed(const std::vector<std::string>& names, std::string_view conjunction = "and");
 
 /// The line under a summary whose full tables are `files`: their paths in
 /// --out's folder, or how to get them.
@@ -68,6 +72,8 @@ class Report {
   Report& figure(const std::string& stem, std::function<RenderedFigure()> draw);
   /// What stdout shows in `format`, one the outline offers.
   Report& shown(ReportFormat format, std::string text);
+  /// Stdout in `format` is the set's file `name`, as written (not a copy).
+  Report& shown_file(ReportFormat format, std::string name);
   /// Stdout in markdown without --full, for a command with a compact summary.
   Report& summary(ReportSummary summary);
 
@@ -85,6 +91,8 @@ class Report {
   OutputSetFiles files_;
   std::vector<std::pair<std::string, std::function<RenderedFigure()>>> figures_;
   std::array<std::optional<std::string>, kReportFormats.size()> shown_;
+  /// For a format shown as one of the files: that file's name.
+  std::array<std::optional<std::string>, kReportFormats.size()> shown_file_;
   std::optional<ReportSummary> summary_;
 };
 

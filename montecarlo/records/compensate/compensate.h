@@ -110,6 +110,11 @@ struct CompensateResult {
   std::vector<double> clock_s;  ///< the envelope's times
   std::vector<Identifiability> identifiability;
   std::vector<UnitResult> units;
+
+  /// Every unit meets every limit (the command's exit code 0, else 1).
+  bool all_go() const {
+    return std::all_of(units.begin(), units.end(), [](const UnitResult& u) { return u.go; });
+  }
 };
 
 /// The times the report tabulates: 42, 63 and 84 min, the flight time and

@@ -573,18 +573,18 @@ Report compensate_report(const CompensateResult& result, const CompensateOptions
   json["risk"] = options.risk;
   json["units"] = std::move(units);
   json["go"] = go;
-  const std::string json_text = json.dump(2) + "\n", envelope_csv = render_csv(envelope);
+  std::string json_text = json.dump(2) + "\n", envelope_csv = render_csv(envelope);
 
   Report report(compensate_report_outline());
-  report.file("compensate.md", md)
+  report.file("compensate.md", std::move(md))
       .file("estimates.csv", render_csv(estimates))
       .file("compensation.csv", render_csv(compensation))
-      .file("envelope.csv", envelope_csv)
-      .file("compensate.json", json_text)
+      .file("envelope.csv", std::move(envelope_csv))
+      .file("compensate.json", std::move(json_text))
       .figure("compensate", [plot = compensate_plot(result, options, source)] { return render_panel_figure(plot); })
-      .shown(ReportFormat::kMarkdown, std::move(md))
-      .shown(ReportFormat::kCsv, envelope_csv)
-      .shown(ReportFormat::kJson, json_text);
+      .shown_file(ReportFormat::kMarkdown, "compensate.md")
+      .shown_file(ReportFormat::kCsv, "envelope.csv")
+      .shown_file(ReportFormat::kJson, "compensate.json");
   return report;
 }
 

@@ -550,20 +550,20 @@ ReportOutline noise_report_outline() {
 Report noise_report(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
                     const Datasheet& sheet, const std::vector<RecordingCalibration>& calibrations) {
   std::string md = markdown(rec, a, confidence, sheet, calibrations);
-  const std::string json = noise_json(rec, a, confidence, sheet, calibrations).dump(2) + "\n";
+  std::string json = noise_json(rec, a, confidence, sheet, calibrations).dump(2) + "\n";
   const std::array<SheetLevels, 2> levels{
       SheetLevels{sheet.white(SensorKind::kGyro), sheet.instability(SensorKind::kGyro)},
       SheetLevels{sheet.white(SensorKind::kAccelerometer), sheet.instability(SensorKind::kAccelerometer)}};
   Report report(noise_report_outline());
-  report.file("noise.md", md)
+  report.file("noise.md", std::move(md))
       .file("allan.csv", allan_csv(a))
       .file("noise_terms.csv", terms_csv(a))
       .file("calibration.csv", calibration_csv(calibrations))
-      .file("noise.json", json)
+      .file("noise.json", std::move(json))
       .figure("allan", [figure = noise_allan_figure(a, levels)] { return render_panel_figure(figure); })
       .figure("stationarity", [figure = stationarity_figure(rec, a)] { return render_panel_figure(figure); })
-      .shown(ReportFormat::kMarkdown, std::move(md))
-      .shown(ReportFormat::kJson, json);
+      .shown_file(ReportFormat::kMarkdown, "noise.md")
+      .shown_file(ReportFormat::kJson, "noise.json");
   return report;
 }
 

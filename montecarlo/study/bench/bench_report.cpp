@@ -5,6 +5,7 @@
 
 #include "lib/common/version.h"
 #include "montecarlo/report/json.h"
+#include "montecarlo/report/markdown.h"
 
 namespace insmc::mc {
 namespace {
@@ -106,32 +107,27 @@ Report bench_report(const BenchOptions& o, const std::vector<BenchRound>& result
                     o.threads, o.samples, outputs, o.pipeline_samples, o.truth_samples);
   md += fmt::format("machine: {}, {} hardware threads; generator kernel {}, block product kernel {}\n\n", machine.cpu,
                     machine.hardware_threads, machine.generator_kernel, machine.product_kernel);
-  md += fmt::format("| round | generator [variates/s, 1 thread] | floor [samples/s] | engine [samples/s] | engine/floor "
-                    "| engine, 1 thread [samples/s] | scaling |\n");
-  md += "|---:|---:|---:|---:|---:|---:|---:|\n";
+  Table paper({"round", "generator [variates/s, 1 thread]", "floor [samples/s]", "engine [samples/s]", "engine/floor",
+               "engine, 1 thread [samples/s]", "scaling"});
+  Table linear({"round", "linear, scheme none: floor [samples/s]", "engine [samples/s]", "engine/floor"});
+  Table pipelines({"round", "pipeline floor [samples/s]", "paper full [samples/s]", "/floor", "linear [samples/s]",
+                   "/floor", "truth reference [samples/s]", "truth [samples/s]", "/reference"});
+  const auto rate = [](double x) { return fmt::format("{:.3g}", x); };
+  const auto ratio = [](double x) { return fmt::format("{:.2f}", x); };
   for (size_t i = 0; i < results.size(); ++i) {
     const BenchRound& r = results[i];
-    md += fmt::format("| {} | {:.3g} | {:.3g} | {:.3g} | {:.2f} | {:.3g} | {:.2f} |\n", i + 1,
-                    r.paper.generator_variates_per_s, r.paper.floor_samples_per_s, r.paper.engine_samples_per_s,
-                    r.engine_over_floor(), r.paper.engine_one_thread_samples_per_s, r.scaling());
+    const std::string round = std::to_string(i + 1);
+    paper.add_row({round, rate(r.paper.generator_variates_per_s), rate(r.paper.floor_samples_per_s),
+                   rate(r.paper.engine_samples_per_s), ratio(r.engine_over_floor()),
+                   rate(r.paper.engine_one_thread_samples_per_s), ratio(r.scaling())});
+    linear.add_row({round, rate(r.linear.floor_samples_per_s), rate(r.linear.engine_samples_per_s),
+                    ratio(r.linear_engine_over_floor())});
+    pipelines.add_row({round, rate(r.pipeline.floor_samples_per_s), rate(r.pipeline.paper_samples_per_s),
+                       ratio(r.paper_full_over_floor()), rate(r.pipeline.linear_samples_per_s),
+                       ratio(r.linear_over_floor()), rate(r.truth.reference_samples_per_s),
+                       rate(r.truth.truth_samples_per_s), ratio(r.truth_over_reference())});
   }
-  md += fmt::format("\n| round | linear, scheme none: floor [samples/s] | engine [samples/s] | engine/floor |\n");
-  md += "|---:|---:|---:|---:|\n";
-  for (size_t i = 0; i < results.size(); ++i) {
-    const BenchRound& r = results[i];
-    md += fmt::format("| {} | {:.3g} | {:.3g} | {:.2f} |\n", i + 1, r.linear.floor_samples_per_s,
-                    r.linear.engine_samples_per_s, r.linear_engine_over_floor());
-  }
-  md += fmt::format("\n| round | pipeline floor [samples/s] | paper full [samples/s] | /floor | linear [samples/s] | /floor "
-                    "| truth reference [samples/s] | truth [samples/s] | /reference |\n");
-  md += "|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (size_t i = 0; i < results.size(); ++i) {
-    const BenchRound& r = results[i];
-    md += fmt::format("| {} | {:.3g} | {:.3g} | {:.2f} | {:.3g} | {:.2f} | {:.3g} | {:.3g} | {:.2f} |\n", i + 1,
-                    r.pipeline.floor_samples_per_s, r.pipeline.paper_samples_per_s, r.paper_full_over_floor(),
-                    r.pipeline.linear_samples_per_s, r.linear_over_floor(), r.truth.reference_samples_per_s,
-                    r.truth.truth_samples_per_s, r.truth_over_reference());
-  }
+  md += render_markdown(paper) + "\n" + render_markdown(linear) + "\n" + render_markdown(pipelines);
   md += fmt::format("\nmedians: paper uncompensated engine/floor {:.2f} ({}-thread/1-thread scaling {:.2f}); "
                     "linear uncompensated {:.2f}; paper full/floor {:.2f}; linear/floor {:.2f}; truth/reference {:.2f} "
                     "(time ratio {:.2f})\n",

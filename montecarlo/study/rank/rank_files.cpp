@@ -375,16 +375,16 @@ Report rank_report(const StudyConfig& config, const std::vector<SchemeOrder>& or
   Json json = Json::object();
   json["settings"] = settings_json(config);
   json["rank"] = std::move(rank_json);
-  const std::string json_text = json.dump();
+  std::string json_text = json.dump();
   Report report(rank_report_outline());
-  report.file("ranking.csv", f.ranking_csv)
+  report.file("ranking.csv", std::move(f.ranking_csv))
       .file("breakeven.csv", std::move(f.breakeven_csv))
-      .file("rank.md", rank_md)
-      .file("rank.json", json_text)
+      .file("rank.md", std::move(rank_md))
+      .file("rank.json", std::move(json_text))
       .figure("rank", [plot = rank_plot(config, even, fidelity, unit)] { return render_panel_figure(plot); })
-      .shown(ReportFormat::kMarkdown, std::move(rank_md))
-      .shown(ReportFormat::kCsv, std::move(f.ranking_csv))
-      .shown(ReportFormat::kJson, json_text)
+      .shown_file(ReportFormat::kMarkdown, "rank.md")
+      .shown_file(ReportFormat::kCsv, "ranking.csv")
+      .shown_file(ReportFormat::kJson, "rank.json")
       .summary({fmt::format("insmc rank: fidelity {}, {} samples\n\n{}", fidelity, config.samples,
                             rank_summary(config, orders, even, unit)),
                 [](const std::optional<std::string>& out) {

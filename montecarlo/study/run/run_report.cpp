@@ -49,19 +49,18 @@ Report envelope_report(const StudyConfig& config, EnvelopeFiles files, const Run
                                        config.seed, to_string(config.fidelity), facts.elapsed_s);
   std::string run_json_text = run_json(config, facts, files.envelope_json).dump();
   Report report(envelope_report_outline());
-  report.file("envelope.csv", files.envelope_csv)
+  report.file("envelope.csv", std::move(files.envelope_csv))
       .file("envelope_grid.csv", std::move(files.envelope_grid_csv))
       .file("envelope.md", std::move(files.envelope_md))
-      .file("run.json", run_json_text)
+      .file("run.json", std::move(run_json_text))
       .figure("envelope", [plot = std::move(files.envelope_plot)] { return render_panel_figure(plot); })
       .shown(ReportFormat::kMarkdown, head + files.full_text)
-      .shown(ReportFormat::kCsv, std::move(files.envelope_csv))
-      .shown(ReportFormat::kJson, std::move(run_json_text))
+      .shown_file(ReportFormat::kCsv, "envelope.csv")
+      .shown_file(ReportFormat::kJson, "run.json")
       .summary({head + files.summary_text,
                 [](const std::optional<std::string>& out) {
                   return full_tables_line("run", {"envelope.md", "envelope.csv"}, out);
-                },
-                true, true});
+                }});
   return report;
 }
 
@@ -77,13 +76,13 @@ Report sweep_report(const StudyConfig& config, SweepFiles files, const Json& set
       fmt::join(facts.swept, " × "), facts.points, config.samples, config.seed, to_string(config.fidelity),
       facts.elapsed_s, length_suffix(unit), format_number(100 * config.confidence), files.summary_md);
   Report report(sweep_report_outline());
-  report.file("sweep.csv", files.sweep_csv)
+  report.file("sweep.csv", std::move(files.sweep_csv))
       .file("sweep.md", files.summary_md)
-      .file("sweep.json", json)
+      .file("sweep.json", std::move(json))
       .figure("sweep", [plot = std::move(files.plot)] { return render_panel_figure(plot); })
-      .shown(ReportFormat::kMarkdown, std::move(files.summary_md))
-      .shown(ReportFormat::kCsv, std::move(files.sweep_csv))
-      .shown(ReportFormat::kJson, json)
+      .shown(ReportFormat::kMarkdown, summary)  // a sweep's summary is its whole table
+      .shown_file(ReportFormat::kCsv, "sweep.csv")
+      .shown_file(ReportFormat::kJson, "sweep.json")
       .summary({summary,
                 [](const std::optional<std::string>& out) {
                   return out ? fmt::format("Files written in {}: sweep.csv (every axis and time), sweep.md, sweep.json, "
@@ -91,8 +90,7 @@ Report sweep_report(const StudyConfig& config, SweepFiles files, const Json& set
                                            *out)
                              : std::string("Every axis and time: --format csv, or --out DIR for sweep.csv, sweep.md, "
                                            "sweep.json and the figure\n");
-                },
-                false});
+                }});
   return report;
 }
 

@@ -6,12 +6,12 @@
 
 namespace insmc::mc {
 
-RunOutcome run_study_blocks(const StudyConfig& c, const StudyMap& map, Ranks& ranks, StudyProgress start,
+RunOutcome run_study_blocks(const StudyConfig& c, const StudyMap& map, Processes& processes, StudyProgress start,
                             const RunPlan& plan) {
   using Clock = std::chrono::steady_clock;
   RunOutcome out;
-  out.shares = split_remaining(block_count(c.samples), start.done, ranks.size());
-  const BlockSet& mine = out.shares[static_cast<std::size_t>(ranks.rank())];
+  out.shares = split_remaining(block_count(c.samples), start.done, processes.size());
+  const BlockSet& mine = out.shares[static_cast<std::size_t>(processes.rank())];
   const std::uint64_t my_blocks = block_total(mine);
 
   RunWatch no_watch;
@@ -19,7 +19,7 @@ RunOutcome run_study_blocks(const StudyConfig& c, const StudyMap& map, Ranks& ra
   std::atomic<bool> own_pause{false};
   std::atomic<bool>& pause = watch.stop_flag() != nullptr ? *watch.stop_flag() : own_pause;
   const auto signal = [&] { return watch.stop_signal(); };
-  const bool root = ranks.root();
+  const bool root = processes.root();
   if (root) watch.start(sample_total(mine, c.samples));
 
   const double every_s = std::min(plan.checkpoint_every_s, 1e9);  // ~30 years: no overflow in ns
@@ -43,16 +43,16 @@ RunOutcome run_study_blocks(const StudyConfig& c, const StudyMap& map, Ranks& ra
       local.merge(run_blocks(c, map, first, mine[i].end, on_block, &pause, &end));  // moved in
       finished += end - first;
     }
-    const std::vector<std::int64_t> status = ranks.max_all({signal(), finished < my_blocks ? 1 : 0});
+    const std::vector<std::int64_t> status = processes.max_all({signal(), finished < my_blocks ? 1 : 0});
     const bool complete = status[1] == 0, interrupted = status[0] != 0 && !complete;
     if (complete || plan.write_checkpoint) {
-      StudyAccumulator merged = ranks.merge(local, complete && plan.result_everywhere);
-      const std::vector<std::uint64_t> counts = ranks.gather(finished);
-      if (ranks.root() || (complete && plan.result_everywhere)) {
+      StudyAccumulator merged = processes.merge(local, complete && plan.result_everywhere);
+      const std::vector<std::uint64_t> counts = processes.gather(finished);
+      if (processes.root() || (complete && plan.result_everywhere)) {
         out.progress.state = start.state;
         out.progress.state.merge(std::move(merged));
       }
-      if (ranks.root()) {
+      if (processes.root()) {
         BlockSet done = start.done;
         for (std::size_t r = 0; r < counts.size(); ++r) {
           const BlockSet part = take_front(out.shares[r], counts[r]);

@@ -12,7 +12,7 @@
 
 #include "montecarlo/study/engine/block_ranges.h"
 #include "montecarlo/study/engine/engine.h"
-#include "montecarlo/study/run/ranks.h"
+#include "montecarlo/study/run/processes.h"
 
 namespace insmc::mc {
 
@@ -64,7 +64,7 @@ struct RunOutcome {
 
 /// Collective. `start`: the finished blocks and their state (a resumed
 /// checkpoint; its state is needed on rank 0 only).
-RunOutcome run_study_blocks(const StudyConfig& config, const StudyMap& map, Ranks& ranks, StudyProgress start,
+RunOutcome run_study_blocks(const StudyConfig& config, const StudyMap& map, Processes& processes, StudyProgress start,
                             const RunPlan& plan);
 
 }  // namespace insmc::mc

@@ -20,14 +20,14 @@ Report covariance_report(const StudyConfig& config, const StudyLayout& layout, c
   json["settings"] = settings_json(config, SettingsOf::kCovariance);
   json["covariance"] = std::move(files.covariance_json);
   Report report(covariance_report_outline());
-  report.file("covariance.csv", files.covariance_csv)
+  report.file("covariance.csv", std::move(files.covariance_csv))
       .file("covariance_grid.csv", std::move(files.covariance_grid_csv))
       .file("budget.csv", std::move(files.budget_csv))
       .file("sensitivity.csv", render_sensitivity_csv(layout, map))
-      .file("covariance.md", files.covariance_md)
+      .file("covariance.md", std::move(files.covariance_md))
       .figure("budget", [plot = std::move(files.budget_plot)] { return render_bar_figure(plot); })
-      .shown(ReportFormat::kMarkdown, std::move(files.covariance_md))
-      .shown(ReportFormat::kCsv, std::move(files.covariance_csv))
+      .shown_file(ReportFormat::kMarkdown, "covariance.md")
+      .shown_file(ReportFormat::kCsv, "covariance.csv")
       .shown(ReportFormat::kJson, json.dump())
       .summary({fmt::format("insmc covariance: fidelity {}\n\n{}", to_string(config.fidelity), files.summary_text),
                 [](const std::optional<std::string>& out) {

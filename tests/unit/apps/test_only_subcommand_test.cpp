@@ -18,6 +18,7 @@
 #include "apps/dispatch.h"
 #include "apps/output_paths.h"
 #include "apps/report_output.h"
+#include "apps/stdout_choice.h"
 #include "lib/common/input_error.h"
 
 namespace insmc::app {
@@ -29,11 +30,12 @@ int run_echo(const Args& args) {
   opts.add_options()("text", po::value<std::string>()->default_value("hello"), "what to print")(
       "format", po::value<std::string>()->default_value("markdown"), "markdown or csv")(
       "out", po::value<std::string>(), "folder for echo.md and echo.csv")("fail", po::bool_switch(), "a defect");
+  add_stdout_switches(opts, "echo.md");
   const auto vm = parse_args(args, "echo", "[--text TEXT] [--format markdown|csv] [--out DIR]", opts);
   if (!vm) return 0;
   const mc::ReportOutline outline{
       "echo", {"echo.md", "echo.csv"}, {}, {mc::ReportFormat::kMarkdown, mc::ReportFormat::kCsv}};
-  const mc::ReportFormat format = read_report_format(*vm, outline);
+  const StdoutChoice shown = read_stdout_choice(*vm, outline);
   std::optional<OutputFolderOption> out = prepare_report_folder(*vm, outline);
   if ((*vm)["fail"].as<bool>()) throw std::logic_error("echo failed");
   const std::string text = (*vm)["text"].as<std::string>();
@@ -41,9 +43,12 @@ int run_echo(const Args& args) {
   mc::Report report(outline);
   report.file("echo.md", "# " + text + "\n")
       .file("echo.csv", "text\n" + text + "\n")
-      .shown(mc::ReportFormat::kMarkdown, "# " + text + "\n")
-      .shown(mc::ReportFormat::kCsv, "text\n" + text + "\n");
-  write_report(report, {format}, out, *vm);
+      .shown_file(mc::ReportFormat::kMarkdown, "echo.md")
+      .shown_file(mc::ReportFormat::kCsv, "echo.csv")
+      .summary({"echo: " + text + "\n", [](const std::optional<std::string>& folder) {
+                  return mc::full_tables_line("echo", {"echo.md"}, folder);
+                }});
+  write_report(report, shown, out, *vm);
   return 0;
 }
 
@@ -74,11 +79,39 @@ std::string read(const std::filesystem::path& p) {
   return s.str();
 }
 
+std::filesystem::path scratch_folder(const std::string& name) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("insmc_test_only_subcommand_" + name + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
 TEST(TestOnlySubcommand, PrintsItsReportInEachFormatItOffers) {
-  EXPECT_EQ(insmc({"echo", "--text", "hi"}).out, "# hi\n");
+  EXPECT_EQ(insmc({"echo", "--text", "hi", "--full"}).out, "# hi\n");
   const Outcome csv = insmc({"echo", "--text", "hi", "--format", "csv"});
   EXPECT_EQ(csv.code, 0);
   EXPECT_EQ(csv.out, "text\nhi\n");
+}
+
+// The summary, --full, --quiet and --out together (docs/outputs.md, "Stdout
+// beside the set"): the line naming the full tables follows the summary
+// always, and the full markdown when --out is given.
+TEST(TestOnlySubcommand, ItsSummaryAndTheLineUnderItFollowFullAndOut) {
+  const std::string how = "Full tables (every axis and time): insmc echo --full, or --out DIR for echo.md, or --format csv\n";
+  EXPECT_EQ(insmc({"echo", "--text", "hi"}).out, "echo: hi\n\n" + how);
+  const std::filesystem::path dir = scratch_folder("summary");
+  const std::string where = "Full tables (every axis and time): " + (dir / "echo.md").string() + "\n";
+  EXPECT_EQ(insmc({"echo", "--text", "hi", "--out", dir.string()}).out, "echo: hi\n\n" + where);
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(insmc({"echo", "--text", "hi", "--full", "--out", dir.string()}).out, "# hi\n\n" + where);
+  std::filesystem::remove_all(dir);
+  const Outcome quiet = insmc({"echo", "--text", "hi", "--quiet", "--out", dir.string()});
+  EXPECT_EQ(quiet.code, 0);
+  EXPECT_EQ(quiet.out, "");
+  EXPECT_EQ(read(dir / "echo.md"), "# hi\n");  // the set is still written
+  std::filesystem::remove_all(dir);
+  // csv and json print their file as it is, with or without a summary.
+  EXPECT_EQ(insmc({"echo", "--text", "hi", "--format", "csv", "--full"}).out, "text\nhi\n");
 }
 
 TEST(TestOnlySubcommand, AFormatItsLayoutDoesNotOfferIsRefusedWithExitTwo) {
@@ -89,9 +122,7 @@ TEST(TestOnlySubcommand, AFormatItsLayoutDoesNotOfferIsRefusedWithExitTwo) {
 }
 
 TEST(TestOnlySubcommand, WritesItsSetWholeIntoOut) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("insmc_test_only_subcommand_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
+  const std::filesystem::path dir = scratch_folder("set");
   const Outcome o = insmc({"echo", "--text", "set", "--out", dir.string()});
   ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_EQ(read(dir / "echo.md"), "# set\n");

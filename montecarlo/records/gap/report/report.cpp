@@ -349,14 +349,13 @@ mc::Report diagnosis_report(const Diagnosis& d, const std::vector<std::string>& 
                  fmt::format("{:.3g}", d.greedy[i].heldout_gap), fmt::format("{:.3g}", d.greedy[i].p_value)});
     md += fmt::format("From held-out G = {:.3g} (against the model):\n\n", d.heldout_gap_before) + mc::render_markdown(g);
   }
-  const std::string json = diagnosis_json(d, record_files).dump(2) + "\n";
   mc::Report report(diagnosis_report_outline());
-  report.file("gap.md", md)
-      .file("gap.json", json)
+  report.file("gap.md", std::move(md))
+      .file("gap.json", diagnosis_json(d, record_files).dump(2) + "\n")
       .figure("gap_groups", [script = groups_figure_script(d)] { return mc::render_figure("gap_groups", script); })
       .figure("gap_allan", [figure = allan_figure(d)] { return mc::render_panel_figure(figure); })
-      .shown(mc::ReportFormat::kMarkdown, std::move(md))
-      .shown(mc::ReportFormat::kJson, json);
+      .shown_file(mc::ReportFormat::kMarkdown, "gap.md")
+      .shown_file(mc::ReportFormat::kJson, "gap.json");
   return report;
 }
 

@@ -76,18 +76,10 @@ ValidationOptions ValidationOptions::quick_subset() {
 RecordFile own_layout_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs) {
   TruthOptions truth;
   truth.effects = effects;
-  const double T = 900.0, nav = 90 * 60.0;
-  RecordFile file;
-  file.header = RecordHeader::make(truth.model.latitude_rad / kDegToRad, truth.system, T, Scheme::kNone);
-  file.header.set("dv_pulse_mps", truth.dv_pulse_mps);
-  file.header.set("filter_interval_s", truth.filter_interval_s);
-  for (std::size_t i = 0; i < effects.size(); ++i)
-    file.header.set(fmt::format("truth.effect.{}", i), format_effect(effects[i]));
-  const mc::Sampler sampler(UncertaintyModel{});
-  const std::vector<double> times = uniform_times(T + nav, truth.filter_interval_s, false);
-  for (int r = 0; r < runs; ++r)
-    file.runs.push_back(runs::simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(r), times, {T, 0.0}));
-  return without_truth(std::move(file));  // the diagnosis is blind
+  runs::OwnFileSpec spec;
+  spec.runs = runs;
+  // The diagnosis is blind: no truth keys.
+  return without_truth(runs::simulate_own_file(truth, mc::Sampler(UncertaintyModel{}), seed, spec));
 }
 
 RecordFile foreign_layout_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs, const ForeignLayout& layout) {
@@ -381,12 +373,12 @@ mc::Report validation_report(const ValidationResult& r, const ValidationOptions&
                                       r.cases.size()),
                           "reported top candidate", "true effect", m.rows, m.columns, m.counts};
   mc::Report report(validation_report_outline());
-  report.file("validation.md", md)
+  report.file("validation.md", std::move(md))
       .file("confusion.md", render_markdown(confusion))
       .file("confusion.csv", mc::render_csv(confusion))
       .file("validation.json", j.dump(2) + "\n")
       .figure("confusion", [figure = std::move(figure)] { return mc::render_matrix_figure(figure); })
-      .shown(mc::ReportFormat::kMarkdown, std::move(md));
+      .shown_file(mc::ReportFormat::kMarkdown, "validation.md");
   return report;
 }
 

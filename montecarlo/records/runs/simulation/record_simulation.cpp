@@ -1,8 +1,12 @@
 #include "montecarlo/records/runs/simulation/record_simulation.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "lib/common/assert.h"
+#include "lib/truth/effect.h"
+#include "lib/units/units.h"
 #include "lib/preflight/instruments.h"
 #include "lib/preflight/test_run.h"
 #include "montecarlo/study/random/philox.h"
@@ -105,6 +109,30 @@ RecordRun simulate_like(const RecordRun& pattern, const TruthOptions& truth, con
       if (!rows[k]->f_mps2[a]) out.rows[k].f_mps2[a].reset();
   }
   return out;
+}
+
+RecordFile simulate_own_file(const TruthOptions& truth, const mc::Sampler& sampler, std::uint64_t seed,
+                             const OwnFileSpec& spec) {
+  const double T = spec.test_duration_s, tau = truth.filter_interval_s;
+  // After a realignment the second navigation starts at nav_start_s = T + the
+  // realignment; its rows follow on the same filter grid.
+  const bool second_switch = realigns(spec.scheme);
+  const double nav_start_s = second_switch ? ready_time_s(spec.scheme, T, spec.realignment_duration_s) : T;
+  std::vector<double> times = uniform_times(T, tau, false);
+  for (double t : uniform_times(spec.nav_duration_s, tau, false)) times.push_back(nav_start_s + t);
+  RecordFile file;
+  file.header = RecordHeader::make(truth.model.latitude_rad / kDegToRad, truth.system, T, spec.scheme);
+  file.header.set("dv_pulse_mps", truth.dv_pulse_mps);
+  if (spec.position_resolution_m) file.header.set("position_resolution_m", *spec.position_resolution_m);
+  file.header.set("filter_interval_s", tau);
+  if (second_switch) file.header.set("nav_start_s", nav_start_s);
+  file.header.set("truth.seed", static_cast<double>(seed));
+  for (std::size_t i = 0; i < truth.effects.size(); ++i)
+    file.header.set(fmt::format("truth.effect.{}", i), format_effect(truth.effects[i]));
+  const RecordRunSpec run_spec{T, spec.position_resolution_m.value_or(0.0), spec.scheme, spec.setup, nav_start_s};
+  for (int run = 0; run < spec.runs; ++run)
+    file.runs.push_back(simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(run), times, run_spec));
+  return file;
 }
 
 }  // namespace insmc::runs

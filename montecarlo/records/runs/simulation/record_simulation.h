@@ -4,6 +4,7 @@
 /// `seed` is a pure function of (seed, run): x from the sampler's stream,
 /// the pulse phase from its own stream, the effects' noise from theirs.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "lib/compensation/truth_compensation.h"
@@ -43,5 +44,27 @@ RecordRun simulate_record_run(const TruthOptions& truth, const mc::Sampler& samp
 /// times, f components only where the pattern has them.
 RecordRun simulate_like(const RecordRun& pattern, const TruthOptions& truth, const mc::Sampler& sampler,
                         std::uint64_t seed, std::uint64_t run, const RecordRunSpec& spec);
+
+/// A file of `runs` runs in insmc's own layout: a row every filter interval
+/// through the test run and the navigation (after a realignment, from the
+/// second switch-over), every f and r present.
+struct OwnFileSpec {
+  int runs = 20;
+  double test_duration_s = 900.0;
+  double nav_duration_s = 90 * 60.0;
+  /// r rounded to this and the header's position_resolution_m; nullopt: r
+  /// exact and the key absent (the diagnosis then reads the resolution as
+  /// unstated, as in a file that does not say).
+  std::optional<double> position_resolution_m;
+  Scheme scheme = Scheme::kNone;
+  const TruthSchemeSetup* setup = nullptr;  ///< required with a scheme (simulate_record_run)
+  double realignment_duration_s = 0.0;      ///< with a scheme that realigns
+};
+
+/// The file of `spec`, with its truth keys (truth.seed, truth.effect.N):
+/// what `insmc simulate` writes in its own layout, and the gap study's own
+/// files (without their truth keys).
+RecordFile simulate_own_file(const TruthOptions& truth, const mc::Sampler& sampler, std::uint64_t seed,
+                             const OwnFileSpec& spec);
 
 }  // namespace insmc::runs

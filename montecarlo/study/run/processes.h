@@ -1,8 +1,8 @@
 #pragma once
 /// The processes of one study run (montecarlo/study/run/study_runner.h): a
-/// single process, as this class is, or the ranks of an MPI job, which the
-/// command line brings (apps/ranks.h, apps/mpi_ranks.cpp). Everything MPI
-/// stays behind this interface; the library needs no MPI.
+/// single process, as this class is, or the ranks of an MPI job
+/// (join_processes.h; mpi_processes.cpp, only in the MPI build). Everything
+/// MPI stays behind this interface; the rest of the library needs no MPI.
 ///
 /// Every method except rank(), size() and distributed() is collective: all
 /// ranks call it, in the same order.
@@ -14,9 +14,9 @@
 
 namespace insmc::mc {
 
-class Ranks {
+class Processes {
  public:
-  virtual ~Ranks() = default;
+  virtual ~Processes() = default;
   /// This process's rank, 0 ≤ rank < size; rank 0 prints and writes files.
   virtual int rank() const { return 0; }
   virtual int size() const { return 1; }

@@ -13,21 +13,21 @@
 #include <string_view>
 #include <vector>
 
-#include "apps/ranks.h"
+#include "montecarlo/study/run/join_processes.h"
 #include "lib/common/assert.h"
 
-namespace insmc::app {
+namespace insmc::mc {
 namespace {
 
-class MpiRanks final : public Ranks {
+class MpiProcesses final : public Processes {
  public:
-  MpiRanks() {
+  MpiProcesses() {
     int provided = 0;
     MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);  // only the main thread calls MPI
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
   }
-  ~MpiRanks() override {
+  ~MpiProcesses() override {
     std::fflush(stdout);
     std::fflush(stderr);
     MPI_Finalize();
@@ -59,7 +59,7 @@ class MpiRanks final : public Ranks {
     return out;
   }
 
-  mc::StudyAccumulator merge(const mc::StudyAccumulator& local, bool everywhere) override {
+  StudyAccumulator merge(const StudyAccumulator& local, bool everywhere) override {
     const std::string bytes = local.serialize();
     INSMC_ASSERT(bytes.size() < INT_MAX, "an accumulator state of {} bytes exceeds one MPI message (2 GiB)", bytes.size());
     int count = static_cast<int>(bytes.size());
@@ -78,13 +78,13 @@ class MpiRanks final : public Ranks {
       const auto state_of = [&](std::size_t r) {
         return std::string_view(all).substr(static_cast<std::size_t>(starts[r]), static_cast<std::size_t>(counts[r]));
       };
-      mc::StudyAccumulator acc = mc::StudyAccumulator::deserialize(state_of(0));
-      for (std::size_t r = 1; r < counts.size(); ++r) acc.merge(mc::StudyAccumulator::deserialize(state_of(r)));
+      StudyAccumulator acc = StudyAccumulator::deserialize(state_of(0));
+      for (std::size_t r = 1; r < counts.size(); ++r) acc.merge(StudyAccumulator::deserialize(state_of(r)));
       merged = acc.serialize();
     }
     if (everywhere) merged = broadcast(std::move(merged));
     else if (rank_ != 0) return {};
-    return mc::StudyAccumulator::deserialize(merged);
+    return StudyAccumulator::deserialize(merged);
   }
 
   void barrier() override { MPI_Barrier(MPI_COMM_WORLD); }
@@ -101,6 +101,6 @@ class MpiRanks final : public Ranks {
 
 }  // namespace
 
-std::unique_ptr<Ranks> make_mpi_ranks() { return std::make_unique<MpiRanks>(); }
+std::unique_ptr<Processes> make_mpi_processes() { return std::make_unique<MpiProcesses>(); }
 
-}  // namespace insmc::app
+}  // namespace insmc::mc
