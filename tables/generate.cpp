@@ -84,7 +84,7 @@ struct Member {
   std::string label;  ///< "" when the printed row has one member
   System system;
   int axis;    ///< 0, 1, 2 = x, y, z of a'
-  int column;  ///< catalogue slot or xc:: extra column
+  int column;  ///< catalogue slot or map_column:: extra column
 };
 
 struct RowSpec {
@@ -131,20 +131,20 @@ std::map<std::pair<std::string, std::string>, RowSpec> row_specs(const ModelOpti
   const Systems s1 = Systems::k1, s2 = Systems::k2, s12 = Systems::kBoth;
   // One μrad of leveling error ψ_ω = ω_do/F(0) (system 1) is F(0)·1 μrad of drift.
   const double psi_urad = o.leveling_gain_ratio * o.earth_rate_radps * kUrad;
-  const Sym dfx{"δf_x", ux::kAccelBias + 0, X}, dfy{"δf_y", ux::kAccelBias + 1, Z},
-      dfz{"δf_z", ux::kAccelBias + 2, Z};
-  const Sym pfx{"∂f_x", ux::kBiasChangeConst + 0, X}, pfy{"∂f_y", ux::kBiasChangeConst + 1, Y};
-  const Sym az{"a_z", ux::kAccelScale + 2, Z};
-  const Sym wdx_y{"ω_dox", ux::kGyroDrift + 0, Y}, wdy_x{"ω_doy", ux::kGyroDrift + 1, X},
-      wdz_x{"ω_doz", ux::kGyroDrift + 2, X}, wdy_y{"ω_doy", ux::kGyroDrift + 1, Y};
-  const Sym mux_y{"gMUY_x", ux::kGyroMuyDrift + 0, Y}, muy_x{"gMUY_y", ux::kGyroMuyDrift + 1, X},
-      muz_x{"gMUY_z", ux::kGyroMuyDrift + 2, X};
-  const Sym zx_y{"ζ_x", ux::kMisalignConst + 0, Y}, zy_x{"ζ_y", ux::kMisalignConst + 1, X},
-      zz_x{"ζ_z", ux::kMisalignConst + 2, X};
-  const Sym upsi{"(u)ψ", ux::kTheodolite, X};
-  const Sym psix{"ω_dox/F(0)", ux::kGyroDrift + 0, Y}, psiy{"ω_doy/F(0)", ux::kGyroDrift + 1, X};
-  const Sym vx{"δV(0)_x", ux::kInitialVelocity + 0, X}, vy{"δV(0)_y", ux::kInitialVelocity + 1, Y},
-      vz{"δV(0)_z", ux::kInitialVelocity + 2, Z};
+  const Sym dfx{"δf_x", uncertainty_slot::kAccelBias + 0, X}, dfy{"δf_y", uncertainty_slot::kAccelBias + 1, Z},
+      dfz{"δf_z", uncertainty_slot::kAccelBias + 2, Z};
+  const Sym pfx{"∂f_x", uncertainty_slot::kBiasChangeConst + 0, X}, pfy{"∂f_y", uncertainty_slot::kBiasChangeConst + 1, Y};
+  const Sym az{"a_z", uncertainty_slot::kAccelScale + 2, Z};
+  const Sym wdx_y{"ω_dox", uncertainty_slot::kGyroDrift + 0, Y}, wdy_x{"ω_doy", uncertainty_slot::kGyroDrift + 1, X},
+      wdz_x{"ω_doz", uncertainty_slot::kGyroDrift + 2, X}, wdy_y{"ω_doy", uncertainty_slot::kGyroDrift + 1, Y};
+  const Sym mux_y{"gMUY_x", uncertainty_slot::kGyroMuyDrift + 0, Y}, muy_x{"gMUY_y", uncertainty_slot::kGyroMuyDrift + 1, X},
+      muz_x{"gMUY_z", uncertainty_slot::kGyroMuyDrift + 2, X};
+  const Sym zx_y{"ζ_x", uncertainty_slot::kMisalignConst + 0, Y}, zy_x{"ζ_y", uncertainty_slot::kMisalignConst + 1, X},
+      zz_x{"ζ_z", uncertainty_slot::kMisalignConst + 2, X};
+  const Sym upsi{"(u)ψ", uncertainty_slot::kTheodolite, X};
+  const Sym psix{"ω_dox/F(0)", uncertainty_slot::kGyroDrift + 0, Y}, psiy{"ω_doy/F(0)", uncertainty_slot::kGyroDrift + 1, X};
+  const Sym vx{"δV(0)_x", uncertainty_slot::kInitialVelocity + 0, X}, vy{"δV(0)_y", uncertainty_slot::kInitialVelocity + 1, Y},
+      vz{"δV(0)_z", uncertainty_slot::kInitialVelocity + 2, Z};
 
   std::map<std::pair<std::string, std::string>, RowSpec> s;
   auto add = [&s](std::string table, std::string row, RowSpec spec) {
@@ -155,7 +155,7 @@ std::map<std::pair<std::string, std::string>, RowSpec> row_specs(const ModelOpti
   add("4.1", "1&2 | δf_y | U3", {K::kAccel, T::kU3, kMg, kMg, expand({dfy}, s12)});
   add("4.1", "1&2 | δf_z, δg, ∂f_x, ∂f_y | A1",
       {K::kAccel, T::kA1, kMg, kMg,
-       expand({dfz, {"δg", xc::kGravityError, Z}, pfx, pfy}, s12)});
+       expand({dfz, {"δg", map_column::kGravityError, Z}, pfx, pfy}, s12)});
   add("4.1", "1&2 | a_z | A1", {K::kAccel, T::kA1, kPpm, kUg, expand({az}, s12)});
   add("4.1", "1 | ω_dox, ω_doy | U3", {K::kAccel, T::kU3, kMeru, kUg, expand({wdx_y, wdy_x}, s1)});
   add("4.1", "1 | ω_doz | U4", {K::kAccel, T::kU4, kMeru, kUg, expand({wdz_x}, s1)});
@@ -188,7 +188,7 @@ std::map<std::pair<std::string, std::string>, RowSpec> row_specs(const ModelOpti
   add("4.2", "1&2 | δV(0)_k, k = x, y, z | U3",
       {K::kPosition, T::kDV, kFtpsToMps, kFt, expand({vx, vy, vz}, s12)});
   add("4.2", "1&2 | δh | U2",
-      {K::kPosition, T::kU2, kFt, kFt, expand({{"δh", ux::kAltitudeError, Z}}, s12)});
+      {K::kPosition, T::kU2, kFt, kFt, expand({{"δh", uncertainty_slot::kAltitudeError, Z}}, s12)});
 
   // ---- Table 5.1: after scheme 5.1.1 and realignment, (5.4): residual
   // coefficients per unit, and the unchanged U4, U5 of (3.29d, e).
@@ -196,11 +196,11 @@ std::map<std::pair<std::string, std::string>, RowSpec> row_specs(const ModelOpti
   add("5.1", "U'2k, k=x,y,z | U'2", {K::kCoefficient, T::kU2, 1e-4, kFt, {{"", System::kTheodolite, X, 0}}});
   add("5.1", "U'3k, k=x,y,z | U'3", {K::kCoefficient, T::kU3, 1e-3, kFt, {{"", System::kTheodolite, X, 0}}});
   add("5.1", "ω_dok, k=x,z | U'4",
-      {K::kPosition, T::kU4, kMeru, kFt, expand({{"ω_dox", ux::kGyroDrift + 0, Z}, wdz_x}, s12)});
+      {K::kPosition, T::kU4, kMeru, kFt, expand({{"ω_dox", uncertainty_slot::kGyroDrift + 0, Z}, wdz_x}, s12)});
   add("5.1", "gMUY_k, k=x,y | U'4", {K::kPosition, T::kU4, kMeru, kFt, expand({mux_y, muy_x}, s12)});
   add("5.1", "ω_doy(2) | U'4", {K::kPosition, T::kU4, kMeru, kFt, expand({wdy_y}, s2)});
   add("5.1", "ω_doz | U'5",
-      {K::kPosition, T::kU5, kMeru, kFt, expand({{"ω_doz", ux::kGyroDrift + 2, Y}}, s12)});
+      {K::kPosition, T::kU5, kMeru, kFt, expand({{"ω_doz", uncertainty_slot::kGyroDrift + 2, Y}}, s12)});
   add("5.1", "gMUY_z | U'5", {K::kPosition, T::kU5, kMeru, kFt, expand({muz_x}, s12)});
 
   // ---- Table 5.2: scheme 5.4 (alignment data only), (3.29) with U'2 (5.20), U'3..U'5 (5.17a–c).
@@ -211,39 +211,39 @@ std::map<std::pair<std::string, std::string>, RowSpec> row_specs(const ModelOpti
   add("5.2", "δf_k, k = x, y, δg",
       {K::kPosition, T::kU2, kUg, kFt,
        expand({{"∂f_x (printed δf_x)", pfx.column, X}, {"∂f_y (printed δf_y)", pfy.column, Y},
-               {"δg", xc::kGravityError, Z}},
+               {"δg", map_column::kGravityError, Z}},
               s12),
        m54, paper_maps});
   add("5.2", "Δζ_k, k = x, y",
       {K::kPosition, T::kU2, kUrad, kFt,
-       expand({{"Δζ_x = ζ_rx", ux::kMisalignAlign + 0, Y}, {"Δζ_y = ζ_ry", ux::kMisalignAlign + 1, X}}, s12),
+       expand({{"Δζ_x = ζ_rx", uncertainty_slot::kMisalignAlign + 0, Y}, {"Δζ_y = ζ_ry", uncertainty_slot::kMisalignAlign + 1, X}}, s12),
        m54, paper_maps});
   add("5.2", "δf_k, k = x, y",
       {K::kPosition, T::kU3, kMg, kFt, expand({{"δf_x", dfx.column, Y}, {"δf_y", dfy.column, X}}, s12), m54,
        paper_maps});
   {
-    std::vector<Member> zeta = expand({{"ζ_cx", ux::kMisalignConst + 0, X}, {"ζ_cy", ux::kMisalignConst + 1, Y},
-                                       {"ζ_rx", ux::kMisalignAlign + 0, Z}, {"ζ_rz", ux::kMisalignAlign + 2, X}},
+    std::vector<Member> zeta = expand({{"ζ_cx", uncertainty_slot::kMisalignConst + 0, X}, {"ζ_cy", uncertainty_slot::kMisalignConst + 1, Y},
+                                       {"ζ_rx", uncertainty_slot::kMisalignAlign + 0, Z}, {"ζ_rz", uncertainty_slot::kMisalignAlign + 2, X}},
                                       s1);
     for (auto& m : zeta) m.label += ", sys 1";
-    std::vector<Member> zeta2 = expand({{"ζ_cx", ux::kMisalignConst + 0, X}, {"ζ_cy", ux::kMisalignConst + 1, Y},
-                                        {"ζ_cz", ux::kMisalignConst + 2, X}, {"ζ_rx", ux::kMisalignAlign + 0, X},
-                                        {"ζ_rz", ux::kMisalignAlign + 2, X}},
+    std::vector<Member> zeta2 = expand({{"ζ_cx", uncertainty_slot::kMisalignConst + 0, X}, {"ζ_cy", uncertainty_slot::kMisalignConst + 1, Y},
+                                        {"ζ_cz", uncertainty_slot::kMisalignConst + 2, X}, {"ζ_rx", uncertainty_slot::kMisalignAlign + 0, X},
+                                        {"ζ_rz", uncertainty_slot::kMisalignAlign + 2, X}},
                                        s2);
     for (auto& m : zeta2) m.label += ", sys 2";
     zeta.insert(zeta.end(), zeta2.begin(), zeta2.end());
     add("5.2", "ζ_k, ζ_ck, ζ_rk, k = x, y, z", {K::kPosition, T::kU3, kMrad, kFt, zeta, m54, paper_maps});
   }
   {
-    std::vector<Member> eps = expand({{"ε4x", xc::kEps4 + 0, Y}}, s12);
-    std::vector<Member> eps_y = expand({{"ε4y", xc::kEps4 + 1, X}}, s1);
+    std::vector<Member> eps = expand({{"ε4x", map_column::kEps4 + 0, Y}}, s12);
+    std::vector<Member> eps_y = expand({{"ε4y", map_column::kEps4 + 1, X}}, s1);
     eps_y[0].label = "ε4y, sys 1";
     eps.insert(eps.end(), eps_y.begin(), eps_y.end());
     add("5.2", "ε4x, ε4y(1)", {K::kPosition, T::kU3, 1e-4, kFt, eps, m54, paper_maps});
   }
   add("5.2", "gMUY_k, k = x, y", {K::kPosition, T::kU4, kMeru, kFt, expand({mux_y, muy_x}, s12), m54});
   add("5.2", "ω_doy(2)", {K::kPosition, T::kU4, kMeru, kFt, expand({wdy_y}, s2), m54});
-  add("5.2", "ε4z", {K::kPosition, T::kU4, 1e-4, kFt, expand({{"ε4z", xc::kEps4 + 2, X}}, s12), m54, paper_maps});
+  add("5.2", "ε4z", {K::kPosition, T::kU4, 1e-4, kFt, expand({{"ε4z", map_column::kEps4 + 2, X}}, s12), m54, paper_maps});
   add("5.2", "gMUY_z", {K::kPosition, T::kU5, kMeru, kFt, expand({muz_x}, s12), m54});
   return s;
 }
@@ -270,7 +270,7 @@ class Evaluator {
   double value(const RowSpec& spec, const Member& member, double t) {
     double v = 0.0;
     const bool linear = c_ == TableConvention::kCorrected && spec.corrected == Reference::kLinear &&
-                        spec.kind != Kind::kCoefficient && member.column < ux::kDim;
+                        spec.kind != Kind::kCoefficient && member.column < uncertainty_slot::kDim;
     if (spec.kind == Kind::kCoefficient) {
       v = position_time_function(spec.term, t);
     } else if (linear) {
@@ -338,7 +338,7 @@ class Evaluator {
       case Term::kA1: {
         // (4.4b) A1 = U2 + δr(0)/r0, and (4.3a): δg/g in A1_z.
         ExtendedMap a1 = extend(paper_a1(m, o_));
-        a1(Z, xc::kGravityError) = 1.0 / o_.gravity_mps2;
+        a1(Z, map_column::kGravityError) = 1.0 / o_.gravity_mps2;
         return a1;
       }
       case Term::kU2: return extend(m.u2);
@@ -471,30 +471,30 @@ std::vector<MemberFn> table_3_1_members(const std::string& row, const ModelOptio
   auto xyz = [&one](std::string sym, int base) {
     return std::vector<MemberFn>{one(sym + "x", {base}), one(sym + "y", {base + 1}), one(sym + "z", {base + 2})};
   };
-  if (row == "Accelerometer bias δf_k") return xyz("δf_", ux::kAccelBias);
-  if (row == "Accelerometer scale factor a_k") return xyz("a_", ux::kAccelScale);
+  if (row == "Accelerometer bias δf_k") return xyz("δf_", uncertainty_slot::kAccelBias);
+  if (row == "Accelerometer scale factor a_k") return xyz("a_", uncertainty_slot::kAccelScale);
   if (row == "Accelerometer bias change ∂f_x, ∂f_y")
-    return {one("∂f_x = ∂f_cx + ∂f_rx", {ux::kBiasChangeConst + 0, ux::kBiasChangeAlign + 0}),
-            one("∂f_y = ∂f_cy + ∂f_ry", {ux::kBiasChangeConst + 1, ux::kBiasChangeAlign + 1})};
-  if (row == "Fixed drift rate ω_dok") return xyz("ω_do", ux::kGyroDrift);
-  if (row == "Mass unbalance ω_MUk") return xyz("ω_MU", ux::kGyroMuDrift);
-  if (row == "g·MUY_k") return xyz("g·MUY_", ux::kGyroMuyDrift);
+    return {one("∂f_x = ∂f_cx + ∂f_rx", {uncertainty_slot::kBiasChangeConst + 0, uncertainty_slot::kBiasChangeAlign + 0}),
+            one("∂f_y = ∂f_cy + ∂f_ry", {uncertainty_slot::kBiasChangeConst + 1, uncertainty_slot::kBiasChangeAlign + 1})};
+  if (row == "Fixed drift rate ω_dok") return xyz("ω_do", uncertainty_slot::kGyroDrift);
+  if (row == "Mass unbalance ω_MUk") return xyz("ω_MU", uncertainty_slot::kGyroMuDrift);
+  if (row == "g·MUY_k") return xyz("g·MUY_", uncertainty_slot::kGyroMuyDrift);
   if (row == "Alignment caused by x and y gyro drift") {
     // ψ_ωk(1) = ω_dok/F(0) (2.17c) at the drift bound; system 2 has ψ_ωx = ψ_ωy = 0.
     const double f0 = o.leveling_gain_ratio * o.earth_rate_radps;
-    return {MemberFn{"ψ_ωx = ω_dox/F(0)", [b, f0](double) { return b[ux::kGyroDrift + 0] / f0; }},
-            MemberFn{"ψ_ωy = ω_doy/F(0)", [b, f0](double) { return b[ux::kGyroDrift + 1] / f0; }}};
+    return {MemberFn{"ψ_ωx = ω_dox/F(0)", [b, f0](double) { return b[uncertainty_slot::kGyroDrift + 0] / f0; }},
+            MemberFn{"ψ_ωy = ω_doy/F(0)", [b, f0](double) { return b[uncertainty_slot::kGyroDrift + 1] / f0; }}};
   }
   if (row == "Misalignment ζ_k, (u)ψ")
-    return {one("ζ_x = ζ_cx + ζ_rx", {ux::kMisalignConst + 0, ux::kMisalignAlign + 0}),
-            one("ζ_y = ζ_cy + ζ_ry", {ux::kMisalignConst + 1, ux::kMisalignAlign + 1}),
-            one("ζ_z = ζ_cz + ζ_rz", {ux::kMisalignConst + 2, ux::kMisalignAlign + 2}),
-            one("(u)ψ", {ux::kTheodolite})};
+    return {one("ζ_x = ζ_cx + ζ_rx", {uncertainty_slot::kMisalignConst + 0, uncertainty_slot::kMisalignAlign + 0}),
+            one("ζ_y = ζ_cy + ζ_ry", {uncertainty_slot::kMisalignConst + 1, uncertainty_slot::kMisalignAlign + 1}),
+            one("ζ_z = ζ_cz + ζ_rz", {uncertainty_slot::kMisalignConst + 2, uncertainty_slot::kMisalignAlign + 2}),
+            one("(u)ψ", {uncertainty_slot::kTheodolite})};
   if (row == "Deflection of the vertical ξ, η")
-    return {one("ξ", {ux::kDeflection + 0}), one("η", {ux::kDeflection + 1})};
-  if (row == "Initial velocity δV(0)_k") return xyz("δV(0)_", ux::kInitialVelocity);
-  if (row == "Latitude error δL_0") return {one("", {ux::kLatitudeError})};
-  if (row == "Altitude error δh") return {one("", {ux::kAltitudeError})};
+    return {one("ξ", {uncertainty_slot::kDeflection + 0}), one("η", {uncertainty_slot::kDeflection + 1})};
+  if (row == "Initial velocity δV(0)_k") return xyz("δV(0)_", uncertainty_slot::kInitialVelocity);
+  if (row == "Latitude error δL_0") return {one("", {uncertainty_slot::kLatitudeError})};
+  if (row == "Altitude error δh") return {one("", {uncertainty_slot::kAltitudeError})};
   if (row == "Latitude L_0") return {MemberFn{"", [lat = o.latitude_rad](double) { return lat; }}};
   throw std::logic_error("Table 3.1 row without a specification: " + row);
 }
@@ -521,12 +521,12 @@ std::vector<MemberFn> table_4_3_members(const PrintedCell& cell, Evaluator& ev) 
   if (cell.row == "gMUY_x, gMUY_y") {
     for (System s : {System::kTheodolite, System::kGyrocompass}) {
       const int n = system_number(s);
-      probes.push_back({fmt::format("gMUY_x, sys {}", n), s, Y, ux::kGyroMuyDrift + 0});
-      probes.push_back({fmt::format("gMUY_y, sys {}", n), s, X, ux::kGyroMuyDrift + 1});
+      probes.push_back({fmt::format("gMUY_x, sys {}", n), s, Y, uncertainty_slot::kGyroMuyDrift + 0});
+      probes.push_back({fmt::format("gMUY_y, sys {}", n), s, X, uncertainty_slot::kGyroMuyDrift + 1});
     }
   } else if (cell.row == "ω_doz") {
     for (System s : {System::kTheodolite, System::kGyrocompass})
-      probes.push_back({fmt::format("ω_doz, sys {}", system_number(s)), s, X, ux::kGyroDrift + 2});
+      probes.push_back({fmt::format("ω_doz, sys {}", system_number(s)), s, X, uncertainty_slot::kGyroDrift + 2});
   } else {
     throw std::logic_error("Table 4.3b row without a specification: " + cell.row);
   }

@@ -7,11 +7,11 @@
 namespace insmc::tables {
 namespace {
 
-using ExtendedRow = Eigen::Matrix<double, 1, xc::kDim>;
+using ExtendedRow = Eigen::Matrix<double, 1, map_column::kDim>;
 
 ExtendedRow extend_row(const RowMap& r) {
   ExtendedRow e = ExtendedRow::Zero();
-  e.head<ux::kDim>() = r;
+  e.head<uncertainty_slot::kDim>() = r;
   return e;
 }
 
@@ -33,7 +33,7 @@ ExtendedMap stack_x(const ExtendedRow& x, const ExtendedRow& y, const ExtendedRo
 
 ExtendedMap extend(const Sensitivity3& m) {
   ExtendedMap e = ExtendedMap::Zero();
-  e.leftCols<ux::kDim>() = m;
+  e.leftCols<uncertainty_slot::kDim>() = m;
   return e;
 }
 
@@ -47,8 +47,8 @@ ResidualMatrices alignment_data_residuals(System system, const ModelOptions& o, 
   const ExtendedMap c = extend(simplified_steady_state_misalignment(system, o));
   const ExtendedMap cp = extend(paper_switchover_misalignment(system, o));
   const ExtendedRow psi_wz = extend_row(terms.psi_omega.row(2));
-  const ExtendedRow eps4x = pick_x(xc::kEps4 + 0), eps4y = pick_x(xc::kEps4 + 1),
-                    eps4z = pick_x(xc::kEps4 + 2);
+  const ExtendedRow eps4x = pick_x(map_column::kEps4 + 0), eps4y = pick_x(map_column::kEps4 + 1),
+                    eps4z = pick_x(map_column::kEps4 + 2);
 
   // (5.16a): residual drift after the torquer compensation (5.15)/(5.15c), per ω_ie.
   //   ω'_dox/ω_ie = C_y sin L0 + ε4x,  ω'_doz/ω_ie = C_y cos L0 + ε4z,
@@ -56,20 +56,20 @@ ResidualMatrices alignment_data_residuals(System system, const ModelOptions& o, 
   const ExtendedRow wx = sL * c.row(1) + eps4x;
   const ExtendedRow wz = cL * c.row(1) + eps4z;
   const ExtendedRow wy = sys1 ? ExtendedRow(-cL * c.row(2) - sL * c.row(0) + eps4y)
-                              : pick_x(ux::kGyroDrift + 1, 1.0 / w);
-  const ExtendedRow muy_x = pick_x(ux::kGyroMuyDrift + 0, muy / w),
-                    muy_y = pick_x(ux::kGyroMuyDrift + 1, muy / w),
-                    muy_z = pick_x(ux::kGyroMuyDrift + 2, muy / w);
+                              : pick_x(uncertainty_slot::kGyroDrift + 1, 1.0 / w);
+  const ExtendedRow muy_x = pick_x(uncertainty_slot::kGyroMuyDrift + 0, muy / w),
+                    muy_y = pick_x(uncertainty_slot::kGyroMuyDrift + 1, muy / w),
+                    muy_z = pick_x(uncertainty_slot::kGyroMuyDrift + 2, muy / w);
 
   ResidualMatrices r;
   // (5.20): U'2 = [∂f_x/g + Δζ_y + ε5x; ∂f_y/g − Δζ_x + ε5y; δg/g − 2δh/r0 + ε5z], with
   // Δζ = ζ − ζ' = ζ_r (ζ' of (5.19) holds only ζ_c) and the transcription fix δg → δg/g.
-  const ExtendedRow pfx = pick_x(ux::kBiasChangeConst + 0, 1 / g) + pick_x(ux::kBiasChangeAlign + 0, 1 / g);
-  const ExtendedRow pfy = pick_x(ux::kBiasChangeConst + 1, 1 / g) + pick_x(ux::kBiasChangeAlign + 1, 1 / g);
-  r.u2 = stack_x(pfx + pick_x(ux::kMisalignAlign + 1) + pick_x(xc::kEps5 + 0),
-                 pfy - pick_x(ux::kMisalignAlign + 0) + pick_x(xc::kEps5 + 1),
-                 pick_x(xc::kGravityError, 1 / g) + pick_x(ux::kAltitudeError, -2 / r0) +
-                     pick_x(xc::kEps5 + 2));
+  const ExtendedRow pfx = pick_x(uncertainty_slot::kBiasChangeConst + 0, 1 / g) + pick_x(uncertainty_slot::kBiasChangeAlign + 0, 1 / g);
+  const ExtendedRow pfy = pick_x(uncertainty_slot::kBiasChangeConst + 1, 1 / g) + pick_x(uncertainty_slot::kBiasChangeAlign + 1, 1 / g);
+  r.u2 = stack_x(pfx + pick_x(uncertainty_slot::kMisalignAlign + 1) + pick_x(map_column::kEps5 + 0),
+                 pfy - pick_x(uncertainty_slot::kMisalignAlign + 0) + pick_x(map_column::kEps5 + 1),
+                 pick_x(map_column::kGravityError, 1 / g) + pick_x(uncertainty_slot::kAltitudeError, -2 / r0) +
+                     pick_x(map_column::kEps5 + 2));
   // (5.21): U'3 = [C'_z; 0; −C'_x] cos L0 + [ω'_doy; −ω'_dox; 0]/ω_ie.
   r.u3 = stack_x(cL * cp.row(2) + wy, -wx, -cL * cp.row(0));
   // (3.29d) with ω'_do: U'4 = [2 cos L0 ω'_doz/ω_ie + g·MUY_y/ω_ie;

@@ -17,15 +17,15 @@
 
 namespace insmc::tables {
 
-/// Columns of an extended map: 0 … ux::kDim − 1 are the catalogue slots.
-namespace xc {
-inline constexpr int kGravityError = ux::kDim;  ///< δg [m/s²], error in the estimated g (4.1a), (4.3a), (5.19)
-inline constexpr int kEps4 = ux::kDim + 1;      ///< ε4x,y,z, dimensionless: drift-estimate errors / ω_ie (5.15a) (3)
-inline constexpr int kEps5 = ux::kDim + 4;      ///< ε5x,y,z, dimensionless: accelerometer-output errors / g (5.19) (3)
-inline constexpr int kDim = ux::kDim + 7;
-}  // namespace xc
+/// Columns of an extended map: 0 … uncertainty_slot::kDim − 1 are the catalogue slots.
+namespace map_column {
+inline constexpr int kGravityError = uncertainty_slot::kDim;  ///< δg [m/s²], error in the estimated g (4.1a), (4.3a), (5.19)
+inline constexpr int kEps4 = uncertainty_slot::kDim + 1;      ///< ε4x,y,z, dimensionless: drift-estimate errors / ω_ie (5.15a) (3)
+inline constexpr int kEps5 = uncertainty_slot::kDim + 4;      ///< ε5x,y,z, dimensionless: accelerometer-output errors / g (5.19) (3)
+inline constexpr int kDim = uncertainty_slot::kDim + 7;
+}  // namespace map_column
 
-using ExtendedMap = Eigen::Matrix<double, 3, xc::kDim>;
+using ExtendedMap = Eigen::Matrix<double, 3, map_column::kDim>;
 
 /// A catalogue map with zero columns for the extra quantities.
 ExtendedMap extend(const Sensitivity3& m);

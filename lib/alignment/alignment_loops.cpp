@@ -21,14 +21,14 @@ struct Inputs {
 
 Inputs inputs_of(System system, const ModelOptions& m, const UncertaintyVector& x) {
   const double g = m.gravity_mps2, w = m.earth_rate_radps, cL = std::cos(m.latitude_rad);
-  const Vec3 zeta_c = x.segment<3>(ux::kMisalignConst);
+  const Vec3 zeta_c = x.segment<3>(uncertainty_slot::kMisalignConst);
   Inputs in;
-  in.drift = x.segment<3>(ux::kGyroDrift);
-  const double dfx = x[ux::kAccelBias + 0] / g - x[ux::kDeflection + 0];
-  in.s1 = x[ux::kAccelBias + 1] / g + x[ux::kDeflection + 1] + zeta_c.x();  // V01/g = ζ_cx (2.11a), (2.15a)
+  in.drift = x.segment<3>(uncertainty_slot::kGyroDrift);
+  const double dfx = x[uncertainty_slot::kAccelBias + 0] / g - x[uncertainty_slot::kDeflection + 0];
+  in.s1 = x[uncertainty_slot::kAccelBias + 1] / g + x[uncertainty_slot::kDeflection + 1] + zeta_c.x();  // V01/g = ζ_cx (2.11a), (2.15a)
   if (system == System::kTheodolite) {
     in.s2 = dfx - zeta_c.y();  // V02/g = −ζ_cy (2.11a)
-    in.azimuth_target = x[ux::kTheodolite] + zeta_c.z();  // V03 = ζ_cz
+    in.azimuth_target = x[uncertainty_slot::kTheodolite] + zeta_c.z();  // V03 = ζ_cz
   } else {
     const double f2 = m.gyrocompass_f2_ratio * w;
     in.s3 = dfx - zeta_c.y();                              // V03/g = −ζ_cy (2.15a)
@@ -143,10 +143,10 @@ AlignmentLoopRun simulate_alignment_loops(System system, const ModelOptions& m, 
   const Vec3 c = c_sum / weight_sum, r = r_sum / weight_sum;
   const double g = m.gravity_mps2;
   // (5.18), (5.19): x g C_y − ξ g + δf_x; y −g C_x + η g + δf_y; z δf_z − g a_z + δg (δg/g = −3 δh/r0).
-  run.mean_accel_output_mps2 = Vec3(g * c.y() - g * x[ux::kDeflection + 0] + x[ux::kAccelBias + 0] + r.x(),
-                                    -g * c.x() + g * x[ux::kDeflection + 1] + x[ux::kAccelBias + 1] + r.y(),
-                                    x[ux::kAccelBias + 2] - g * x[ux::kAccelScale + 2] -
-                                        3.0 * g * x[ux::kAltitudeError] / m.radius_m);
+  run.mean_accel_output_mps2 = Vec3(g * c.y() - g * x[uncertainty_slot::kDeflection + 0] + x[uncertainty_slot::kAccelBias + 0] + r.x(),
+                                    -g * c.x() + g * x[uncertainty_slot::kDeflection + 1] + x[uncertainty_slot::kAccelBias + 1] + r.y(),
+                                    x[uncertainty_slot::kAccelBias + 2] - g * x[uncertainty_slot::kAccelScale + 2] -
+                                        3.0 * g * x[uncertainty_slot::kAltitudeError] / m.radius_m);
   return run;
 }
 

@@ -49,7 +49,7 @@ struct AlignmentLoopRun {
   Vec3 mean_accel_output_mps2 = Vec3::Zero();
 };
 
-/// Simulates the loops for the uncertainties x (SI, ux order) with the
+/// Simulates the loops for the uncertainties x (SI, uncertainty_slot order) with the
 /// options' gravity as the sensed g. `disturbance_n_mps2(t)`, t ∈ [−duration, 0]
 /// (switch-over at 0), is (u)r̈ in the local-level frame; empty = none.
 AlignmentLoopRun simulate_alignment_loops(System system, const ModelOptions& model,

@@ -55,7 +55,7 @@ std::vector<Mat3> torquer_response(Fidelity fidelity, const ModelOptions& m, con
 /// wiggle (u)V: the latitude and altitude terms of (3.23).
 Sensitivity3 computed_velocity_error(const Sensitivity3& initial_velocity) {
   Sensitivity3 v = initial_velocity;
-  v.middleCols<3>(ux::kInitialVelocity).setZero();
+  v.middleCols<3>(uncertainty_slot::kInitialVelocity).setZero();
   return v;
 }
 
@@ -84,8 +84,8 @@ std::vector<Sensitivity3> reset_propagation(System system, Fidelity fidelity, co
       Sensitivity3 r = sr.initial_position_m + std::sin(ws * tau) / ws * v0 + step_response(tau, ws) * a0 +
                        ramp_response(tau, ws) * a1 + quadratic_response(tau, ws) * a2 + m.radius_m * p3 / 6 * sr.u5;
       // The resets' own errors, as δr̂(T) and δṙ̂(T) enter (5.8): cos ω_s t', sin ω_s t' / ω_s.
-      r.middleCols<3>(ux::kResetPositionError) += std::cos(ws * tau) * Mat3::Identity();
-      r.middleCols<3>(ux::kResetVelocityError) += std::sin(ws * tau) / ws * Mat3::Identity();
+      r.middleCols<3>(uncertainty_slot::kResetPositionError) += std::cos(ws * tau) * Mat3::Identity();
+      r.middleCols<3>(uncertainty_slot::kResetVelocityError) += std::sin(ws * tau) / ws * Mat3::Identity();
       out.push_back(r);
     }
     return out;
@@ -97,8 +97,8 @@ std::vector<Sensitivity3> reset_propagation(System system, Fidelity fidelity, co
   // The integrators' state after the reset: the computed values (with the
   // resets' own errors) less the truth.
   Sensitivity3 r_reset = turn * model.initial_position(), v_reset = turn * computed_velocity_error(model.initial_velocity());
-  r_reset.middleCols<3>(ux::kResetPositionError) += Mat3::Identity();
-  v_reset.middleCols<3>(ux::kResetVelocityError) += Mat3::Identity();
+  r_reset.middleCols<3>(uncertainty_slot::kResetPositionError) += Mat3::Identity();
+  v_reset.middleCols<3>(uncertainty_slot::kResetVelocityError) += Mat3::Identity();
   return integrate_schuler_ode([&](double t) { return model.forcing(t); }, r_reset, v_reset, times,
                                m.schuler_radps(), 2.0, T);
 }
@@ -107,7 +107,7 @@ std::vector<Sensitivity3> reset_propagation(System system, Fidelity fidelity, co
 /// the per-alignment slots come from the fresh draws instead.
 ExtendedMap extend(const Sensitivity3& s, bool realigned) {
   ExtendedMap e = ExtendedMap::Zero();
-  e.leftCols<ux::kDim>() = s;
+  e.leftCols<uncertainty_slot::kDim>() = s;
   if (realigned) {
     for (const RealignedSlot& r : kRealignedSlots) {
       e.col(r.z_index) = s.col(r.x_index);
@@ -115,7 +115,7 @@ ExtendedMap extend(const Sensitivity3& s, bool realigned) {
     }
     // The realignment keeps the theodolite's (u)ψ and adds its re-sighting
     // change δψ_r: the same column (zero for system 2).
-    e.col(ux::kRealignAzimuthError) = s.col(ux::kTheodolite);
+    e.col(uncertainty_slot::kRealignAzimuthError) = s.col(uncertainty_slot::kTheodolite);
   }
   return e;
 }
@@ -138,7 +138,7 @@ SchemeMaps scheme_position_maps(Scheme scheme, System system, Fidelity fidelity,
     const double tau = taus[n];
     ExtendedMap e = extend(s[n], definition.realigns);
     // The resets at T leave the velocity wiggle (u)V(T) in the integrators (5.8), (5.11).
-    if (definition.resets_at_test_end) e.middleCols<3>(ez::kWiggleAtT) = std::sin(ws * tau) / ws * Mat3::Identity();
+    if (definition.resets_at_test_end) e.middleCols<3>(z_slot::kWiggleAtT) = std::sin(ws * tau) / ws * Mat3::Identity();
     const ShortRunFunctions paper =
         fidelity == Fidelity::kPaper ? short_run_functions_3_29(tau, m) : ShortRunFunctions{0, 0, 0, 0, 0, 0};
     definition.position_map({system, fidelity, forms, m, T, tau, s[n], torquer[n], paper}, e);

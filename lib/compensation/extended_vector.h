@@ -20,7 +20,7 @@ struct ExtendedSlot {
   int size;
 };
 
-namespace ez {
+namespace z_slot {
 /// The slots after x, in z's order: the one list of them (the pipeline
 /// writes each at its start below, `run --replay` prints them from here).
 inline constexpr ExtendedSlot kSlots[] = {
@@ -39,12 +39,12 @@ inline constexpr int kSlotCount = static_cast<int>(std::size(kSlots));
 
 /// Where slot `slot` of kSlots starts in z.
 constexpr int slot_start(int slot) {
-  int start = ux::kDim;
+  int start = uncertainty_slot::kDim;
   for (int i = 0; i < slot; ++i) start += kSlots[i].size;
   return start;
 }
 
-inline constexpr int kX = 0;                           ///< x, the catalogue's uncertainties (ux::)
+inline constexpr int kX = 0;                           ///< x, the catalogue's uncertainties (uncertainty_slot::)
 inline constexpr int kRealignZeta = slot_start(0);
 inline constexpr int kRealignBias = slot_start(1);
 inline constexpr int kRealignVelocity = slot_start(2);
@@ -57,20 +57,20 @@ inline constexpr int kAlignAccel = slot_start(8);
 inline constexpr int kWiggleAtT = slot_start(9);
 inline constexpr int kDim = slot_start(kSlotCount);
 static_assert(kWiggleAtT + 3 == kDim, "every slot of kSlots has its start above");
-}  // namespace ez
+}  // namespace z_slot
 
-using ExtendedVector = Eigen::Matrix<double, ez::kDim, 1>;
-using ExtendedMap = Eigen::Matrix<double, 3, ez::kDim>;
+using ExtendedVector = Eigen::Matrix<double, z_slot::kDim, 1>;
+using ExtendedMap = Eigen::Matrix<double, 3, z_slot::kDim>;
 
 /// Catalogue slots that a realignment draws anew, paired with their z slots.
 struct RealignedSlot {
   int x_index, z_index;
 };
 inline constexpr RealignedSlot kRealignedSlots[] = {
-    {ux::kMisalignAlign + 0, ez::kRealignZeta + 0},   {ux::kMisalignAlign + 1, ez::kRealignZeta + 1},
-    {ux::kMisalignAlign + 2, ez::kRealignZeta + 2},   {ux::kBiasChangeAlign + 0, ez::kRealignBias + 0},
-    {ux::kBiasChangeAlign + 1, ez::kRealignBias + 1}, {ux::kInitialVelocity + 0, ez::kRealignVelocity + 0},
-    {ux::kInitialVelocity + 1, ez::kRealignVelocity + 1}, {ux::kInitialVelocity + 2, ez::kRealignVelocity + 2},
+    {uncertainty_slot::kMisalignAlign + 0, z_slot::kRealignZeta + 0},   {uncertainty_slot::kMisalignAlign + 1, z_slot::kRealignZeta + 1},
+    {uncertainty_slot::kMisalignAlign + 2, z_slot::kRealignZeta + 2},   {uncertainty_slot::kBiasChangeAlign + 0, z_slot::kRealignBias + 0},
+    {uncertainty_slot::kBiasChangeAlign + 1, z_slot::kRealignBias + 1}, {uncertainty_slot::kInitialVelocity + 0, z_slot::kRealignVelocity + 0},
+    {uncertainty_slot::kInitialVelocity + 1, z_slot::kRealignVelocity + 1}, {uncertainty_slot::kInitialVelocity + 2, z_slot::kRealignVelocity + 2},
 };
 
 }  // namespace insmc

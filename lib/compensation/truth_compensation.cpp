@@ -100,7 +100,7 @@ TruthSchemeRun run_truth_scheme(Scheme scheme, const TruthSchemeSetup& s, const 
   if (realigns(scheme)) {
     o.alignment_loops.reset();
     o.pulse_phase = sample.align_pulse_phase01 - Vec3::Constant(0.5);
-    x[ux::kTheodolite] += x[ux::kRealignAzimuthError];  // the theodolite re-sighted: (u)ψ + δψ_r
+    x[uncertainty_slot::kTheodolite] += x[uncertainty_slot::kRealignAzimuthError];  // the theodolite re-sighted: (u)ψ + δψ_r
     if (noise) flight_noise = [noise](std::uint64_t stream, std::uint64_t counter) {
       return noise(stream + kRealignedNoiseStreams, counter);
     };

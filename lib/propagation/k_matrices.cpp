@@ -12,21 +12,21 @@ KMatrices build(System system, const ModelOptions& o, double muy_factor) {
   const double s = std::sin(o.latitude_rad), c = std::cos(o.latitude_rad);
   const PaperAlignmentTerms t = paper_alignment_terms(system, o);
   auto x = [](int i, double k = 1.0) { return pick(i, k); };
-  const RowMap dfx = x(ux::kAccelBias + 0, 1 / g), dfy = x(ux::kAccelBias + 1, 1 / g),
-               dfz = x(ux::kAccelBias + 2, 1 / g);
-  const RowMap pfx = x(ux::kBiasChangeConst + 0, 1 / g) + x(ux::kBiasChangeAlign + 0, 1 / g);
-  const RowMap pfy = x(ux::kBiasChangeConst + 1, 1 / g) + x(ux::kBiasChangeAlign + 1, 1 / g);
-  const RowMap ax = x(ux::kAccelScale + 0), ay = x(ux::kAccelScale + 1), az = x(ux::kAccelScale + 2);
-  const RowMap xi = x(ux::kDeflection + 0), eta = x(ux::kDeflection + 1);
-  const RowMap dL = x(ux::kLatitudeError), dh3 = x(ux::kAltitudeError, 3.0 / r0);
-  const RowMap wdx = x(ux::kGyroDrift + 0, 1 / w), wdy = x(ux::kGyroDrift + 1, 1 / w),
-               wdz = x(ux::kGyroDrift + 2, 1 / w);
-  const RowMap wmx = x(ux::kGyroMuDrift + 0, 1 / w), wmy = x(ux::kGyroMuDrift + 1, 1 / w),
-               wmz = x(ux::kGyroMuDrift + 2, 1 / w);
+  const RowMap dfx = x(uncertainty_slot::kAccelBias + 0, 1 / g), dfy = x(uncertainty_slot::kAccelBias + 1, 1 / g),
+               dfz = x(uncertainty_slot::kAccelBias + 2, 1 / g);
+  const RowMap pfx = x(uncertainty_slot::kBiasChangeConst + 0, 1 / g) + x(uncertainty_slot::kBiasChangeAlign + 0, 1 / g);
+  const RowMap pfy = x(uncertainty_slot::kBiasChangeConst + 1, 1 / g) + x(uncertainty_slot::kBiasChangeAlign + 1, 1 / g);
+  const RowMap ax = x(uncertainty_slot::kAccelScale + 0), ay = x(uncertainty_slot::kAccelScale + 1), az = x(uncertainty_slot::kAccelScale + 2);
+  const RowMap xi = x(uncertainty_slot::kDeflection + 0), eta = x(uncertainty_slot::kDeflection + 1);
+  const RowMap dL = x(uncertainty_slot::kLatitudeError), dh3 = x(uncertainty_slot::kAltitudeError, 3.0 / r0);
+  const RowMap wdx = x(uncertainty_slot::kGyroDrift + 0, 1 / w), wdy = x(uncertainty_slot::kGyroDrift + 1, 1 / w),
+               wdz = x(uncertainty_slot::kGyroDrift + 2, 1 / w);
+  const RowMap wmx = x(uncertainty_slot::kGyroMuDrift + 0, 1 / w), wmy = x(uncertainty_slot::kGyroMuDrift + 1, 1 / w),
+               wmz = x(uncertainty_slot::kGyroMuDrift + 2, 1 / w);
   // g·MUY_k / ω_ie; muy_factor = 1 as printed, cos L_0 corrected.
-  const RowMap my_x = x(ux::kGyroMuyDrift + 0, muy_factor / w),
-               my_y = x(ux::kGyroMuyDrift + 1, muy_factor / w),
-               my_z = x(ux::kGyroMuyDrift + 2, muy_factor / w);
+  const RowMap my_x = x(uncertainty_slot::kGyroMuyDrift + 0, muy_factor / w),
+               my_y = x(uncertainty_slot::kGyroMuyDrift + 1, muy_factor / w),
+               my_z = x(uncertainty_slot::kGyroMuyDrift + 2, muy_factor / w);
   const RowMap pwx = t.psi_omega.row(0), pwy = t.psi_omega.row(1), pwz = t.psi_omega.row(2);
   const RowMap zx = t.zeta.row(0), zy = t.zeta.row(1), zpz = t.zeta_prime_z;
   const RowMap pfz = t.psi_fz, paz = t.psi_alpha_z;

@@ -25,24 +25,24 @@ LinearErrorModel::LinearErrorModel(System system, const ModelOptions& o, LinearM
   const RowMap zero = RowMap::Zero();
   c_prime_ = form.full_alignment ? full_switchover_misalignment(system, o)
                                  : paper_switchover_misalignment(system, o);
-  initial_position_ = stack(pick(ux::kLatitudeError, r0), zero, pick(ux::kAltitudeError, -1.0));
+  initial_position_ = stack(pick(uncertainty_slot::kLatitudeError, r0), zero, pick(uncertainty_slot::kAltitudeError, -1.0));
   // (3.23) derived anew: δv = C_a'^i[(u)V + Ω_in δr^n + ΔΩ_in r^n + Z Ω_in r^n]
   // with δr^n = (0, 0, −δh), r^n = (0, 0, −r0): the east components are
   // δh ω_ie cos L0 and −r0 δL0 ω_ie sin L0 (Z Ω_in r^n = 0).
   // The report prints +2 r0 δL0 ω_ie sin L0 (errata.md#3-23).
   const double latitude_to_east_velocity = form.corrected_initial_velocity ? -r0 * w * s : 2 * r0 * w * s;
-  initial_velocity_ = stack(pick(ux::kInitialVelocity + 0),
-                            pick(ux::kInitialVelocity + 1) + pick(ux::kAltitudeError, w * c) +
-                                pick(ux::kLatitudeError, latitude_to_east_velocity),
-                            pick(ux::kInitialVelocity + 2));
+  initial_velocity_ = stack(pick(uncertainty_slot::kInitialVelocity + 0),
+                            pick(uncertainty_slot::kInitialVelocity + 1) + pick(uncertainty_slot::kAltitudeError, w * c) +
+                                pick(uncertainty_slot::kLatitudeError, latitude_to_east_velocity),
+                            pick(uncertainty_slot::kInitialVelocity + 2));
   // Navigation-mode bias δf + (∂f_x, ∂f_y, 0) (3.18).
-  nav_bias_ = stack(pick(ux::kAccelBias + 0) + pick(ux::kBiasChangeConst + 0) + pick(ux::kBiasChangeAlign + 0),
-                    pick(ux::kAccelBias + 1) + pick(ux::kBiasChangeConst + 1) + pick(ux::kBiasChangeAlign + 1),
-                    pick(ux::kAccelBias + 2));
+  nav_bias_ = stack(pick(uncertainty_slot::kAccelBias + 0) + pick(uncertainty_slot::kBiasChangeConst + 0) + pick(uncertainty_slot::kBiasChangeAlign + 0),
+                    pick(uncertainty_slot::kAccelBias + 1) + pick(uncertainty_slot::kBiasChangeConst + 1) + pick(uncertainty_slot::kBiasChangeAlign + 1),
+                    pick(uncertainty_slot::kAccelBias + 2));
   // α^n = (ξ g, −η g, 0) (2.8b).
-  deflection_accel_ = stack(pick(ux::kDeflection + 0, g), pick(ux::kDeflection + 1, -g), zero);
+  deflection_accel_ = stack(pick(uncertainty_slot::kDeflection + 0, g), pick(uncertainty_slot::kDeflection + 1, -g), zero);
   // Z^a of (3.20b) = paper_skew((0, δL0, 0)).
-  latitude_angle_ = stack(zero, pick(ux::kLatitudeError), zero);
+  latitude_angle_ = stack(zero, pick(uncertainty_slot::kLatitudeError), zero);
 }
 
 Sensitivity3 LinearErrorModel::drift_angles(double t) const {
@@ -53,9 +53,9 @@ Sensitivity3 LinearErrorModel::drift_angles(double t) const {
   //                    + g·MUY cos L0 (1 − cos ω_ie t)/ω_ie.
   Sensitivity3 d = Sensitivity3::Zero();
   for (int k = 0; k < 3; ++k) {
-    d(k, ux::kGyroDrift + k) = t;
-    d(k, ux::kGyroMuDrift + k) = (p - std::sin(p)) / w;
-    d(k, ux::kGyroMuyDrift + k) = muy_factor * (1.0 - std::cos(p)) / w;
+    d(k, uncertainty_slot::kGyroDrift + k) = t;
+    d(k, uncertainty_slot::kGyroMuDrift + k) = (p - std::sin(p)) / w;
+    d(k, uncertainty_slot::kGyroMuyDrift + k) = muy_factor * (1.0 - std::cos(p)) / w;
   }
   return d;
 }
@@ -69,9 +69,9 @@ Sensitivity3 LinearErrorModel::forcing(double t) const {
   // −(Z + D + Ψ) C g_e with each skew term paper_skew(c) C g_e = (C g_e) × c.
   u -= vx * (latitude_angle_ + drift_angles(t) + c_prime_);
   // −A C g_e: A = diag(a_x, a_y, a_z).
-  for (int k = 0; k < 3; ++k) u(k, ux::kAccelScale + k) -= gravity_ap[k];
+  for (int k = 0; k < 3; ++k) u(k, uncertainty_slot::kAccelScale + k) -= gravity_ap[k];
   // −3 δh/r0 C g_e (3.21).
-  u.col(ux::kAltitudeError) -= 3.0 / o.radius_m * gravity_ap;
+  u.col(uncertainty_slot::kAltitudeError) -= 3.0 / o.radius_m * gravity_ap;
   return u;
 }
 

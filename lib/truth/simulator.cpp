@@ -343,7 +343,7 @@ Switchover switch_over(const TruthOptions& o, const ModelOptions& site_options, 
       };
     const AlignmentLoopRun loops =
         simulate_alignment_loops(o.system, site_options, *o.alignment_loops, x_align, sway_acceleration);
-    out.misalignment_rad = loops.misalignment_rad + x_align.segment<3>(ux::kMisalignAlign) + p.misalignment_step_rad;  // (2.18a)
+    out.misalignment_rad = loops.misalignment_rad + x_align.segment<3>(uncertainty_slot::kMisalignAlign) + p.misalignment_step_rad;  // (2.18a)
     out.command_radps = loops.mean_command_radps;
     out.accel_output_mps2 = loops.mean_accel_output_mps2;
   } else {
@@ -407,19 +407,19 @@ void set_instruments(Dynamics& d, const UncertaintyVector& x, const Perturbation
   for (int k = 0; k < 3; ++k) {
     // (3.10) with MUX = 0: (3.13a) gives ω_MU = g MUZ cos² L0; the g·MUY drift
     // angle is g·MUY cos L0 (1 − cos ω_ie t)/ω_ie (errata.md#3-13).
-    d.mass_unbalance(k, 1) = x[ux::kGyroMuyDrift + k] / g_s;
-    const double w_mu = x[ux::kGyroMuDrift + k];
+    d.mass_unbalance(k, 1) = x[uncertainty_slot::kGyroMuyDrift + k] / g_s;
+    const double w_mu = x[uncertainty_slot::kGyroMuDrift + k];
     if (w_mu != 0.0) {
       INSMC_ASSERT(cosL * cosL > 1e-12, "ω_MU needs cos L0 != 0 (L0 = {} rad)", L0);
       d.mass_unbalance(k, 2) = w_mu / (g_s * cosL * cosL);
     }
   }
   // ω_AI = ω_do − MU f_level, f_level = (0, 0, −g_s) (3.11), (3.12).
-  d.drift_ai = x.segment<3>(ux::kGyroDrift) + g_s * d.mass_unbalance.col(2);
-  d.scale = Vec3::Ones() + x.segment<3>(ux::kAccelScale);
-  d.nav_bias = x.segment<3>(ux::kAccelBias) + p.nav_bias_step_mps2;
+  d.drift_ai = x.segment<3>(uncertainty_slot::kGyroDrift) + g_s * d.mass_unbalance.col(2);
+  d.scale = Vec3::Ones() + x.segment<3>(uncertainty_slot::kAccelScale);
+  d.nav_bias = x.segment<3>(uncertainty_slot::kAccelBias) + p.nav_bias_step_mps2;
   for (int k = 0; k < 2; ++k)
-    d.nav_bias[k] += x[ux::kBiasChangeConst + k] + x[ux::kBiasChangeAlign + k];  // (3.18)
+    d.nav_bias[k] += x[uncertainty_slot::kBiasChangeConst + k] + x[uncertainty_slot::kBiasChangeAlign + k];  // (3.18)
   d.quadratic = p.accel_quadratic_per_mps2;
   d.anisoelastic = p.anisoelastic_radps_per_mps2sq;
   d.bias_transients = &p.bias_transients;
@@ -443,8 +443,8 @@ void reset_computer(State& y, const Dynamics& d, const Perturbations& p, const U
   y.segment<3>(kDR) = offset_i - to_i * st.position_n;
   y.segment<3>(kDVel) = earth_axis.cross(offset_i) - to_i * (st.velocity_n + earth_axis_n.cross(st.position_n));
   // The resets' own errors (catalogue: reset_position_error, reset_velocity_error), given in a'.
-  y.segment<3>(kDR) += c_ap_i * x.segment<3>(ux::kResetPositionError);
-  y.segment<3>(kDVel) += c_ap_i * x.segment<3>(ux::kResetVelocityError);
+  y.segment<3>(kDR) += c_ap_i * x.segment<3>(uncertainty_slot::kResetPositionError);
+  y.segment<3>(kDVel) += c_ap_i * x.segment<3>(uncertainty_slot::kResetVelocityError);
 }
 
 /// The gravity fields of the computer and of the truth, and the run's
@@ -580,8 +580,8 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   const Vec3 centripetal = -w_ie * w_ie * Vec3(d.site_position_e.x(), d.site_position_e.y(), 0.0);
   const double g_s = (reference_gravitation - centripetal).norm();
   // Deflection of the vertical: true gravity (0, 0, g) + α^n, α^n = (ξ g, −η g, 0) (2.8b).
-  const double xi = x[ux::kDeflection + 0] + p.deflection_rad[0];
-  const double eta = x[ux::kDeflection + 1] + p.deflection_rad[1];
+  const double xi = x[uncertainty_slot::kDeflection + 0] + p.deflection_rad[0];
+  const double eta = x[uncertainty_slot::kDeflection + 1] + p.deflection_rad[1];
   const Mat3 c_e_n = C_i_n(L0, 0.0);
   d.site_gravitation_e = reference_gravitation + c_e_n * Vec3(xi * g_s, -eta * g_s, 0.0);
   d.site_specific_force_e = centripetal - d.site_gravitation_e;
@@ -590,9 +590,9 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   ModelOptions site_options = m;
   site_options.gravity_mps2 = g_s;  // the leveling loops null the measured force
   UncertaintyVector x_align = x;
-  x_align.segment<3>(ux::kAccelBias) += p.alignment_bias_mps2;
-  x_align.segment<3>(ux::kGyroDrift) += p.alignment_drift_radps;
-  x_align.segment<2>(ux::kDeflection) += p.deflection_rad;
+  x_align.segment<3>(uncertainty_slot::kAccelBias) += p.alignment_bias_mps2;
+  x_align.segment<3>(uncertainty_slot::kGyroDrift) += p.alignment_drift_radps;
+  x_align.segment<2>(uncertainty_slot::kDeflection) += p.deflection_rad;
   const Switchover switchover = switch_over(o, site_options, x_align, p);
   const Vec3& c_prime = switchover.misalignment_rad;
   const Mat3 c_i_ap = C_ap_i(L0);
@@ -606,17 +606,17 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
   set_instruments(d, x, p, o, g_s, L0);
 
   // ---- navigation computer -----------------------------------------------------
-  const double latitude_hat = L0 + x[ux::kLatitudeError];
+  const double latitude_hat = L0 + x[uncertainty_slot::kLatitudeError];
   const Mat3 c_i_ap_hat = C_ap_i(latitude_hat);
   d.c_hat = c_i_ap_hat.transpose();  // (3.20)
   d.computer_field = computer_field;
-  d.computer_radius = r0 + x[ux::kAltitudeError];
+  d.computer_radius = r0 + x[uncertainty_slot::kAltitudeError];
   d.computer_mu_over_r3 = computer_field.mu_m3ps2 / std::pow(d.computer_radius, 3);
   // (3.22)–(3.23): position from L̂0 and the external altitude with the
   // computer's own field; velocity of that point on the turning earth.
   const Vec3 earth_axis(0.0, 0.0, w_ie);
   const Vec3 r_c0 = position_for_plumb_latitude(computer_field, w_ie, d.computer_radius, latitude_hat);
-  const Vec3 v_c0 = earth_axis.cross(r_c0) + c_ap_i * x.segment<3>(ux::kInitialVelocity);
+  const Vec3 v_c0 = earth_axis.cross(r_c0) + c_ap_i * x.segment<3>(uncertainty_slot::kInitialVelocity);
   const SwayState sway0 = sway_at(p.sway, 0.0);
   const Vec3 earth_axis_n = c_e_n.transpose() * earth_axis;  // Ω in the site's n frame
   const Vec3 sway_r0 = c_e_n * sway0.position_n;
@@ -695,7 +695,7 @@ TruthRun simulate_truth(const TruthOptions& o, const UncertaintyVector& x,
     }
   }
 
-  TruthRun run = outputs_at(output_times_s, stops, at_stops, g_s * (1.0 - 3.0 * x[ux::kAltitudeError] / r0),
+  TruthRun run = outputs_at(output_times_s, stops, at_stops, g_s * (1.0 - 3.0 * x[uncertainty_slot::kAltitudeError] / r0),
                             c_i_ap_hat, w_ie, L0, tau);
   run.dv_pulse_mps = w;
   run.site_gravity_mps2 = g_s;

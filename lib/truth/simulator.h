@@ -180,7 +180,7 @@ struct TruthRun {
   Vec3 alignment_accel_output_mps2 = Vec3::Zero();
 };
 
-/// Simulates one run for the uncertainties `x` (SI, ux order) and the effects
+/// Simulates one run for the uncertainties `x` (SI, uncertainty_slot order) and the effects
 /// of `options`, sampled at `output_times_s` (ascending, ≥ 0). `noise` is
 /// required when a random effect is on (see noise.h). Deterministic: the same
 /// inputs give bit-identical results.

@@ -24,7 +24,7 @@ struct UncertaintySpec {
   std::string_view name;         ///< catalogue name, e.g. "gyro_drift_x"
   std::string_view group;        ///< group prefix, e.g. "gyro_drift"
   std::string_view symbol;       ///< the paper's symbol, e.g. "ω_dox"
-  int index;                     ///< slot in UncertaintyVector (ux::)
+  int index;                     ///< slot in UncertaintyVector (uncertainty_slot::)
   Dimension dimension;           ///< SI unit family
   double default_bound_si;       ///< Table 3.1 bound (or its half: ζ, ∂f split, catalogue.cpp)
   std::string_view paper_unit;   ///< unit the paper states the bound in
@@ -33,7 +33,7 @@ struct UncertaintySpec {
   std::string_view source;       ///< where the bound comes from
 };
 
-/// All ux::kDim entries, in UncertaintyVector order.
+/// All uncertainty_slot::kDim entries, in UncertaintyVector order.
 std::span<const UncertaintySpec> catalogue();
 
 /// The entry named `name`, or nullopt.

@@ -7,7 +7,7 @@
 
 namespace insmc {
 
-using RowMap = Eigen::Matrix<double, 1, ux::kDim>;
+using RowMap = Eigen::Matrix<double, 1, uncertainty_slot::kDim>;
 
 /// The map picking `scale` times the uncertainty in slot `index`.
 inline RowMap pick(int index, double scale = 1.0) {

@@ -126,19 +126,19 @@ void UncertaintyModel::apply_dist(std::string_view assignment) {
 
 UncertaintyVector UncertaintyModel::mean() const {
   UncertaintyVector v;
-  for (int i = 0; i < ux::kDim; ++i) v[i] = params_[i].mean();
+  for (int i = 0; i < uncertainty_slot::kDim; ++i) v[i] = params_[i].mean();
   return v;
 }
 
 UncertaintyVector UncertaintyModel::variance() const {
   UncertaintyVector v;
-  for (int i = 0; i < ux::kDim; ++i) v[i] = params_[i].variance();
+  for (int i = 0; i < uncertainty_slot::kDim; ++i) v[i] = params_[i].variance();
   return v;
 }
 
 UncertaintyVector UncertaintyModel::fourth_central_moment() const {
   UncertaintyVector v;
-  for (int i = 0; i < ux::kDim; ++i) v[i] = params_[i].fourth_central_moment();
+  for (int i = 0; i < uncertainty_slot::kDim; ++i) v[i] = params_[i].fourth_central_moment();
   return v;
 }
 

@@ -44,7 +44,7 @@ class UncertaintyModel {
   UncertaintyVector fourth_central_moment() const;
 
  private:
-  std::array<ParameterDistribution, ux::kDim> params_;
+  std::array<ParameterDistribution, uncertainty_slot::kDim> params_;
 };
 
 /// Splits "NAME=REST"; throws InputError naming `option` when malformed or

@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 
 namespace insmc {
-namespace ux {
+namespace uncertainty_slot {
 inline constexpr int kAccelBias = 0;        ///< δf_x,y,z [m/s²], alignment and navigation (3)
 inline constexpr int kAccelScale = 3;       ///< a_x,y,z, dimensionless (3)
 inline constexpr int kBiasChangeConst = 6;  ///< ∂f_cx,cy [m/s²], constant part of the switch-over step (2)
@@ -32,12 +32,12 @@ inline constexpr int kResetVelocityError = 39; ///< error of the velocity reset 
 /// 5.1.x (re-sighting), on top of (u)ψ which the realignment keeps (1)
 inline constexpr int kRealignAzimuthError = 42;
 inline constexpr int kDim = 43;
-}  // namespace ux
+}  // namespace uncertainty_slot
 
-using UncertaintyVector = Eigen::Matrix<double, ux::kDim, 1>;
+using UncertaintyVector = Eigen::Matrix<double, uncertainty_slot::kDim, 1>;
 /// Linear map from the uncertainties to a 3-vector (e.g. S(t), U2..U5).
-using Sensitivity3 = Eigen::Matrix<double, 3, ux::kDim>;
+using Sensitivity3 = Eigen::Matrix<double, 3, uncertainty_slot::kDim>;
 /// Covariance of the uncertainties.
-using UncertaintyCovariance = Eigen::Matrix<double, ux::kDim, ux::kDim>;
+using UncertaintyCovariance = Eigen::Matrix<double, uncertainty_slot::kDim, uncertainty_slot::kDim>;
 
 }  // namespace insmc

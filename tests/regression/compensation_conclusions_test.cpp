@@ -98,9 +98,9 @@ TEST(SchemeConclusions, SchemeRankingAt84Min) {
   for (Fidelity f : {Fidelity::kPaper, Fidelity::kLinear}) {
     const Study st(defaults(f));
     print_ranking(st, "Table 3.1");
-    const std::vector<int> drift_z = {ux::kGyroDrift + 2};
-    const std::vector<int> switch_over = {ux::kMisalignAlign, ux::kMisalignAlign + 1, ux::kMisalignAlign + 2,
-                                          ux::kBiasChangeAlign, ux::kBiasChangeAlign + 1};
+    const std::vector<int> drift_z = {uncertainty_slot::kGyroDrift + 2};
+    const std::vector<int> switch_over = {uncertainty_slot::kMisalignAlign, uncertainty_slot::kMisalignAlign + 1, uncertainty_slot::kMisalignAlign + 2,
+                                          uncertainty_slot::kBiasChangeAlign, uncertainty_slot::kBiasChangeAlign + 1};
     for (int j = 0; j < 2; ++j) {
       const std::string where = fmt::format("{}, system {}", to_string(f), j + 1);
       for (int k = 0; k < 3; ++k) {

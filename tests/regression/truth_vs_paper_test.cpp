@@ -40,9 +40,9 @@ using testing::minutes_1_to_90;
 enum class Correction { kNone, kMuyCosL0, kZetaRxAsStep, kUntruncatedK4 };
 
 Correction correction_for(System s, int i) {
-  if (i >= ux::kGyroMuyDrift && i < ux::kGyroMuyDrift + 3) return Correction::kMuyCosL0;
-  if (s == System::kGyrocompass && i == ux::kMisalignAlign + 0) return Correction::kZetaRxAsStep;
-  if (s == System::kGyrocompass && i == ux::kAccelBias + 1) return Correction::kUntruncatedK4;
+  if (i >= uncertainty_slot::kGyroMuyDrift && i < uncertainty_slot::kGyroMuyDrift + 3) return Correction::kMuyCosL0;
+  if (s == System::kGyrocompass && i == uncertainty_slot::kMisalignAlign + 0) return Correction::kZetaRxAsStep;
+  if (s == System::kGyrocompass && i == uncertainty_slot::kAccelBias + 1) return Correction::kUntruncatedK4;
   return Correction::kNone;
 }
 
@@ -69,7 +69,7 @@ TEST(TruthVsPaper, EveryTermWithinTheReportsCutOnceItsErrorsAreCorrected) {
     TruthOptions t;
     t.system = s;
     t.dv_pulse_mps = 0.0;
-    for (int i = 0; i < ux::kDim; ++i) {
+    for (int i = 0; i < uncertainty_slot::kDim; ++i) {
       if (bounds[i] == 0.0) continue;
       UncertaintyVector x = UncertaintyVector::Zero();
       x[i] = bounds[i];

@@ -158,7 +158,7 @@ TEST(CovarianceAgreementPower, TenPercentWiderGyroDriftFails) {
   StudyConfig wider = base_config(Fidelity::kLinear, 1004);
   for (const int j : select_uncertainties("gyro_drift")) wider.uncertainties.at(j).bound_si *= 1.1;
   const Study mc(wider);  // the Monte Carlo side, and the alternative's exact moments
-  // budget_shares(): the first ux::kDim sources are the catalogue parameters.
+  // budget_shares(): the first uncertainty_slot::kDim sources are the catalogue parameters.
   const std::vector<std::vector<double>> shares = null_study.map.budget_shares();
   const double n = static_cast<double>(kSamples);
   std::vector<std::size_t> dominated;
@@ -189,7 +189,7 @@ TEST(CovarianceAgreementPower, TenPercentWiderGyroDriftFails) {
 TEST(CovarianceAgreementPower, TenPercentLargerFixedValueFailsTheMeanCheck) {
   const Study null_study(mixed_config(1005));
   StudyConfig shifted = mixed_config(1005);
-  ParameterDistribution& p = shifted.uncertainties.at(ux::kAccelBias + 2);
+  ParameterDistribution& p = shifted.uncertainties.at(uncertainty_slot::kAccelBias + 2);
   ASSERT_EQ(p.kind, DistributionKind::kFixed);
   p.fixed_si *= 1.1;
   const Study mc(shifted);

@@ -15,7 +15,7 @@ const SchemeDefinition& combined() {
       .position_map =
           [](const SchemeMapContext& c, ExtendedMap& e) {
             scheme_terms::add_u2_step(c, e);
-            e.middleCols<3>(ez::kU3) = scheme_terms::u3_to_torquers(c) + scheme_terms::u3_ramp_per_unit(c) *
+            e.middleCols<3>(z_slot::kU3) = scheme_terms::u3_to_torquers(c) + scheme_terms::u3_ramp_per_unit(c) *
                                                                              scheme_terms::combined_integrator_selection(c.system);
           },
       .truth_action =

@@ -14,7 +14,7 @@ const SchemeDefinition& scheme_5_1_1() {
       .position_map =
           [](const SchemeMapContext& c, ExtendedMap& e) {
             scheme_terms::add_u2_step(c, e);                                                 // (5.2)
-            e.middleCols<3>(ez::kU3) = scheme_terms::u3_ramp_per_unit(c) * Mat3::Identity();  // (5.3)
+            e.middleCols<3>(z_slot::kU3) = scheme_terms::u3_ramp_per_unit(c) * Mat3::Identity();  // (5.3)
           },
       .truth_action =
           [](const TruthSchemeContext& c, TruthOptions& o, UncertaintyVector&) {

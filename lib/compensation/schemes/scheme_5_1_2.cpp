@@ -15,7 +15,7 @@ const SchemeDefinition& scheme_5_1_2() {
       .position_map =
           [](const SchemeMapContext& c, ExtendedMap& e) {
             scheme_terms::add_u2_step(c, e);
-            e.middleCols<3>(ez::kU3) = scheme_terms::u3_to_torquers(c);
+            e.middleCols<3>(z_slot::kU3) = scheme_terms::u3_to_torquers(c);
           },
       .truth_action =
           [](const TruthSchemeContext& c, TruthOptions& o, UncertaintyVector& x) {

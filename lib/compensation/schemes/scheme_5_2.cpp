@@ -17,7 +17,7 @@ const SchemeDefinition& scheme_5_2() {
             const double g = c.model.gravity_mps2, w = c.model.earth_rate_radps, ws = c.model.schuler_radps();
             const double T = c.test_duration_s, tau = c.tau_s;
             scheme_terms::add_u2_step(c, e);
-            e.middleCols<3>(ez::kU3) =
+            e.middleCols<3>(z_slot::kU3) =
                 -g * w * (T * scheme_terms::step_response(tau, ws) + scheme_terms::ramp_response(tau, ws)) * Mat3::Identity();
           },
       .truth_action =

@@ -14,8 +14,8 @@ const SchemeDefinition& scheme_5_3() {
       .measurement_error_groups = {"reset_position_error", "reset_velocity_error"},
       .position_map =
           [](const SchemeMapContext& c, ExtendedMap& e) {
-            e.middleCols<3>(ez::kDfT) = -scheme_terms::step_response(c.tau_s, c.model.schuler_radps()) * Mat3::Identity();
-            e.middleCols<3>(ez::kU3Accel) = scheme_terms::u3_ramp_per_unit(c) * Mat3::Identity();
+            e.middleCols<3>(z_slot::kDfT) = -scheme_terms::step_response(c.tau_s, c.model.schuler_radps()) * Mat3::Identity();
+            e.middleCols<3>(z_slot::kU3Accel) = scheme_terms::u3_ramp_per_unit(c) * Mat3::Identity();
           },
       .truth_action =
           [](const TruthSchemeContext& c, TruthOptions& o, UncertaintyVector&) {

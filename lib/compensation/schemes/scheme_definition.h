@@ -123,7 +123,7 @@ inline Mat3 combined_integrator_selection(System system) {
 /// The step Û2 of 5.1.x at point 2 (5.2), (5.5): −g Û2, as a map.
 inline void add_u2_step(const SchemeMapContext& c, ExtendedMap& e) {
   const double g = c.model.gravity_mps2, ws = c.model.schuler_radps();
-  e.middleCols<3>(ez::kU2) = -g * step_response(c.tau_s, ws) * Mat3::Identity();
+  e.middleCols<3>(z_slot::kU2) = -g * step_response(c.tau_s, ws) * Mat3::Identity();
 }
 
 /// Û3 through integrators into point 2 (5.3), (5.11): the ramp −g ω_ie Û3 τ,
@@ -136,12 +136,12 @@ inline double u3_ramp_per_unit(const SchemeMapContext& c) {
 /// through the realignment and after it, as a change of the level-platform
 /// drift ω_do, so they enter through the drift's own columns.
 inline Mat3 u3_to_torquers(const SchemeMapContext& c) {
-  return c.uncompensated.middleCols<3>(ux::kGyroDrift) * torquer_rates_from_u3(c.system, c.model);
+  return c.uncompensated.middleCols<3>(uncertainty_slot::kGyroDrift) * torquer_rates_from_u3(c.system, c.model);
 }
 
 /// The same at the truth level: ω_cp added to the sample's drift (5.5).
 inline void apply_u3_to_torquers(const TruthSchemeContext& c, UncertaintyVector& x) {
-  x.segment<3>(ux::kGyroDrift) += torquer_rates_from_u3(c.system, c.model) * c.estimates.u3;
+  x.segment<3>(uncertainty_slot::kGyroDrift) += torquer_rates_from_u3(c.system, c.model) * c.estimates.u3;
 }
 
 }  // namespace scheme_terms

@@ -23,8 +23,8 @@ namespace {
 Eigen::VectorXd cause_prior_mean(const runs::BaseModel& base, const runs::GaussianModel& model,
                                  const UncertaintyVector& x_mean) {
   Eigen::VectorXd mu = Eigen::VectorXd::Zero(model.H.cols());
-  mu.head(ux::kDim) = x_mean;
-  const Eigen::Index first_scheme = ux::kDim + base.counting.columns.cols();
+  mu.head(uncertainty_slot::kDim) = x_mean;
+  const Eigen::Index first_scheme = uncertainty_slot::kDim + base.counting.columns.cols();
   for (std::size_t j = 0; j < base.scheme_x_index.size(); ++j)
     if (base.scheme_x_index[j] >= 0) mu[first_scheme + static_cast<Eigen::Index>(j)] = x_mean[base.scheme_x_index[j]];
   return mu;
@@ -114,7 +114,7 @@ SchemeCompensation compensation_of(Scheme scheme, const UnitRecords& records, co
   d.truth_action(context, o, change);
   c.step_mps2 = o.accel_compensation.step_mps2;
   c.ramp_mps3 = o.accel_compensation.ramp_mps3;
-  c.torquer_radps = change.segment<3>(ux::kGyroDrift);  // rates that act as a drift change (5.5)
+  c.torquer_radps = change.segment<3>(uncertainty_slot::kGyroDrift);  // rates that act as a drift change (5.5)
   return c;
 }
 
@@ -189,8 +189,8 @@ std::vector<Identifiability> identifiability(const UnitRecords& records, const U
       const Eigen::RowVectorXd l = maps[q]->row(a);
       const Eigen::ArrayXd share = l.array().square().transpose() * x_var.array();
       e.prior_sigma = std::sqrt(share.sum());
-      std::vector<int> order(ux::kDim);
-      for (int j = 0; j < ux::kDim; ++j) order[static_cast<std::size_t>(j)] = j;
+      std::vector<int> order(uncertainty_slot::kDim);
+      for (int j = 0; j < uncertainty_slot::kDim; ++j) order[static_cast<std::size_t>(j)] = j;
       std::sort(order.begin(), order.end(), [&](int i, int j) { return share[i] > share[j]; });
       for (int k = 0; k < 3 && share[order[static_cast<std::size_t>(k)]] > 0.01 * share.sum(); ++k)
         e.mixes.emplace_back(std::string(catalogue()[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])].name),
@@ -209,7 +209,7 @@ std::vector<Identifiability> identifiability(const UnitRecords& records, const U
     const runs::BaseModel base = runs::make_base_model(layout, site, x_var);
     runs::GaussianModel model = runs::combine(base, {});
     count_f_remainders(model, layout, site.dv_pulse_mps, site.filter_interval_s);
-    const Eigen::MatrixXd error = linear_gain(model).error_covariance.topLeftCorner(ux::kDim, ux::kDim);
+    const Eigen::MatrixXd error = linear_gain(model).error_covariance.topLeftCorner(uncertainty_slot::kDim, uncertainty_slot::kDim);
     for (std::size_t i = 0; i < out.size(); ++i) {
       const Eigen::RowVectorXd l = maps[i / 3]->row(static_cast<Eigen::Index>(i % 3));
       out[i].sigma_by_duration.emplace_back(site.test_duration_s,
@@ -257,7 +257,7 @@ UnitPosterior condition_unit(const UnitRecords& records, const UnitTestRun& run,
   c.estimates_map = shared.estimates_map;
   const TestRunEstimators& est = run.estimators;
   const Eigen::Vector4d per_r0 = est.position * Eigen::VectorXd::Ones(est.position.cols());
-  const Vec3 r0 = LinearErrorModel(site.system, site.model).initial_position() * c.cause_estimate.head(ux::kDim);
+  const Vec3 r0 = LinearErrorModel(site.system, site.model).initial_position() * c.cause_estimate.head(uncertainty_slot::kDim);
   c.crew_estimates = run.estimates;
   c.crew_estimates.u2 -= per_r0[1] * r0;
   c.crew_estimates.u3 -= per_r0[2] * r0;
@@ -293,8 +293,8 @@ std::vector<UnitEstimate> estimate_unit(const UnitRecords& records, const UnitPo
       UnitEstimate e;
       e.name = fmt::format("{}_{}", q.name, "xyz"[a]);
       e.unit = q.unit;
-      e.value = l * c.cause_estimate.head(ux::kDim);
-      e.sigma = std::sqrt(std::max(0.0, (l * c.error_covariance.topLeftCorner(ux::kDim, ux::kDim) * l.transpose())(0, 0)));
+      e.value = l * c.cause_estimate.head(uncertainty_slot::kDim);
+      e.sigma = std::sqrt(std::max(0.0, (l * c.error_covariance.topLeftCorner(uncertainty_slot::kDim, uncertainty_slot::kDim) * l.transpose())(0, 0)));
       e.prior_sigma = std::sqrt((l.array().square() * x_var.transpose().array()).sum());
       const bool fitted = q.report != nullptr && (q.map != &paper.u3 || est.fit_u3);
       if (fitted) e.report_estimator = (*q.report)[a];
@@ -330,8 +330,8 @@ SchemeModel scheme_model(const UnitRecords& records, const UnitPosterior& poster
   const runs::BaseModel base = runs::make_base_model(layout, site, prior.variance());
   const runs::GaussianModel model = runs::combine(base, {});
   const Eigen::VectorXd mu = cause_prior_mean(base, model, prior.mean());
-  const Eigen::Index others = model.H.cols() - ux::kDim;
-  const Eigen::MatrixXd A_x = model.H.leftCols(ux::kDim), A_o = model.H.rightCols(others);
+  const Eigen::Index others = model.H.cols() - uncertainty_slot::kDim;
+  const Eigen::MatrixXd A_x = model.H.leftCols(uncertainty_slot::kDim), A_o = model.H.rightCols(others);
   const Eigen::VectorXd var_o = model.prior_var.tail(others);
   const Eigen::MatrixXd& E = base.estimate_map;
   // The navigation rows' own counting noise (the position resolution is the
@@ -345,7 +345,7 @@ SchemeModel scheme_model(const UnitRecords& records, const UnitPosterior& poster
   m.position_per_cause = A_x;
   m.position_of_others = A_o * mu.tail(others);
   m.position_per_estimate = E;
-  Eigen::MatrixXd unit_cov = A_x * posterior.error_covariance.topLeftCorner(ux::kDim, ux::kDim) * A_x.transpose() +
+  Eigen::MatrixXd unit_cov = A_x * posterior.error_covariance.topLeftCorner(uncertainty_slot::kDim, uncertainty_slot::kDim) * A_x.transpose() +
                              A_o * var_o.asDiagonal() * A_o.transpose();
   unit_cov.diagonal() += nav_noise;
   // The population: the estimates are the estimators applied to random
@@ -353,7 +353,7 @@ SchemeModel scheme_model(const UnitRecords& records, const UnitPosterior& poster
   const runs::GaussianModel& test = posterior.model;
   const Eigen::MatrixXd EB = E * posterior.estimates_map;
   Eigen::MatrixXd via_test = EB * test.H;  // per unit of the test model's causes
-  via_test.leftCols(ux::kDim) += A_x;
+  via_test.leftCols(uncertainty_slot::kDim) += A_x;
   const Eigen::VectorXd pop_mean = via_test * posterior.cause_mean + A_o * mu.tail(others);
   Eigen::MatrixXd pop = via_test * test.prior_var.asDiagonal() * via_test.transpose() +
                         EB * test.actual_noise_var.asDiagonal() * EB.transpose() +
@@ -375,7 +375,7 @@ SchemeModel scheme_model(const UnitRecords& records, const UnitPosterior& poster
 SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& run, const UnitPosterior& posterior,
                                 const SchemeModel& m) {
   // The unit's own part: its estimate of x and its crew's estimates.
-  const Eigen::VectorXd unit_mean = m.position_per_cause * posterior.cause_estimate.head(ux::kDim) +
+  const Eigen::VectorXd unit_mean = m.position_per_cause * posterior.cause_estimate.head(uncertainty_slot::kDim) +
                                     m.position_of_others + m.position_per_estimate * estimate_vector(run.estimates);
   SchemePrediction out;
   out.scheme = m.scheme;

@@ -24,7 +24,7 @@ struct SystemProducts {
   Eigen::MatrixXd observe;       // 33 × (6K + 3 + 6): ΔV and Δr per k and axis, r(0), alignment data
   Eigen::MatrixXd accel_fit;     // K × 3 (4.4)
   Eigen::MatrixXd position_fit;  // K × 4 (4.7)
-  const Eigen::MatrixXd* map_t;  // ez::kDim × output rows
+  const Eigen::MatrixXd* map_t;  // z_slot::kDim × output rows
 };
 
 /// Seconds of the floor over blocks [first_block, end_block): the
@@ -39,40 +39,40 @@ double time_floor(const StudyConfig& c, const StudyMap& map, std::uint64_t first
     const SystemPipeline& p = map.pipeline(static_cast<int>(j));
     // The observation maps are private to the pipeline; a product's time
     // does not depend on the values, so random ones of the same shape stand in.
-    systems.push_back({Eigen::MatrixXd::Random(ux::kDim, observed_rows), p.estimators().accel.transpose(),
+    systems.push_back({Eigen::MatrixXd::Random(uncertainty_slot::kDim, observed_rows), p.estimators().accel.transpose(),
                        p.estimators().position.transpose(), &map.transposed(static_cast<int>(j))});
   }
   UncertaintyVector bounds;
-  for (int j = 0; j < ux::kDim; ++j) bounds[j] = c.uncertainties.at(j).bound_si;
+  for (int j = 0; j < uncertainty_slot::kDim; ++j) bounds[j] = c.uncertainties.at(j).bound_si;
   const auto one_block = [&](std::uint64_t b) {
     constexpr std::size_t n = kBlockSize;
     const Eigen::Index ni = static_cast<Eigen::Index>(n);
-    thread_local std::vector<double> u(n * ux::kDim), extra(n * kExtraDraws);
-    thread_local Eigen::MatrixXd x(ni, ux::kDim), observed(ni, observed_rows), z = Eigen::MatrixXd::Zero(ni, ez::kDim),
+    thread_local std::vector<double> u(n * uncertainty_slot::kDim), extra(n * kExtraDraws);
+    thread_local Eigen::MatrixXd x(ni, uncertainty_slot::kDim), observed(ni, observed_rows), z = Eigen::MatrixXd::Zero(ni, z_slot::kDim),
                                  accel(ni, 3), position(ni, 4), y;
-    fill_uniform01_draw_major(c.seed, Stream::Uncertainties, b * n, ux::kDim, n, u);
+    fill_uniform01_draw_major(c.seed, Stream::Uncertainties, b * n, uncertainty_slot::kDim, n, u);
     fill_uniform01_draw_major(c.seed, Stream::PulsePhase, b * n, kExtraDraws, n, extra);
-    for (int j = 0; j < ux::kDim; ++j)
+    for (int j = 0; j < uncertainty_slot::kDim; ++j)
       for (std::size_t s = 0; s < n; ++s) x(static_cast<Eigen::Index>(s), j) = (2 * u[j * n + s] - 1) * bounds[j];
     const Eigen::Map<const Eigen::MatrixXd> draws(extra.data(), ni, kExtraDraws);
     double sums = 0.0;
     for (const SystemProducts& sp : systems) {
       y.resize(ni, sp.map_t->cols());
-      map_product({n, ux::kDim, observed_rows}, x.data(), n, sp.observe.data(), ux::kDim, observed.data(), n);
-      z.leftCols<ux::kDim>() = x;
-      z.middleCols(ez::kRealignZeta, kExtraDraws - 9) = draws.rightCols(kExtraDraws - 9);
+      map_product({n, uncertainty_slot::kDim, observed_rows}, x.data(), n, sp.observe.data(), uncertainty_slot::kDim, observed.data(), n);
+      z.leftCols<uncertainty_slot::kDim>() = x;
+      z.middleCols(z_slot::kRealignZeta, kExtraDraws - 9) = draws.rightCols(kExtraDraws - 9);
       for (int a = 0; a < 3; ++a) {  // the fits on each axis' K data, every sample at once
         map_product({n, k, 3}, observed.col(a * k).data(), n, sp.accel_fit.data(), static_cast<std::size_t>(k),
                     accel.data(), n);
         map_product({n, k, 4}, observed.col(3 * k + a * k).data(), n, sp.position_fit.data(),
                     static_cast<std::size_t>(k), position.data(), n);
-        z.col(ez::kU2 + a) = position.col(1);
-        z.col(ez::kU3 + a) = position.col(2);
-        z.col(ez::kU3Accel + a) = accel.col(1);
-        z.col(ez::kDfT + a) = accel.col(0);
+        z.col(z_slot::kU2 + a) = position.col(1);
+        z.col(z_slot::kU3 + a) = position.col(2);
+        z.col(z_slot::kU3Accel + a) = accel.col(1);
+        z.col(z_slot::kDfT + a) = accel.col(0);
       }
-      z.middleCols<6>(ez::kTorquerCommands) = observed.rightCols<6>();
-      map_product({n, ez::kDim, static_cast<int>(y.cols())}, z.data(), n, sp.map_t->data(),
+      z.middleCols<6>(z_slot::kTorquerCommands) = observed.rightCols<6>();
+      map_product({n, z_slot::kDim, static_cast<int>(y.cols())}, z.data(), n, sp.map_t->data(),
                   static_cast<std::size_t>(sp.map_t->rows()), y.data(), n);
       sums += bench::lane_sums(y.data(), n, static_cast<std::size_t>(y.cols()), n);
     }

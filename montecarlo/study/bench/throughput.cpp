@@ -61,15 +61,15 @@ ThroughputResult measure_throughput(const StudyConfig& c) {
 
   {  // generator alone: bulk uniforms, one thread
     const std::uint64_t n = std::min<std::uint64_t>(c.samples, 1u << 18);
-    std::vector<double> u(kBlockSize * ux::kDim);
+    std::vector<double> u(kBlockSize * uncertainty_slot::kDim);
     const auto t0 = std::chrono::steady_clock::now();
     double acc = 0;
     for (std::uint64_t first = 0; first < n; first += kBlockSize) {
-      fill_uniform01_draw_major(c.seed, Stream::Uncertainties, first, ux::kDim, kBlockSize, u);
+      fill_uniform01_draw_major(c.seed, Stream::Uncertainties, first, uncertainty_slot::kDim, kBlockSize, u);
       acc += u[7];
     }
     keep(acc);
-    r.generator_variates_per_s = static_cast<double>(n * ux::kDim) / seconds_since(t0);
+    r.generator_variates_per_s = static_cast<double>(n * uncertainty_slot::kDim) / seconds_since(t0);
   }
 
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
@@ -80,24 +80,24 @@ ThroughputResult measure_throughput(const StudyConfig& c) {
     // product are the fastest kernels of this CPU (random/philox.h,
     // kernels/map_product.h), and the sums run in 8 independent lanes, so
     // nothing here waits on a scalar chain.
-    Eigen::MatrixXd mt(ux::kDim, map.transposed(0).cols() * static_cast<Eigen::Index>(c.systems.size()));
+    Eigen::MatrixXd mt(uncertainty_slot::kDim, map.transposed(0).cols() * static_cast<Eigen::Index>(c.systems.size()));
     for (size_t j = 0; j < c.systems.size(); ++j)
       mt.middleCols(static_cast<Eigen::Index>(j) * map.transposed(0).cols(), map.transposed(0).cols()) =
-          map.transposed(static_cast<int>(j)).topRows<ux::kDim>();
+          map.transposed(static_cast<int>(j)).topRows<uncertainty_slot::kDim>();
     const UncertaintyVector bounds = [&] {
       UncertaintyVector b;
-      for (int j = 0; j < ux::kDim; ++j) b[j] = c.uncertainties.at(j).bound_si;
+      for (int j = 0; j < uncertainty_slot::kDim; ++j) b[j] = c.uncertainties.at(j).bound_si;
       return b;
     }();
     const std::uint64_t blocks = block_count(c.samples);
     const auto one_block = [&](std::uint64_t b) {
-      thread_local std::vector<double> u(kBlockSize * ux::kDim), x(kBlockSize * ux::kDim);
+      thread_local std::vector<double> u(kBlockSize * uncertainty_slot::kDim), x(kBlockSize * uncertainty_slot::kDim);
       thread_local Eigen::MatrixXd y(kBlockSize, mt.cols());
-      fill_uniform01_draw_major(c.seed, Stream::Uncertainties, b * kBlockSize, ux::kDim, kBlockSize, u);
-      for (int j = 0; j < ux::kDim; ++j)
+      fill_uniform01_draw_major(c.seed, Stream::Uncertainties, b * kBlockSize, uncertainty_slot::kDim, kBlockSize, u);
+      for (int j = 0; j < uncertainty_slot::kDim; ++j)
         for (std::size_t s = 0; s < kBlockSize; ++s)
           x[j * kBlockSize + s] = (2 * u[j * kBlockSize + s] - 1) * bounds[j];
-      map_product({kBlockSize, ux::kDim, static_cast<int>(mt.cols())}, x.data(), kBlockSize, mt.data(), ux::kDim,
+      map_product({kBlockSize, uncertainty_slot::kDim, static_cast<int>(mt.cols())}, x.data(), kBlockSize, mt.data(), uncertainty_slot::kDim,
                   y.data(), kBlockSize);
       keep(bench::lane_sums(y.data(), kBlockSize, static_cast<std::size_t>(y.cols()), kBlockSize));
     };

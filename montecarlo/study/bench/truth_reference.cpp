@@ -145,18 +145,18 @@ void TruthReference::run(const UncertaintyVector& x, const Vec3& pulse_phase, Ve
   p.site_position_e = site_position_e_m_;
   // Deflection of the vertical ξ, η as a gravity anomaly (2.8b).
   p.site_gravitation_e = reference_gravitation_e_mps2_ +
-                         c_e_n_ * Vec3(x[ux::kDeflection] * g_s, -x[ux::kDeflection + 1] * g_s, 0.0);
+                         c_e_n_ * Vec3(x[uncertainty_slot::kDeflection] * g_s, -x[uncertainty_slot::kDeflection + 1] * g_s, 0.0);
   p.site_force_e = centripetal_e_mps2_ - p.site_gravitation_e;
   for (int k = 0; k < 3; ++k) {
-    p.mu_y[k] = x[ux::kGyroMuyDrift + k] / g_s;
-    p.mu_z[k] = x[ux::kGyroMuDrift + k] / (g_s * cos_l * cos_l);
+    p.mu_y[k] = x[uncertainty_slot::kGyroMuyDrift + k] / g_s;
+    p.mu_z[k] = x[uncertainty_slot::kGyroMuDrift + k] / (g_s * cos_l * cos_l);
   }
-  p.drift = x.segment<3>(ux::kGyroDrift) + g_s * p.mu_z;  // ω_AI = ω_do − MU f_level
-  p.scale = Vec3::Ones() + x.segment<3>(ux::kAccelScale);
-  p.bias = x.segment<3>(ux::kAccelBias);
-  for (int k = 0; k < 2; ++k) p.bias[k] += x[ux::kBiasChangeConst + k] + x[ux::kBiasChangeAlign + k];
-  const double latitude_hat = model_.latitude_rad + x[ux::kLatitudeError];
-  const double radius_m = model_.radius_m + x[ux::kAltitudeError];
+  p.drift = x.segment<3>(uncertainty_slot::kGyroDrift) + g_s * p.mu_z;  // ω_AI = ω_do − MU f_level
+  p.scale = Vec3::Ones() + x.segment<3>(uncertainty_slot::kAccelScale);
+  p.bias = x.segment<3>(uncertainty_slot::kAccelBias);
+  for (int k = 0; k < 2; ++k) p.bias[k] += x[uncertainty_slot::kBiasChangeConst + k] + x[uncertainty_slot::kBiasChangeAlign + k];
+  const double latitude_hat = model_.latitude_rad + x[uncertainty_slot::kLatitudeError];
+  const double radius_m = model_.radius_m + x[uncertainty_slot::kAltitudeError];
   const GravityField field = model_gravity_field(model_.gravity_mps2, model_.radius_m, 0.0);
   p.c_hat = C_ap_i(latitude_hat).transpose();
   p.mu_over_r3 = field.mu_m3ps2 / (radius_m * radius_m * radius_m);
@@ -168,7 +168,7 @@ void TruthReference::run(const UncertaintyVector& x, const Vec3& pulse_phase, Ve
   const Vec3 omega_e(0.0, 0.0, w_ie);
   const Vec3 r_c0 = position_for_plumb_latitude(field, w_ie, radius_m, latitude_hat);
   State y{Eigen::Vector4d(q0.w(), q0.x(), q0.y(), q0.z()), Vec3::Zero(), Vec3::Zero(), r_c0 - p.site_position_e,
-          omega_e.cross(r_c0) + c_ap_i * x.segment<3>(ux::kInitialVelocity) - omega_e.cross(p.site_position_e)};
+          omega_e.cross(r_c0) + c_ap_i * x.segment<3>(uncertainty_slot::kInitialVelocity) - omega_e.cross(p.site_position_e)};
 
   const double w = dv_pulse_mps_;
   const Vec3 rho0 = w * pulse_phase;

@@ -31,11 +31,11 @@ TruthThroughput measure_truth_throughput(const StudyConfig& c) {
     tbb::parallel_for(first_block, end_block, [&](std::uint64_t b) {
       const std::uint64_t first = b * kBlockSize;
       const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kBlockSize, c.samples - first));
-      thread_local std::vector<double> u(kBlockSize * ux::kDim);
-      thread_local Eigen::MatrixXd x(ux::kDim, kBlockSize);
+      thread_local std::vector<double> u(kBlockSize * uncertainty_slot::kDim);
+      thread_local Eigen::MatrixXd x(uncertainty_slot::kDim, kBlockSize);
       thread_local std::vector<Vec3> error;
       error.resize(times.size());
-      fill_uniform01(c.seed, Stream::Uncertainties, first, ux::kDim, n, std::span<double>(u.data(), n * ux::kDim));
+      fill_uniform01(c.seed, Stream::Uncertainties, first, uncertainty_slot::kDim, n, std::span<double>(u.data(), n * uncertainty_slot::kDim));
       sampler.transform(u.data(), n, x.data());
       double sum_squares_m2 = 0.0;
       for (std::size_t s = 0; s < n; ++s) {

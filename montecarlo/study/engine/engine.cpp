@@ -26,17 +26,17 @@ namespace {
 /// Per-thread buffers, sized once: nothing is allocated per sample.
 struct Workspace {
   Workspace(const StudyMap& map, int n_systems)
-      : uniforms(kBlockSize * ux::kDim),
-        x_by_draw(kBlockSize * ux::kDim),
-        x(ux::kDim, kBlockSize),
-        z_by_draw(kBlockSize, ez::kDim),
+      : uniforms(kBlockSize * uncertainty_slot::kDim),
+        x_by_draw(kBlockSize * uncertainty_slot::kDim),
+        x(uncertainty_slot::kDim, kBlockSize),
+        z_by_draw(kBlockSize, z_slot::kDim),
         h(kBlockSize) {
     for (int j = 0; j < n_systems; ++j) y.emplace_back(kBlockSize, map.transposed(j).cols());
   }
   std::vector<double> uniforms;    // kDim × n, draw-major
   std::vector<double> x_by_draw;   // kDim × n, draw-major: x[j * n + s]
   Eigen::MatrixXd x;               // kDim × block, one column per sample (the truth simulator's input)
-  Eigen::MatrixXd z_by_draw;       // block × ez::kDim: row s = sample s's extended vector
+  Eigen::MatrixXd z_by_draw;       // block × z_slot::kDim: row s = sample s's extended vector
   std::vector<Eigen::MatrixXd> y;  // per system: block × rows
   std::vector<double> h;
 };
@@ -109,12 +109,12 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
   const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kBlockSize, c.samples - first));
   // The block's draws with the samples of each uncertainty contiguous, as
   // the vectorised product takes them.
-  fill_uniform01_draw_major(c.seed, Stream::Uncertainties, first, ux::kDim, n,
-                            std::span<double>(ws.uniforms.data(), n * ux::kDim));
+  fill_uniform01_draw_major(c.seed, Stream::Uncertainties, first, uncertainty_slot::kDim, n,
+                            std::span<double>(ws.uniforms.data(), n * uncertainty_slot::kDim));
   sampler.transform_draw_major(ws.uniforms.data(), n, ws.x_by_draw.data());
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
   if (c.fidelity == Fidelity::kTruth)  // one column per sample, for the truth simulator
-    ws.x.leftCols(ni) = Eigen::Map<const Eigen::MatrixXd>(ws.x_by_draw.data(), ni, ux::kDim).transpose();
+    ws.x.leftCols(ni) = Eigen::Map<const Eigen::MatrixXd>(ws.x_by_draw.data(), ni, uncertainty_slot::kDim).transpose();
   for (std::size_t j = 0; j < ws.y.size(); ++j) {
     const int sj = static_cast<int>(j);
     if (c.fidelity == Fidelity::kTruth) {  // the nonlinear simulator, sample by sample
@@ -122,11 +122,11 @@ void run_block(const StudyConfig& c, const StudyMap& map, const Sampler& sampler
       continue;
     }
     if (map.depends_on_x_only(sj)) {  // z = [x; 0]: the same product on the rows that matter
-      map_rows(map, sj, ux::kDim, ws.x_by_draw.data(), n, n, ws.y[j]);
+      map_rows(map, sj, uncertainty_slot::kDim, ws.x_by_draw.data(), n, n, ws.y[j]);
       continue;
     }
     map.pipeline(sj).extended_vectors_by_draw(first, n, ws.x_by_draw.data(), ws.z_by_draw);
-    map_rows(map, sj, ez::kDim, ws.z_by_draw.data(), static_cast<std::size_t>(ws.z_by_draw.rows()), n, ws.y[j]);
+    map_rows(map, sj, z_slot::kDim, ws.z_by_draw.data(), static_cast<std::size_t>(ws.z_by_draw.rows()), n, ws.y[j]);
   }
   auto& outs = acc.outputs();
   const std::vector<int>& kept_slot = map.layout().kept_slot;
@@ -258,12 +258,12 @@ StudyAccumulator run_blocks(const StudyConfig& c, const StudyMap& map, std::uint
 std::vector<double> evaluate_sample(const StudyConfig& c, const StudyMap& map, const StudyLayout& layout,
                                     std::uint64_t index, const UncertaintyVector& x) {
   Eigen::MatrixXd xm = x;
-  Eigen::MatrixXd z(ez::kDim, 1);
+  Eigen::MatrixXd z(z_slot::kDim, 1);
   std::vector<Eigen::MatrixXd> rows;
   for (std::size_t j = 0; j < c.systems.size(); ++j) {
     map.pipeline(static_cast<int>(j)).extended_vectors(index, 1, xm, z);
     rows.emplace_back(1, map.transposed(static_cast<int>(j)).cols());
-    map_rows(map, static_cast<int>(j), ez::kDim, z.data(), 1, 1, rows.back());  // the block's kernel: its bits
+    map_rows(map, static_cast<int>(j), z_slot::kDim, z.data(), 1, 1, rows.back());  // the block's kernel: its bits
   }
   std::vector<double> out;
   for (size_t o = 0; o < layout.outputs.size(); ++o)

@@ -42,7 +42,7 @@ void validate(const StudyConfig& c) {
     throw InputError("--filter-interval", format_quantity(c.test.filter_interval_s, Dimension::kTime),
                      fmt::format("gives {} intervals in the test run of a study; allowed: 4 to {}",
                                  c.test.intervals(), kMaxStudyIntervals));
-  for (int i = 0; i < ux::kDim; ++i) {
+  for (int i = 0; i < uncertainty_slot::kDim; ++i) {
     const auto& p = c.uncertainties.at(i);
     require_in_range(fmt::format("--bound {}", catalogue()[i].name), p.bound_si, catalogue()[i].dimension,
                      bound_range(catalogue()[i]));

@@ -34,7 +34,7 @@ StudyMap::StudyMap(const StudyConfig& c, const StudyLayout& l) : config_(&c), la
     ready_time_s_.push_back(probe.ready_time_s);
   }
   for (int j = 0; j < l.n_systems; ++j) {
-    Eigen::MatrixXd mt(ez::kDim, kRowsPerMap * n_schemes * l.n_times);
+    Eigen::MatrixXd mt(z_slot::kDim, kRowsPerMap * n_schemes * l.n_times);
     for (int i = 0; i < n_schemes; ++i) {
       const SchemeMaps maps = scheme_position_maps(c.schemes[i], c.systems[j], c.map_fidelity(), c.model, c.test, l.times_s);
       for (int k = 0; k < l.n_times; ++k) {
@@ -45,7 +45,7 @@ StudyMap::StudyMap(const StudyConfig& c, const StudyLayout& l) : config_(&c), la
       }
     }
     input_map_t_.push_back(pipelines_[j]->covariance_map().transpose() * mt);
-    x_only_.push_back(mt.bottomRows(ez::kDim - ux::kDim).cwiseAbs().maxCoeff() == 0.0);
+    x_only_.push_back(mt.bottomRows(z_slot::kDim - uncertainty_slot::kDim).cwiseAbs().maxCoeff() == 0.0);
     map_t_.push_back(std::move(mt));
   }
   // Exact moments of r = s·w + s·E[w] with independent, symmetric inputs w.
@@ -100,7 +100,7 @@ std::vector<std::string> StudyMap::budget_sources() const {
 
 std::vector<std::vector<double>> StudyMap::budget_shares() const {
   const int n1 = config_->test.intervals() + 1;
-  const int kr = ux::kDim, nr = static_cast<int>(std::size(kRealignedSlots));
+  const int kr = uncertainty_slot::kDim, nr = static_cast<int>(std::size(kRealignedSlots));
   // Input groups after x and the fresh draws (system_pipeline.cpp layout).
   const int groups[5][2] = {{kr + nr, 3 * n1},
                             {kr + nr + 3 * n1, 3 * n1},

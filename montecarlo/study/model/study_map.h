@@ -31,7 +31,7 @@ class StudyMap {
   const SystemPipeline& pipeline(int system_j) const { return *pipelines_[system_j]; }
   const StudyLayout& layout() const { return *layout_; }
   const StudyConfig& config() const { return *config_; }
-  /// ez::kDim × rows of system j; column 5·(scheme_i · n_times + k) + c.
+  /// z_slot::kDim × rows of system j; column 5·(scheme_i · n_times + k) + c.
   const Eigen::MatrixXd& transposed(int system_j) const { return map_t_[system_j]; }
   /// First row (in transposed(j)) of output o's five rows, and its system.
   int row_base(std::size_t output) const;

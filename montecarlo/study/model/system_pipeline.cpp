@@ -39,8 +39,8 @@ SystemPipeline::SystemPipeline(const StudyConfig& c, System system)
   const ModelOptions& m = c.model;
   k_ = test_.intervals();
   const TestRunMaps maps = test_run_maps(system, c.map_fidelity(), m, test_);
-  velocity_map_.resize(3 * k_, ux::kDim);
-  position_map_.resize(3 * k_, ux::kDim);
+  velocity_map_.resize(3 * k_, uncertainty_slot::kDim);
+  position_map_.resize(3 * k_, uncertainty_slot::kDim);
   nominal_velocity_.resize(3, k_ + 1);
   true_position_.resize(3, k_ + 1);
   for (int k = 0; k <= k_; ++k) {
@@ -59,7 +59,7 @@ SystemPipeline::SystemPipeline(const StudyConfig& c, System system)
   const Sensitivity3 steady = steady_state(system, c.map_fidelity(), m);
   torquer_map_ = torquer_commands(steady, m);
   align_accel_map_ = alignment_accelerometer_outputs(steady, m);
-  observation_columns_.resize(ux::kDim, alignment_column() + 6);
+  observation_columns_.resize(uncertainty_slot::kDim, alignment_column() + 6);
   observation_columns_ << velocity_map_.transpose(), position_map_.transpose(), initial_position_.transpose(),
       torquer_map_.transpose(), align_accel_map_.transpose();
   const double w = m.earth_rate_radps;
@@ -72,9 +72,9 @@ void SystemPipeline::extended_vectors(std::uint64_t first, std::size_t n, const 
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
   thread_local std::vector<double> x_by_draw;
   thread_local Eigen::MatrixXd z_by_draw;
-  x_by_draw.resize(n * ux::kDim);
-  if (z_by_draw.rows() < ni) z_by_draw.resize(ni, ez::kDim);
-  Eigen::Map<Eigen::MatrixXd>(x_by_draw.data(), ni, ux::kDim) = x.leftCols(ni).transpose();
+  x_by_draw.resize(n * uncertainty_slot::kDim);
+  if (z_by_draw.rows() < ni) z_by_draw.resize(ni, z_slot::kDim);
+  Eigen::Map<Eigen::MatrixXd>(x_by_draw.data(), ni, uncertainty_slot::kDim) = x.leftCols(ni).transpose();
   extended_vectors_by_draw(first, n, x_by_draw.data(), z_by_draw);
   z.leftCols(ni) = z_by_draw.topRows(ni).transpose();
 }
@@ -84,7 +84,7 @@ void SystemPipeline::extended_vectors_by_draw(std::uint64_t first, std::size_t n
   const StudyConfig& c = *config_;
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
   z.topRows(ni).setZero();
-  z.topLeftCorner(ni, ux::kDim) = Eigen::Map<const Eigen::MatrixXd>(x_by_draw, ni, ux::kDim);
+  z.topLeftCorner(ni, uncertainty_slot::kDim) = Eigen::Map<const Eigen::MatrixXd>(x_by_draw, ni, uncertainty_slot::kDim);
   // The block's buffers, kept per thread across calls: with fresh temporaries
   // half of a paper run's time went to page faults and zeroing of new memory
   // (perf, docs/performance.md). Every block is draw-major: value i of
@@ -107,7 +107,7 @@ void SystemPipeline::extended_vectors_by_draw(std::uint64_t first, std::size_t n
   const int first_column = needs_test_ ? 0 : alignment_column();
   const int columns = static_cast<int>(observation_columns_.cols()) - first_column;
   observed.resize(n * static_cast<std::size_t>(observation_columns_.cols()));
-  map_product({n, ux::kDim, columns}, x_by_draw, n, observation_columns_.col(first_column).data(), ux::kDim,
+  map_product({n, uncertainty_slot::kDim, columns}, x_by_draw, n, observation_columns_.col(first_column).data(), uncertainty_slot::kDim,
               observed.data() + static_cast<std::size_t>(first_column) * n, n);
   phases.resize(n * kPhaseDraws);
   fill_uniform01_draw_major(c.seed, Stream::PulsePhase, first, kPhaseDraws, n, phases);
@@ -125,9 +125,9 @@ void SystemPipeline::extended_vectors_by_draw(std::uint64_t first, std::size_t n
       for (std::size_t s = 0; s < n; ++s) {
         const Eigen::Index si = static_cast<Eigen::Index>(s);
         // Torquer commands (5.14) counted in angle pulses over ta, less the known earth-rate command.
-        z(si, ez::kTorquerCommands + a) = counted_mean(wc[s], earth_rate_command_[a], ta, dtheta, torquer_phase[s]);
+        z(si, z_slot::kTorquerCommands + a) = counted_mean(wc[s], earth_rate_command_[a], ta, dtheta, torquer_phase[s]);
         // Accelerometer outputs (5.18) counted in ΔV pulses over ta, less the expected −g on z.
-        z(si, ez::kAlignAccel + a) = counted_mean(df[s], a == 2 ? -m.gravity_mps2 : 0.0, ta, dv, accel_phase[s]);
+        z(si, z_slot::kAlignAccel + a) = counted_mean(df[s], a == 2 ? -m.gravity_mps2 : 0.0, ta, dv, accel_phase[s]);
       }
     }
   }
@@ -194,12 +194,12 @@ void SystemPipeline::test_run_estimates(std::uint64_t first, std::size_t n, cons
     map_product({n, k_, 3}, accel_data.data(), n, accel_fit_columns_.data(), K, u_acc.data(), n);
     for (std::size_t s = 0; s < n; ++s) {
       const Eigen::Index si = static_cast<Eigen::Index>(s);
-      z(si, ez::kU2 + ia) = u_pos[n + s];
-      z(si, ez::kU3 + ia) = u_pos[2 * n + s];
-      z(si, ez::kU3Accel + ia) = u_acc[n + s];
-      z(si, ez::kDfT + ia) = filtered_df_at_test_end(m, T, u_acc[s], u_acc[n + s], u_acc[2 * n + s]);
+      z(si, z_slot::kU2 + ia) = u_pos[n + s];
+      z(si, z_slot::kU3 + ia) = u_pos[2 * n + s];
+      z(si, z_slot::kU3Accel + ia) = u_acc[n + s];
+      z(si, z_slot::kDfT + ia) = filtered_df_at_test_end(m, T, u_acc[s], u_acc[n + s], u_acc[2 * n + s]);
       // Computed − true velocity after the reset.
-      z(si, ez::kWiggleAtT + ia) = swaying ? -sway[(3 * K + a) * n + s] : -0.0;
+      z(si, z_slot::kWiggleAtT + ia) = swaying ? -sway[(3 * K + a) * n + s] : -0.0;
     }
   }
 }
@@ -208,13 +208,13 @@ void SystemPipeline::build_covariance_map(const StudyConfig& c, const TestRunMap
   // Inputs w: x | fresh draws | position rounding e_{k,a} | ΔV counter
   // remainders U_{k,a} | sway normals n_{k,a} | torquer (φ, U) | alignment ΔV (φ, U).
   const int K = k_, n1 = K + 1;
-  const int kx = 0, kr = ux::kDim, ke = kr + kRealignDraws, ku = ke + 3 * n1, kn = ku + 3 * n1, kt = kn + 3 * n1,
+  const int kx = 0, kr = uncertainty_slot::kDim, ke = kr + kRealignDraws, ku = ke + 3 * n1, kn = ku + 3 * n1, kt = kn + 3 * n1,
             kf = kt + 6, W = kf + 6;
   const ModelOptions& m = c.model;
   const double T = test_.duration_s, tau = test_.filter_interval_s;
   const double dv = test_.dv_pulse_mps, q = test_.position_resolution_m, dtheta = test_.torquer_pulse_rad;
   const double ta = test_.alignment_average_s;
-  g_ = Eigen::MatrixXd::Zero(ez::kDim, W);
+  g_ = Eigen::MatrixXd::Zero(z_slot::kDim, W);
   w_mean_ = Eigen::VectorXd::Zero(W);
   w_var_ = Eigen::VectorXd::Zero(W);
   w_m4_ = Eigen::VectorXd::Zero(W);
@@ -222,8 +222,8 @@ void SystemPipeline::build_covariance_map(const StudyConfig& c, const TestRunMap
     const double h = hi - lo;
     w_mean_[i] = (lo + hi) / 2, w_var_[i] = h * h / 12, w_m4_[i] = h * h * h * h / 80;
   };
-  g_.block(ez::kX, kx, ux::kDim, ux::kDim).setIdentity();
-  for (int i = 0; i < ux::kDim; ++i) {
+  g_.block(z_slot::kX, kx, uncertainty_slot::kDim, uncertainty_slot::kDim).setIdentity();
+  for (int i = 0; i < uncertainty_slot::kDim; ++i) {
     const ParameterDistribution& p = c.uncertainties.at(i);
     w_mean_[i] = p.mean(), w_var_[i] = p.variance(), w_m4_[i] = p.fourth_central_moment();
   }
@@ -252,31 +252,31 @@ void SystemPipeline::build_covariance_map(const StudyConfig& c, const TestRunMap
     for (int a = 0; a < 3; ++a) {
       Eigen::MatrixXd pos_rows = Eigen::MatrixXd::Zero(K, W), acc_rows = Eigen::MatrixXd::Zero(K, W);
       for (int k = 1; k <= K; ++k) {
-        pos_rows.block(k - 1, kx, 1, ux::kDim) = maps.position_change[k].row(a);
+        pos_rows.block(k - 1, kx, 1, uncertainty_slot::kDim) = maps.position_change[k].row(a);
         pos_rows(k - 1, ke + 3 * k + a) += 1.0;
         pos_rows(k - 1, ke + a) -= 1.0;
-        acc_rows.block(k - 1, kx, 1, ux::kDim) = (maps.velocity_increment[k].row(a) - maps.velocity_increment[k - 1].row(a)) / tau;
+        acc_rows.block(k - 1, kx, 1, uncertainty_slot::kDim) = (maps.velocity_increment[k].row(a) - maps.velocity_increment[k - 1].row(a)) / tau;
         acc_rows(k - 1, ku + 3 * (k - 1) + a) += 1.0 / tau;  // U_{k−1} − U_k
         acc_rows(k - 1, ku + 3 * k + a) -= 1.0 / tau;
         for (int j = 0; j < n1; ++j)
           acc_rows(k - 1, kn + 3 * j + a) += (l(k, j) - l(k - 1, j)) / tau;
       }
       const Eigen::MatrixXd u = apply_estimators(est_, m, T, pos_rows, acc_rows);
-      g_.row(ez::kU2 + a) = u.row(kU2Row);
-      g_.row(ez::kU3 + a) = u.row(kU3Row);
-      g_.row(ez::kU3Accel + a) = u.row(kU3AccelRow);
-      g_.row(ez::kDfT + a) = u.row(kDfAtTestEndRow);
-      for (int j = 0; j < n1; ++j) g_(ez::kWiggleAtT + a, kn + 3 * j + a) = -l(K, j);
+      g_.row(z_slot::kU2 + a) = u.row(kU2Row);
+      g_.row(z_slot::kU3 + a) = u.row(kU3Row);
+      g_.row(z_slot::kU3Accel + a) = u.row(kU3AccelRow);
+      g_.row(z_slot::kDfT + a) = u.row(kDfAtTestEndRow);
+      for (int j = 0; j < n1; ++j) g_(z_slot::kWiggleAtT + a, kn + 3 * j + a) = -l(K, j);
     }
   }
   if (needs_alignment_data_) {
     for (int a = 0; a < 3; ++a) {
-      g_.block(ez::kTorquerCommands + a, kx, 1, ux::kDim) = torquer_map_.row(a);
-      g_(ez::kTorquerCommands + a, kt + a) = 1.0 / ta;       // counter phase φ
-      g_(ez::kTorquerCommands + a, kt + 3 + a) = -1.0 / ta;  // remainder at the end
-      g_.block(ez::kAlignAccel + a, kx, 1, ux::kDim) = align_accel_map_.row(a);
-      g_(ez::kAlignAccel + a, kf + a) = 1.0 / ta;
-      g_(ez::kAlignAccel + a, kf + 3 + a) = -1.0 / ta;
+      g_.block(z_slot::kTorquerCommands + a, kx, 1, uncertainty_slot::kDim) = torquer_map_.row(a);
+      g_(z_slot::kTorquerCommands + a, kt + a) = 1.0 / ta;       // counter phase φ
+      g_(z_slot::kTorquerCommands + a, kt + 3 + a) = -1.0 / ta;  // remainder at the end
+      g_.block(z_slot::kAlignAccel + a, kx, 1, uncertainty_slot::kDim) = align_accel_map_.row(a);
+      g_(z_slot::kAlignAccel + a, kf + a) = 1.0 / ta;
+      g_(z_slot::kAlignAccel + a, kf + 3 + a) = -1.0 / ta;
     }
   }
 }

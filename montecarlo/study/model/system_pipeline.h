@@ -32,17 +32,17 @@ class SystemPipeline {
   const TestRunEstimators& estimators() const { return est_; }
 
   /// Fills z (kDim × n, one column per sample) for samples first..first+n−1
-  /// whose uncertainties are the columns of x (ux::kDim × n); for --replay
+  /// whose uncertainties are the columns of x (uncertainty_slot::kDim × n); for --replay
   /// and tests, through extended_vectors_by_draw (the same bits).
   void extended_vectors(std::uint64_t first, std::size_t n, const Eigen::MatrixXd& x, Eigen::MatrixXd& z) const;
 
-  /// The engine's form: rows 0..n−1 of z (at least n rows, ez::kDim
+  /// The engine's form: rows 0..n−1 of z (at least n rows, z_slot::kDim
   /// columns) for samples first..first+n−1, whose uncertainties are
   /// x_by_draw[j·n + s] (draw-major, as the block product takes them).
   void extended_vectors_by_draw(std::uint64_t first, std::size_t n, const double* x_by_draw,
                                 Eigen::MatrixXd& z) const;
 
-  /// z = G w + m for the additive-noise model: G (ez::kDim × W) and each
+  /// z = G w + m for the additive-noise model: G (z_slot::kDim × W) and each
   /// input's mean, variance and fourth central moment.
   const Eigen::MatrixXd& covariance_map() const { return g_; }
   const Eigen::VectorXd& input_mean() const { return w_mean_; }

@@ -47,10 +47,10 @@ std::size_t leader_of(const std::vector<double>& rms) {
 
 int bound_slot(Assumption a) {
   switch (a) {
-    case Assumption::kAlignDriftError: return ux::kAlignDriftError;
-    case Assumption::kResetVelocityError: return ux::kResetVelocityError;
-    case Assumption::kResetPositionError: return ux::kResetPositionError;
-    case Assumption::kRealignAzimuthError: return ux::kRealignAzimuthError;
+    case Assumption::kAlignDriftError: return uncertainty_slot::kAlignDriftError;
+    case Assumption::kResetVelocityError: return uncertainty_slot::kResetVelocityError;
+    case Assumption::kResetPositionError: return uncertainty_slot::kResetPositionError;
+    case Assumption::kRealignAzimuthError: return uncertainty_slot::kRealignAzimuthError;
     default: return -1;
   }
 }
@@ -117,11 +117,11 @@ double study_value(const StudyConfig& config, Assumption a) {
   }
   if (a == Assumption::kTestDuration) return config.test.duration_s;
   // F from the bounds, when they are a split of Table 3.1's totals.
-  const double c = u.at(ux::kMisalignConst).bound_si, r = u.at(ux::kMisalignAlign).bound_si;
+  const double c = u.at(uncertainty_slot::kMisalignConst).bound_si, r = u.at(uncertainty_slot::kMisalignAlign).bound_si;
   if (c + r <= 0) return nan;
   UncertaintyModel split = u;
   apply_random_fraction(split, r / (c + r));
-  for (int i = 0; i < ux::kDim; ++i)
+  for (int i = 0; i < uncertainty_slot::kDim; ++i)
     if (std::abs(split.at(i).bound_si - u.at(i).bound_si) > 1e-12 * std::max(1e-300, u.at(i).bound_si)) return nan;
   return r / (c + r);
 }

@@ -17,15 +17,15 @@ Report replay_report(const StudyConfig& c, const StudyLayout& l, const StudyMap&
   const UncertaintyVector x = Sampler(c.uncertainties).draw(c.seed, index);
   text += fmt::format("# sample {} (seed {}, fidelity {})\n\nuncertainty,value_si\n", index, c.seed, to_string(c.fidelity));
   for (const auto& spec : catalogue()) text += fmt::format("{},{}\n", spec.name, format_number(x[spec.index]));
-  Eigen::MatrixXd xm = x, z(ez::kDim, 1);
+  Eigen::MatrixXd xm = x, z(z_slot::kDim, 1);
   for (std::size_t j = 0; j < c.systems.size(); ++j) {
     map.pipeline(static_cast<int>(j)).extended_vectors(index, 1, xm, z);
     text += fmt::format("\nsystem {}: estimates and measurements (fitted {})\nquantity,x,y,z\n", system_number(c.systems[j]),
                map.fitted_terms(static_cast<int>(j)));
-    for (int q = 0; q < ez::kSlotCount; ++q) {
-      const ExtendedSlot& slot = ez::kSlots[q];
+    for (int q = 0; q < z_slot::kSlotCount; ++q) {
+      const ExtendedSlot& slot = z_slot::kSlots[q];
       std::string row = fmt::format("{}{}", slot.name, slot.unit.empty() ? "" : fmt::format(" [{}]", slot.unit));
-      for (int i = ez::slot_start(q); i < ez::slot_start(q + 1); ++i) row += fmt::format(",{}", format_number(z(i, 0)));
+      for (int i = z_slot::slot_start(q); i < z_slot::slot_start(q + 1); ++i) row += fmt::format(",{}", format_number(z(i, 0)));
       text += fmt::format("{}\n", row);
     }
   }

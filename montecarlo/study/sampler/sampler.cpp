@@ -24,7 +24,7 @@ namespace {
 template <std::size_t kGroupLen>
 [[gnu::always_inline]] inline void uniform_pass(const double* u, std::size_t n, double* x,
                                                 const double* scale) {
-  constexpr std::size_t kDim = ux::kDim;
+  constexpr std::size_t kDim = uncertainty_slot::kDim;
   constexpr std::size_t kGroup = kGroupLen / kDim;
   std::size_t s = 0;
   for (; s + kGroup <= n; s += kGroup) uniform_span(u + s * kDim, x + s * kDim, scale, kGroupLen);
@@ -57,7 +57,7 @@ UniformPass best_uniform_pass() {
 }  // namespace
 
 Sampler::Sampler(const UncertaintyModel& model) {
-  for (int j = 0; j < ux::kDim; ++j) {
+  for (int j = 0; j < uncertainty_slot::kDim; ++j) {
     const ParameterDistribution& p = model.at(j);
     kind_[j] = p.kind;
     bound_[j] = p.bound_si;
@@ -65,7 +65,7 @@ Sampler::Sampler(const UncertaintyModel& model) {
     if (p.kind == DistributionKind::kTruncatedNormal && p.bound_si > 0)
       normal_[j].emplace(p.bound_si / p.sigmas_in_bound, p.bound_si);
     if (p.kind == DistributionKind::kUniform) {
-      for (int r = 0; r < kScaleSamples; ++r) uniform_scale_[r * ux::kDim + j] = p.bound_si;
+      for (int r = 0; r < kScaleSamples; ++r) uniform_scale_[r * uncertainty_slot::kDim + j] = p.bound_si;
     } else {
       other_[n_other_++] = j;
     }
@@ -87,19 +87,19 @@ double Sampler::transform_one(int j, double u) const {
 void Sampler::transform(const double* uniforms, std::size_t n, double* x) const {
   // Pass 1: every entry as if uniform (scale 0 for the other kinds, whose
   // entries pass 2 overwrites), in sample-major order.
-  static const UniformPass pass = best_uniform_pass<kScaleSamples * ux::kDim>();
-  if (n_other_ < ux::kDim) pass(uniforms, n, x, uniform_scale_.data());
+  static const UniformPass pass = best_uniform_pass<kScaleSamples * uncertainty_slot::kDim>();
+  if (n_other_ < uncertainty_slot::kDim) pass(uniforms, n, x, uniform_scale_.data());
   // Pass 2: the non-uniform parameters.
   if (n_other_ == 0) return;
   for (std::size_t s = 0; s < n; ++s) {
-    const double* u = uniforms + s * ux::kDim;
-    double* xs = x + s * ux::kDim;
+    const double* u = uniforms + s * uncertainty_slot::kDim;
+    double* xs = x + s * uncertainty_slot::kDim;
     for (int k = 0; k < n_other_; ++k) xs[other_[k]] = transform_one(other_[k], u[other_[k]]);
   }
 }
 
 void Sampler::transform_draw_major(const double* uniforms, std::size_t n, double* x) const {
-  for (int j = 0; j < ux::kDim; ++j) {
+  for (int j = 0; j < uncertainty_slot::kDim; ++j) {
     const double* u = uniforms + static_cast<std::size_t>(j) * n;
     double* xj = x + static_cast<std::size_t>(j) * n;
     if (kind_[j] == DistributionKind::kUniform) {
@@ -112,8 +112,8 @@ void Sampler::transform_draw_major(const double* uniforms, std::size_t n, double
 }
 
 UncertaintyVector Sampler::draw(std::uint64_t seed, std::uint64_t index) const {
-  std::vector<double> u(ux::kDim);
-  fill_uniform01(seed, Stream::Uncertainties, index, ux::kDim, 1, u);
+  std::vector<double> u(uncertainty_slot::kDim);
+  fill_uniform01(seed, Stream::Uncertainties, index, uncertainty_slot::kDim, 1, u);
   UncertaintyVector x;
   transform_draw_major(u.data(), 1, x.data());  // one sample: both layouts are the same memory
   return x;

@@ -38,15 +38,15 @@ class Sampler {
   double transform_one(int j, double u) const;
 
  private:
-  std::array<DistributionKind, ux::kDim> kind_;
-  std::array<double, ux::kDim> bound_, fixed_;
-  std::array<std::optional<TruncatedNormalTransform>, ux::kDim> normal_;
+  std::array<DistributionKind, uncertainty_slot::kDim> kind_;
+  std::array<double, uncertainty_slot::kDim> bound_, fixed_;
+  std::array<std::optional<TruncatedNormalTransform>, uncertainty_slot::kDim> normal_;
   /// bound_[j] for uniform parameters, 0 for the others, repeated for
   /// kScaleSamples samples so a run of whole samples is one flat loop.
   static constexpr int kScaleSamples = 4;
-  std::array<double, kScaleSamples * ux::kDim> uniform_scale_{};
+  std::array<double, kScaleSamples * uncertainty_slot::kDim> uniform_scale_{};
   /// The parameters that are not uniform, in increasing order.
-  std::array<int, ux::kDim> other_{};
+  std::array<int, uncertainty_slot::kDim> other_{};
   int n_other_ = 0;
 };
 

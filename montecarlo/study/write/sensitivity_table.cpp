@@ -19,10 +19,10 @@ std::string render_sensitivity_csv(const StudyLayout& l, const StudyMap& map) {
     const int base = map.row_base(o);
     for (int r = 0; r < kRowsPerMap; ++r) {
       const auto column = m.col(base + r);
-      if (!column.tail(m.rows() - ux::kDim).isZero(0.0)) continue;  // acts on more than x
+      if (!column.tail(m.rows() - uncertainty_slot::kDim).isZero(0.0)) continue;  // acts on more than x
       std::vector<std::string> row = {std::string(to_string(spec.scheme)), std::to_string(system_number(spec.system)),
                                       format_number(l.times_s[spec.time_index] / 60.0), kComponents[r]};
-      for (int k = 0; k < ux::kDim; ++k) row.push_back(format_number(column[k]));
+      for (int k = 0; k < uncertainty_slot::kDim; ++k) row.push_back(format_number(column[k]));
       table.add_row(std::move(row));
     }
   }

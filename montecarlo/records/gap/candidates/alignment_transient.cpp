@@ -18,7 +18,7 @@ Candidate alignment_transient() {
                     "a floor of 1e-6 of Table 3.1's 0.5 mrad for 0 (none) up to the 100 mrad of the small-angle model")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             runs::Extension e;
-            e.x_var_add.segment<3>(ux::kMisalignAlign) = Eigen::Vector3d(p[0] * p[0], p[0] * p[0], p[1] * p[1]);
+            e.x_var_add.segment<3>(uncertainty_slot::kMisalignAlign) = Eigen::Vector3d(p[0] * p[0], p[0] * p[0], p[1] * p[1]);
             add_misalignment_second_order(ctx, Eigen::Vector3d(p[0], p[0], p[1]), e);
             return e;
           },

@@ -14,7 +14,7 @@ Candidate deflection_of_vertical() {
            amplitude("eta", Dimension::kAngle, 20 * kMradToRad, "200 times Table 3.1's 0.1 mrad deflection")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             runs::Extension e;
-            e.mean = p[0] * ctx.base->H_x.col(ux::kDeflection) + p[1] * ctx.base->H_x.col(ux::kDeflection + 1);
+            e.mean = p[0] * ctx.base->H_x.col(uncertainty_slot::kDeflection) + p[1] * ctx.base->H_x.col(uncertainty_slot::kDeflection + 1);
             return e;
           },
           {},

@@ -147,8 +147,8 @@ runs::Extension process_extension(const LayoutContext& ctx, Drive drive, double 
   runs::Extension e;
   // A Gauss–Markov process has its stationary σ already at switch-over: the
   // alignment takes that value for δf or ω_do, beyond Table 3.1's.
-  if (tau > 0 && drive == Drive::kAccel) e.x_var_add.segment<3>(ux::kAccelBias).setConstant(sigma * sigma);
-  if (tau > 0 && drive == Drive::kRate) e.x_var_add.segment<3>(ux::kGyroDrift).setConstant(sigma * sigma);
+  if (tau > 0 && drive == Drive::kAccel) e.x_var_add.segment<3>(uncertainty_slot::kAccelBias).setConstant(sigma * sigma);
+  if (tau > 0 && drive == Drive::kRate) e.x_var_add.segment<3>(uncertainty_slot::kGyroDrift).setConstant(sigma * sigma);
   e.columns = process_columns(ctx, drive, tau);
   e.column_var = Eigen::VectorXd::Constant(e.columns.cols(), sigma * sigma);
   // The bridges' higher modes, seen by the f rows only: of the process

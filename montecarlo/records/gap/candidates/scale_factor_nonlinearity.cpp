@@ -18,7 +18,7 @@ Candidate scale_factor_nonlinearity() {
             // The value at switch-over acts as a fixed bias δf through the
             // alignment (its H_x columns); the change as gravity turns is the signature.
             Eigen::VectorXd at_switch = Eigen::VectorXd::Zero(ctx.base->H_x.rows());
-            for (int k = 0; k < 3; ++k) at_switch += f0[k] * f0[k] / g2 * ctx.base->H_x.col(ux::kAccelBias + k);
+            for (int k = 0; k < 3; ++k) at_switch += f0[k] * f0[k] / g2 * ctx.base->H_x.col(uncertainty_slot::kAccelBias + k);
             runs::Extension e;
             e.mean = p[0] * (at_switch + signature_columns(ctx, "sfn", 1, [m, f0, g2](double t, runs::Columns3& a, runs::Columns3& th) {
                                            th.setZero();

@@ -34,7 +34,7 @@ Candidate sway() {
             const Eigen::Vector3d axes(1, 1, vertical * vertical);
             runs::Extension e;
             e.noise_var_add = f_noise(ctx, a2 * gain * axes);
-            e.x_var_add.segment<3>(ux::kInitialVelocity) = a2 * inv_w2 * axes;
+            e.x_var_add.segment<3>(uncertainty_slot::kInitialVelocity) = a2 * inv_w2 * axes;
             // The displacement at switch-over is an initial position error the
             // computer does not know: r = r0 cos(ω_s t) (3.24). Table 3.1 has
             // one north (δL0) and down (δh), none east.

@@ -17,9 +17,9 @@ Candidate switch_transient() {
                     "a floor of 1e-6 of Table 3.1's 1 mg for 0 (none) up to the 100 mg the linearized model describes")},
           [](const LayoutContext& ctx, std::span<const double> p) {
             runs::Extension e;
-            e.x_var_add.segment<3>(ux::kMisalignAlign).setConstant(p[0] * p[0]);
-            e.x_var_add.segment<2>(ux::kBiasChangeAlign).setConstant(p[1] * p[1]);
-            e.x_var_add[ux::kAccelBias + 2] = p[1] * p[1];
+            e.x_var_add.segment<3>(uncertainty_slot::kMisalignAlign).setConstant(p[0] * p[0]);
+            e.x_var_add.segment<2>(uncertainty_slot::kBiasChangeAlign).setConstant(p[1] * p[1]);
+            e.x_var_add[uncertainty_slot::kAccelBias + 2] = p[1] * p[1];
             add_misalignment_second_order(ctx, Eigen::Vector3d::Constant(p[0]), e);
             return e;
           },

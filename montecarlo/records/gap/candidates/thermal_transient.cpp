@@ -30,8 +30,8 @@ Candidate thermal_transient() {
             // the fixed bias δf and drift ω_do do, through the alignment (their
             // columns of H_x); the settling is the signature above.
             const Eigen::MatrixXd& H = ctx.base->H_x;
-            const Eigen::VectorXd fixed_bias = H.middleCols<3>(ux::kAccelBias).rowwise().sum();
-            const Eigen::VectorXd fixed_drift = H.middleCols<3>(ux::kGyroDrift).rowwise().sum();
+            const Eigen::VectorXd fixed_bias = H.middleCols<3>(uncertainty_slot::kAccelBias).rowwise().sum();
+            const Eigen::VectorXd fixed_drift = H.middleCols<3>(uncertainty_slot::kGyroDrift).rowwise().sum();
             runs::Extension e;
             e.mean = p[0] * (cols.col(0) + fixed_bias) + p[1] * (cols.col(1) + fixed_drift);
             return e;

@@ -75,7 +75,7 @@ void name_from_estimates(EstimateTest& test, const RunEstimates& e, const runs::
     W.row(k) = W_all.row(std::find(x.begin(), x.end(), e.columns[static_cast<std::size_t>(k)]) - x.begin());
   const runs::BaseModel base = p.base_of(layout);
   const Eigen::Index nt = analyser.test_rows();
-  const Eigen::Index nx = std::min<Eigen::Index>(base.H_x.cols(), ux::kDim);
+  const Eigen::Index nx = std::min<Eigen::Index>(base.H_x.cols(), uncertainty_slot::kDim);
   const Eigen::MatrixXd WH = W * base.H_x.topRows(nt).leftCols(nx);
   const EstimatePoint none = make_point(C0, Eigen::MatrixXd(J, 0));
   std::vector<int> half[2];

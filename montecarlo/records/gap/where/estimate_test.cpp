@@ -72,7 +72,7 @@ RunEstimates run_estimates(const runs::PreparedRuns& p, const std::vector<const 
   std::set<int> used(p.layout_of.begin(), p.layout_of.end());
   used.insert(null.layout_of.begin(), null.layout_of.end());
   std::vector<int> common;
-  for (int j = 0; j < ux::kDim; ++j) {
+  for (int j = 0; j < uncertainty_slot::kDim; ++j) {
     bool everywhere = true;
     for (const int L : used) {
       const std::vector<int>& x = analysers[static_cast<std::size_t>(L)]->estimate_x_columns();

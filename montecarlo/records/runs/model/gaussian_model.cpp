@@ -50,16 +50,16 @@ GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>
   }
   const Eigen::Index n = base.H_x.rows(), kc = counting->columns.cols(), ks = base.scheme_columns.cols();
   GaussianModel m;
-  m.H.resize(n, ux::kDim + kc + ks + extra);
-  m.prior_var.resize(ux::kDim + kc + ks + extra);
-  m.H.leftCols(ux::kDim) = base.H_x;
-  m.prior_var.head(ux::kDim) = x_var;
-  m.H.middleCols(ux::kDim, kc) = counting->columns;
-  m.prior_var.segment(ux::kDim, kc).setOnes();
-  m.H.middleCols(ux::kDim + kc, ks) = base.scheme_columns;
+  m.H.resize(n, uncertainty_slot::kDim + kc + ks + extra);
+  m.prior_var.resize(uncertainty_slot::kDim + kc + ks + extra);
+  m.H.leftCols(uncertainty_slot::kDim) = base.H_x;
+  m.prior_var.head(uncertainty_slot::kDim) = x_var;
+  m.H.middleCols(uncertainty_slot::kDim, kc) = counting->columns;
+  m.prior_var.segment(uncertainty_slot::kDim, kc).setOnes();
+  m.H.middleCols(uncertainty_slot::kDim + kc, ks) = base.scheme_columns;
   for (Eigen::Index j = 0; j < ks; ++j) {
     const int slot = base.scheme_x_index[static_cast<std::size_t>(j)];
-    m.prior_var[ux::kDim + kc + j] = slot >= 0 ? x_var[slot] : base.scheme_variance[j];
+    m.prior_var[uncertainty_slot::kDim + kc + j] = slot >= 0 ? x_var[slot] : base.scheme_variance[j];
   }
   // The floor stays the base model's when a candidate widens the priors: the
   // null calibrates its share (κ, λ) for that floor, and a floor grown with
@@ -68,7 +68,7 @@ GaussianModel combine(const BaseModel& base, const std::vector<const Extension*>
   m.noise_var = base.noise_var + counting->noise_var;
   m.actual_noise_var = base.actual_noise_var + counting->noise_var;
   m.mean = Eigen::VectorXd::Zero(n);
-  Eigen::Index at = ux::kDim + kc + ks;
+  Eigen::Index at = uncertainty_slot::kDim + kc + ks;
   for (const Extension* e : extensions) {
     INSMC_ASSERT(e->columns.rows() == n || e->columns.cols() == 0, "extension rows {}", e->columns.rows());
     const Eigen::Index k = e->columns.cols();

@@ -22,7 +22,7 @@ class KeySpace {
   int row_key_count() const { return static_cast<int>(groups_.size()); }
   /// Key of the estimate of x column j.
   int estimate_key(int x_column) const { return row_key_count() + x_column; }
-  int size() const { return row_key_count() + ux::kDim; }
+  int size() const { return row_key_count() + uncertainty_slot::kDim; }
   /// Coherent group of a key.
   int coherent_group(int key) const;
 

@@ -154,7 +154,7 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
   const UncertaintyVector x_std = x_var.cwiseSqrt();
   for (int s = 0; s < kDraws; ++s) {
     UncertaintyVector x;
-    for (int j = 0; j < ux::kDim; ++j) x[j] = x_std[j] * draws.normal();
+    for (int j = 0; j < uncertainty_slot::kDim; ++j) x[j] = x_std[j] * draws.normal();
     Vec3 phase;
     for (int k = 0; k < 3; ++k) phase[k] = draws.uniform() - 0.5;
     Vec3 v_prev = Vec3::Zero(), cos_sum = Vec3::Zero(), sin_sum = Vec3::Zero();

@@ -88,7 +88,7 @@ Eigen::Vector3d gravity_in_ap(double t_s, const ModelOptions& model) {
 
 Eigen::MatrixXd uncertainty_response(const Layout& layout, const RecordSite& site) {
   const LinearErrorModel model(site.system, site.model);
-  Eigen::MatrixXd out(static_cast<Eigen::Index>(layout.rows.size()), ux::kDim);
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(layout.rows.size()), uncertainty_slot::kDim);
   // f rows: the forcing; r rows: (3.24) from δr(0), δV(0) of (3.22), (3.23).
   fill_rows<Sensitivity3>(layout, site, [&](double t) { return model.forcing(t); }, true,
                           Sensitivity3::Zero(), model.initial_position(), model.initial_velocity(), out);

@@ -244,7 +244,7 @@ void RunAnalyser::finish(const LatticeAnalysis& a, std::span<const Eigen::Index>
   posterior_ = a.s_.head(p).asDiagonal() * pi * a.s_.head(p).asDiagonal();
   for (Eigen::Index c = 0; c < p; ++c) {
     const Eigen::Index j = a.active_[static_cast<std::size_t>(c)];
-    if (j < ux::kDim && 1.0 - pi(c, c) > kResolvedShare) {
+    if (j < uncertainty_slot::kDim && 1.0 - pi(c, c) > kResolvedShare) {
       estimate_columns_.push_back(static_cast<int>(c));
       estimate_x_.push_back(static_cast<int>(j));
     }

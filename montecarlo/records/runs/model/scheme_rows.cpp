@@ -21,7 +21,7 @@ SchemeRows scheme_rows(const Layout& layout, const RecordSite& site, const TestR
   const auto n = static_cast<Eigen::Index>(layout.rows.size());
   SchemeRows s;
   s.replaced.assign(layout.rows.size(), false);
-  s.x_columns = Eigen::MatrixXd::Zero(n, ux::kDim);
+  s.x_columns = Eigen::MatrixXd::Zero(n, uncertainty_slot::kDim);
   s.estimate_map = Eigen::MatrixXd::Zero(n, kEstimateCount);
   s.columns.resize(n, 0);
   const Scheme scheme = site.scheme;
@@ -66,7 +66,7 @@ SchemeRows scheme_rows(const Layout& layout, const RecordSite& site, const TestR
   }
   // 5.4: the measured torquer commands (5.14) and accelerometer outputs
   // (5.19), each a map of x plus two pulse remainders over the averaging time.
-  Eigen::Matrix<double, 6, ux::kDim> measured = Eigen::Matrix<double, 6, ux::kDim>::Zero();
+  Eigen::Matrix<double, 6, uncertainty_slot::kDim> measured = Eigen::Matrix<double, 6, uncertainty_slot::kDim>::Zero();
   if (uses_alignment_data(scheme)) {
     const Sensitivity3 steady = full_steady_state_misalignment(site.system, site.model);
     measured.topRows<3>() = torquer_commands(steady, site.model);
@@ -83,18 +83,18 @@ SchemeRows scheme_rows(const Layout& layout, const RecordSite& site, const TestR
     const int a = layout.rows[rows[m]].axis;
     const ExtendedMap& e = maps.position[m];
     s.replaced[rows[m]] = true;
-    s.x_columns.row(i) = e.row(a).leftCols<ux::kDim>();
+    s.x_columns.row(i) = e.row(a).leftCols<uncertainty_slot::kDim>();
     for (std::size_t j = 0; j < fresh.size(); ++j) extra[fresh[j]][i] = e(a, kRealignedSlots[j].z_index);
     if (uses_test_run(scheme)) {
-      s.estimate_map.row(i) = e.row(a).segment<kEstimateCount>(ez::kU2);
+      s.estimate_map.row(i) = e.row(a).segment<kEstimateCount>(z_slot::kU2);
       for (int b = 0; b < 3; ++b) {
-        const double coefficient = e(a, ez::kU2 + b) * per_r0[1] + e(a, ez::kU3 + b) * per_r0[2];
+        const double coefficient = e(a, z_slot::kU2 + b) * per_r0[1] + e(a, z_slot::kU3 + b) * per_r0[2];
         s.x_columns.row(i) -= coefficient * r0_map.row(b);
         if (!rounding.empty()) extra[rounding[static_cast<std::size_t>(b)]][i] = -coefficient;
       }
     }
     if (uses_alignment_data(scheme)) {
-      const Eigen::Matrix<double, 1, 6> effect = e.row(a).segment<6>(ez::kTorquerCommands);
+      const Eigen::Matrix<double, 1, 6> effect = e.row(a).segment<6>(z_slot::kTorquerCommands);
       s.x_columns.row(i) += effect * measured;
       for (int j = 0; j < 6; ++j) extra[counting[static_cast<std::size_t>(j)]][i] = effect[j];
     }

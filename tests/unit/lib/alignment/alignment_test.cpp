@@ -21,13 +21,13 @@ TEST(Alignment, FullSystem1AgreesWithSimplifiedWithinTheNeglectedCoupling) {
   const Sensitivity3 full = full_steady_state_misalignment(System::kTheodolite, o);
   const Sensitivity3 simple = simplified_steady_state_misalignment(System::kTheodolite, o);
   const UncertaintyVector b = default_bounds();
-  for (int i = 0; i < ux::kDim; ++i) {
+  for (int i = 0; i < uncertainty_slot::kDim; ++i) {
     EXPECT_LT((full.col(i) - simple.col(i)).norm() * b[i], kCouplingTolRad) << catalogue()[i].name;
   }
   // and the coupling is really there: ω_ie sin L0 / F(0) feeds C_y into C_x.
   const double expected = -std::sin(o.latitude_rad) / o.leveling_gain_ratio * -1.0 / o.gravity_mps2;
   // Second-order coupling (ω_ie/F(0))² = 4e-6 is left out of `expected`.
-  EXPECT_NEAR(full(0, ux::kAccelBias + 0), expected, 1e-5 * std::abs(expected));
+  EXPECT_NEAR(full(0, uncertainty_slot::kAccelBias + 0), expected, 1e-5 * std::abs(expected));
 }
 
 TEST(Alignment, FullSystem2WithIntegratingLoopsEqualsEquation216) {
@@ -36,7 +36,7 @@ TEST(Alignment, FullSystem2WithIntegratingLoopsEqualsEquation216) {
   const Sensitivity3 simple = simplified_steady_state_misalignment(System::kGyrocompass, o);
   EXPECT_LT((full - simple).cwiseAbs().maxCoeff(), 1e-9);
   // (2.16): C_z = −ω_doy/(ω_ie cos L0) + …: 10 meru gives 14.1 mrad.
-  EXPECT_NEAR(full(2, ux::kGyroDrift + 1) * 10 * kMeruToRadps, -0.01 / std::cos(o.latitude_rad), 1e-12);
+  EXPECT_NEAR(full(2, uncertainty_slot::kGyroDrift + 1) * 10 * kMeruToRadps, -0.01 / std::cos(o.latitude_rad), 1e-12);
 }
 
 TEST(Alignment, SwitchoverAddsTheAlignmentStepZetaR) {
@@ -45,8 +45,8 @@ TEST(Alignment, SwitchoverAddsTheAlignmentStepZetaR) {
     const Sensitivity3 c = full_steady_state_misalignment(s, o);
     const Sensitivity3 cp = full_switchover_misalignment(s, o);
     Sensitivity3 diff = cp - c;
-    for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(diff(k, ux::kMisalignAlign + k), 1.0);
-    diff.block<3, 3>(0, ux::kMisalignAlign).setZero();
+    for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(diff(k, uncertainty_slot::kMisalignAlign + k), 1.0);
+    diff.block<3, 3>(0, uncertainty_slot::kMisalignAlign).setZero();
     EXPECT_EQ(diff.cwiseAbs().maxCoeff(), 0.0);
   }
 }
@@ -55,14 +55,14 @@ TEST(Alignment, PaperSwitchoverMatchesEquation218c) {
   const ModelOptions o;
   const double g = o.gravity_mps2, tanL = std::tan(o.latitude_rad);
   const Sensitivity3 c1 = paper_switchover_misalignment(System::kTheodolite, o);
-  EXPECT_DOUBLE_EQ(c1(0, ux::kAccelBias + 1), 1 / g);
-  EXPECT_DOUBLE_EQ(c1(1, ux::kAccelBias + 0), -1 / g);
-  EXPECT_DOUBLE_EQ(c1(2, ux::kTheodolite), 1.0);
-  EXPECT_DOUBLE_EQ(c1(0, ux::kGyroDrift + 0), 1 / (500 * o.earth_rate_radps));
+  EXPECT_DOUBLE_EQ(c1(0, uncertainty_slot::kAccelBias + 1), 1 / g);
+  EXPECT_DOUBLE_EQ(c1(1, uncertainty_slot::kAccelBias + 0), -1 / g);
+  EXPECT_DOUBLE_EQ(c1(2, uncertainty_slot::kTheodolite), 1.0);
+  EXPECT_DOUBLE_EQ(c1(0, uncertainty_slot::kGyroDrift + 0), 1 / (500 * o.earth_rate_radps));
   const Sensitivity3 c2 = paper_switchover_misalignment(System::kGyrocompass, o);
-  EXPECT_DOUBLE_EQ(c2(2, ux::kAccelBias + 1), -tanL / g);
-  EXPECT_DOUBLE_EQ(c2(2, ux::kMisalignAlign + 0), -tanL);  // ζ'_z(2) = ζ_z − ζ_x tan L0
-  EXPECT_DOUBLE_EQ(c2(2, ux::kTheodolite), 0.0);
+  EXPECT_DOUBLE_EQ(c2(2, uncertainty_slot::kAccelBias + 1), -tanL / g);
+  EXPECT_DOUBLE_EQ(c2(2, uncertainty_slot::kMisalignAlign + 0), -tanL);  // ζ'_z(2) = ζ_z − ζ_x tan L0
+  EXPECT_DOUBLE_EQ(c2(2, uncertainty_slot::kTheodolite), 0.0);
 }
 
 TEST(Alignment, TorquerCommandsOfSystem2CancelTheYDrift) {
@@ -71,9 +71,9 @@ TEST(Alignment, TorquerCommandsOfSystem2CancelTheYDrift) {
   const ModelOptions o;
   const Sensitivity3 c = simplified_steady_state_misalignment(System::kGyrocompass, o);
   const Sensitivity3 w = torquer_commands(c, o);
-  EXPECT_NEAR(w(1, ux::kGyroDrift + 1), 0.0, 1e-15);
-  EXPECT_DOUBLE_EQ(w(0, ux::kGyroDrift + 0), -1.0);
-  EXPECT_DOUBLE_EQ(w(2, ux::kGyroDrift + 2), -1.0);
+  EXPECT_NEAR(w(1, uncertainty_slot::kGyroDrift + 1), 0.0, 1e-15);
+  EXPECT_DOUBLE_EQ(w(0, uncertainty_slot::kGyroDrift + 0), -1.0);
+  EXPECT_DOUBLE_EQ(w(2, uncertainty_slot::kGyroDrift + 2), -1.0);
 }
 
 TEST(Alignment, LevelingNullsTheHorizontalAccelerometerOutputs) {
@@ -83,12 +83,12 @@ TEST(Alignment, LevelingNullsTheHorizontalAccelerometerOutputs) {
   const double g = o.gravity_mps2;
   const Sensitivity3 c = simplified_steady_state_misalignment(System::kTheodolite, o);
   const Sensitivity3 f = alignment_accelerometer_outputs(c, o);
-  EXPECT_NEAR(f(0, ux::kAccelBias + 0), 0.0, 1e-15);
-  EXPECT_NEAR(f(1, ux::kAccelBias + 1), 0.0, 1e-15);
-  EXPECT_NEAR(f(0, ux::kDeflection + 0), 0.0, 1e-15);
-  EXPECT_DOUBLE_EQ(f(0, ux::kMisalignConst + 1), g);
-  EXPECT_DOUBLE_EQ(f(1, ux::kMisalignConst + 0), -g);
-  EXPECT_DOUBLE_EQ(f(2, ux::kAccelScale + 2), -g);
+  EXPECT_NEAR(f(0, uncertainty_slot::kAccelBias + 0), 0.0, 1e-15);
+  EXPECT_NEAR(f(1, uncertainty_slot::kAccelBias + 1), 0.0, 1e-15);
+  EXPECT_NEAR(f(0, uncertainty_slot::kDeflection + 0), 0.0, 1e-15);
+  EXPECT_DOUBLE_EQ(f(0, uncertainty_slot::kMisalignConst + 1), g);
+  EXPECT_DOUBLE_EQ(f(1, uncertainty_slot::kMisalignConst + 0), -g);
+  EXPECT_DOUBLE_EQ(f(2, uncertainty_slot::kAccelScale + 2), -g);
 }
 
 }  // namespace

@@ -171,7 +171,7 @@ TEST(CompensationConclusions, TextFiguresOfScheme52AreTheU4TermsAlone) {
   TestRunOptions test;
   test.duration_s = kFigureTestS;
   const double w = m.earth_rate_radps, ws = m.schuler_radps(), r0 = m.radius_m, x = 10 * kOneMeru;
-  const int j = ux::kGyroDrift + 2;
+  const int j = uncertainty_slot::kGyroDrift + 2;
   for (System sys : {System::kTheodolite, System::kGyrocompass}) {
     const testing::FitResult fit = testing::scheme_coefficients(Scheme::k5_2, sys, m, test, SchemeForms::kPrinted);
     const double c2 = fit.c[testing::kU2](0, j), c3 = fit.c[testing::kU3](0, j);
@@ -200,7 +200,7 @@ TEST(CompensationConclusions, WholeScheme52ResidualOfTheTextFigureStudy) {
   const ModelOptions m;
   TestRunOptions test;
   test.duration_s = kFigureTestS;
-  const int j = ux::kGyroDrift + 2;
+  const int j = uncertainty_slot::kGyroDrift + 2;
   const double x = 10 * kOneMeru;
   const System sys = System::kTheodolite;
   const TestRunMaps data = test_run_maps(sys, Fidelity::kPaper, m, test);
@@ -224,15 +224,15 @@ TEST(CompensationConclusions, WholeScheme52ResidualOfTheTextFigureStudy) {
         Eigen::VectorXd d(test.intervals());
         for (int k = 1; k <= test.intervals(); ++k) d[k - 1] = data.position_change[static_cast<size_t>(k)](a, j) * x;
         const Eigen::Vector4d u = est.position * d;
-        z[ez::kU2 + a] = u[1];
-        z[ez::kU3 + a] = u[2];
+        z[z_slot::kU2 + a] = u[1];
+        z[z_slot::kU3 + a] = u[2];
       }
     }
     const double at42 = (maps.position[0] * z)[0] / kFtToM, at84 = (maps.position[1] * z)[0] / kFtToM;
     std::cout << fmt::format(
         "5.2, T = 20 min, ω_doz = 10 meru, x axis, {:<20}: Û2x = {:+.3e}, Û3x = {:+.3e}; "
         "δr_x(t' = 42 min) = {:6.0f} ft, δr_x(t' = 84 min) = {:6.0f} ft = {:.2f} n.m.\n",
-        v.what, z[ez::kU2], z[ez::kU3], at42, at84, at84 * kFtToM / kNmiToM);
+        v.what, z[z_slot::kU2], z[z_slot::kU3], at42, at84, at84 * kFtToM / kNmiToM);
     // Whatever the fit, the U4 t'² term (not estimable) keeps the error at
     // 84 min far above the quoted U4 ω_ie T term alone.
     EXPECT_GT(std::abs(at84), 1.5 * kFigure84Nmi * kNmiToM / kFtToM) << v.what;

@@ -5,13 +5,13 @@
 // (lib/compensation/extended_vector.h) one at a time.
 //
 // A perturbation p is a column of z-layout:
-//  * p < ux::kDim: one uncertainty x_p, with every estimate and measurement
+//  * p < uncertainty_slot::kDim: one uncertainty x_p, with every estimate and measurement
 //    slot equal to what it estimates at the paper level (Û2 = U2 (3.29b),
 //    Û3 = U3 (3.29c), Δf̂(T) = g{A1 + U3 ω_ie T + U4 ½ω_ie²T²} (5.10),
 //    ω_c (5.14) and Δf_m (5.19) of the simplified steady state): the part
 //    of the residual that is not an estimation error. For the per-alignment
 //    slots this is the value of the test run, the report's ( )_p.
-//  * p ≥ ux::kDim: one slot of z alone, in the report's units: the fresh
+//  * p ≥ uncertainty_slot::kDim: one slot of z alone, in the report's units: the fresh
 //    draws of the realignment, ( )_n; ε2 = Û2 − U2 and ε3 = Û3 − U3 (4.8b, c)
 //    (also ε3 of the accelerometer slope (5.12), which 5.3 uses); E of (5.10)
 //    (the slot holds g E); ε4 of (5.15) (the slot holds ω_ie ε4); ε5 of (5.19)
@@ -75,7 +75,7 @@ inline double time_function_max(int fn, const ModelOptions& m) {
   return worst;
 }
 
-/// Coefficient maps per time function: 3 × ez::kDim, column p = per unit of perturbation p.
+/// Coefficient maps per time function: 3 × z_slot::kDim, column p = per unit of perturbation p.
 using Coefficients = std::array<ExtendedMap, kFns>;
 
 inline Coefficients zero_coefficients() {
@@ -117,26 +117,26 @@ inline FitResult fit_time_functions(const std::vector<ExtendedMap>& maps, const 
 
 /// Report-unit scale of each z slot (see the header comment).
 inline double slot_scale(int p, const ModelOptions& m) {
-  if (p >= ez::kDfT && p < ez::kDfT + 3) return m.gravity_mps2;                              // g E
-  if (p >= ez::kTorquerCommands && p < ez::kTorquerCommands + 3) return m.earth_rate_radps;  // ω_ie ε4
-  if (p >= ez::kAlignAccel && p < ez::kAlignAccel + 3) return m.gravity_mps2;                // g ε5
+  if (p >= z_slot::kDfT && p < z_slot::kDfT + 3) return m.gravity_mps2;                              // g E
+  if (p >= z_slot::kTorquerCommands && p < z_slot::kTorquerCommands + 3) return m.earth_rate_radps;  // ω_ie ε4
+  if (p >= z_slot::kAlignAccel && p < z_slot::kAlignAccel + 3) return m.gravity_mps2;                // g ε5
   return 1.0;
 }
 
-/// The perturbations, one per column (ez::kDim × ez::kDim), at the paper level.
+/// The perturbations, one per column (z_slot::kDim × z_slot::kDim), at the paper level.
 inline Eigen::MatrixXd perturbations(System system, const ModelOptions& m, const TestRunOptions& test) {
   const ShortRunMatrices sr = paper_short_run_matrices(system, m);
   const double g = m.gravity_mps2, w = m.earth_rate_radps, T = test.duration_s;
   const Sensitivity3 steady = simplified_steady_state_misalignment(system, m);
-  Eigen::MatrixXd p = Eigen::MatrixXd::Zero(ez::kDim, ez::kDim);
-  p.block(ez::kX, 0, ux::kDim, ux::kDim).setIdentity();
-  p.block(ez::kU2, 0, 3, ux::kDim) = sr.u2;
-  p.block(ez::kU3, 0, 3, ux::kDim) = sr.u3;
-  p.block(ez::kU3Accel, 0, 3, ux::kDim) = sr.u3;
-  p.block(ez::kDfT, 0, 3, ux::kDim) = g * (paper_a1(sr, m) + w * T * sr.u3 + 0.5 * w * w * T * T * sr.u4);
-  p.block(ez::kTorquerCommands, 0, 3, ux::kDim) = torquer_commands(steady, m);
-  p.block(ez::kAlignAccel, 0, 3, ux::kDim) = alignment_accelerometer_outputs(steady, m);
-  for (int s = ux::kDim; s < ez::kDim; ++s) p(s, s) = slot_scale(s, m);
+  Eigen::MatrixXd p = Eigen::MatrixXd::Zero(z_slot::kDim, z_slot::kDim);
+  p.block(z_slot::kX, 0, uncertainty_slot::kDim, uncertainty_slot::kDim).setIdentity();
+  p.block(z_slot::kU2, 0, 3, uncertainty_slot::kDim) = sr.u2;
+  p.block(z_slot::kU3, 0, 3, uncertainty_slot::kDim) = sr.u3;
+  p.block(z_slot::kU3Accel, 0, 3, uncertainty_slot::kDim) = sr.u3;
+  p.block(z_slot::kDfT, 0, 3, uncertainty_slot::kDim) = g * (paper_a1(sr, m) + w * T * sr.u3 + 0.5 * w * w * T * T * sr.u4);
+  p.block(z_slot::kTorquerCommands, 0, 3, uncertainty_slot::kDim) = torquer_commands(steady, m);
+  p.block(z_slot::kAlignAccel, 0, 3, uncertainty_slot::kDim) = alignment_accelerometer_outputs(steady, m);
+  for (int s = uncertainty_slot::kDim; s < z_slot::kDim; ++s) p(s, s) = slot_scale(s, m);
   return p;
 }
 
@@ -150,32 +150,32 @@ inline Eigen::MatrixXd perturbations(System system, const ModelOptions& m, const
 /// ε_ṙ(T) at the (u)V bound (§4.3: the velocity uncertainty is the wiggle).
 inline double magnitude(int p, const ModelOptions& m, const TestRunOptions& test) {
   const UncertaintyVector bound = default_bounds();
-  if (p < ux::kDim) return bound[p];
+  if (p < uncertainty_slot::kDim) return bound[p];
   for (const RealignedSlot& r : kRealignedSlots)
     if (r.z_index == p) return bound[r.x_index];
   const ResolutionLimits lim = pulse_resolution_limits(0.1 * kFtpsToMps, test.duration_s, m);
   auto in = [p](int first) { return p >= first && p < first + 3; };
-  if (in(ez::kU2) || in(ez::kDfT) || in(ez::kAlignAccel)) return lim.a1;
-  if (in(ez::kU3) || in(ez::kU3Accel)) return lim.u3;
-  if (in(ez::kTorquerCommands)) return 1e-4;
-  return bound[ux::kInitialVelocity];  // ε_ṙ(T)
+  if (in(z_slot::kU2) || in(z_slot::kDfT) || in(z_slot::kAlignAccel)) return lim.a1;
+  if (in(z_slot::kU3) || in(z_slot::kU3Accel)) return lim.u3;
+  if (in(z_slot::kTorquerCommands)) return 1e-4;
+  return bound[uncertainty_slot::kInitialVelocity];  // ε_ṙ(T)
 }
 
 /// A readable name of perturbation p.
 inline std::string perturbation_name(int p) {
-  if (p < ux::kDim) return std::string(catalogue()[p].name);
+  if (p < uncertainty_slot::kDim) return std::string(catalogue()[p].name);
   static const char* axes = "xyz";
   auto slot = [&](const char* what, int first) { return std::string(what) + axes[p - first]; };
-  if (p < ez::kRealignBias) return slot("(zeta_r)_n ", ez::kRealignZeta);
-  if (p < ez::kRealignVelocity) return slot("(df_r)_n ", ez::kRealignBias);
-  if (p < ez::kU2) return slot("((u)V)_n ", ez::kRealignVelocity);
-  if (p < ez::kU3) return slot("eps2", ez::kU2);
-  if (p < ez::kU3Accel) return slot("eps3", ez::kU3);
-  if (p < ez::kDfT) return slot("eps3(accel)", ez::kU3Accel);
-  if (p < ez::kTorquerCommands) return slot("E", ez::kDfT);
-  if (p < ez::kAlignAccel) return slot("eps4", ez::kTorquerCommands);
-  if (p < ez::kWiggleAtT) return slot("eps5", ez::kAlignAccel);
-  return slot("eps_rdot(T)", ez::kWiggleAtT);
+  if (p < z_slot::kRealignBias) return slot("(zeta_r)_n ", z_slot::kRealignZeta);
+  if (p < z_slot::kRealignVelocity) return slot("(df_r)_n ", z_slot::kRealignBias);
+  if (p < z_slot::kU2) return slot("((u)V)_n ", z_slot::kRealignVelocity);
+  if (p < z_slot::kU3) return slot("eps2", z_slot::kU2);
+  if (p < z_slot::kU3Accel) return slot("eps3", z_slot::kU3);
+  if (p < z_slot::kDfT) return slot("eps3(accel)", z_slot::kU3Accel);
+  if (p < z_slot::kTorquerCommands) return slot("E", z_slot::kDfT);
+  if (p < z_slot::kAlignAccel) return slot("eps4", z_slot::kTorquerCommands);
+  if (p < z_slot::kWiggleAtT) return slot("eps5", z_slot::kAlignAccel);
+  return slot("eps_rdot(T)", z_slot::kWiggleAtT);
 }
 
 /// The scheme's residual coefficients at the paper level for test run `test`,

@@ -51,7 +51,7 @@ using testing::kU4;
 using testing::kU5;
 using testing::kVel;
 
-using ZRow = Eigen::Matrix<double, 1, ez::kDim>;
+using ZRow = Eigen::Matrix<double, 1, z_slot::kDim>;
 
 /// The row picking `scale` times slot `index` of the perturbation space.
 ZRow e(int index, double scale = 1.0) {
@@ -88,34 +88,34 @@ struct Report {
   double g, w, r0, ws, T, s, c, tn, f_inv;
 
   // Slots of the per-alignment quantities, of the test run (p) or fresh (n).
-  int zr(int k, bool fresh) const { return (fresh ? ez::kRealignZeta : ux::kMisalignAlign) + k; }
-  int fr(int k, bool fresh) const { return (fresh ? ez::kRealignBias : ux::kBiasChangeAlign) + k; }
-  int uv(int k, bool fresh) const { return (fresh ? ez::kRealignVelocity : ux::kInitialVelocity) + k; }
-  ZRow zeta(int k, bool fresh) const { return e(ux::kMisalignConst + k) + e(zr(k, fresh)); }  // ζ = ζ_c + ζ_r
-  ZRow dfc(int k, bool fresh) const { return e(ux::kBiasChangeConst + k, 1 / g) + e(fr(k, fresh), 1 / g); }  // ∂f/g
-  ZRow drift(int k, double scale) const { return e(ux::kGyroDrift + k, scale / w); }   // ω_dok scale/ω_ie
-  ZRow muy(int k, double scale) const { return e(ux::kGyroMuyDrift + k, scale / w); }  // g·MUY_k scale/ω_ie
-  ZRow bias(int k, double scale) const { return e(ux::kAccelBias + k, scale / g); }    // δf_k scale/g
+  int zr(int k, bool fresh) const { return (fresh ? z_slot::kRealignZeta : uncertainty_slot::kMisalignAlign) + k; }
+  int fr(int k, bool fresh) const { return (fresh ? z_slot::kRealignBias : uncertainty_slot::kBiasChangeAlign) + k; }
+  int uv(int k, bool fresh) const { return (fresh ? z_slot::kRealignVelocity : uncertainty_slot::kInitialVelocity) + k; }
+  ZRow zeta(int k, bool fresh) const { return e(uncertainty_slot::kMisalignConst + k) + e(zr(k, fresh)); }  // ζ = ζ_c + ζ_r
+  ZRow dfc(int k, bool fresh) const { return e(uncertainty_slot::kBiasChangeConst + k, 1 / g) + e(fr(k, fresh), 1 / g); }  // ∂f/g
+  ZRow drift(int k, double scale) const { return e(uncertainty_slot::kGyroDrift + k, scale / w); }   // ω_dok scale/ω_ie
+  ZRow muy(int k, double scale) const { return e(uncertainty_slot::kGyroMuyDrift + k, scale / w); }  // g·MUY_k scale/ω_ie
+  ZRow bias(int k, double scale) const { return e(uncertainty_slot::kAccelBias + k, scale / g); }    // δf_k scale/g
   /// ψ_ωz (2.17c): ≈ 0 for system 1 as (3.29c) prints it; −ω_doy/(ω_ie cos L0) for system 2.
   ZRow psi_wz() const { return sys1 ? kZero : drift(1, -1 / c); }
 
-  ExtendedMap dr0() const { return rows(e(ux::kLatitudeError, r0), kZero, e(ux::kAltitudeError, -1)); }  // (3.22)
+  ExtendedMap dr0() const { return rows(e(uncertainty_slot::kLatitudeError, r0), kZero, e(uncertainty_slot::kAltitudeError, -1)); }  // (3.22)
   /// (3.23) as printed (errata.md#3-23 kept at the paper level).
   ExtendedMap dv0(bool fresh) const {
-    return rows(e(uv(0, fresh)), e(uv(1, fresh)) + e(ux::kLatitudeError, 2 * r0 * w * s) + e(ux::kAltitudeError, w * c),
+    return rows(e(uv(0, fresh)), e(uv(1, fresh)) + e(uncertainty_slot::kLatitudeError, 2 * r0 * w * s) + e(uncertainty_slot::kAltitudeError, w * c),
                 e(uv(2, fresh)));
   }
   /// (3.29b) with ψ_ωx,y = ω_dox,y/F(0) for system 1, 0 for system 2.
   ExtendedMap u2(bool fresh) const {
     const double f = sys1 ? f_inv : 0.0;
-    return rows(dfc(0, fresh) + e(ux::kGyroDrift + 1, f) + zeta(1, fresh),
-                dfc(1, fresh) - e(ux::kGyroDrift + 0, f) - zeta(0, fresh),
-                bias(2, 1) - e(ux::kAccelScale + 2) + e(ux::kAltitudeError, -2 / r0));
+    return rows(dfc(0, fresh) + e(uncertainty_slot::kGyroDrift + 1, f) + zeta(1, fresh),
+                dfc(1, fresh) - e(uncertainty_slot::kGyroDrift + 0, f) - zeta(0, fresh),
+                bias(2, 1) - e(uncertainty_slot::kAccelScale + 2) + e(uncertainty_slot::kAltitudeError, -2 / r0));
   }
   /// (3.29c): U3x = cos L0 (ψ_fz + ψ_ωz + ζ'_z) + ω_doy/ω_ie with ψ_fz = (u)ψ,
   /// ζ'_z = ζ_z (1); ψ_fz = −δf_y/g tan L0, ζ'_z = ζ_z − ζ_x tan L0 (2).
   ExtendedMap u3(bool fresh) const {
-    const ZRow psi_fz = sys1 ? e(ux::kTheodolite) : bias(1, -tn);
+    const ZRow psi_fz = sys1 ? e(uncertainty_slot::kTheodolite) : bias(1, -tn);
     const ZRow zeta_pz = sys1 ? zeta(2, fresh) : ZRow(zeta(2, fresh) - tn * zeta(0, fresh));
     return rows(c * (psi_fz + psi_wz() + zeta_pz) + drift(1, 1), drift(0, -1), -c * (bias(1, 1) + zeta(0, fresh)));
   }
@@ -136,8 +136,8 @@ ExtendedMap u3_5_4b(const Report& r) {
   const double s = r.s, c = r.c;
   // [[(ζ_rz)_n − (ζ_rz)_p] cos L0 − ε3x; −ε3y; [−(ζ_rx)_n + (ζ_rx)_p] cos L0 − ε3z]
   //   + [−[(ζ_rx)_n − (ζ_rx)_p] sin L0; 0; 0] (2)   (transcription: (ζ_xx)_p is (ζ_rx)_p)
-  ExtendedMap m = rows(c * (e(r.zr(2, true)) - e(r.zr(2, false))) - e(ez::kU3 + 0), -e(ez::kU3 + 1),
-                       c * (-e(r.zr(0, true)) + e(r.zr(0, false))) - e(ez::kU3 + 2));
+  ExtendedMap m = rows(c * (e(r.zr(2, true)) - e(r.zr(2, false))) - e(z_slot::kU3 + 0), -e(z_slot::kU3 + 1),
+                       c * (-e(r.zr(0, true)) + e(r.zr(0, false))) - e(z_slot::kU3 + 2));
   if (!r.sys1) m.row(0) += -s * (e(r.zr(0, true)) - e(r.zr(0, false)));
   return m;
 }
@@ -147,7 +147,7 @@ ExtendedMap u2_5_4a(const Report& r) {
   // [(∂f_rx/g + ζ_ry)_n − (…)_p − ε2x; (∂f_ry/g − ζ_rx)_n − (…)_p − ε2y; −ε2z]
   auto x = [&](bool n) { return ZRow(e(r.fr(0, n), 1 / r.g) + e(r.zr(1, n))); };
   auto y = [&](bool n) { return ZRow(e(r.fr(1, n), 1 / r.g) - e(r.zr(0, n))); };
-  return rows(x(true) - x(false) - e(ez::kU2 + 0), y(true) - y(false) - e(ez::kU2 + 1), -e(ez::kU2 + 2));
+  return rows(x(true) - x(false) - e(z_slot::kU2 + 0), y(true) - y(false) - e(z_slot::kU2 + 1), -e(z_slot::kU2 + 2));
 }
 
 Coefficients printed_5_1_1(const Report& r) {
@@ -168,15 +168,15 @@ Coefficients printed_5_1_2(const Report& r) {
   p[kVel] = r.dv0(true);
   // (5.7a): (5.4a) + [−(ω_doy/F(0))_p; (ω_dox/F(0))_p; 0] (1); (ω'_dok/F(0))_n ≈ 0.
   p[kU2] = u2_5_4a(r);
-  if (r.sys1) p[kU2] += rows(e(ux::kGyroDrift + 1, -r.f_inv), e(ux::kGyroDrift + 0, r.f_inv), kZero);
+  if (r.sys1) p[kU2] += rows(e(uncertainty_slot::kGyroDrift + 1, -r.f_inv), e(uncertainty_slot::kGyroDrift + 0, r.f_inv), kZero);
   // (5.7b): [0; −ε3y; −(δf_y/g + ζ_x) cos L0] + [[(ζ_rz)_n − (ζ_rz)_p] cos L0 − ε3x; 0; 0] (1)
   //       + [[ζ_z − (δf_y/g + ζ_x) tan L0] cos L0; 0; 0] (2), ζ of the new alignment.
-  const ZRow x1 = c * (e(r.zr(2, true)) - e(r.zr(2, false))) - e(ez::kU3 + 0);
+  const ZRow x1 = c * (e(r.zr(2, true)) - e(r.zr(2, false))) - e(z_slot::kU3 + 0);
   const ZRow x2 = c * (r.zeta(2, true) - r.tn * (r.bias(1, 1) + r.zeta(0, true)));
-  p[kU3] = rows(r.sys1 ? x1 : x2, -e(ez::kU3 + 1), -c * (r.bias(1, 1) + r.zeta(0, true)));
+  p[kU3] = rows(r.sys1 ? x1 : x2, -e(z_slot::kU3 + 1), -c * (r.bias(1, 1) + r.zeta(0, true)));
   // (5.7c): (1/ω_ie)[2ω_doz cos L0 + gMUY_y; −gMUY_x; −2ω_ie ε3y cos L0] + (ω_doy/ω_ie)[0; sin L0; 0] (2)
   // (transcription: ω_doy/ω_ie).
-  p[kU4] = rows(r.drift(2, 2 * c) + r.muy(1, 1), r.muy(0, -1), -2 * c * e(ez::kU3 + 1));
+  p[kU4] = rows(r.drift(2, 2 * c) + r.muy(1, 1), r.muy(0, -1), -2 * c * e(z_slot::kU3 + 1));
   if (!r.sys1) p[kU4].row(1) += r.drift(1, s);
   // (5.7d): (3 cos L0/ω_ie)[gMUY_z; −ω_doz sin L0; −gMUY_x]
   //       + (1/ω_ie)[−ω_doy(3cos²L0 − 1); 0; 3ω_doy sin L0 cos L0] (2).
@@ -202,8 +202,8 @@ Coefficients printed_combined(const Report& r) {
 /// spell ε_ṙ out; the position reset error ε_r(T) is not a separate slot:
 /// the computer resets to the position it calculates, i.e. δr(0).)
 ExtendedMap eps_rdot(const Report& r) {
-  return r.eps(ez::kWiggleAtT) +
-         rows(kZero, e(ux::kLatitudeError, 2 * r.r0 * r.w * r.s) + e(ux::kAltitudeError, r.w * r.c), kZero);
+  return r.eps(z_slot::kWiggleAtT) +
+         rows(kZero, e(uncertainty_slot::kLatitudeError, 2 * r.r0 * r.w * r.s) + e(uncertainty_slot::kAltitudeError, r.w * r.c), kZero);
 }
 
 Coefficients printed_5_2(const Report& r) {
@@ -214,8 +214,8 @@ Coefficients printed_5_2(const Report& r) {
   p[kVel] = eps_rdot(r);
   // (5.9a): −E2 − E3 ω_ie T + U4 ½ω_ie²T² (transcription: ε ω_ie T);
   // (5.9b): −E3 + U4 ω_ie T; the last two from (3.29d, e).
-  p[kU2] = -r.eps(ez::kU2) - wT * r.eps(ez::kU3) + 0.5 * wT * wT * r.u4();
-  p[kU3] = -r.eps(ez::kU3) + wT * r.u4();
+  p[kU2] = -r.eps(z_slot::kU2) - wT * r.eps(z_slot::kU3) + 0.5 * wT * wT * r.u4();
+  p[kU3] = -r.eps(z_slot::kU3) + wT * r.u4();
   p[kU4] = r.u4();
   p[kU5] = r.u5();
   return p;
@@ -230,8 +230,8 @@ Coefficients printed_5_3(const Report& r) {
   // accelerometer slope (5.12) (the report allows either, §5.3).
   p[kConst] = r.dr0();
   p[kVel] = eps_rdot(r);
-  p[kU2] = -r.dr0() / r.r0 - r.eps(ez::kDfT);
-  p[kU3] = -r.eps(ez::kU3Accel) + wT * r.u4();
+  p[kU2] = -r.dr0() / r.r0 - r.eps(z_slot::kDfT);
+  p[kU3] = -r.eps(z_slot::kU3Accel) + wT * r.u4();
   p[kU4] = r.u4();
   p[kU5] = r.u5();
   return p;
@@ -245,21 +245,21 @@ Coefficients printed_5_4(const Report& r) {
   // (5.20): [∂f_x/g + Δζ_y + ε5x; ∂f_y/g − Δζ_x + ε5y; δg − 2δh/r0 + ε5z], Δζ = ζ − ζ' = ζ_r
   // (ζ' of (5.19) holds ζ_c only); δg read δg/g (transcription) and set as
   // the measurement model sets it, δg/g = −3δh/r0 (§4.1).
-  p[kU2] = rows(r.dfc(0, false) + e(ux::kMisalignAlign + 1) + e(ez::kAlignAccel + 0),
-                r.dfc(1, false) - e(ux::kMisalignAlign + 0) + e(ez::kAlignAccel + 1),
-                e(ux::kAltitudeError, -3 / r.r0) + e(ux::kAltitudeError, -2 / r.r0) + e(ez::kAlignAccel + 2));
+  p[kU2] = rows(r.dfc(0, false) + e(uncertainty_slot::kMisalignAlign + 1) + e(z_slot::kAlignAccel + 0),
+                r.dfc(1, false) - e(uncertainty_slot::kMisalignAlign + 0) + e(z_slot::kAlignAccel + 1),
+                e(uncertainty_slot::kAltitudeError, -3 / r.r0) + e(uncertainty_slot::kAltitudeError, -2 / r.r0) + e(z_slot::kAlignAccel + 2));
   // (5.17a): [−δf_y/g sin L0; (δf_x/g − ζ_cy) sin L0 − ε4x; −(δf_y/g + ζ_x) cos L0]
   //   + [ζ_rz cos L0 − ζ_cx sin L0 + ε4y; 0; 0] (1) + [ζ_z cos L0 − ζ_x sin L0; 0; 0] (2).
-  const ZRow x1 = c * e(ux::kMisalignAlign + 2) - s * e(ux::kMisalignConst + 0) + e(ez::kTorquerCommands + 1);
+  const ZRow x1 = c * e(uncertainty_slot::kMisalignAlign + 2) - s * e(uncertainty_slot::kMisalignConst + 0) + e(z_slot::kTorquerCommands + 1);
   const ZRow x2 = c * r.zeta(2, false) - s * r.zeta(0, false);
   p[kU3] = rows(r.bias(1, -s) + (r.sys1 ? x1 : x2),
-                s * (r.bias(0, 1) - e(ux::kMisalignConst + 1)) - e(ez::kTorquerCommands + 0),
+                s * (r.bias(0, 1) - e(uncertainty_slot::kMisalignConst + 1)) - e(z_slot::kTorquerCommands + 0),
                 -c * (r.bias(1, 1) + r.zeta(0, false)));
   // (5.17b) final line: 2 cos L0 [(−δf_x/g + ζ_cy) cos L0 + ε4z; 0; −(−δf_x/g + ζ_cy) cos L0 − ε4x]
   //   + (g/ω_ie)[MUY_y; −MUY_x; 0] + [0; ω_doy sin L0/ω_ie; 0] (2). As printed: cos L0 in the z row.
-  const ZRow cy = r.bias(0, -1) + e(ux::kMisalignConst + 1);
-  p[kU4] = rows(2 * c * (c * cy + e(ez::kTorquerCommands + 2)) + r.muy(1, 1), r.muy(0, -1),
-                2 * c * (-c * cy - e(ez::kTorquerCommands + 0)));
+  const ZRow cy = r.bias(0, -1) + e(uncertainty_slot::kMisalignConst + 1);
+  p[kU4] = rows(2 * c * (c * cy + e(z_slot::kTorquerCommands + 2)) + r.muy(1, 1), r.muy(0, -1),
+                2 * c * (-c * cy - e(z_slot::kTorquerCommands + 0)));
   if (!r.sys1) p[kU4].row(1) += r.drift(1, s);
   // (5.17c) simplified (transcription: the stray (1/ω_ie)[MUY_z; 0; −MUY_x] is the merged
   // line (3 cos L0/ω_ie)[gMUY_z; 0; −gMUY_x]) + (1/ω_ie)[−ω_doy(3cos²L0 − 1); 0; 3ω_doy cos L0 sin L0] (2).
@@ -315,13 +315,13 @@ Coefficients errata(Scheme scheme, const Report& r, SchemeForms forms) {
     // prints +ε5 and +δg; with δg/g = −3δh/r0 the z row is +δh/r0, not −5δh/r0.
     // The printed forms keep δg's sign; ε5's sign (a zero-mean error, not
     // reproduced: the measurement is one slot) differs in both.
-    d[kU2] = -2 * r.eps(ez::kAlignAccel);
-    if (corrected) d[kU2].row(2) += e(ux::kAltitudeError, 6 / r.r0);
+    d[kU2] = -2 * r.eps(z_slot::kAlignAccel);
+    if (corrected) d[kU2].row(2) += e(uncertainty_slot::kAltitudeError, 6 / r.r0);
     // errata.md#5-17b: the z row of U'4 is −2 cos L0 (C_y sin L0 + ε4x) (from
     // (5.16a) in (3.29d)); the final line prints C_y cos L0, which the
     // printed forms keep. Zero at 45°. (ζ_ry is not in C_y: it enters at
     // switch-over, C' = C + ζ_r (2.18a), after the commands measured C.)
-    const ZRow cy = r.bias(0, -1) + e(ux::kMisalignConst + 1);
+    const ZRow cy = r.bias(0, -1) + e(uncertainty_slot::kMisalignConst + 1);
     if (corrected) d[kU4].row(2) = 2 * r.c * (r.c - r.s) * cy;
   }
   return d;
@@ -403,10 +403,10 @@ constexpr Exceedance kExceedances[] = {
     // 5.1.2 (and combined, which shares U'5): ω'_doy of (5.6a) carries −ω_ie (u)ψ cos L0
     // into U'5 = (3 cos L0/ω_ie)[−ω'_doy cos L0 …; …; ω'_doy sin L0 …] (3.29e):
     // 3 cos³L0 (u)ψ = 1.06e-3 at 1 mrad, above (5.7)'s 1e-3 cut.
-    {Scheme::k5_1_2, System::kTheodolite, kU5, 0, ux::kTheodolite},
-    {Scheme::k5_1_2, System::kTheodolite, kU5, 2, ux::kTheodolite},
-    {Scheme::kCombined, System::kTheodolite, kU5, 0, ux::kTheodolite},
-    {Scheme::kCombined, System::kTheodolite, kU5, 2, ux::kTheodolite},
+    {Scheme::k5_1_2, System::kTheodolite, kU5, 0, uncertainty_slot::kTheodolite},
+    {Scheme::k5_1_2, System::kTheodolite, kU5, 2, uncertainty_slot::kTheodolite},
+    {Scheme::kCombined, System::kTheodolite, kU5, 0, uncertainty_slot::kTheodolite},
+    {Scheme::kCombined, System::kTheodolite, kU5, 2, uncertainty_slot::kTheodolite},
 };
 constexpr double kMaxExcess = 1.07;  // 1.06 rounds to the report's one-digit "10^-3"
 
@@ -433,7 +433,7 @@ Agreement compare(const Case& k, SchemeForms forms) {
   const testing::FitResult fit = testing::scheme_coefficients(k.scheme, k.system, m, test, forms);
   Agreement a;
   // At the paper level every scheme's δr(t) lies in the span of the six time functions.
-  for (int q = 0; q < ez::kDim; ++q) {
+  for (int q = 0; q < z_slot::kDim; ++q) {
     const double ft = fit.worst_residual_m[q] * testing::magnitude(q, m, test) / kFtToM;
     a.worst_residual_ft = std::max(a.worst_residual_ft, ft);
     EXPECT_LE(ft, kRoundoffFt) << describe(k) << ": δr per " << testing::perturbation_name(q)
@@ -444,7 +444,7 @@ Agreement compare(const Case& k, SchemeForms forms) {
   const std::array<Neglect, kFns> rules = neglect(k.scheme);
   for (int fn = 0; fn < kFns; ++fn) {
     for (int axis = 0; axis < 3; ++axis) {
-      for (int q = 0; q < ez::kDim; ++q) {
+      for (int q = 0; q < z_slot::kDim; ++q) {
         const double mag = testing::magnitude(q, m, test);
         const double got = fit.c[fn](axis, q), want = p[fn](axis, q) + d[fn](axis, q);
         const double size = term_size(rules[fn], fn, got - want, mag, m), level = rule_level(rules[fn], fn);
@@ -520,7 +520,7 @@ TEST(CompensationResiduals, Equation517bZRowIsSinL0DerivedAndCosL0AsPrinted) {
   const double s = std::sin(m.latitude_rad), c = std::cos(m.latitude_rad), g = m.gravity_mps2;
   const double u4_ft_per_unit = testing::time_function_max(kU4, m) / kFtToM;
   for (System sys : {System::kTheodolite, System::kGyrocompass}) {
-    const int q = ux::kAccelBias + 0;  // C_y = −δf_x/g + ζ_cy + …
+    const int q = uncertainty_slot::kAccelBias + 0;  // C_y = −δf_x/g + ζ_cy + …
     const double sin_reading = 2 * c * s / g, cos_reading = 2 * c * c / g;
     const double derived = testing::scheme_coefficients(Scheme::k5_4, sys, m, test, SchemeForms::kCorrected).c[kU4](2, q);
     const double printed = testing::scheme_coefficients(Scheme::k5_4, sys, m, test, SchemeForms::kPrinted).c[kU4](2, q);
@@ -531,8 +531,8 @@ TEST(CompensationResiduals, Equation517bZRowIsSinL0DerivedAndCosL0AsPrinted) {
     // none at the paper level either.
     for (SchemeForms forms : {SchemeForms::kCorrected, SchemeForms::kPrinted}) {
       const testing::FitResult fit = testing::scheme_coefficients(Scheme::k5_4, sys, m, test, forms);
-      EXPECT_NEAR(fit.c[kU4](2, ux::kMisalignConst + 1), -g * fit.c[kU4](2, q), 1e-9 * g * std::abs(fit.c[kU4](2, q)));
-      EXPECT_NEAR(fit.c[kU4](2, ux::kMisalignAlign + 1), 0.0, 1e-12) << "system " << system_number(sys);
+      EXPECT_NEAR(fit.c[kU4](2, uncertainty_slot::kMisalignConst + 1), -g * fit.c[kU4](2, q), 1e-9 * g * std::abs(fit.c[kU4](2, q)));
+      EXPECT_NEAR(fit.c[kU4](2, uncertainty_slot::kMisalignAlign + 1), 0.0, 1e-12) << "system " << system_number(sys);
     }
     const double printed_off_ft = std::abs(derived - cos_reading) * default_bounds()[q] * u4_ft_per_unit;
     EXPECT_GT(printed_off_ft, k3_29Terms.level) << "system " << system_number(sys);
@@ -558,7 +558,7 @@ TEST(CompensationResiduals, CombinedIs512WithThe511RowsOfU3) {
       for (int axis = 0; axis < 3; ++axis) {
         const bool from_511 = fn == kU3 && integrated(axis, axis) == 1.0;
         const auto& want = from_511 ? c511[fn] : c512[fn];
-        for (int q = 0; q < ez::kDim; ++q) {
+        for (int q = 0; q < z_slot::kDim; ++q) {
           const double scale = testing::magnitude(q, m, test) * testing::time_function_max(fn, m) / kFtToM;
           EXPECT_LE(std::abs(comb[fn](axis, q) - want(axis, q)) * scale, kRoundoffFt)
               << "system " << system_number(sys) << " " << kFnNames[fn] << " row "
@@ -580,7 +580,7 @@ TEST(CompensationResiduals, CombinedIs512WithThe511RowsOfU3) {
 // no U2, U3 content to estimate), x axis, t' = 84 min, T = 5 and 20 min.
 TEST(CompensationResiduals, Equations59And511bRestartTheU5GrowthAtTheReset) {
   const ModelOptions m;
-  const int j = ux::kGyroMuyDrift + 2;
+  const int j = uncertainty_slot::kGyroMuyDrift + 2;
   const double x = 10 * kMeruToRadps, tp = 84 * 60.0, w = m.earth_rate_radps;
   const double u5 = 3 * std::cos(m.latitude_rad) / w * x;  // (3.29e) x row
   const double printed_ft = m.radius_m * u5 * std::pow(w * tp, 3) / 6 / kFtToM;

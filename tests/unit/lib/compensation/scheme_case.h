@@ -74,7 +74,7 @@ inline ExtendedVector linear_z(const Case& c, const UncertaintyVector& x, const 
   const double g = c.model.gravity_mps2, w = c.model.earth_rate_radps, T = c.test.duration_s;
   const double tau = c.test.filter_interval_s;
   ExtendedVector z = ExtendedVector::Zero();
-  z.head<ux::kDim>() = x;
+  z.head<uncertainty_slot::kDim>() = x;
   for (const RealignedSlot& r : kRealignedSlots) z[r.z_index] = realigned[r.x_index];
   Eigen::MatrixXd pos(K, 3), acc(K, 3);
   for (int k = 1; k <= K; ++k) {
@@ -84,13 +84,13 @@ inline ExtendedVector linear_z(const Case& c, const UncertaintyVector& x, const 
   const Eigen::Matrix<double, 4, 3> up = c.estimators.position * pos;
   const Eigen::Matrix<double, 3, 3> ua = c.estimators.accel * acc;
   for (int a = 0; a < 3; ++a) {
-    z[ez::kU2 + a] = up(1, a);
-    z[ez::kU3 + a] = up(2, a);
-    z[ez::kU3Accel + a] = ua(1, a);
-    z[ez::kDfT + a] = g * (ua(0, a) + w * T * ua(1, a) + w * w * T * T / 2 * ua(2, a));
+    z[z_slot::kU2 + a] = up(1, a);
+    z[z_slot::kU3 + a] = up(2, a);
+    z[z_slot::kU3Accel + a] = ua(1, a);
+    z[z_slot::kDfT + a] = g * (ua(0, a) + w * T * ua(1, a) + w * w * T * T / 2 * ua(2, a));
   }
-  z.segment<3>(ez::kTorquerCommands) = c.torquer_map * x;
-  z.segment<3>(ez::kAlignAccel) = c.align_accel_map * x;
+  z.segment<3>(z_slot::kTorquerCommands) = c.torquer_map * x;
+  z.segment<3>(z_slot::kAlignAccel) = c.align_accel_map * x;
   return z;
 }
 

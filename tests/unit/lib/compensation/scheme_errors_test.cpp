@@ -27,8 +27,8 @@ TEST(SchemeErrors, EachActsOnlyInTheSchemeThatReliesOnIt) {
       for (Scheme scheme : all_schemes()) {
         const SchemeMaps maps = scheme_position_maps(scheme, s, f, ModelOptions{}, TestRunOptions{}, t);
         for (const ExtendedMap& e : maps.position) {
-          const double drift = e.middleCols<3>(ux::kAlignDriftError).norm();
-          const double reset = e.middleCols<6>(ux::kResetPositionError).norm();
+          const double drift = e.middleCols<3>(uncertainty_slot::kAlignDriftError).norm();
+          const double reset = e.middleCols<6>(uncertainty_slot::kResetPositionError).norm();
           EXPECT_EQ(drift > 0, scheme == Scheme::k5_4) << to_string(scheme);
           EXPECT_EQ(reset > 0, resets_at_test_end(scheme)) << to_string(scheme);
         }
@@ -43,13 +43,13 @@ TEST(SchemeErrors, ResetErrorsFollowEquation58AndTheSchulerOde) {
     const SchemeMaps paper = scheme_position_maps(scheme, System::kTheodolite, Fidelity::kPaper, m, TestRunOptions{}, t);
     const SchemeMaps linear = scheme_position_maps(scheme, System::kTheodolite, Fidelity::kLinear, m, TestRunOptions{}, t);
     for (std::size_t k = 0; k < t.size(); ++k) {
-      const Mat3 r_paper = paper.position[k].middleCols<3>(ux::kResetPositionError);
-      const Mat3 v_paper = paper.position[k].middleCols<3>(ux::kResetVelocityError);
+      const Mat3 r_paper = paper.position[k].middleCols<3>(uncertainty_slot::kResetPositionError);
+      const Mat3 v_paper = paper.position[k].middleCols<3>(uncertainty_slot::kResetVelocityError);
       EXPECT_TRUE(r_paper.isApprox(std::cos(ws * t[k]) * Mat3::Identity(), 1e-15));
       EXPECT_TRUE(v_paper.isApprox(std::sin(ws * t[k]) / ws * Mat3::Identity(), 1e-15));
       // RK4 with 2 s steps over at most 90 min: far below a millimetre per metre or per m/s.
-      EXPECT_LT((linear.position[k].middleCols<3>(ux::kResetPositionError) - r_paper).norm(), 1e-6);
-      EXPECT_LT((linear.position[k].middleCols<3>(ux::kResetVelocityError) - v_paper).norm(), 1e-3);
+      EXPECT_LT((linear.position[k].middleCols<3>(uncertainty_slot::kResetPositionError) - r_paper).norm(), 1e-6);
+      EXPECT_LT((linear.position[k].middleCols<3>(uncertainty_slot::kResetVelocityError) - v_paper).norm(), 1e-3);
     }
   }
 }
@@ -60,10 +60,10 @@ TEST(SchemeErrors, TheDriftEstimateErrorEntersAsTheTorquerCommands) {
     for (Fidelity f : {Fidelity::kPaper, Fidelity::kLinear}) {
       const SchemeMaps maps = scheme_position_maps(Scheme::k5_4, s, f, ModelOptions{}, TestRunOptions{}, t);
       for (const ExtendedMap& e : maps.position) {
-        EXPECT_EQ(e.middleCols<3>(ux::kAlignDriftError), e.middleCols<3>(ez::kTorquerCommands));
+        EXPECT_EQ(e.middleCols<3>(uncertainty_slot::kAlignDriftError), e.middleCols<3>(z_slot::kTorquerCommands));
         // (5.15c): system 2 estimates no y drift, so its ε4y acts nowhere.
         if (s == System::kGyrocompass) {
-          EXPECT_EQ(e.col(ux::kAlignDriftError + 1).norm(), 0.0);
+          EXPECT_EQ(e.col(uncertainty_slot::kAlignDriftError + 1).norm(), 0.0);
         }
       }
     }
@@ -74,7 +74,7 @@ TEST(SchemeErrors, TheGroupSelectsTheTenAndNothingElse) {
   ASSERT_EQ(all.size(), 10u);
   for (int i : all) EXPECT_TRUE(is_scheme_error(catalogue()[i]));
   EXPECT_EQ(select_uncertainties("alignment_drift_error").size(), 3u);
-  EXPECT_EQ(select_uncertainties("realignment_azimuth_error"), std::vector<int>{ux::kRealignAzimuthError});
+  EXPECT_EQ(select_uncertainties("realignment_azimuth_error"), std::vector<int>{uncertainty_slot::kRealignAzimuthError});
   EXPECT_EQ(uncertainty_groups().back(), kSchemeErrorsGroup);
 }
 
@@ -93,8 +93,8 @@ TEST(SchemeErrors, AreTheCatalogueGroupsListedNotASlotRange) {
   EXPECT_EQ(count, 10);
   // A Table 3.1 entry placed after the scheme errors would stay one of
   // Table 3.1's: the group decides, not the index.
-  UncertaintySpec moved = catalogue()[ux::kAltitudeError];
-  moved.index = ux::kDim - 1;
+  UncertaintySpec moved = catalogue()[uncertainty_slot::kAltitudeError];
+  moved.index = uncertainty_slot::kDim - 1;
   EXPECT_FALSE(is_scheme_error(moved));
 }
 

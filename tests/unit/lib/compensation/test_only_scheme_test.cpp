@@ -73,7 +73,7 @@ TEST(SchemeRegistry, EveryMeasurementErrorGroupIsASchemeErrorClaimedAndActingOnl
         claimed.insert(i);
       }
     }
-  for (int i = 0; i < ux::kDim; ++i) EXPECT_EQ(claimed.count(i), is_scheme_error(catalogue()[static_cast<std::size_t>(i)]) ? 1u : 0u) << catalogue()[static_cast<std::size_t>(i)].name;
+  for (int i = 0; i < uncertainty_slot::kDim; ++i) EXPECT_EQ(claimed.count(i), is_scheme_error(catalogue()[static_cast<std::size_t>(i)]) ? 1u : 0u) << catalogue()[static_cast<std::size_t>(i)].name;
   const std::vector<double> t = {600.0, 2520.0, 5040.0};
   for (Scheme s : all_schemes()) {
     std::set<int> own;
@@ -82,14 +82,14 @@ TEST(SchemeRegistry, EveryMeasurementErrorGroupIsASchemeErrorClaimedAndActingOnl
     for (System system : {System::kTheodolite, System::kGyrocompass})
       for (Fidelity f : {Fidelity::kPaper, Fidelity::kLinear}) {
         const SchemeMaps maps = scheme_position_maps(s, system, f, ModelOptions{}, TestRunOptions{}, t);
-        for (int i = 0; i < ux::kDim; ++i) {
+        for (int i = 0; i < uncertainty_slot::kDim; ++i) {
           if (!is_scheme_error(catalogue()[static_cast<std::size_t>(i)])) continue;
           double acts = 0;
           for (const ExtendedMap& e : maps.position) acts += e.col(i).norm();
           // System 2 has no y estimate of the drift (5.15c), so its ε4y acts
           // nowhere, and no theodolite to re-sight.
           const bool inert =
-              system == System::kGyrocompass && (i == ux::kAlignDriftError + 1 || i == ux::kRealignAzimuthError);
+              system == System::kGyrocompass && (i == uncertainty_slot::kAlignDriftError + 1 || i == uncertainty_slot::kRealignAzimuthError);
           EXPECT_EQ(acts > 0, own.count(i) == 1 && !inert) << to_string(s) << " " << catalogue()[static_cast<std::size_t>(i)].name;
         }
       }
@@ -112,8 +112,8 @@ TEST(TestOnlyScheme, MapsAre511WithoutTheIntegratorRamp) {
       EXPECT_EQ(mine.ready_time_s, full.ready_time_s);
       for (std::size_t k = 0; k < t.size(); ++k) {
         ExtendedMap expected = full.position[k];
-        ASSERT_GT(expected.middleCols<3>(ez::kU3).norm(), 0.0);
-        expected.middleCols<3>(ez::kU3).setZero();
+        ASSERT_GT(expected.middleCols<3>(z_slot::kU3).norm(), 0.0);
+        expected.middleCols<3>(z_slot::kU3).setZero();
         EXPECT_EQ(mine.position[k], expected) << "t = " << t[k];
       }
     }

@@ -61,11 +61,11 @@ TEST(TruthCompensation, TestRunEstimatesAgreeWithTheLinearLevel) {
       EXPECT_LE((truth - linear).norm(), 0.01 * linear.norm() + 1e-7) << what << " " << truth.transpose() << " vs "
                                                                        << linear.transpose();
     };
-    near(0.5 * (ep.u2 - em.u2), z.segment<3>(ez::kU2), "U2");
-    near(0.5 * (ep.u3 - em.u3), z.segment<3>(ez::kU3), "U3");
-    near(0.5 * (ep.u3_accel - em.u3_accel), z.segment<3>(ez::kU3Accel), "U3 from f");
+    near(0.5 * (ep.u2 - em.u2), z.segment<3>(z_slot::kU2), "U2");
+    near(0.5 * (ep.u3 - em.u3), z.segment<3>(z_slot::kU3), "U3");
+    near(0.5 * (ep.u3_accel - em.u3_accel), z.segment<3>(z_slot::kU3Accel), "U3 from f");
     near(0.5 * (ep.df_at_test_end_mps2 - em.df_at_test_end_mps2) / c.model.gravity_mps2,
-         z.segment<3>(ez::kDfT) / c.model.gravity_mps2, "df(T)/g");
+         z.segment<3>(z_slot::kDfT) / c.model.gravity_mps2, "df(T)/g");
   }
 }
 
@@ -123,7 +123,7 @@ TEST(TruthCompensation, ResetSetsTheComputerToItsStationaryValues) {
   // (zero) error of a stationary computer: below a millimetre.
   TruthOptions o = continuous(System::kTheodolite);
   UncertaintyVector x = UncertaintyVector::Zero();
-  x.segment<3>(ux::kInitialVelocity) = default_bounds().segment<3>(ux::kInitialVelocity);
+  x.segment<3>(uncertainty_slot::kInitialVelocity) = default_bounds().segment<3>(uncertainty_slot::kInitialVelocity);
   const std::vector<double> times{600.0, 900.0, 1200.0, 3600.0};
   const TruthRun free = simulate_truth(o, x, times);
   o.reset_at_s = 900.0;

@@ -20,7 +20,7 @@ TEST(Observables, ShortFormOf44WithinTheReports10MicroGOver20Minutes) {
     for (double t = 0; t <= 1200.0; t += 60.0) {
       const Sensitivity3 a = paper_accelerometer_error(m, t, o);
       const Sensitivity3 b = linear_accelerometer_error(full, t);
-      for (int i = 0; i < ux::kDim; ++i) {
+      for (int i = 0; i < uncertainty_slot::kDim; ++i) {
         const double diff_ug = (a.col(i) - b.col(i)).cwiseAbs().maxCoeff() * default_bounds()[i] / kUgToMps2;
         EXPECT_LT(diff_ug, 10.0) << "system " << system_number(s) << " t=" << t << " "
                                  << testing::name_of(i);
@@ -41,7 +41,7 @@ TEST(Observables, TestRunPositionOf45Within100FeetOver20Minutes) {
     for (size_t n = 0; n < times.size(); ++n) {
       const Sensitivity3 delta_r = maps[n] - full.initial_position();
       const Sensitivity3 a = paper_test_position_change(m, times[n], o);
-      for (int i = 0; i < ux::kDim; ++i) {
+      for (int i = 0; i < uncertainty_slot::kDim; ++i) {
         EXPECT_LT(testing::difference_at_bound_ft(a, delta_r, i), 100.0)
             << "system " << system_number(s) << " t=" << times[n] << " " << testing::name_of(i);
       }
@@ -62,7 +62,7 @@ TEST(Observables, PositionIsTheDoubleIntegralOfTheAccelerometerErrorForShortTest
                                          w * w * t * t * t * t / 24 * m.u4);
     const Sensitivity3 exact = paper_test_position_change(m, t, o);
     const double x = o.schuler_radps() * t;
-    for (int i = 0; i < ux::kDim; ++i) {
+    for (int i = 0; i < uncertainty_slot::kDim; ++i) {
       const double scale = exact.col(i).cwiseAbs().maxCoeff() + 1e-300;
       EXPECT_LE((integrated.col(i) - exact.col(i)).cwiseAbs().maxCoeff() / scale, x / std::sin(x) - 1 + 1e-12)
           << testing::name_of(i);

@@ -83,7 +83,7 @@ TEST(ClosedForm328, DropsOnlyTermsBelowTheReportsThresholds) {
     for (double t : testing::minutes_1_to_90()) {
       const Sensitivity3 a = closed_form_position_map(k, m.initial_position_m, m.initial_velocity_mps, t, o, true);
       const Sensitivity3 b = closed_form_position_map(k, m.initial_position_m, m.initial_velocity_mps, t, o, false);
-      for (int i = 0; i < ux::kDim; ++i) {
+      for (int i = 0; i < uncertainty_slot::kDim; ++i) {
         EXPECT_LT(testing::difference_at_bound_ft(a, b, i), kThreshold328Ft)
             << "system " << system_number(s) << " t=" << t / 60 << " min " << testing::name_of(i);
       }
@@ -100,13 +100,13 @@ TEST(ClosedForm329, ShortRunFormWithinTheReportsThresholdExceptDfyOfSystem2) {
   for (System s : {System::kTheodolite, System::kGyrocompass}) {
     const KMatrices k = paper_k_matrices(s, o);
     const ShortRunMatrices m = paper_short_run_matrices(s, o);
-    for (int i = 0; i < ux::kDim; ++i) {
+    for (int i = 0; i < uncertainty_slot::kDim; ++i) {
       double worst = 0;
       for (double t : testing::minutes_1_to_90()) {
         const Sensitivity3 a = closed_form_position_map(k, m.initial_position_m, m.initial_velocity_mps, t, o, false);
         worst = std::max(worst, testing::difference_at_bound_ft(a, short_run_position_map(m, t, o), i));
       }
-      if (s == System::kGyrocompass && i == ux::kAccelBias + 1) {
+      if (s == System::kGyrocompass && i == uncertainty_slot::kAccelBias + 1) {
         // The dropped K4 term alone: r0 (δf_y/g)(1 − cos ω_ie t) at 90 min and
         // the bound; the other δf_y terms (3.29) drops are under 2% of it.
         const double dropped_ft = o.radius_m * default_bounds()[i] / o.gravity_mps2 *

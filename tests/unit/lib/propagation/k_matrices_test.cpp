@@ -28,7 +28,7 @@ TEST(KMatrices, PrintedExpansionEqualsTheForcingOfEquation324) {
     const KMatrices k = paper_k_matrices(s, o);
     for (double t : testing::minutes_1_to_90()) {
       const Sensitivity3 diff = model.forcing(t) - k_forcing(k, t, o);
-      for (int i = 0; i < ux::kDim; ++i) {
+      for (int i = 0; i < uncertainty_slot::kDim; ++i) {
         EXPECT_LT(diff.col(i).norm() * default_bounds()[i], kRoundoffMps2)
             << "system " << system_number(s) << " t=" << t << " " << testing::name_of(i);
       }
@@ -49,8 +49,8 @@ TEST(KMatrices, TheGMuyDriftOfEquation313LacksCosL0) {
   const KMatrices k_corr = corrected_k_matrices(System::kTheodolite, o);
   for (double t : testing::minutes_1_to_90()) {
     const Sensitivity3 a = printed.forcing(t), b = corrected.forcing(t);
-    for (int i = 0; i < ux::kDim; ++i) {
-      const bool is_muy = i >= ux::kGyroMuyDrift && i < ux::kGyroMuyDrift + 3;
+    for (int i = 0; i < uncertainty_slot::kDim; ++i) {
+      const bool is_muy = i >= uncertainty_slot::kGyroMuyDrift && i < uncertainty_slot::kGyroMuyDrift + 3;
       const double scale = is_muy ? std::cos(o.latitude_rad) : 1.0;
       const double bound = default_bounds()[i];
       EXPECT_LT((b.col(i) - scale * a.col(i)).norm() * bound, kRoundoffMps2) << testing::name_of(i);

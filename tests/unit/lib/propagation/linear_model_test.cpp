@@ -45,7 +45,7 @@ TEST(SchulerOde, HalvingTheStepChangesTheResultByFarLessThanAMetre) {
     const auto coarse = linear_position_maps(model, times, 4.0);
     const auto fine = linear_position_maps(model, times, 2.0);
     for (size_t n = 0; n < times.size(); ++n) {
-      for (int i = 0; i < ux::kDim; ++i) {
+      for (int i = 0; i < uncertainty_slot::kDim; ++i) {
         // 1 mm at the bound: RK4's error (ω_s h)⁴ is ~1e-11 relative.
         EXPECT_LT((coarse[n].col(i) - fine[n].col(i)).norm() * default_bounds()[i], 1e-3)
             << testing::name_of(i);
@@ -68,7 +68,7 @@ TEST(LinearModel, ReportsOwnModelIntegratedEqualsCorrected327) {
       Sensitivity3 cf = f.initial_position * model.initial_position() +
                         f.initial_velocity_s * model.initial_velocity();
       for (int j = 0; j < 11; ++j) cf += o.radius_m * f.k[j] * k[j];
-      for (int i = 0; i < ux::kDim; ++i) {
+      for (int i = 0; i < uncertainty_slot::kDim; ++i) {
         EXPECT_LT(testing::difference_at_bound_ft(ode[n], cf, i), 25.0)
             << "system " << system_number(s) << " " << testing::name_of(i);
       }
@@ -93,13 +93,13 @@ TEST(LinearModel, DifferenceFromThePaperLevelIsAttributedTermByTerm) {
     std::map<int, double> worst;
     for (size_t n = 0; n < times.size(); ++n) {
       const Sensitivity3 paper = short_run_position_map(m, times[n], o);
-      for (int i = 0; i < ux::kDim; ++i)
+      for (int i = 0; i < uncertainty_slot::kDim; ++i)
         worst[i] = std::max(worst[i], testing::difference_at_bound_ft(ode[n], paper, i));
     }
-    for (int i = 0; i < ux::kDim; ++i) {
-      const bool muy = i >= ux::kGyroMuyDrift && i < ux::kGyroMuyDrift + 3;
+    for (int i = 0; i < uncertainty_slot::kDim; ++i) {
+      const bool muy = i >= uncertainty_slot::kGyroMuyDrift && i < uncertainty_slot::kGyroMuyDrift + 3;
       const bool sys2 = s == System::kGyrocompass;
-      const bool named = muy || (sys2 && (i == ux::kAccelBias + 1 || i == ux::kMisalignAlign + 0));
+      const bool named = muy || (sys2 && (i == uncertainty_slot::kAccelBias + 1 || i == uncertainty_slot::kMisalignAlign + 0));
       if (named) {
         EXPECT_GT(worst[i], 1300.0) << testing::name_of(i) << " was expected to exceed the cut";
       } else {
@@ -124,7 +124,7 @@ TEST(LinearModel, GyroDriftZAloneReproducesTheReportsFigures) {
   const ShortRunMatrices m = paper_short_run_matrices(System::kTheodolite, o);
   const double w_doz = 10 * kMeruToRadps, T = 1200.0, tp = 84 * 60.0;
   const auto f = short_run_functions_3_29(tp, o);
-  const double err_m = o.radius_m * f.u3 * m.u4(0, ux::kGyroDrift + 2) * w_doz * o.earth_rate_radps * T;
+  const double err_m = o.radius_m * f.u3 * m.u4(0, uncertainty_slot::kGyroDrift + 2) * w_doz * o.earth_rate_radps * T;
   EXPECT_NEAR(err_m / kNmiToM, 1.56, 0.02);
 }
 

@@ -32,7 +32,7 @@ inline UncertaintyVector within_bounds(std::uint64_t seed) {
   std::uint64_t state = 0x9e3779b97f4a7c15ull * (seed + 1);
   const UncertaintyVector b = default_bounds();
   UncertaintyVector x;
-  for (int i = 0; i < ux::kDim; ++i) {
+  for (int i = 0; i < uncertainty_slot::kDim; ++i) {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
     x[i] = b[i] * (2.0 * (static_cast<double>(state >> 11) * 0x1.0p-53) - 1.0);
   }

@@ -104,7 +104,7 @@ TEST(Effects, AccelBiasGaussMarkovIsNulledAtSwitchOverThenWanders) {
   const TruthRun run = simulate_truth(options_with(effect), UncertaintyVector::Zero(), times, noise);
   const Perturbations p = realized(effect, noise, times.back());
   UncertaintyVector x = UncertaintyVector::Zero();
-  x.segment<3>(ux::kAccelBias) = p.bias_process.at(0.0);
+  x.segment<3>(uncertainty_slot::kAccelBias) = p.bias_process.at(0.0);
   const TruthRun constant = simulate_truth(options_with(""), x, times);
   double change = 0.0;
   for (std::size_t k = 1; k < times.size(); ++k) {
@@ -155,7 +155,7 @@ TEST(Effects, ThermalTransientSettlesExponentially) {
   const TruthRun with = simulate_truth(options_with(effect), UncertaintyVector::Zero(), times);
   const double b = 0.2 * kMgToMps2 * std::exp(-600.0 / 900.0);
   UncertaintyVector x = UncertaintyVector::Zero();
-  x.segment<3>(ux::kAccelBias) = Vec3::Constant(b);
+  x.segment<3>(uncertainty_slot::kAccelBias) = Vec3::Constant(b);
   const TruthRun constant = simulate_truth(options_with(""), x, times);
   for (std::size_t k = 1; k < times.size(); ++k) {
     const double t = times[k];
@@ -180,8 +180,8 @@ TEST(Effects, AnisoelasticDriftActsLikeMassUnbalanceOnTheTurningGravity) {
   const double c_gs2 = coefficient * std::pow(with.site_gravity_mps2 / kGravityMps2, 2);
   const double L = TruthOptions{}.model.latitude_rad;
   UncertaintyVector x = UncertaintyVector::Zero();
-  x[ux::kGyroMuyDrift + 0] = -c_gs2;
-  x[ux::kGyroMuDrift + 1] = -c_gs2 * std::sin(L) * std::cos(L);
+  x[uncertainty_slot::kGyroMuyDrift + 0] = -c_gs2;
+  x[uncertainty_slot::kGyroMuDrift + 1] = -c_gs2 * std::sin(L) * std::cos(L);
   const TruthRun equivalent = simulate_truth(options_with(""), x, times);
   for (std::size_t k = 1; k < times.size(); ++k) {
     const Vec3 a = with.position_error_ap_m[k], b = equivalent.position_error_ap_m[k];
@@ -238,8 +238,8 @@ TEST(Effects, DeflectionOfVerticalAddsToTheCataloguesXiEta) {
   const TruthRun with = simulate_truth(options_with("deflection_of_vertical:xi=0.2mrad,eta=-0.1mrad"),
                                        UncertaintyVector::Zero(), times);
   UncertaintyVector x = UncertaintyVector::Zero();
-  x[ux::kDeflection + 0] = 0.2e-3;
-  x[ux::kDeflection + 1] = -0.1e-3;
+  x[uncertainty_slot::kDeflection + 0] = 0.2e-3;
+  x[uncertainty_slot::kDeflection + 1] = -0.1e-3;
   const TruthRun same = simulate_truth(options_with(""), x, times);
   for (std::size_t k = 0; k < times.size(); ++k)
     EXPECT_LT((with.position_error_ap_m[k] - same.position_error_ap_m[k]).norm(), 1e-9);
@@ -253,9 +253,9 @@ TEST(Effects, SwitchTransientIsAStepInMisalignmentAndBias) {
   const Perturbations p = realized("switch_transient", noise, times.back());
   const TruthRun with = simulate_truth(options_with("switch_transient"), UncertaintyVector::Zero(), times, noise);
   UncertaintyVector x = UncertaintyVector::Zero();
-  x.segment<3>(ux::kMisalignAlign) = p.misalignment_step_rad;
-  x.segment<2>(ux::kBiasChangeAlign) = p.nav_bias_step_mps2.head<2>();
-  x[ux::kAccelBias + 2] = p.nav_bias_step_mps2.z();
+  x.segment<3>(uncertainty_slot::kMisalignAlign) = p.misalignment_step_rad;
+  x.segment<2>(uncertainty_slot::kBiasChangeAlign) = p.nav_bias_step_mps2.head<2>();
+  x[uncertainty_slot::kAccelBias + 2] = p.nav_bias_step_mps2.z();
   const TruthRun same = simulate_truth(options_with(""), x, times);
   for (std::size_t k = 0; k < times.size(); ++k)
     EXPECT_LT((with.position_error_ap_m[k] - same.position_error_ap_m[k]).norm(), 1e-6);

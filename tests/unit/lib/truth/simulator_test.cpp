@@ -44,11 +44,11 @@ constexpr bool kFullSweeps = false;
 std::vector<int> swept_uncertainties() {
   std::vector<int> all;
   if (kFullSweeps) {
-    for (int i = 0; i < ux::kDim; ++i) all.push_back(i);
+    for (int i = 0; i < uncertainty_slot::kDim; ++i) all.push_back(i);
     return all;
   }
-  return {ux::kAccelBias + 0, ux::kAccelScale + 2, ux::kBiasChangeAlign + 0, ux::kGyroDrift + 0,
-          ux::kGyroDrift + 1, ux::kGyroMuyDrift + 0, ux::kMisalignAlign + 1, ux::kLatitudeError};
+  return {uncertainty_slot::kAccelBias + 0, uncertainty_slot::kAccelScale + 2, uncertainty_slot::kBiasChangeAlign + 0, uncertainty_slot::kGyroDrift + 0,
+          uncertainty_slot::kGyroDrift + 1, uncertainty_slot::kGyroMuyDrift + 0, uncertainty_slot::kMisalignAlign + 1, uncertainty_slot::kLatitudeError};
 }
 
 std::vector<double> minutes_1_to_90() {
@@ -175,8 +175,8 @@ TEST(TruthSimulator, AgreesWithTheLinearLevelPerUncertainty) {
     for (int i : swept_uncertainties()) {
       const std::string what = system_name(s) + " " + std::string(catalogue()[i].name);
       const std::string group(catalogue()[i].group);
-      const bool tilt_case = i == ux::kAccelBias + 0 || i == ux::kAccelBias + 1;
-      const bool composition_case = s == System::kGyrocompass && i == ux::kGyroDrift + 1;
+      const bool tilt_case = i == uncertainty_slot::kAccelBias + 0 || i == uncertainty_slot::kAccelBias + 1;
+      const bool composition_case = s == System::kGyrocompass && i == uncertainty_slot::kGyroDrift + 1;
       const UncertaintyVector x = single(i);
       const TruthRun plus = simulate_truth(o, x, times), minus = simulate_truth(o, -x, times);
       Gap odd, raw, corrected;
@@ -215,9 +215,9 @@ TEST(TruthSimulator, EvenPartIsQuadraticInTheUncertainty) {
   // x quarters it (to 2%: quartic terms and round-off).
   const auto times = minutes_1_to_90();
   const std::vector<int> cases =
-      kFullSweeps ? std::vector<int>{ux::kAccelBias + 0, ux::kGyroDrift + 0, ux::kGyroDrift + 1,
-                                     ux::kGyroMuyDrift + 0, ux::kMisalignAlign + 1}
-                  : std::vector<int>{ux::kAccelBias + 0, ux::kGyroDrift + 1};
+      kFullSweeps ? std::vector<int>{uncertainty_slot::kAccelBias + 0, uncertainty_slot::kGyroDrift + 0, uncertainty_slot::kGyroDrift + 1,
+                                     uncertainty_slot::kGyroMuyDrift + 0, uncertainty_slot::kMisalignAlign + 1}
+                  : std::vector<int>{uncertainty_slot::kAccelBias + 0, uncertainty_slot::kGyroDrift + 1};
   for (System s : {System::kTheodolite, System::kGyrocompass}) {
     const TruthOptions o = continuous_options(s);
     for (int i : cases) {
@@ -252,9 +252,9 @@ std::vector<Vec3> rotation_reference(System s, const ModelOptions& m, const Unce
   site.gravity_mps2 = g_s;
   const Vec3 c_prime = full_switchover_misalignment(s, site) * x;
   const Mat3 a0 = switchover_attitude(c_prime, Vec3(0, 0, -g_s));
-  Vec3 bias = x.segment<3>(ux::kAccelBias);
-  bias.head<2>() += x.segment<2>(ux::kBiasChangeConst) + x.segment<2>(ux::kBiasChangeAlign);
-  const Vec3 scale = Vec3::Ones() + x.segment<3>(ux::kAccelScale);
+  Vec3 bias = x.segment<3>(uncertainty_slot::kAccelBias);
+  bias.head<2>() += x.segment<2>(uncertainty_slot::kBiasChangeConst) + x.segment<2>(uncertainty_slot::kBiasChangeAlign);
+  const Vec3 scale = Vec3::Ones() + x.segment<3>(uncertainty_slot::kAccelScale);
   const auto forcing = [&](double t) {
     const Vec3 f_ap = C_ap_n(m.latitude_rad, m.earth_rate_radps * t) * Vec3(0, 0, -g_s);
     const Vec3 d = linear.drift_angles(t) * x;
@@ -274,10 +274,10 @@ std::vector<Vec3> rotation_reference(System s, const ModelOptions& m, const Unce
 /// x without the uncertainties that do not act through the platform and the
 /// accelerometers (the rotation reference's domain).
 UncertaintyVector rotation_part(UncertaintyVector x) {
-  x.segment<3>(ux::kInitialVelocity).setZero();
-  x.segment<2>(ux::kDeflection).setZero();
-  x[ux::kLatitudeError] = 0.0;
-  x[ux::kAltitudeError] = 0.0;
+  x.segment<3>(uncertainty_slot::kInitialVelocity).setZero();
+  x.segment<2>(uncertainty_slot::kDeflection).setZero();
+  x[uncertainty_slot::kLatitudeError] = 0.0;
+  x[uncertainty_slot::kAltitudeError] = 0.0;
   return x;
 }
 
@@ -289,11 +289,11 @@ TEST(TruthSimulator, SecondOrderPartIsTheFiniteRotationKinematics) {
   for (System s : {System::kTheodolite, System::kGyrocompass}) {
     const TruthOptions o = continuous_options(s);
     const std::vector<int> cases =
-        kFullSweeps ? std::vector<int>{ux::kAccelBias + 0, ux::kAccelBias + 1, ux::kAccelScale + 2,
-                                       ux::kBiasChangeAlign + 1, ux::kGyroDrift + 0, ux::kGyroDrift + 1,
-                                       ux::kGyroDrift + 2, ux::kGyroMuDrift + 1, ux::kGyroMuyDrift + 0,
-                                       ux::kMisalignAlign + 0, ux::kMisalignConst + 2, ux::kTheodolite}
-                    : std::vector<int>{ux::kAccelBias + 1, ux::kGyroDrift + 1, ux::kGyroMuyDrift + 0};
+        kFullSweeps ? std::vector<int>{uncertainty_slot::kAccelBias + 0, uncertainty_slot::kAccelBias + 1, uncertainty_slot::kAccelScale + 2,
+                                       uncertainty_slot::kBiasChangeAlign + 1, uncertainty_slot::kGyroDrift + 0, uncertainty_slot::kGyroDrift + 1,
+                                       uncertainty_slot::kGyroDrift + 2, uncertainty_slot::kGyroMuDrift + 1, uncertainty_slot::kGyroMuyDrift + 0,
+                                       uncertainty_slot::kMisalignAlign + 0, uncertainty_slot::kMisalignConst + 2, uncertainty_slot::kTheodolite}
+                    : std::vector<int>{uncertainty_slot::kAccelBias + 1, uncertainty_slot::kGyroDrift + 1, uncertainty_slot::kGyroMuyDrift + 0};
     for (int i : cases) {
       const UncertaintyVector x = single(i);
       const TruthRun run = simulate_truth(o, x, times);
@@ -319,7 +319,7 @@ UncertaintyVector random_at_bounds(std::uint64_t seed) {
   NormalDraws draws(source, 0);
   UncertaintyVector x;
   const UncertaintyVector b = default_bounds();
-  for (int i = 0; i < ux::kDim; ++i) x[i] = b[i] * (2.0 * draws.next_uniform() - 1.0);
+  for (int i = 0; i < uncertainty_slot::kDim; ++i) x[i] = b[i] * (2.0 * draws.next_uniform() - 1.0);
   return x;
 }
 

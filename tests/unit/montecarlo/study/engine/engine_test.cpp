@@ -165,16 +165,16 @@ TEST(Engine, SerializeRoundTrip) {
 
 // A bound on how far evaluate_sample could differ from the engine's value
 // for the same extended vector z if the two summed in different orders: each
-// output row r = s·z is a sum of ez::kDim products, within gamma_kDim
+// output row r = s·z is a sum of z_slot::kDim products, within gamma_kDim
 // sum_i |s_i z_i| of the exact value (Higham 3.1); the horizontal output
 // adds the two rows' bounds and a rounding of the sqrt. Since the block
 // kernel (map_product.h) sums every sample alike the values are in fact the
 // same bits (EverySampleOfABlockHasTheReplayedBitsInEveryScheme); these
 // tests keep the bound, which would hold for any summation order.
 std::vector<double> replay_tolerances(const Study& study, std::uint64_t index, const UncertaintyVector& x) {
-  constexpr double kGamma = ez::kDim * kEps / (1 - ez::kDim * kEps);
+  constexpr double kGamma = z_slot::kDim * kEps / (1 - z_slot::kDim * kEps);
   const Eigen::MatrixXd xm = x;
-  Eigen::MatrixXd z(ez::kDim, 1);
+  Eigen::MatrixXd z(z_slot::kDim, 1);
   std::vector<Eigen::VectorXd> row_bound;
   for (std::size_t j = 0; j < study.c.systems.size(); ++j) {
     const int sj = static_cast<int>(j);

@@ -54,7 +54,7 @@ TEST(MapProduct, EveryKernelGivesTheDefinitionsBitsForEveryShape) {
     if (!product_kernel_available(kernel)) continue;
     ++kernels_run;
     for (std::size_t n : {0, 1, 3, 4, 7, 8, 15, 16, 17, 33, 1024})
-      for (int depth : {0, 1, 2, 33, ux::kDim, ez::kDim})
+      for (int depth : {0, 1, 2, 33, uncertainty_slot::kDim, z_slot::kDim})
         for (int columns : {1, 2, 3, 4, 5, 6, 7, 11, 13, 15, 30, 105}) {
           const std::size_t ldx = n + 3, ldm = static_cast<std::size_t>(depth) + 1, ldy = n + 5;
           std::vector<double> x(ldx * static_cast<std::size_t>(depth)), m(ldm * static_cast<std::size_t>(columns));
@@ -100,8 +100,8 @@ TEST(MapProduct, InfinitiesAndSignedZerosFollowTheDefinition) {
 // block, so the studies' outputs did not change when the kernel replaced it.
 TEST(MapProduct, TheEnginesShapesGiveEigensProductBitForBit) {
   std::mt19937_64 g(7);
-  for (const auto& [depth, columns] : {std::pair{ux::kDim, 15}, std::pair{ux::kDim, 30}, std::pair{ez::kDim, 105},
-                                       std::pair{ez::kDim, 210}}) {
+  for (const auto& [depth, columns] : {std::pair{uncertainty_slot::kDim, 15}, std::pair{uncertainty_slot::kDim, 30}, std::pair{z_slot::kDim, 105},
+                                       std::pair{z_slot::kDim, 210}}) {
     const Eigen::Index n = 1024;
     Eigen::MatrixXd x(depth, n), m(depth, columns);  // x sample-major, as Eigen's product took it
     for (Eigen::Index i = 0; i < x.size(); ++i) x.data()[i] = spread_value(g);

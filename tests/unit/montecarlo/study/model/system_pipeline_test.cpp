@@ -20,7 +20,7 @@ StudyConfig config_with_sway() {
 }
 
 Eigen::MatrixXd draws(const StudyConfig& c, std::uint64_t first, std::size_t n) {
-  Eigen::MatrixXd x(ux::kDim, static_cast<Eigen::Index>(n));
+  Eigen::MatrixXd x(uncertainty_slot::kDim, static_cast<Eigen::Index>(n));
   const Sampler sampler(c.uncertainties);
   for (std::size_t s = 0; s < n; ++s) x.col(static_cast<Eigen::Index>(s)) = sampler.draw(c.seed, first + s);
   return x;
@@ -30,11 +30,11 @@ TEST(SystemPipeline, ASamplesZDependsOnItsIndexNotOnItsBlock) {
   const StudyConfig c = config_with_sway();
   for (const System system : {System::kTheodolite, System::kGyrocompass}) {
     const SystemPipeline pipeline(c, system);
-    Eigen::MatrixXd whole(ez::kDim, 8), tail(ez::kDim, 5);
+    Eigen::MatrixXd whole(z_slot::kDim, 8), tail(z_slot::kDim, 5);
     pipeline.extended_vectors(0, 8, draws(c, 0, 8), whole);
     pipeline.extended_vectors(3, 5, draws(c, 3, 5), tail);
     for (int s = 0; s < 5; ++s)
-      for (int i = 0; i < ez::kDim; ++i) EXPECT_EQ(whole(i, 3 + s), tail(i, s)) << "sample " << 3 + s << " row " << i;
+      for (int i = 0; i < z_slot::kDim; ++i) EXPECT_EQ(whole(i, 3 + s), tail(i, s)) << "sample " << 3 + s << " row " << i;
   }
 }
 
@@ -42,16 +42,16 @@ TEST(SystemPipeline, TheDrawMajorFormGivesTheSameBits) {
   const StudyConfig c = config_with_sway();
   const std::size_t n = 6;
   const Eigen::MatrixXd x = draws(c, 10, n);
-  std::vector<double> by_draw(ux::kDim * n);
-  for (int j = 0; j < ux::kDim; ++j)
+  std::vector<double> by_draw(uncertainty_slot::kDim * n);
+  for (int j = 0; j < uncertainty_slot::kDim; ++j)
     for (std::size_t s = 0; s < n; ++s) by_draw[j * n + s] = x(j, static_cast<Eigen::Index>(s));
   for (const System system : {System::kTheodolite, System::kGyrocompass}) {
     const SystemPipeline pipeline(c, system);
-    Eigen::MatrixXd columns(ez::kDim, static_cast<Eigen::Index>(n)), rows(static_cast<Eigen::Index>(n), ez::kDim);
+    Eigen::MatrixXd columns(z_slot::kDim, static_cast<Eigen::Index>(n)), rows(static_cast<Eigen::Index>(n), z_slot::kDim);
     pipeline.extended_vectors(10, n, x, columns);
     pipeline.extended_vectors_by_draw(10, n, by_draw.data(), rows);
     for (std::size_t s = 0; s < n; ++s)
-      for (int i = 0; i < ez::kDim; ++i)
+      for (int i = 0; i < z_slot::kDim; ++i)
         EXPECT_EQ(columns(i, static_cast<Eigen::Index>(s)), rows(static_cast<Eigen::Index>(s), i));
   }
 }
@@ -60,7 +60,7 @@ TEST(SystemPipeline, AnotherSeedGivesAnotherTestRun) {
   StudyConfig a = config_with_sway(), b = a;
   b.seed = 6;
   const Eigen::MatrixXd x = draws(a, 0, 1);  // the same uncertainties: only the test run's own draws differ
-  Eigen::MatrixXd za(ez::kDim, 1), zb(ez::kDim, 1);
+  Eigen::MatrixXd za(z_slot::kDim, 1), zb(z_slot::kDim, 1);
   SystemPipeline(a, System::kTheodolite).extended_vectors(0, 1, x, za);
   SystemPipeline(b, System::kTheodolite).extended_vectors(0, 1, x, zb);
   EXPECT_NE(za, zb);

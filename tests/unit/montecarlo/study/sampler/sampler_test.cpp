@@ -32,7 +32,7 @@ constexpr std::uint64_t kSeed = 20240601;
 // fixed at ±0.7 bound (sign alternating), zero.
 UncertaintyModel mixed_model() {
   UncertaintyModel m;
-  for (int j = 0; j < ux::kDim; ++j) {
+  for (int j = 0; j < uncertainty_slot::kDim; ++j) {
     ParameterDistribution& p = m.at(j);
     switch (j % 4) {
       case 0: p.kind = DistributionKind::kUniform; break;
@@ -52,8 +52,8 @@ UncertaintyModel mixed_model() {
 
 // Sample-major uniforms of samples [first, first + n) and their transform.
 std::vector<double> bulk_draws(const Sampler& s, std::uint64_t seed, std::uint64_t first, std::size_t n) {
-  std::vector<double> u(n * ux::kDim), x(n * ux::kDim);
-  fill_uniform01(seed, Stream::Uncertainties, first, ux::kDim, n, u);
+  std::vector<double> u(n * uncertainty_slot::kDim), x(n * uncertainty_slot::kDim);
+  fill_uniform01(seed, Stream::Uncertainties, first, uncertainty_slot::kDim, n, u);
   s.transform(u.data(), n, x.data());
   return x;
 }
@@ -64,9 +64,9 @@ TEST(Sampler, EveryKindStaysInItsSupport) {
   constexpr std::size_t kN = 4096;
   const std::vector<double> x = bulk_draws(sampler, kSeed, 0, kN);
   for (std::size_t i = 0; i < kN; ++i) {
-    for (int j = 0; j < ux::kDim; ++j) {
+    for (int j = 0; j < uncertainty_slot::kDim; ++j) {
       const ParameterDistribution& p = model.at(j);
-      const double v = x[i * ux::kDim + static_cast<std::size_t>(j)];
+      const double v = x[i * uncertainty_slot::kDim + static_cast<std::size_t>(j)];
       switch (p.kind) {
         case DistributionKind::kUniform:
         case DistributionKind::kTruncatedNormal:
@@ -102,8 +102,8 @@ TEST(Sampler, DrawEqualsTheBulkTransformBitForBit) {
   const std::vector<double> bulk = bulk_draws(sampler, kSeed, kFirst, kN);
   for (std::size_t i = 0; i < kN; ++i) {
     const UncertaintyVector x = sampler.draw(kSeed, kFirst + i);
-    for (int j = 0; j < ux::kDim; ++j) {
-      ASSERT_EQ(x[j], bulk[i * ux::kDim + static_cast<std::size_t>(j)]) << "sample " << kFirst + i << " j " << j;
+    for (int j = 0; j < uncertainty_slot::kDim; ++j) {
+      ASSERT_EQ(x[j], bulk[i * uncertainty_slot::kDim + static_cast<std::size_t>(j)]) << "sample " << kFirst + i << " j " << j;
     }
   }
 }
@@ -122,16 +122,16 @@ TEST(Sampler, TransformEqualsTransformOneBitForBit) {
     const Sampler sampler(model);
     for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{3}, std::size_t{4},
                                 std::size_t{5}, std::size_t{9}, std::size_t{1024}, std::size_t{1027}}) {
-      std::vector<double> u(n * ux::kDim), x(n * ux::kDim, -99.0);
-      fill_uniform01(kSeed, Stream::Uncertainties, 11, ux::kDim, n, u);
+      std::vector<double> u(n * uncertainty_slot::kDim), x(n * uncertainty_slot::kDim, -99.0);
+      fill_uniform01(kSeed, Stream::Uncertainties, 11, uncertainty_slot::kDim, n, u);
       const double extremes[] = {0.0, 0.5, 1.0 - 0x1p-53};
       for (std::size_t i = 0; i < u.size(); i += 5) u[i] = extremes[(i / 5) % 3];
       sampler.transform(u.data(), n, x.data());
-      std::vector<double> x_by_draw(n * ux::kDim, -99.0);  // the same uniforms read draw-major
+      std::vector<double> x_by_draw(n * uncertainty_slot::kDim, -99.0);  // the same uniforms read draw-major
       sampler.transform_draw_major(u.data(), n, x_by_draw.data());
       for (std::size_t s = 0; s < n; ++s) {
-        for (int j = 0; j < ux::kDim; ++j) {
-          const std::size_t i = s * ux::kDim + static_cast<std::size_t>(j);
+        for (int j = 0; j < uncertainty_slot::kDim; ++j) {
+          const std::size_t i = s * uncertainty_slot::kDim + static_cast<std::size_t>(j);
           ASSERT_EQ(std::bit_cast<std::uint64_t>(x[i]),
                     std::bit_cast<std::uint64_t>(sampler.transform_one(j, u[i])))
               << "n " << n << " sample " << s << " j " << j << " u " << u[i];
@@ -155,7 +155,7 @@ TEST(Sampler, ParameterJUsesUniformJOfItsSample) {
   for (std::uint64_t i : {std::uint64_t{0}, std::uint64_t{1}, std::uint64_t{1023}, std::uint64_t{1} << 40}) {
     CounterStream stream(kSeed, Stream::Uncertainties, i);
     const UncertaintyVector x = sampler.draw(kSeed, i);
-    for (int j = 0; j < ux::kDim; ++j) {
+    for (int j = 0; j < uncertainty_slot::kDim; ++j) {
       const double u = stream.uniform01();
       const ParameterDistribution& p = model.at(j);
       if (p.kind == DistributionKind::kUniform) {
@@ -173,7 +173,7 @@ TEST(Sampler, ParameterJUsesUniformJOfItsSample) {
   const Sampler other(changed);
   for (std::uint64_t i = 0; i < 200; ++i) {
     const UncertaintyVector a = sampler.draw(kSeed, i), b = other.draw(kSeed, i);
-    for (int j = 0; j < ux::kDim; ++j) {
+    for (int j = 0; j < uncertainty_slot::kDim; ++j) {
       if (j == 5 || j == 8) continue;
       ASSERT_EQ(a[j], b[j]) << "sample " << i << " j " << j;
     }
@@ -257,7 +257,7 @@ struct Law {
 // Draws of parameter `j` with the case's law, in blocks as the engine does.
 std::vector<double> draws_of(const LawCase& c, int j, std::size_t n) {
   UncertaintyModel model;
-  for (int i = 0; i < ux::kDim; ++i) model.at(i).kind = DistributionKind::kZero;
+  for (int i = 0; i < uncertainty_slot::kDim; ++i) model.at(i).kind = DistributionKind::kZero;
   model.at(j).kind = c.kind;
   if (c.kind == DistributionKind::kTruncatedNormal) model.at(j).sigmas_in_bound = c.sigmas_in_bound;
   const Sampler sampler(model);
@@ -267,7 +267,7 @@ std::vector<double> draws_of(const LawCase& c, int j, std::size_t n) {
   for (std::size_t first = 0; first < n; first += kChunk) {
     const std::size_t m = std::min(kChunk, n - first);
     const std::vector<double> x = bulk_draws(sampler, kSeed + static_cast<std::uint64_t>(j), first, m);
-    for (std::size_t i = 0; i < m; ++i) out.push_back(x[i * ux::kDim + static_cast<std::size_t>(j)]);
+    for (std::size_t i = 0; i < m; ++i) out.push_back(x[i * uncertainty_slot::kDim + static_cast<std::size_t>(j)]);
   }
   return out;
 }
@@ -324,7 +324,7 @@ TEST(SamplerLaw, DrawsFollowTheExactLaw) {
   const double n = static_cast<double>(kDraws);
   int j = 0;
   for (const LawCase& c : kLawCases) {
-    j = (j + 7) % ux::kDim;  // a different parameter (and bound) per case
+    j = (j + 7) % uncertainty_slot::kDim;  // a different parameter (and bound) per case
     const std::vector<double> x = draws_of(c, j, kDraws);
     UncertaintyModel model;
     model.at(j).kind = c.kind;

@@ -61,7 +61,7 @@ TEST(GapResponse, AnAccelerometerInputEqualsTheLinearModelsSwitchOverBiasColumn)
       a(k, 0) = 1.0;
     };
     const Eigen::MatrixXd r = input_response(l, s, in);
-    const Eigen::VectorXd col = x.col(ux::kBiasChangeConst + k);
+    const Eigen::VectorXd col = x.col(uncertainty_slot::kBiasChangeConst + k);
     EXPECT_LT((r.col(0) - col).cwiseAbs().maxCoeff(), 1e-9 * col.cwiseAbs().maxCoeff()) << k;
   }
 }
@@ -208,7 +208,7 @@ TEST(GapModel, ACandidateWideningThePriorsKeepsTheFloorTheNullWasCalibratedOn) {
   Extension wider;
   wider.x_var_scale.setConstant(100.0);
   const GaussianModel m = combine(base, {&wider});
-  EXPECT_EQ(m.prior_var.head(ux::kDim), 100.0 * table);
+  EXPECT_EQ(m.prior_var.head(uncertainty_slot::kDim), 100.0 * table);
   const GaussianModel plain = combine(base, {});
   EXPECT_EQ(m.noise_var, plain.noise_var);
   // A base of wider priors has a wider floor on the r rows, none on f.
@@ -275,7 +275,7 @@ TEST(GapPulseCounting, PositionScatterMatchesTheTruthSimulatorsCounters) {
   Eigen::VectorXd truth = Eigen::VectorXd::Zero(model.size());
   for (int r = 0; r < kRuns; ++r) {
     UncertaintyVector x;  // uniform with the priors' variance
-    for (int j = 0; j < ux::kDim; ++j) x[j] = std::sqrt(3.0 * prior.variance()[j]) * (2.0 * u01(rng) - 1.0);
+    for (int j = 0; j < uncertainty_slot::kDim; ++j) x[j] = std::sqrt(3.0 * prior.variance()[j]) * (2.0 * u01(rng) - 1.0);
     TruthOptions pulsed = o, continuous = o;
     pulsed.dv_pulse_mps = w;
     for (int k = 0; k < 3; ++k) pulsed.pulse_phase[k] = u01(rng) - 0.5;
