@@ -11,18 +11,13 @@
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 #include "lib/noise/noise_analysis.h"
+#include "lib/units/physical_range.h"
 #include "lib/units/quantity.h"
 #include "montecarlo/records/noise/noise_report.h"
 
 namespace insmc::app {
 
-using mc::Datasheet;
 using mc::parse_datasheet_entry;
-using mc::RecordingCalibration;
-
-/// Fewest samples per recording: the Allan variance needs a few octaves of
-/// cluster times, and the masking a few dozen blocks.
-inline constexpr std::size_t kMinNoiseSamples = 300;
 
 int run_noise(const Args& args) {
   po::options_description opts("Options");
@@ -46,7 +41,8 @@ int run_noise(const Args& args) {
   if (!vm) return 0;
   if (!vm->count("input")) throw InputError("--input", "(missing)", "give at least one IMU CSV file");
   const ImuCsvOptions csv = read_imu_csv_options(*vm);
-  noise::NoiseOptions options;
+  mc::NoiseStageOptions stage;
+  noise::NoiseOptions& options = stage.analysis;
   options.alpha = (*vm)["alpha"].as<double>();
   if (!(options.alpha >= 1e-6 && options.alpha <= 0.2))
     throw InputError("--alpha", fmt::format("{:g}", options.alpha), "must lie in [1e-6, 0.2]");
@@ -59,19 +55,18 @@ int run_noise(const Args& args) {
                      "must be 0s (no warm-up test) or lie in [1min, 24h]");
   const std::string mask = (*vm)["mask"].as<std::string>();
   if (mask != "on" && mask != "off") throw InputError("--mask", echo_input(mask), "must be on or off");
-  Datasheet sheet;
   if (vm->count("datasheet"))
-    for (const std::string& entry : (*vm)["datasheet"].as<std::vector<std::string>>()) parse_datasheet_entry(entry, sheet);
+    for (const std::string& entry : (*vm)["datasheet"].as<std::vector<std::string>>())
+      parse_datasheet_entry(entry, stage.sheet);
   options.mask = mask == "on";
   const mc::ReportOutline outline = mc::noise_report_outline();
   const mc::ReportFormat format = read_report_format(*vm, outline);
-  calibration::MultipositionOptions calibrate;
+  calibration::MultipositionOptions& calibrate = stage.calibration;
   calibrate.confidence = options.confidence;
   const std::string gravity_text = (*vm)["gravity"].as<std::string>();
   calibrate.gravity_mps2 = parse_quantity(gravity_text, Dimension::kAcceleration, "--gravity");
-  // From the equator at sea level (9.780) to the poles (9.832), with room
-  // for altitude and local anomalies; said in m/s², the unit gravity is quoted in.
-  if (!(calibrate.gravity_mps2 >= 9.7 && calibrate.gravity_mps2 <= 9.9))
+  // Said in m/s², the unit gravity is quoted in.
+  if (!kSiteGravityRange.contains(calibrate.gravity_mps2))
     throw InputError("--gravity", echo_input(gravity_text),
                      "must lie in [9.7, 9.9] m/s2 (surface gravity, equator to poles, with room for altitude), "
                      "e.g. 9.80665mps2");
@@ -80,28 +75,18 @@ int run_noise(const Args& args) {
   std::vector<ImuSamples> recordings;
   for (const std::string& input : (*vm)["input"].as<std::vector<std::string>>()) {
     recordings.push_back(read_input("--input", input, [&] { return read_imu_csv(input, csv); }));
-    if (recordings.back().size() < kMinNoiseSamples)
-      throw InputError("--input", echo_input(input, 256),
-                       fmt::format("{} samples: a noise analysis needs at least {} per recording",
-                                   recordings.back().size(), kMinNoiseSamples));
+    mc::require_noise_samples(recordings.back());  // before the next file is read
   }
-  // The sample grid is checked first (a refusal costs no fit); then each
-  // recording's still attitudes, and its multi-position calibration when it
-  // holds enough of them (montecarlo/records/noise/calibration_report.h).
-  const noise::SensorRecording rec = noise::make_recording(recordings);
-  std::vector<RecordingCalibration> calibrations;
-  for (const ImuSamples& r : recordings)
-    calibrations.push_back({r.source, calibration::calibrate_multiposition(r, calibrate), calibrate.gravity_mps2});
-  recordings.clear();
-  noise::NoiseAnalysis analysis;
-  {
+  const mc::Report report = [&] {  // the progress line ends before stdout
     Progress progress(0, "");
-    options.progress = [&progress](std::string_view stage, std::size_t done, std::size_t total) {
-      progress.update(stage, done, total, "channels");
+    options.progress = [&progress](std::string_view what, std::size_t done, std::size_t total) {
+      progress.update(what, done, total, "channels");
     };
-    analysis = noise::analyse_noise(rec, options);
-  }
-  write_report(mc::noise_report(rec, analysis, options.confidence, sheet, calibrations), {format}, out, *vm);
+    mc::Report done = mc::noise_stage(std::move(recordings), stage);
+    options.progress = nullptr;
+    return done;
+  }();
+  write_report(report, {format}, out, *vm);
   return 0;
 }
 

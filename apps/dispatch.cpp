@@ -11,6 +11,9 @@
 
 namespace insmc::app {
 
+namespace {
+
+/// The usage text with `subcommands`' names and summaries.
 void print_usage(std::FILE* out, std::span<const Subcommand> subcommands) {
   fmt::print(out,
              "insmc {}: Monte Carlo covariance analysis of preflight test procedures for a\n"
@@ -20,6 +23,8 @@ void print_usage(std::FILE* out, std::span<const Subcommand> subcommands) {
              insmc::kVersion);
   for (const auto& s : subcommands) fmt::print(out, "  {:<12} {}\n", s.name, s.summary);
 }
+
+}  // namespace
 
 int dispatch(std::span<const Subcommand> subcommands, int argc, const char* const* argv) {
   if (argc < 2) {

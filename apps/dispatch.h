@@ -18,9 +18,6 @@ struct Subcommand {
   std::string_view summary;  ///< one line in `insmc --help`
 };
 
-/// The usage text with `subcommands`' names and summaries.
-void print_usage(std::FILE* out, std::span<const Subcommand> subcommands);
-
 /// Runs argv[1] of `subcommands` with the rest of the arguments; --help,
 /// --version and an unknown name as above.
 int dispatch(std::span<const Subcommand> subcommands, int argc, const char* const* argv);

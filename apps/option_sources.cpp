@@ -23,8 +23,8 @@ bool among(const std::array<std::string_view, N>& names, std::string_view name) 
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-}  // namespace
-
+/// Why option `name` (long name, no dashes) may not come from `source`, as
+/// the end of a one-line message; empty when it may.
 std::string refused_from(std::string_view name, OptionSource source) {
   if (source == OptionSource::kCommandLine) return {};
   if (among(kActs, name)) return "acts rather than defines the study: give it on the command line";
@@ -34,7 +34,6 @@ std::string refused_from(std::string_view name, OptionSource source) {
   return {};
 }
 
-namespace {
 /// Boost keeps the substitutions protected; a pointer to the member, taken
 /// through a derived class, reads them from any error (a legal access).
 struct SubstitutionsOf : boost::program_options::error_with_option_name {
@@ -106,6 +105,11 @@ std::string FileOptions::take(const FileOption& option, std::size_t place) {
   return {};
 }
 
+namespace {
+
+/// An element of a run file's arguments as the option it names:
+/// `--name=value`, or `--name` (a switch); none when it is anything else (a
+/// `--` separator, a bare word, a short option, an empty name).
 std::optional<FileOption> option_of_element(std::string_view element) {
   if (!element.starts_with("--")) return std::nullopt;
   element.remove_prefix(2);
@@ -116,6 +120,8 @@ std::optional<FileOption> option_of_element(std::string_view element) {
   if (eq != std::string_view::npos) option.value = std::string(element.substr(eq + 1));
   return option;
 }
+
+}  // namespace
 
 po::parsed_options run_file_options(const std::vector<std::string>& elements, const po::options_description& options,
                                     const std::string& field, const std::string& file, std::string_view list) {

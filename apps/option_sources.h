@@ -33,10 +33,6 @@ enum class OptionSource {
   kRunFile,     ///< run.json's settings.arguments, a checkpoint's arguments
 };
 
-/// Why option `name` (long name, no dashes) may not come from `source`, as
-/// the end of a one-line message; empty when it may.
-std::string refused_from(std::string_view name, OptionSource source);
-
 /// The options a run file never holds: they act, write or only show.
 const std::vector<std::string>& not_in_run_files();
 
@@ -68,11 +64,6 @@ class FileOptions {
   po::parsed_options parsed_;
   std::map<std::string, std::size_t> first_place_;  ///< of each option that may be given once
 };
-
-/// An element of a run file's arguments as the option it names:
-/// `--name=value`, or `--name` (a switch); none when it is anything else (a
-/// `--` separator, a bare word, a short option, an empty name).
-std::optional<FileOption> option_of_element(std::string_view element);
 
 /// The arguments a run file kept (run.json's settings.arguments, a
 /// checkpoint's arguments) as options of `options`, each through

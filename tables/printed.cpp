@@ -104,6 +104,10 @@ std::vector<std::vector<std::string>> parse_csv(std::string_view text, std::stri
   return split_csv(text, file);
 }
 
+namespace {
+
+/// The embedded printed-cell CSV (and below, the cell notes' CSV). Throws
+/// std::runtime_error naming the file and line on malformed data.
 std::vector<PrintedCell> parse_printed_csv(std::string_view text, std::string_view file) {
   std::vector<PrintedCell> out;
   for (auto& [line, f] : records_after_header(
@@ -148,6 +152,8 @@ std::vector<CellNote> parse_cell_notes_csv(std::string_view text, std::string_vi
   }
   return out;
 }
+
+}  // namespace
 
 const std::vector<PrintedCell>& printed_cells() {
   static const std::vector<PrintedCell> cells = [] {

@@ -48,11 +48,6 @@ const std::vector<CellNote>& cell_notes();
 /// naming the file on an unterminated quote.
 std::vector<std::vector<std::string>> parse_csv(std::string_view text, std::string_view file_name);
 
-/// CSV parsing of the two embedded formats, exposed for tests. Throws
-/// std::runtime_error naming the file and line on malformed data.
-std::vector<PrintedCell> parse_printed_csv(std::string_view text, std::string_view file_name);
-std::vector<CellNote> parse_cell_notes_csv(std::string_view text, std::string_view file_name);
-
 /// The printed row of a cell row: "r [member]" → "r".
 std::string printed_row_key(std::string_view cell_row);
 

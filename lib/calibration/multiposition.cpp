@@ -10,6 +10,18 @@
 namespace insmc::calibration {
 namespace {
 
+/// The accelerometer model (C.1) with parameters x = (b_a, s, α_xy, α_xz, α_yz).
+Vec3 calibrated_accel(const Eigen::VectorXd& x, const Vec3& raw_mps2) {
+  Mat3 m = Mat3::Identity();
+  m(0, 0) += x[3];
+  m(1, 1) += x[4];
+  m(2, 2) += x[5];
+  m(0, 1) = x[6];
+  m(0, 2) = x[7];
+  m(1, 2) = x[8];
+  return m * (raw_mps2 - x.head<3>());  // (C.1)
+}
+
 constexpr char kAxis[] = "xyz";
 
 CalibratedParameter parameter(std::string name, ParameterKind kind, const LeastSquaresFit& fit, Eigen::Index p,
@@ -175,17 +187,6 @@ std::size_t distinct_directions(const std::vector<Vec3>& f, double same_rad) {
       seen.push_back(u);
   }
   return seen.size();
-}
-
-Vec3 calibrated_accel(const Eigen::VectorXd& x, const Vec3& raw_mps2) {
-  Mat3 m = Mat3::Identity();
-  m(0, 0) += x[3];
-  m(1, 1) += x[4];
-  m(2, 2) += x[5];
-  m(0, 1) = x[6];
-  m(0, 2) = x[7];
-  m(1, 2) = x[8];
-  return m * (raw_mps2 - x.head<3>());  // (C.1)
 }
 
 MultipositionCalibration calibrate_multiposition(const ImuSamples& s, const MultipositionOptions& o) {

@@ -92,9 +92,6 @@ inline constexpr double kMaxTurnResidualRad = 0.02;
 /// segments or orientations) are left unfitted with the reason.
 MultipositionCalibration calibrate_multiposition(const ImuSamples& samples, const MultipositionOptions& options);
 
-/// The accelerometer model (C.1) with parameters x = (b_a, s, α_xy, α_xz, α_yz).
-Vec3 calibrated_accel(const Eigen::VectorXd& x, const Vec3& raw_mps2);
-
 /// The number of distinct directions among the vectors `f` (mean specific
 /// forces): a direction within `same_rad` of one already counted is the same.
 /// Zero vectors have none.

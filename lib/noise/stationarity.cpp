@@ -35,8 +35,8 @@ double add_mean(std::span<const double> y, const std::vector<Segment>& parts, do
   return sum / static_cast<double>(count);
 }
 
-}  // namespace
-
+/// (N.6): the variance of Σ c_i θ(t_i) under the model, for coefficients
+/// with Σ c_i = 0 and Σ c_i t_i = 0 (points as (t_i [s], c_i)).
 double combination_variance(const NoiseModel& model, std::span<const std::pair<double, double>> points) {
   double v = 0;
   for (const auto& [ti, ci] : points)
@@ -48,6 +48,8 @@ double combination_variance(const NoiseModel& model, std::span<const std::pair<d
     }
   return -0.5 * v;  // (N.6)
 }
+
+}  // namespace
 
 std::vector<Segment> after_first_part(std::span<const Segment> runs, std::span<const Segment> kept, double dt_s,
                                       double first_part_s) {

@@ -41,10 +41,6 @@ StationarityTest test_first_part(std::span<const double> y, double dt_s, std::sp
                                  std::span<const Segment> kept, const NoiseModel& rest_model, double first_part_s,
                                  double alpha);
 
-/// (N.6): the variance of Σ c_i θ(t_i) under the model, for coefficients
-/// with Σ c_i = 0 and Σ c_i t_i = 0 (points as (t_i [s], c_i)).
-double combination_variance(const NoiseModel& model, std::span<const std::pair<double, double>> points);
-
 /// The kept segments with the first `first_part_s` of each run removed.
 std::vector<Segment> after_first_part(std::span<const Segment> runs, std::span<const Segment> kept, double dt_s,
                                       double first_part_s);

@@ -106,6 +106,9 @@ double EffectSpec::value(std::string_view name) const {
   return 0.0;
 }
 
+namespace {
+
+/// The parameter's allowed values: its sign (range) and |value| <= its limit.
 PhysicalRange physical_range(const EffectParameter& p) {
   const double limit = p.limit_si > 0 ? p.limit_si : magnitude_limit(p.dimension);
   switch (p.range) {
@@ -115,6 +118,8 @@ PhysicalRange physical_range(const EffectParameter& p) {
   }
   return {0.0, limit};
 }
+
+}  // namespace
 
 EffectSpec default_effect(EffectKind kind) {
   EffectSpec spec;

@@ -90,9 +90,6 @@ struct EffectParameter {
   std::string_view header_key = {};
 };
 
-/// The parameter's allowed values: its sign (range) and |value| <= its limit.
-PhysicalRange physical_range(const EffectParameter& parameter);
-
 /// What the registry says about one effect.
 struct EffectInfo {
   std::string_view name;         ///< e.g. "accel_bias_instability"

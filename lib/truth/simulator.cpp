@@ -488,11 +488,16 @@ Mat3 switchover_attitude(const Vec3& c_prime, const Vec3& f_ap) {
   return azimuth * minimal_rotation(f_a / g, f_a1 / g);
 }
 
+namespace {
+
+/// What a latitude beyond it is told.
 std::string truth_latitude_limit_text() {
   return fmt::format("the truth simulator needs |latitude| <= {} deg (nearer a pole it leaves the linear level: "
                      "docs/truth-vs-models.md)",
                      kMaxTruthLatitudeDeg);
 }
+
+}  // namespace
 
 std::optional<InputError> truth_latitude_error(double latitude_rad, std::string field) {
   if (std::abs(latitude_rad) <= kMaxTruthLatitudeDeg * kDegToRad) return std::nullopt;

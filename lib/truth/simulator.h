@@ -146,8 +146,6 @@ struct TruthOptions {
 
 /// The truth simulator's site latitude limit, |L0| <= 89 deg.
 inline constexpr double kMaxTruthLatitudeDeg = 89.0;
-/// What a latitude beyond it is told.
-std::string truth_latitude_limit_text();
 /// The error for a site latitude beyond it, named as the caller's input
 /// (`field`: the command-line option or the record key); nullopt within.
 std::optional<InputError> truth_latitude_error(double latitude_rad, std::string field);

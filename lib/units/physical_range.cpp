@@ -8,10 +8,15 @@
 
 namespace insmc {
 
+namespace {
+
+/// "[0, 1mps]" or "(0s, 2h]": the range in the units format_quantity picks.
 std::string describe(const PhysicalRange& range, Dimension dimension) {
   return fmt::format("{}{}, {}]", range.min_open ? "(" : "[", format_quantity(range.min_si, dimension),
                      format_quantity(range.max_si, dimension));
 }
+
+}  // namespace
 
 void require_in_range(std::string_view field, double value_si, Dimension dimension, const PhysicalRange& range,
                       std::string_view why) {

@@ -24,8 +24,9 @@ struct PhysicalRange {
 /// means nothing, and a larger number is a typo (1e306 nmi once became inf m).
 inline constexpr PhysicalRange kPositionLimitRange{0.0, 4.0e7, true};
 
-/// "[0, 1mps]" or "(0s, 2h]": the range in the units format_quantity picks.
-std::string describe(const PhysicalRange& range, Dimension dimension);
+/// A site's gravity magnitude [m/s²]: from the equator at sea level (9.780)
+/// to the poles (9.832), with room for altitude and local anomalies.
+inline constexpr PhysicalRange kSiteGravityRange{9.7, 9.9};
 
 /// Throws InputError(field, value, "must lie in RANGE" + why) unless `value_si`
 /// is finite and inside `range`. `why` (optional) says where the limit comes

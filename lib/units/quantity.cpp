@@ -78,6 +78,13 @@ std::span<const UnitFactor> units_of(Dimension d) {
   return kDimensionlessUnits;
 }
 
+/// The unit spellings accepted for a dimension, e.g. {"m","ft","km","nmi"}.
+std::vector<std::string> accepted_units(Dimension d) {
+  std::vector<std::string> out;
+  for (const auto& u : units_of(d)) out.emplace_back(u.name);
+  return out;
+}
+
 std::string accepted_list(Dimension d) {
   if (d == Dimension::kDimensionless) return "a bare number (or NUMBERppm)";
   std::vector<std::string> names = accepted_units(d), spellings;
@@ -103,12 +110,6 @@ std::string_view si_suffix(Dimension d) {
     case Dimension::kDimensionless: return "";
   }
   return "";
-}
-
-std::vector<std::string> accepted_units(Dimension d) {
-  std::vector<std::string> out;
-  for (const auto& u : units_of(d)) out.emplace_back(u.name);
-  return out;
 }
 
 std::optional<QuantityText> split_quantity(std::string_view text) {

@@ -29,9 +29,6 @@ enum class Dimension {
 /// "radps", "mps", "mps2", "radprts", "mpsprts", "" for dimensionless).
 std::string_view si_suffix(Dimension d);
 
-/// The unit spellings accepted for a dimension, e.g. {"m","ft","km","nmi"}.
-std::vector<std::string> accepted_units(Dimension d);
-
 /// The longest value text parse_quantity reads: a number with its unit is
 /// ~30 bytes; 256 leaves room for any spelling of one.
 inline constexpr std::size_t kMaxQuantityTextBytes = 256;

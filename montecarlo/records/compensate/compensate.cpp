@@ -22,7 +22,7 @@ void validate(const CompensateOptions& options) {
   require_in_range("--realignment-duration", options.realignment_duration_s, Dimension::kTime,
                    test_run_range::kRealignmentDuration);
   if (options.site_gravity_mps2)
-    require_in_range("--site-gravity", *options.site_gravity_mps2, Dimension::kAcceleration, PhysicalRange{9.7, 9.9},
+    require_in_range("--site-gravity", *options.site_gravity_mps2, Dimension::kAcceleration, kSiteGravityRange,
                      "the specific force on the earth's surface: 9.78 to 9.84 m/s^2 at sea level, less at altitude");
 }
 namespace {
@@ -140,17 +140,27 @@ std::string_view to_string(PositionLimit::Component c) {
 
 bool LimitCheck::within() const { return probability <= risk; }
 
+namespace {
+
+/// The times the report tabulates: 42, 63 and 84 min, the flight time and
+/// the limits' times.
 std::vector<double> report_times(const CompensateOptions& options) {
   std::vector<double> t = {42 * 60.0, 63 * 60.0, 84 * 60.0, options.flight_time_s};
   for (const PositionLimit& l : options.limits) t.push_back(l.t_s);
   return t;
 }
 
+}  // namespace
+
 bool is_report_time(double t_s, const CompensateOptions& options) {
   const std::vector<double> times = report_times(options);
   return std::any_of(times.begin(), times.end(), [&](double t) { return std::abs(t - t_s) < 1e-6; });
 }
 
+namespace {
+
+/// The envelope's times: every 3 min to the last report time, and the
+/// report times themselves.
 std::vector<double> envelope_times(const CompensateOptions& options) {
   std::vector<double> t = report_times(options);
   const double last = *std::max_element(t.begin(), t.end());
@@ -159,6 +169,8 @@ std::vector<double> envelope_times(const CompensateOptions& options) {
   t.erase(std::unique(t.begin(), t.end(), [](double a, double b) { return std::abs(a - b) < 1e-6; }), t.end());
   return t;
 }
+
+}  // namespace
 
 CompensateResult compensate(const RecordFile& file, const CompensateOptions& options) {
   validate(options);

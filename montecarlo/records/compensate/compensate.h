@@ -117,14 +117,7 @@ struct CompensateResult {
   }
 };
 
-/// The times the report tabulates: 42, 63 and 84 min, the flight time and
-/// the limits' times.
-std::vector<double> report_times(const CompensateOptions& options);
 bool is_report_time(double t_s, const CompensateOptions& options);
-
-/// The envelope's times: every 3 min to the last report time, and the
-/// report times themselves.
-std::vector<double> envelope_times(const CompensateOptions& options);
 
 CompensateResult compensate(const RecordFile& file, const CompensateOptions& options);
 

@@ -151,6 +151,10 @@ double UnitPositionError::population_horizontal_rms_m() const {
   return std::sqrt((horizontal * population_m2 * horizontal.transpose()).trace());
 }
 
+namespace {
+
+/// B: the report's estimates (SchemeEstimates order: Û2, Û3, Û3 from f,
+/// Δf̂(T), per axis) as a linear map of a unit's test rows.
 Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const runs::Layout& layout) {
   const runs::RecordSite& site = records.site;
   const double tau = site.filter_interval_s, T = site.test_duration_s;
@@ -175,6 +179,8 @@ Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const runs::L
   }
   return B;
 }
+
+}  // namespace
 
 std::vector<Identifiability> identifiability(const UnitRecords& records, const UncertaintyModel& prior) {
   const ShortRunMatrices paper = paper_short_run_matrices(records.site.system, records.site.model);

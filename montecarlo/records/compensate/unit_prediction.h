@@ -194,8 +194,4 @@ SchemeModel scheme_model(const UnitRecords& records, const UnitPosterior& poster
 SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& run, const UnitPosterior& posterior,
                                 const SchemeModel& model);
 
-/// B: the report's estimates (SchemeEstimates order: Û2, Û3, Û3 from f,
-/// Δf̂(T), per axis) as a linear map of a unit's test rows.
-Eigen::MatrixXd estimates_of_test_rows(const UnitRecords& records, const runs::Layout& test_layout);
-
 }  // namespace insmc::mc

@@ -9,6 +9,7 @@
 #include "lib/common/input_error.h"
 #include "lib/common/input_text.h"
 #include "lib/noise/noise_budget.h"
+#include "lib/noise/recording.h"
 #include "lib/noise/table31_reading.h"
 #include "lib/units/physical_range.h"
 #include "lib/units/quantity.h"
@@ -119,6 +120,30 @@ std::optional<WhiteTogether> white_together(const noise::ChannelNoise& ch, const
   const auto combined = [](double n, double sigma, double tc) { return std::sqrt(n * n + 2 * sigma * sigma * tc); };
   return WhiteTogether{*n_eff, combined(white.lower_si, gm->lower_si, ch.fit.correlation_time_lower_s),
                        combined(white.upper_si, gm->upper_si, ch.fit.correlation_time_upper_s)};
+}
+
+/// The value of a fitted term in the units engineers quote: (value, unit).
+std::pair<double, std::string> spec_value(NoiseTerm t, SensorKind kind, double v) {
+  const double root_h = std::sqrt(kHourToS);  // 1/√s = 60/√h
+  if (kind == SensorKind::kGyro) {
+    switch (t) {
+      case NoiseTerm::kQuantization: return {v / kArcsecToRad, "arcsec"};
+      case NoiseTerm::kWhiteRate: return {v / kDegToRad * root_h, "deg/sqrt(h)"};
+      case NoiseTerm::kBiasInstability:
+      case NoiseTerm::kGaussMarkov: return {v / kDegphToRadps, "deg/h"};
+      case NoiseTerm::kRateRandomWalk: return {v / kDegphToRadps * root_h, "deg/h/sqrt(h)"};
+      case NoiseTerm::kRateRamp: return {v / kDegphToRadps * kHourToS, "deg/h/h"};
+    }
+  }
+  switch (t) {
+    case NoiseTerm::kQuantization: return {v, "m/s"};
+    case NoiseTerm::kWhiteRate: return {v * root_h, "m/s/sqrt(h)"};
+    case NoiseTerm::kBiasInstability:
+    case NoiseTerm::kGaussMarkov: return {v / kUgToMps2, "ug"};
+    case NoiseTerm::kRateRandomWalk: return {v / kUgToMps2 * root_h, "ug/sqrt(h)"};
+    case NoiseTerm::kRateRamp: return {v / kUgToMps2 * kHourToS, "ug/h"};
+  }
+  return {v, ""};
 }
 
 /// The fitted white noise and bias instability beside the data sheet's:
@@ -392,33 +417,6 @@ std::string terms_csv(const noise::NoiseAnalysis& a) {
   return csv;
 }
 
-}  // namespace
-
-std::pair<double, std::string> spec_value(NoiseTerm t, SensorKind kind, double v) {
-  const double root_h = std::sqrt(kHourToS);  // 1/√s = 60/√h
-  if (kind == SensorKind::kGyro) {
-    switch (t) {
-      case NoiseTerm::kQuantization: return {v / kArcsecToRad, "arcsec"};
-      case NoiseTerm::kWhiteRate: return {v / kDegToRad * root_h, "deg/sqrt(h)"};
-      case NoiseTerm::kBiasInstability:
-      case NoiseTerm::kGaussMarkov: return {v / kDegphToRadps, "deg/h"};
-      case NoiseTerm::kRateRandomWalk: return {v / kDegphToRadps * root_h, "deg/h/sqrt(h)"};
-      case NoiseTerm::kRateRamp: return {v / kDegphToRadps * kHourToS, "deg/h/h"};
-    }
-  }
-  switch (t) {
-    case NoiseTerm::kQuantization: return {v, "m/s"};
-    case NoiseTerm::kWhiteRate: return {v * root_h, "m/s/sqrt(h)"};
-    case NoiseTerm::kBiasInstability:
-    case NoiseTerm::kGaussMarkov: return {v / kUgToMps2, "ug"};
-    case NoiseTerm::kRateRandomWalk: return {v / kUgToMps2 * root_h, "ug/sqrt(h)"};
-    case NoiseTerm::kRateRamp: return {v / kUgToMps2 * kHourToS, "ug/h"};
-  }
-  return {v, ""};
-}
-
-namespace {
-
 Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
                 const Datasheet& sheet, const std::vector<RecordingCalibration>& calibrations) {
   mc::Json j = mc::Json::object();
@@ -565,6 +563,25 @@ Report noise_report(const noise::SensorRecording& rec, const noise::NoiseAnalysi
       .shown_file(ReportFormat::kMarkdown, "noise.md")
       .shown_file(ReportFormat::kJson, "noise.json");
   return report;
+}
+
+void require_noise_samples(const ImuSamples& recording) {
+  if (recording.size() < kMinNoiseSamples)
+    throw InputError("--input", recording.source,  // the file name as given, made one-line
+                     fmt::format("{} samples: a noise analysis needs at least {} per recording", recording.size(),
+                                 kMinNoiseSamples));
+}
+
+Report noise_stage(std::vector<ImuSamples> recordings, const NoiseStageOptions& options) {
+  for (const ImuSamples& r : recordings) require_noise_samples(r);
+  const noise::SensorRecording rec = noise::make_recording(recordings);
+  std::vector<RecordingCalibration> calibrations;
+  for (const ImuSamples& r : recordings)
+    calibrations.push_back(
+        {r.source, calibration::calibrate_multiposition(r, options.calibration), options.calibration.gravity_mps2});
+  recordings.clear();  // the recording holds the samples now
+  const noise::NoiseAnalysis analysis = noise::analyse_noise(rec, options.analysis);
+  return noise_report(rec, analysis, options.analysis.confidence, options.sheet, calibrations);
 }
 
 }  // namespace insmc::mc

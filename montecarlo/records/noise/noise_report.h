@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "lib/calibration/multiposition.h"
+#include "lib/imu/imu_samples.h"
 #include "montecarlo/records/noise/calibration_report.h"
 #include "lib/noise/noise_analysis.h"
 #include "montecarlo/report/report.h"
@@ -34,9 +36,6 @@ struct Datasheet {
 /// InputError naming --datasheet, the text and what is allowed.
 void parse_datasheet_entry(const std::string& text, Datasheet& sheet);
 
-/// The value of a fitted term in the units engineers quote: (value, unit).
-std::pair<double, std::string> spec_value(noise::NoiseTerm term, noise::SensorKind kind, double value_si);
-
 /// noise's set: noise.md, allan.csv, noise_terms.csv, calibration.csv (the
 /// multi-position calibrations, montecarlo/records/noise/calibration_report.h),
 /// noise.json and the figures allan and stationarity
@@ -46,5 +45,28 @@ ReportOutline noise_report_outline();
 
 Report noise_report(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
                     const Datasheet& sheet = {}, const std::vector<RecordingCalibration>& calibrations = {});
+
+/// Fewest samples per recording: the Allan variance needs a few octaves of
+/// cluster times, and the masking a few dozen blocks.
+inline constexpr std::size_t kMinNoiseSamples = 300;
+
+/// An InputError naming --input and the recording's file when it holds
+/// fewer than kMinNoiseSamples (before any other is read).
+void require_noise_samples(const ImuSamples& recording);
+
+/// What `insmc noise` runs on its recordings.
+struct NoiseStageOptions {
+  noise::NoiseOptions analysis;
+  calibration::MultipositionOptions calibration;
+  Datasheet sheet;
+};
+
+/// The noise stage of `recordings` (one per input file), in the order a
+/// refusal costs least: the recordings' lengths (InputError naming --input,
+/// at least kMinNoiseSamples each), their common sample grid, each one's
+/// multi-position calibration where it holds enough still attitudes, then
+/// the noise analysis of every channel (options.analysis.progress told each
+/// stage); its report.
+Report noise_stage(std::vector<ImuSamples> recordings, const NoiseStageOptions& options);
 
 }  // namespace insmc::mc

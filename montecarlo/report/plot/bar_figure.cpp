@@ -9,6 +9,8 @@
 
 namespace insmc::mc {
 
+namespace {
+
 std::string bar_figure_script(const BarFigure& f) {
   const int n = std::max<int>(1, static_cast<int>(f.panels.size()));
   const int columns = std::clamp(f.columns, 1, n), rows = (n + columns - 1) / columns;
@@ -49,6 +51,8 @@ std::string bar_figure_script(const BarFigure& f) {
   body += "unset multiplot\n";
   return figure_script(script);
 }
+
+}  // namespace
 
 RenderedFigure render_bar_figure(const BarFigure& f) { return render_figure(f.stem, bar_figure_script(f)); }
 

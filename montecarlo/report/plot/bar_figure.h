@@ -23,7 +23,6 @@ struct BarFigure {
   std::string empty_note = "nothing to draw";  ///< shown in a panel without categories
 };
 
-std::string bar_figure_script(const BarFigure& figure);
 RenderedFigure render_bar_figure(const BarFigure& figure);
 
 }  // namespace insmc::mc

@@ -18,8 +18,6 @@ std::string tic_labels(const std::vector<std::string>& names) {
   return out + ")";
 }
 
-}  // namespace
-
 std::string matrix_figure_script(const MatrixFigure& f) {
   const int rows = static_cast<int>(f.rows.size()), columns = static_cast<int>(f.columns.size());
   FigureScript script{f.stem, f.title, "", "", std::max(700, 260 + 46 * columns), std::max(400, 230 + 30 * rows)};
@@ -48,6 +46,8 @@ std::string matrix_figure_script(const MatrixFigure& f) {
       gnuplot_quote(f.title));
   return figure_script(script);
 }
+
+}  // namespace
 
 RenderedFigure render_matrix_figure(const MatrixFigure& f) { return render_figure(f.stem, matrix_figure_script(f)); }
 

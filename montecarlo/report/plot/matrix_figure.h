@@ -16,7 +16,6 @@ struct MatrixFigure {
   std::vector<std::vector<int>> counts;  ///< [row][column]
 };
 
-std::string matrix_figure_script(const MatrixFigure& figure);
 RenderedFigure render_matrix_figure(const MatrixFigure& figure);
 
 }  // namespace insmc::mc

@@ -96,8 +96,7 @@ double time_engine(const StudyConfig& c, const StudyMap& map, std::uint64_t firs
   return seconds;
 }
 
-}  // namespace
-
+/// Every scheme, systems 1 and 2, the report times (no grid).
 StudyConfig pipeline_study(Fidelity fidelity, std::uint64_t samples, int threads) {
   StudyConfig c;
   c.fidelity = fidelity;
@@ -106,6 +105,8 @@ StudyConfig pipeline_study(Fidelity fidelity, std::uint64_t samples, int threads
   c.with_grid = false;
   return c;
 }
+
+}  // namespace
 
 PipelineThroughput measure_pipeline_throughput(std::uint64_t samples, int threads) {
   const StudyConfig paper = pipeline_study(Fidelity::kPaper, samples, threads);

@@ -27,9 +27,6 @@ struct PipelineThroughput {
   double linear_samples_per_s;  ///< run_blocks, linear level, every scheme
 };
 
-/// Every scheme, systems 1 and 2, the report times (no grid).
-StudyConfig pipeline_study(Fidelity fidelity, std::uint64_t samples, int threads);
-
 PipelineThroughput measure_pipeline_throughput(std::uint64_t samples, int threads);
 
 }  // namespace insmc::mc

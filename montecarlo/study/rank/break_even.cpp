@@ -55,9 +55,13 @@ int bound_slot(Assumption a) {
   }
 }
 
+namespace {
+
 int bound_slot_count(Assumption a) {
   return a == Assumption::kRealignAzimuthError ? 1 : is_bound(a) ? 3 : 0;
 }
+
+}  // namespace
 
 bool applies_to(Assumption a, System system) {
   if (!is_bound(a)) return true;

@@ -47,7 +47,6 @@ std::string_view si_unit(Assumption a);
 /// or its one slot), or -1 (the random fraction, the test duration); and
 /// how many slots it bounds.
 int bound_slot(Assumption a);
-int bound_slot_count(Assumption a);
 /// False for a bound that acts in the other system only (the theodolite's
 /// realignment_azimuth_error in system 2).
 bool applies_to(Assumption a, System system);

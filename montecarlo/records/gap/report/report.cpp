@@ -98,8 +98,6 @@ std::string params_text(const std::vector<ParameterEstimate>& ps) {
 
 std::string pct(double v) { return fmt::format("{:.1f} %", 100.0 * v); }
 
-}  // namespace
-
 mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_files) {
   mc::Json j = mc::Json::object();
   mc::Json files = mc::Json::array();
@@ -251,6 +249,8 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
   j["statements"] = statements;
   return j;
 }
+
+}  // namespace
 
 mc::Report diagnosis_report(const Diagnosis& d, const std::vector<std::string>& record_files) {
   std::string md = "# Sim-to-real gap diagnosis\n\n**" + leading_finding(d) + "**\n\n";

@@ -11,8 +11,6 @@
 
 namespace insmc::gap {
 
-mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& record_files);
-
 /// The site's values with their sources and reasons, keyed by header key
 /// (gap.json's and compensate.json's "site").
 

@@ -253,6 +253,8 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
   return result;
 }
 
+namespace {
+
 Confusion confusion_of(const ValidationResult& r) {
   Confusion m;
   std::map<std::string, std::map<std::string, int>> counts;
@@ -269,6 +271,8 @@ Confusion confusion_of(const ValidationResult& r) {
   }
   return m;
 }
+
+}  // namespace
 
 mc::Report validation_report(const ValidationResult& r, const ValidationOptions& options) {
   // Confusion: true effect (rows) × reported top (columns).

@@ -102,7 +102,6 @@ struct Confusion {
   std::vector<std::string> rows, columns;
   std::vector<std::vector<int>> counts;  ///< [row][column]
 };
-Confusion confusion_of(const ValidationResult& r);
 
 /// gap-validate's set: validation.md, confusion.md, confusion.csv,
 /// validation.json and the confusion matrix drawn (confusion); stdout

@@ -26,15 +26,6 @@ struct LatticeFit {
   double coarsest_tried = 0.0;
 };
 
-/// The largest step w such that every value lies within `tolerance` × w of a
-/// whole multiple of w, visiting at least three multiples and ten nonzero
-/// ones (a smooth signal can sit near one multiple of some step; a
-/// continuous one falls within ±1 % of a lattice point with probability
-/// 0.02 per value, so 20 values fit by chance with probability 1e-34). The
-/// steps tried are the smallest nonzero spacings of the sorted values
-/// divided by 1–6.
-LatticeFit fit_lattice(std::vector<double> values, double tolerance = 0.01);
-
 /// The pulse weight of the test-run f rows: each run's consecutive f rows
 /// (at most 2τ apart) give u_k − u_{k−1}, u_k = f_k τ + ∫ f̂ over the window
 /// (nominal_velocity_increment, test_run.h); where those fit no lattice, the
