@@ -13,7 +13,7 @@
 
 namespace insmc::app {
 
-int run_bench(const Args& args) {
+int cmd_bench(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("samples", po::value<std::string>()->default_value("2000000"),
                      "samples per measurement of the uncompensated paper path, in [1024, 2^40] (whole blocks of 1024)")(

@@ -13,7 +13,7 @@
 
 namespace insmc::app {
 
-int run_check(const Args& args) {
+int cmd_check(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("bounds", po::value<std::string>(),
                      "file of bounds, one a line: scheme=none system=2 axis=horizontal t_min=84 "

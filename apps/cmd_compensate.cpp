@@ -62,7 +62,7 @@ std::vector<Scheme> parse_schemes(const std::string& text) {
 
 }  // namespace
 
-int run_compensate(const Args& args) {
+int cmd_compensate(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("records", po::value<std::string>(), "record file (format v1) holding the unit's test run")(
       "run", po::value<long long>(), "the run (its id) to take; default every run, each a unit")(

@@ -6,7 +6,7 @@
 
 namespace insmc::app {
 
-int run_effects(const Args& args) {
+int cmd_effects(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("format", po::value<std::string>()->default_value("markdown"), "markdown or csv");
   const auto vm = parse_args(args, "effects", "[--format markdown|csv]", opts);

@@ -16,7 +16,7 @@
 
 namespace insmc::app {
 
-int run_gap(const Args& args) {
+int cmd_gap(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("records", po::value<std::vector<std::string>>()->composing(),
                      "record file (format v1), repeatable; all of one site")(

@@ -14,7 +14,7 @@
 
 namespace insmc::app {
 
-int run_gap_validate(const Args& args) {
+int cmd_gap_validate(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("quick", "the CI subset (10-run files, magnitude 30x the defaults, 4 null files)")(
       "out", po::value<std::string>(), out_folder_help(gap::validation_report_outline()).c_str())(

@@ -34,7 +34,7 @@ RunsFrom parse_runs_from(const std::string& text) {
 
 }  // namespace
 
-int run_import_imu(const Args& args) {
+int cmd_import_imu(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("input", po::value<std::vector<std::string>>()->composing(),
                      "IMU CSV file (plain text; gunzip first), repeatable: runs in the given order")(

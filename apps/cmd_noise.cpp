@@ -19,7 +19,7 @@ namespace insmc::app {
 
 using mc::parse_datasheet_entry;
 
-int run_noise(const Args& args) {
+int cmd_noise(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("input", po::value<std::vector<std::string>>()->composing(),
                      "IMU CSV file of a static recording (plain text), repeatable: one recording each")(

@@ -7,7 +7,7 @@
 
 namespace insmc::app {
 
-int run_params(const Args& args) {
+int cmd_params(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("format", po::value<std::string>()->default_value("markdown"), "markdown, csv or json");
   opts.add(uncertainty_options_description());

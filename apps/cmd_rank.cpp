@@ -29,7 +29,7 @@ void refuse_unused_options(const po::variables_map& vm) {
 
 }  // namespace
 
-int run_rank(const Args& args) {
+int cmd_rank(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("out", po::value<std::string>(), out_folder_help(mc::rank_report_outline()).c_str())(
       "format", po::value<std::string>()->default_value("markdown"),

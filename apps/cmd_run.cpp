@@ -253,7 +253,7 @@ int run_command(const Args& args, mc::Processes& processes) {
 
 }  // namespace
 
-int run_run(const Args& args) {
+int cmd_run(const Args& args) {
   const std::unique_ptr<mc::Processes> processes = mc::join_processes();
   if (!processes->distributed()) return run_command(args, *processes);
   // Under MPI every rank parses the same arguments, so bad input fails on

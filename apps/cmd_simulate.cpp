@@ -64,7 +64,7 @@ void check_simulated_rows(const po::variables_map& vm, int runs, const TestRunOp
 
 }  // namespace
 
-int run_simulate(const Args& args) {
+int cmd_simulate(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("out", po::value<std::string>(), "record file to write (required)")(
       "runs", po::value<int>()->default_value(20), "number of runs (alignment, test run, navigation), 1 to 200 (the runs one gap diagnosis takes)")(

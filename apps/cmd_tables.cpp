@@ -6,7 +6,7 @@
 
 namespace insmc::app {
 
-int run_tables(const Args& args) {
+int cmd_tables(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("format", po::value<std::string>()->default_value("markdown"),
                      "stdout: markdown (one table per printed table) or csv (one long table)")(

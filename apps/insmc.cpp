@@ -8,20 +8,20 @@
 namespace {
 
 constexpr insmc::app::Subcommand kSubcommands[] = {
-    {"run", insmc::app::run_run, "Monte Carlo study: RMS position-error envelopes with confidence intervals"},
-    {"covariance", insmc::app::run_covariance, "exact linear-covariance envelopes and the error budget"},
-    {"rank", insmc::app::run_rank, "the schemes in order with its significance, and the break-even assumptions"},
-    {"check", insmc::app::run_check, "statistical bounds for CI: exit 1 when a bound is violated"},
-    {"tables", insmc::app::run_tables, "the report's tables beside the values insmc computes"},
-    {"simulate", insmc::app::run_simulate, "truth-level records (format v1) with chosen named effects"},
-    {"import-imu", insmc::app::run_import_imu, "records (format v1) from raw IMU samples: strapdown, stationary base"},
-    {"noise", insmc::app::run_noise, "raw-sensor noise: Allan deviation, fitted noise terms, warm-up, disturbances"},
-    {"gap", insmc::app::run_gap, "sim-to-real gap diagnosis of record files: where, which effect, how far it shrinks"},
-    {"gap-validate", insmc::app::run_gap_validate, "the gap diagnosis scored blind on records with withheld effects"},
-    {"compensate", insmc::app::run_compensate, "one unit from its test run: estimates, each scheme's envelope, go / no-go"},
-    {"effects", insmc::app::run_effects, "the truth simulator's named effects, parameters and defaults"},
-    {"params", insmc::app::run_params, "the uncertainty catalogue: names, symbols, units, bounds"},
-    {"bench", insmc::app::run_bench, "throughput of the Monte Carlo paths against the machine's floor"},
+    {"run", insmc::app::cmd_run, "Monte Carlo study: RMS position-error envelopes with confidence intervals"},
+    {"covariance", insmc::app::cmd_covariance, "exact linear-covariance envelopes and the error budget"},
+    {"rank", insmc::app::cmd_rank, "the schemes in order with its significance, and the break-even assumptions"},
+    {"check", insmc::app::cmd_check, "statistical bounds for CI: exit 1 when a bound is violated"},
+    {"tables", insmc::app::cmd_tables, "the report's tables beside the values insmc computes"},
+    {"simulate", insmc::app::cmd_simulate, "truth-level records (format v1) with chosen named effects"},
+    {"import-imu", insmc::app::cmd_import_imu, "records (format v1) from raw IMU samples: strapdown, stationary base"},
+    {"noise", insmc::app::cmd_noise, "raw-sensor noise: Allan deviation, fitted noise terms, warm-up, disturbances"},
+    {"gap", insmc::app::cmd_gap, "sim-to-real gap diagnosis of record files: where, which effect, how far it shrinks"},
+    {"gap-validate", insmc::app::cmd_gap_validate, "the gap diagnosis scored blind on records with withheld effects"},
+    {"compensate", insmc::app::cmd_compensate, "one unit from its test run: estimates, each scheme's envelope, go / no-go"},
+    {"effects", insmc::app::cmd_effects, "the truth simulator's named effects, parameters and defaults"},
+    {"params", insmc::app::cmd_params, "the uncertainty catalogue: names, symbols, units, bounds"},
+    {"bench", insmc::app::cmd_bench, "throughput of the Monte Carlo paths against the machine's floor"},
 };
 
 }  // namespace

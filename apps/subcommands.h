@@ -9,19 +9,19 @@ namespace insmc::app {
 
 using Args = std::vector<std::string>;
 
-int run_params(const Args& args);
-int run_tables(const Args& args);
-int run_run(const Args& args);
-int run_covariance(const Args& args);
-int run_rank(const Args& args);
-int run_check(const Args& args);
-int run_bench(const Args& args);
-int run_effects(const Args& args);
-int run_simulate(const Args& args);
-int run_gap(const Args& args);
-int run_gap_validate(const Args& args);
-int run_import_imu(const Args& args);
-int run_noise(const Args& args);
-int run_compensate(const Args& args);
+int cmd_params(const Args& args);
+int cmd_tables(const Args& args);
+int cmd_run(const Args& args);
+int cmd_covariance(const Args& args);
+int cmd_rank(const Args& args);
+int cmd_check(const Args& args);
+int cmd_bench(const Args& args);
+int cmd_effects(const Args& args);
+int cmd_simulate(const Args& args);
+int cmd_gap(const Args& args);
+int cmd_gap_validate(const Args& args);
+int cmd_import_imu(const Args& args);
+int cmd_noise(const Args& args);
+int cmd_compensate(const Args& args);
 
 }  // namespace insmc::app

@@ -52,15 +52,14 @@ std::string ReportOutline::set_text() const {
 
 std::string full_tables_line(const std::string& command, const std::vector<std::string>& files,
                              const std::optional<std::string>& out_folder) {
-  std::string names;
   if (out_folder) {
     const std::filesystem::path out(*out_folder);
+    std::string names;
     for (const std::string& f : files) names += fmt::format("{}{}", names.empty() ? "" : ", ", (out / f).string());
     return fmt::format("Full tables (every axis and time): {}\n", names);
   }
-  for (const std::string& f : files) names += fmt::format("{}{}", names.empty() ? "" : " and ", f);
   return fmt::format("Full tables (every axis and time): insmc {} --full, or --out DIR for {}, or --format csv\n",
-                     command, names);
+                     command, listed(files));
 }
 
 Report::Report(ReportOutline outline) : outline_(std::move(outline)) {}

@@ -325,7 +325,7 @@ Outcome import_imu(std::string_view data) {
   } else {
     args.insert(args.end(), {"--rate", fmt::format("{}Hz", rate_hz)});
   }
-  return run_writing_records(app::run_import_imu, args, out);
+  return run_writing_records(app::cmd_import_imu, args, out);
 }
 
 Outcome simulate(std::string_view data) {
@@ -376,7 +376,7 @@ Outcome simulate(std::string_view data) {
     }
     args.insert(args.end(), {"--effect", text});
   }
-  return run_writing_records(app::run_simulate, args, out);
+  return run_writing_records(app::cmd_simulate, args, out);
 }
 
 }  // namespace insmc::fuzz

@@ -25,7 +25,7 @@ namespace insmc::app {
 namespace {
 
 /// echo: prints its --text as markdown or csv; --fail makes it a defect.
-int run_echo(const Args& args) {
+int cmd_echo(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("text", po::value<std::string>()->default_value("hello"), "what to print")(
       "format", po::value<std::string>()->default_value("markdown"), "markdown or csv")(
@@ -52,7 +52,7 @@ int run_echo(const Args& args) {
   return 0;
 }
 
-constexpr Subcommand kWithEcho[] = {{"echo", run_echo, "prints its text (a test-only subcommand)"}};
+constexpr Subcommand kWithEcho[] = {{"echo", cmd_echo, "prints its text (a test-only subcommand)"}};
 
 struct Outcome {
   int code;

@@ -68,6 +68,9 @@ TEST(FullTablesLine, NamesThePathsInTheFolderOrHowToGetThem) {
   EXPECT_EQ(full_tables_line("run", {"envelope.md", "envelope.csv"}, std::nullopt),
             "Full tables (every axis and time): insmc run --full, or --out DIR for envelope.md and envelope.csv, or "
             "--format csv\n");
+  EXPECT_EQ(full_tables_line("rank", {"rank.md", "ranking.csv", "breakeven.csv"}, std::nullopt),
+            "Full tables (every axis and time): insmc rank --full, or --out DIR for rank.md, ranking.csv and "
+            "breakeven.csv, or --format csv\n");
 }
 
 }  // namespace
