@@ -119,11 +119,11 @@ std::uint64_t read_count(const po::variables_map& vm, const std::string& name) {
   return parse_count(vm[name].as<std::string>(), "--" + name);
 }
 
-gap::RecordLayout read_record_layout(const po::variables_map& vm) {
+gap::RecordWriter read_record_writer(const po::variables_map& vm) {
   const std::string& text = vm["layout"].as<std::string>();
-  if (text == "own") return gap::RecordLayout::kOwn;
-  if (text == "foreign") return gap::RecordLayout::kForeign;
-  if (text == "fuzzed") return gap::RecordLayout::kFuzzed;
+  if (text == "own") return gap::RecordWriter::kOwn;
+  if (text == "foreign") return gap::RecordWriter::kForeign;
+  if (text == "fuzzed") return gap::RecordWriter::kFuzzed;
   throw InputError("--layout", text, "must be own, foreign or fuzzed");
 }
 

@@ -14,7 +14,7 @@
 #include "apps/subcommands.h"
 #include "lib/common/input_text.h"
 #include "lib/common/model_options.h"
-#include "montecarlo/records/gap/validation/foreign_layout.h"
+#include "montecarlo/records/gap/validation/writer_conventions.h"
 #include "montecarlo/report/report.h"
 
 namespace insmc::app {
@@ -50,8 +50,8 @@ std::uint64_t parse_count(const std::string& text, const std::string& field);
 std::uint64_t read_count(const po::variables_map& vm, const std::string& name);
 
 /// The value of option "layout": own, foreign or fuzzed (else an InputError;
-/// montecarlo/records/gap/validation/foreign_layout.h).
-gap::RecordLayout read_record_layout(const po::variables_map& vm);
+/// montecarlo/records/gap/validation/writer_conventions.h).
+gap::RecordWriter read_record_writer(const po::variables_map& vm);
 
 /// --latitude and the loop gains: the ModelOptions every model command takes.
 po::options_description model_options_description();

@@ -35,7 +35,7 @@ int cmd_gap_validate(const Args& args) {
   if (vm->count("null-files")) options.null_files = (*vm)["null-files"].as<int>();
   if (vm->count("seeds")) options.seeds = (*vm)["seeds"].as<int>();
   if (vm->count("effect")) options.effects = (*vm)["effect"].as<std::vector<std::string>>();
-  options.layout = read_record_layout(*vm);
+  options.writer = read_record_writer(*vm);
   if (vm->count("magnitudes")) {
     const std::string text = (*vm)["magnitudes"].as<std::string>();
     options.magnitudes.clear();

@@ -20,7 +20,7 @@
 #include "lib/units/units.h"
 #include "montecarlo/records/runs/simulation/record_simulation.h"
 #include "montecarlo/records/gap/diagnosis_options.h"
-#include "montecarlo/records/gap/validation/foreign_layout.h"
+#include "montecarlo/records/gap/validation/writer_conventions.h"
 #include "montecarlo/study/sampler/sampler.h"
 
 namespace insmc::app {
@@ -36,7 +36,7 @@ bool needs_pulses(const TruthOptions& truth) {
 /// Own layout: a row every filter interval through the test run and the
 /// navigation; foreign: the union of its f and r lattices, at most.
 void check_simulated_rows(const po::variables_map& vm, int runs, const TestRunOptions& test, double nav_s,
-                          const std::optional<gap::ForeignLayout>& foreign) {
+                          const std::optional<gap::WriterConventions>& foreign) {
   const double T = test.duration_s, tau = test.filter_interval_s;
   const std::size_t per_run =
       foreign ? static_cast<std::size_t>(std::floor((T + nav_s) / foreign->f_every_s) +
@@ -116,13 +116,13 @@ int cmd_simulate(const Args& args) {
     for (const auto& e : (*vm)["effect"].as<std::vector<std::string>>()) truth.effects.push_back(parse_effect(e, "--effect"));
   if (const auto err = truth_latitude_error(model.latitude_rad, "--latitude")) throw *err;
   validate(truth);
-  const gap::RecordLayout layout = read_record_layout(*vm);
-  const bool foreign = layout != gap::RecordLayout::kOwn;
+  const gap::RecordWriter writer = read_record_writer(*vm);
+  const bool foreign = writer != gap::RecordWriter::kOwn;
   if (foreign && scheme != Scheme::kNone)
     throw InputError("--layout", (*vm)["layout"].as<std::string>(), "writes the runs without a scheme; give --scheme none");
-  const std::optional<gap::ForeignLayout> conventions =
-      layout == gap::RecordLayout::kFuzzed  ? std::optional(gap::fuzzed_layout_of(seed, needs_pulses(truth), test.duration_s))
-      : layout == gap::RecordLayout::kForeign ? std::optional(gap::foreign_layout_of(seed, needs_pulses(truth)))
+  const std::optional<gap::WriterConventions> conventions =
+      writer == gap::RecordWriter::kFuzzed  ? std::optional(gap::fuzzed_conventions_of(seed, needs_pulses(truth), test.duration_s))
+      : writer == gap::RecordWriter::kForeign ? std::optional(gap::foreign_conventions_of(seed, needs_pulses(truth)))
                                               : std::nullopt;
   check_simulated_rows(*vm, runs, test, nav_s, conventions);
   const OutputFileOption out("--out", (*vm)["out"].as<std::string>(), input_files(*vm));  // checked and locked before the work

@@ -10,7 +10,7 @@
 // at switch-on and its gyro drift at switch-on (the other two at their
 // defaults: the drift 2 meru or the bias 0.1 mg, τ 1200 s); its own
 // diagnosis seed. Every other file is written in conventions drawn by the
-// layout fuzzer (gap/validation/foreign_layout.h: spacing, each run's own
+// layout fuzzer (gap/validation/writer_conventions.h: spacing, each run's own
 // dropouts, resolution, pulses or not, short runs), the rest in insmc's own
 // layout. Only the effect's own candidate is ranked: what is tested is the
 // interval, not the identification (gap-validate's targets). The files are
@@ -35,7 +35,7 @@
 
 #include "lib/truth/effect.h"
 #include "montecarlo/records/gap/diagnosis.h"
-#include "montecarlo/records/gap/validation/foreign_layout.h"
+#include "montecarlo/records/gap/validation/writer_conventions.h"
 #include "montecarlo/records/gap/validation/validation.h"
 
 namespace insmc::mc {
@@ -112,8 +112,8 @@ TEST(FindingIntervalCoverage, TheFirstRankedRangeCoversTheSimulatedValueAtItsNom
     options.candidates = std::make_shared<const std::vector<gap::Candidate>>(only(file.drawn->effect));
     const std::uint64_t seed = kSeed + static_cast<std::uint64_t>(f);
     const RecordFile records =
-        file.fuzzed ? gap::foreign_layout_file({file.spec}, seed, 20,
-                                               gap::fuzzed_layout_of(seed, file.spec.kind.info().needs_pulses, 900.0))
+        file.fuzzed ? gap::file_in_conventions({file.spec}, seed, 20,
+                                               gap::fuzzed_conventions_of(seed, file.spec.kind.info().needs_pulses, 900.0))
                     : gap::own_layout_file({file.spec}, seed, 20);
     const gap::Diagnosis g = gap::diagnose(records, options);
     if (!g.significant || g.first.ranking.empty()) return;

@@ -13,7 +13,7 @@
 #include "lib/truth/effect.h"
 #include "lib/units/units.h"
 #include "montecarlo/records/runs/simulation/record_simulation.h"
-#include "montecarlo/records/gap/validation/foreign_layout.h"
+#include "montecarlo/records/gap/validation/writer_conventions.h"
 #include "montecarlo/report/csv.h"
 #include "montecarlo/report/json.h"
 #include "montecarlo/report/markdown.h"
@@ -82,7 +82,7 @@ RecordFile own_layout_file(const std::vector<EffectSpec>& effects, std::uint64_t
   return without_truth(runs::simulate_own_file(truth, mc::Sampler(UncertaintyModel{}), seed, spec));
 }
 
-RecordFile foreign_layout_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs, const ForeignLayout& layout) {
+RecordFile file_in_conventions(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs, const WriterConventions& layout) {
   TruthOptions truth;
   truth.effects = effects;
   ForeignRuns spec;
@@ -148,17 +148,17 @@ ValidationResult validate_diagnosis(const ValidationOptions& options) {
     const Job& job = jobs[j];
     std::vector<EffectSpec> effects;
     if (job.spec) effects.push_back(*job.spec);
-    std::optional<ForeignLayout> layout;
+    std::optional<WriterConventions> conventions;
     const bool needs_pulses = job.spec && job.spec->kind.info().needs_pulses;
-    if (options.layout == RecordLayout::kForeign) layout = foreign_layout_of(job.file_seed, needs_pulses);
-    if (options.layout == RecordLayout::kFuzzed) layout = fuzzed_layout_of(job.file_seed, needs_pulses, ForeignRuns{}.test_duration_s);
-    const RecordFile records = layout ? foreign_layout_file(effects, job.file_seed, options.runs_per_file, *layout)
+    if (options.writer == RecordWriter::kForeign) conventions = foreign_conventions_of(job.file_seed, needs_pulses);
+    if (options.writer == RecordWriter::kFuzzed) conventions = fuzzed_conventions_of(job.file_seed, needs_pulses, ForeignRuns{}.test_duration_s);
+    const RecordFile records = conventions ? file_in_conventions(effects, job.file_seed, options.runs_per_file, *conventions)
                                       : own_layout_file(effects, job.file_seed, options.runs_per_file);
     const auto start = std::chrono::steady_clock::now();
     const Diagnosis g = diagnose(records, d);
     ValidationCase c{job.effect, job.magnitude, job.seed, g.significant, g.first.top, false, 0.0, 0.0, g.gap, g.p_value, 0.0, ""};
     c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (layout) c.layout = layout->describe();
+    if (conventions) c.conventions = conventions->describe();
     if (!job.spec) {
       c.top = g.significant ? g.first.top : "";
       c.identified = !g.significant;
@@ -297,13 +297,13 @@ mc::Report validation_report(const ValidationResult& r, const ValidationOptions&
   // No time per file here: a file's row is the same in any subset of the
   // study (tests/cli/gap_validate_test.cpp), its time is not.
   std::vector<std::string> case_columns = {"effect", "magnitude", "seed", "G", "p", "top", "identified", "shrink"};
-  if (options.foreign_layouts()) case_columns.push_back("layout");
+  if (options.other_writer()) case_columns.push_back("layout");
   mc::Table cases(case_columns);
   for (const ValidationCase& c : r.cases) {
     std::vector<std::string> row = {c.effect, fmt::format("{}", c.magnitude), std::to_string(c.seed),
                                     fmt::format("{:.3g}", c.gap), fmt::format("{:.3g}", c.p_value), c.top,
                                     c.identified ? "yes" : "no", fmt::format("{:.2f}", c.shrink)};
-    if (options.foreign_layouts()) row.push_back(c.layout);
+    if (options.other_writer()) row.push_back(c.conventions);
     cases.add_row(row);
   }
   std::string md = fmt::format(
@@ -318,16 +318,16 @@ mc::Report validation_report(const ValidationResult& r, const ValidationOptions&
       "included; the study diagnoses files side by side on every core): median {:.1f} s, max {:.1f} s.\n\n## Per effect\n\n{}\n## Confusion "
       "(rows: true effect; columns: the diagnosis' top effect or class)\n\n{}\n## Every file\n\n{}\n## Targets\n\n",
       options.quick ? " (quick subset)" : "", options.runs_per_file, fmt::join(options.magnitudes, ", "), options.seeds,
-      options.layout == RecordLayout::kForeign
+      options.writer == RecordWriter::kForeign
           ? " Each file is written in another recorder's conventions (`--layout foreign`, docs/gap-method.md §5): f and r "
             "on grids of their own (column `layout`), a third of the runs stopping 60-80 min into the navigation, "
             "run numbers not consecutive, unknown header keys, no pulse-weight or filter-interval key."
-          : options.layout == RecordLayout::kFuzzed
+          : options.writer == RecordWriter::kFuzzed
           ? " Each file is written in conventions drawn at random (`--layout fuzzed`, docs/gap-method.md §5): f and r "
             "every 1-60 s, each run's own dropouts up to 10 %, f after the test or not, r resolution 0.1 mm to 3 ft, "
             "short runs, optional header keys given or not (column `layout`)."
           : "",
-      options.foreign_layouts() ? ", its f continuous or in 0.1 ft/s pulses as the layout says" : ", with its 0.1 ft/s pulses",
+      options.other_writer() ? ", its f continuous or in 0.1 ft/s pulses as the layout says" : ", with its 0.1 ft/s pulses",
       r.false_alarms, r.null_files, options.alpha, r.false_alarm_low, r.false_alarm_high, r.false_alarm_p, r.median_shrink, r.median_seconds, r.max_seconds, mc::render_markdown(scores), mc::render_markdown(confusion),
       mc::render_markdown(cases));
   for (const std::string& e : r.undetectable)
@@ -337,7 +337,7 @@ mc::Report validation_report(const ValidationResult& r, const ValidationOptions&
   for (const std::string& f : r.failures) md += "- not met: " + f + "\n";
   mc::Json j = mc::Json::object();
   j["quick"] = options.quick;
-  j["layout"] = options.layout == RecordLayout::kFuzzed ? "fuzzed" : options.foreign_layouts() ? "foreign" : "own";
+  j["layout"] = options.writer == RecordWriter::kFuzzed ? "fuzzed" : options.other_writer() ? "foreign" : "own";
   j["null_files"] = r.null_files;
   j["false_alarms"] = r.false_alarms;
   mc::Json ci = mc::Json::array();

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "montecarlo/records/gap/diagnosis.h"
-#include "montecarlo/records/gap/validation/foreign_layout.h"
+#include "montecarlo/records/gap/validation/writer_conventions.h"
 #include "montecarlo/report/report.h"
 #include "lib/records/record.h"
 #include "lib/truth/effect.h"
@@ -29,10 +29,10 @@ struct ValidationOptions {
   /// subset reproduces the full study's files.
   std::vector<std::string> effects;
   /// The files as gap-validate's own simulator writes them, or rewritten in
-  /// another recorder's conventions (foreign_layout.h: the foreign
+  /// another recorder's conventions (writer_conventions.h: the foreign
   /// writer's, or the layout fuzzer's), each file its own.
-  RecordLayout layout = RecordLayout::kOwn;
-  bool foreign_layouts() const { return layout != RecordLayout::kOwn; }
+  RecordWriter writer = RecordWriter::kOwn;
+  bool other_writer() const { return writer != RecordWriter::kOwn; }
   DiagnosisProgress progress;  ///< files diagnosed; may be empty
   /// The quick CI subset: 10-run files, one dominant magnitude (30x), one seed, 4 null files.
   static ValidationOptions quick_subset();
@@ -55,7 +55,7 @@ struct ValidationCase {
   double recovered_ratio = 0;  ///< fitted / true of the magnitude parameter (0: not comparable)
   double gap = 0, p_value = 1;
   double seconds = 0;      ///< wall time of the diagnosis (null calibration included)
-  std::string layout;      ///< the file's layout (foreign_layout.h), or "" for the own
+  std::string conventions; ///< the file's writer conventions (writer_conventions.h), or "" for the own
 };
 
 /// The targets are judged at the magnitudes where the effect is detectable:
@@ -92,8 +92,8 @@ ValidationResult validate_diagnosis(const ValidationOptions& options);
 /// `runs` runs of `seed` with `effects`, system 1 at 45°, T = 15 min and
 /// 90 min of navigation, in insmc's own layout or in `layout`.
 RecordFile own_layout_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs);
-RecordFile foreign_layout_file(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs,
-                               const ForeignLayout& layout);
+RecordFile file_in_conventions(const std::vector<EffectSpec>& effects, std::uint64_t seed, int runs,
+                               const WriterConventions& layout);
 
 /// The confusion matrix: files per true effect (rows: "none", then the
 /// registry's effects) and reported top (columns, first seen first: an

@@ -1,8 +1,8 @@
-// Tests for montecarlo/records/gap/validation/foreign_layout.h: files in another
+// Tests for montecarlo/records/gap/validation/writer_conventions.h: files in another
 // recorder's conventions hold the same physics as insmc's own (f over a
 // longer window is the mean of the shorter windows it spans; r does not
 // depend on the sampling), and the record reader takes them as written.
-#include "montecarlo/records/gap/validation/foreign_layout.h"
+#include "montecarlo/records/gap/validation/writer_conventions.h"
 
 #include <gtest/gtest.h>
 
@@ -29,23 +29,23 @@ ForeignRuns short_runs() {
   return spec;
 }
 
-TEST(ForeignLayout, EveryCombinationComesRound) {
+TEST(WriterConventions, EveryCombinationComesRound) {
   std::set<std::tuple<double, double, bool, bool>> seen;
   for (std::uint64_t seed = 0; seed < 36; ++seed) {
-    const ForeignLayout l = foreign_layout_of(seed, false);
+    const WriterConventions l = foreign_conventions_of(seed, false);
     seen.insert({l.f_every_s, l.r_every_s, l.pulses, l.zero_row});
   }
   EXPECT_EQ(seen.size(), 3U * 3U * 2U * 2U);
-  EXPECT_TRUE(foreign_layout_of(9, true).pulses) << "a quantization file keeps its pulses";
+  EXPECT_TRUE(foreign_conventions_of(9, true).pulses) << "a quantization file keeps its pulses";
 }
 
-TEST(ForeignLayout, RowsFollowTheRecordersOwnGrids) {
-  ForeignLayout layout;
-  layout.f_every_s = 20.0;
-  layout.r_every_s = 30.0;
-  layout.pulses = false;
-  layout.zero_row = true;
-  const RecordFile file = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 3, short_runs(), layout);
+TEST(WriterConventions, RowsFollowTheRecordersOwnGrids) {
+  WriterConventions conventions;
+  conventions.f_every_s = 20.0;
+  conventions.r_every_s = 30.0;
+  conventions.pulses = false;
+  conventions.zero_row = true;
+  const RecordFile file = simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), 3, short_runs(), conventions);
   EXPECT_EQ(file.header.find("dv_pulse_mps"), nullptr);
   EXPECT_EQ(file.header.find("filter_interval_s"), nullptr);
   EXPECT_TRUE(file.header.truth_entries.empty());
@@ -70,11 +70,11 @@ TEST(ForeignLayout, RowsFollowTheRecordersOwnGrids) {
   EXPECT_EQ(parse_record_text(write_record_file(file), "foreign.csv"), file);
 }
 
-TEST(ForeignLayout, ALongerWindowIsTheMeanOfTheWindowsItSpansAndRIsTheSame) {
+TEST(WriterConventions, ALongerWindowIsTheMeanOfTheWindowsItSpansAndRIsTheSame) {
   // Continuous f: the filter box's output over 20 s is the mean of its four
   // 5 s outputs (Δv adds up, fig. 5.2), and r(t) does not depend on how f is
   // sampled: two independent samplings of one run agree.
-  ForeignLayout fine, coarse;
+  WriterConventions fine, coarse;
   fine.f_every_s = 5.0;
   coarse.f_every_s = 20.0;
   fine.r_every_s = coarse.r_every_s = 60.0;
@@ -108,7 +108,7 @@ TEST(FuzzedLayout, DrawsEveryConventionOverItsRange) {
   std::set<double> short_shares;
   constexpr int kFiles = 400;
   for (std::uint64_t seed = 0; seed < kFiles; ++seed) {
-    const ForeignLayout l = fuzzed_layout_of(seed, false, 900.0);
+    const WriterConventions l = fuzzed_conventions_of(seed, false, 900.0);
     ASSERT_GE(l.f_every_s, 1.0);
     ASSERT_LE(l.f_every_s, 60.0);
     ASSERT_GE(l.r_every_s, 1.0);
@@ -141,22 +141,22 @@ TEST(FuzzedLayout, DrawsEveryConventionOverItsRange) {
   EXPECT_GT(largest_resolution, 0.6);
   EXPECT_GT(largest_dropout, 0.095);
   EXPECT_EQ(short_shares.size(), 4U);
-  EXPECT_TRUE(fuzzed_layout_of(7, true, 900.0).pulses) << "a quantization file keeps its pulses";
+  EXPECT_TRUE(fuzzed_conventions_of(7, true, 900.0).pulses) << "a quantization file keeps its pulses";
 }
 
 /// `runs` runs of f and r every 10 s (continuous f), each dropping up to
 /// 10 % of its records its own way, none short.
 RecordFile own_dropouts_file(int runs, std::uint64_t seed) {
-  ForeignLayout layout;
-  layout.f_every_s = 10.0;
-  layout.r_every_s = 10.0;
-  layout.pulses = false;
-  layout.dropout_max = 0.1;
-  layout.short_share = 0.0;
-  layout.short_from_s = 450.0;
+  WriterConventions conventions;
+  conventions.f_every_s = 10.0;
+  conventions.r_every_s = 10.0;
+  conventions.pulses = false;
+  conventions.dropout_max = 0.1;
+  conventions.short_share = 0.0;
+  conventions.short_from_s = 450.0;
   ForeignRuns spec = short_runs();
   spec.runs = runs;
-  return simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), seed, spec, layout);
+  return simulate_foreign_file(TruthOptions{}, mc::Sampler(UncertaintyModel{}), seed, spec, conventions);
 }
 
 /// The diagnosis' runs of `file` (runs/prepared_runs.h).

@@ -1,4 +1,4 @@
-#include "montecarlo/records/gap/validation/foreign_layout.h"
+#include "montecarlo/records/gap/validation/writer_conventions.h"
 
 #include <algorithm>
 #include <array>
@@ -19,7 +19,7 @@ bool on_grid(double t_s, double every_s) { return std::abs(t_s / every_s - std::
 
 }  // namespace
 
-std::string ForeignLayout::describe() const {
+std::string WriterConventions::describe() const {
   std::string d = fmt::format("f every {:g} s, r every {:g} s, {}{}", f_every_s, r_every_s,
                               pulses ? "0.1 ft/s pulses" : "continuous f", zero_row ? ", a row at t = 0" : "");
   if (dropout_max > 0) d += fmt::format(", dropouts up to {:.1f} % per run", 100.0 * dropout_max);
@@ -30,8 +30,8 @@ std::string ForeignLayout::describe() const {
   return d;
 }
 
-ForeignLayout foreign_layout_of(std::uint64_t file_seed, bool needs_pulses) {
-  ForeignLayout l;
+WriterConventions foreign_conventions_of(std::uint64_t file_seed, bool needs_pulses) {
+  WriterConventions l;
   l.f_every_s = std::array{5.0, 10.0, 20.0}[file_seed % 3];
   l.r_every_s = std::array{10.0, 30.0, 60.0}[(file_seed / 3) % 3];
   l.pulses = needs_pulses || (file_seed / 9) % 2 == 0;
@@ -39,10 +39,10 @@ ForeignLayout foreign_layout_of(std::uint64_t file_seed, bool needs_pulses) {
   return l;
 }
 
-ForeignLayout fuzzed_layout_of(std::uint64_t file_seed, bool needs_pulses, double test_duration_s) {
+WriterConventions fuzzed_conventions_of(std::uint64_t file_seed, bool needs_pulses, double test_duration_s) {
   // The file's own stream, apart from every run's (their index is below 2^40).
   mc::CounterStream u(file_seed, mc::Stream::Measurement, std::uint64_t{3} << 40);
-  ForeignLayout l;
+  WriterConventions l;
   l.f_every_s = 1.0 + std::floor(60.0 * u.uniform01());
   l.r_every_s = 1.0 + std::floor(60.0 * u.uniform01());
   l.pulses = needs_pulses || u.uniform01() < 0.5;
@@ -59,9 +59,9 @@ ForeignLayout fuzzed_layout_of(std::uint64_t file_seed, bool needs_pulses, doubl
 }
 
 RecordFile simulate_foreign_file(TruthOptions truth, const mc::Sampler& sampler, std::uint64_t seed, const ForeignRuns& spec,
-                                 const ForeignLayout& layout) {
-  truth.filter_interval_s = layout.f_every_s;
-  truth.dv_pulse_mps = layout.pulses ? TruthOptions{}.dv_pulse_mps : 0.0;
+                                 const WriterConventions& conventions) {
+  truth.filter_interval_s = conventions.f_every_s;
+  truth.dv_pulse_mps = conventions.pulses ? TruthOptions{}.dv_pulse_mps : 0.0;
   const double T = spec.test_duration_s, nav = spec.nav_duration_s;
   RecordFile file;
   file.header.entries = {{"recorder", "acme-logger 2.3"}, {"scheme", "none"}, {"site.name", "hangar 4"}};
@@ -69,15 +69,15 @@ RecordFile simulate_foreign_file(TruthOptions truth, const mc::Sampler& sampler,
   file.header.set("test_duration_s", T);
   file.header.set("system", truth.system == System::kTheodolite ? "1" : "2");
   file.header.set("operator", "night shift");
-  const double resolution_m = layout.resolution_m >= 0 ? layout.resolution_m : spec.position_resolution_m;
-  if (layout.header_keys) {
+  const double resolution_m = conventions.resolution_m >= 0 ? conventions.resolution_m : spec.position_resolution_m;
+  if (conventions.header_keys) {
     file.header.set("dv_pulse_mps", truth.dv_pulse_mps);
     file.header.set("filter_interval_s", truth.filter_interval_s);
     file.header.set("position_resolution_m", resolution_m);
   }
   // The union of the two grids; f only on its own.
   std::vector<double> grid;
-  for (const double every : {layout.f_every_s, layout.r_every_s})
+  for (const double every : {conventions.f_every_s, conventions.r_every_s})
     for (int k = 1; k * every <= T + nav + 1e-9; ++k) grid.push_back(k * every);
   std::sort(grid.begin(), grid.end());
   grid.erase(std::unique(grid.begin(), grid.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }), grid.end());
@@ -86,23 +86,23 @@ RecordFile simulate_foreign_file(TruthOptions truth, const mc::Sampler& sampler,
     // the run's own stream (not the simulator's).
     double end = T + nav;
     mc::CounterStream stream(seed, mc::Stream::Measurement, (std::uint64_t{1} << 40) + static_cast<std::uint64_t>(r));
-    if (layout.short_from_s < 0) {
+    if (conventions.short_from_s < 0) {
       if (r % 3 == 2 && nav > 4800.0) end = T + 3600.0 + 1200.0 * stream.uniform01();
-    } else if (stream.uniform01() < layout.short_share) {
-      end = layout.short_from_s + (T + nav - layout.short_from_s) * stream.uniform01();
+    } else if (stream.uniform01() < conventions.short_share) {
+      end = conventions.short_from_s + (T + nav - conventions.short_from_s) * stream.uniform01();
     }
     std::vector<double> times;
-    if (layout.zero_row) times.push_back(0.0);  // the switch-over itself: r, no complete f window
+    if (conventions.zero_row) times.push_back(0.0);  // the switch-over itself: r, no complete f window
     for (const double t : grid)
       if (t <= end + 1e-9) times.push_back(t);
     RecordRun run = runs::simulate_record_run(truth, sampler, seed, static_cast<std::uint64_t>(r), times,
                                         {T, resolution_m});
     run.id = 100 + 7 * static_cast<std::int64_t>(r);
     // The run's own dropouts (its stream goes on from the stop time's draw).
-    const double dropout = layout.dropout_max * stream.uniform01();
+    const double dropout = conventions.dropout_max * stream.uniform01();
     for (RecordRow& row : run.rows) {
       row.run = run.id;
-      if (!on_grid(row.t_s, layout.f_every_s) || (!layout.f_in_nav && row.phase != Phase::kTest)) row.f_mps2 = {};
+      if (!on_grid(row.t_s, conventions.f_every_s) || (!conventions.f_in_nav && row.phase != Phase::kTest)) row.f_mps2 = {};
       if (dropout > 0 && stream.uniform01() < dropout) row.f_mps2 = {};
       // r is on every row of a record (docs/records.md): a lost r sample is a lost row.
       if (dropout > 0 && stream.uniform01() < dropout) row.r_ap_m.reset();

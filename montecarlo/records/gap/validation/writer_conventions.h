@@ -21,13 +21,13 @@ namespace insmc::gap {
 /// How simulated records are written (`--layout` of simulate and
 /// gap-validate): as insmc writes them, in the foreign writer's conventions,
 /// or in conventions drawn by the layout fuzzer.
-enum class RecordLayout { kOwn, kForeign, kFuzzed };
+enum class RecordWriter { kOwn, kForeign, kFuzzed };
 
-struct ForeignLayout {
+struct WriterConventions {
   double f_every_s = 10.0, r_every_s = 30.0;
   bool pulses = true;    ///< f counted in 0.1 ft/s pulses (else continuous)
   bool zero_row = false; ///< a row at t = 0 (r only)
-  // What the layout fuzzer draws besides (fuzzed_layout_of); the defaults
+  // What the layout fuzzer draws besides (fuzzed_conventions_of); the defaults
   // are the foreign writer's fixed conventions.
   /// Each run loses a share of its f records and of its rows, drawn in
   /// [0, dropout_max] for the run, at times of its own (a logger dropping
@@ -47,7 +47,7 @@ struct ForeignLayout {
 /// The layout of the file of `file_seed`: every combination comes round.
 /// A file of an effect on the pulse counting (EffectInfo::needs_pulses)
 /// keeps the pulses its effect is about.
-ForeignLayout foreign_layout_of(std::uint64_t file_seed, bool needs_pulses);
+WriterConventions foreign_conventions_of(std::uint64_t file_seed, bool needs_pulses);
 
 /// The layout fuzzer: conventions drawn at random from the file's seed, not
 /// from a fixed set, so that no assumption of a writer the team made is
@@ -56,7 +56,7 @@ ForeignLayout foreign_layout_of(std::uint64_t file_seed, bool needs_pulses);
 /// 0.1 mm to 3 ft or exact, pulses or continuous f, short runs stopping
 /// anywhere from half the test run on, the optional header keys written or
 /// not. `test_duration_s` places the short runs' stops.
-ForeignLayout fuzzed_layout_of(std::uint64_t file_seed, bool needs_pulses, double test_duration_s);
+WriterConventions fuzzed_conventions_of(std::uint64_t file_seed, bool needs_pulses, double test_duration_s);
 
 /// `runs` truth-level runs (scheme none) of `truth` (its effects, site and
 /// system; its filter interval and pulse weight are the layout's), run r a
@@ -68,6 +68,6 @@ struct ForeignRuns {
   int runs = 20;
 };
 RecordFile simulate_foreign_file(TruthOptions truth, const mc::Sampler& sampler, std::uint64_t seed, const ForeignRuns& runs,
-                                 const ForeignLayout& layout);
+                                 const WriterConventions& conventions);
 
 }  // namespace insmc::gap
