@@ -26,22 +26,22 @@ namespace {
 constexpr std::size_t kMaxUnits = 100;
 constexpr std::size_t kMaxLimits = 20;
 
-mc::PositionLimit parse_limit(const std::string& text) {
+compensate::PositionLimit parse_limit(const std::string& text) {
   const std::string allowed =
       "COMPONENT@TIME=LENGTH, COMPONENT horizontal, x, y or z, TIME in (0, 12h], LENGTH in (0, 40000 km] (e.g. horizontal@84min=3nmi)";
   const auto at = text.find('@'), eq = text.find('=');
   if (at == std::string::npos || eq == std::string::npos || eq < at) throw InputError("--limit", echo_input(text), allowed);
-  mc::PositionLimit l;
+  compensate::PositionLimit l;
   l.text = text;
   const std::string component = text.substr(0, at);
-  if (component == "horizontal") l.component = mc::PositionLimit::Component::kHorizontal;
-  else if (component == "x") l.component = mc::PositionLimit::Component::kX;
-  else if (component == "y") l.component = mc::PositionLimit::Component::kY;
-  else if (component == "z") l.component = mc::PositionLimit::Component::kZ;
+  if (component == "horizontal") l.component = compensate::PositionLimit::Component::kHorizontal;
+  else if (component == "x") l.component = compensate::PositionLimit::Component::kX;
+  else if (component == "y") l.component = compensate::PositionLimit::Component::kY;
+  else if (component == "z") l.component = compensate::PositionLimit::Component::kZ;
   else throw InputError("--limit", echo_input(text), allowed);
   l.t_s = parse_quantity(std::string_view(text).substr(at + 1, eq - at - 1), Dimension::kTime, "--limit");
   l.limit_m = parse_quantity(std::string_view(text).substr(eq + 1), Dimension::kLength, "--limit");
-  if (!(l.t_s > 0 && l.t_s <= mc::kMaxFlightTimeS) || !kPositionLimitRange.contains(l.limit_m))
+  if (!(l.t_s > 0 && l.t_s <= compensate::kMaxFlightTimeS) || !kPositionLimitRange.contains(l.limit_m))
     throw InputError("--limit", echo_input(text), allowed);
   return l;
 }
@@ -79,7 +79,7 @@ int cmd_compensate(const Args& args) {
       "report's g = 9.80665 m/s^2 (a site's differs by up to 0.3 %, which the finest estimates resolve)")(
       "realignment-duration", po::value<std::string>()->default_value("600s"),
       "duration of the realignment of 5.1.1, 5.1.2 and combined, in [0, 6h]")(
-      "out", po::value<std::string>(), out_folder_help(mc::compensate_report_outline()).c_str())(
+      "out", po::value<std::string>(), out_folder_help(compensate::compensate_report_outline()).c_str())(
       "format", po::value<std::string>()->default_value("markdown"),
       "stdout: markdown (compensate.md), csv (envelope.csv) or json (compensate.json)")(
       "units", po::value<std::string>()->default_value("si"),
@@ -89,9 +89,9 @@ int cmd_compensate(const Args& args) {
   const auto vm = parse_args(args, "compensate", "--records FILE [--run ID] [--limit horizontal@84min=3nmi] [options]", opts);
   if (!vm) return 0;
   if (!vm->count("records")) throw InputError("--records", "(missing)", "give the record file of the unit's test run");
-  const mc::ReportOutline outline = mc::compensate_report_outline();
+  const mc::ReportOutline outline = compensate::compensate_report_outline();
   const mc::ReportFormat format = read_report_format(*vm, outline);
-  mc::CompensateOptions options;
+  compensate::CompensateOptions options;
   options.prior = read_uncertainty_model(*vm);
   options.schemes = parse_schemes((*vm)["scheme"].as<std::string>());
   options.flight_time_s = parse_quantity((*vm)["flight-time"].as<std::string>(), Dimension::kTime, "--flight-time");
@@ -109,7 +109,7 @@ int cmd_compensate(const Args& args) {
   if (vm->count("site-gravity"))
     options.site_gravity_mps2 =
         parse_quantity((*vm)["site-gravity"].as<std::string>(), Dimension::kAcceleration, "--site-gravity");
-  mc::validate(options);
+  compensate::validate(options);
   std::optional<OutputFolderOption> out = prepare_report_folder(*vm, outline);
 
   const std::string name = (*vm)["records"].as<std::string>();
@@ -121,15 +121,15 @@ int cmd_compensate(const Args& args) {
                                  kMaxUnits));
   // What the rows of a run lack (a hole in the test grid, a scheme) is
   // said of this file: the reader's own errors name file:line:column.
-  const mc::CompensateResult result = [&] {
+  const compensate::CompensateResult result = [&] {
     try {
-      return mc::compensate(file, options);
+      return compensate::compensate(file, options);
     } catch (const InputError& e) {
       if (e.field().empty() || e.field().starts_with("--")) throw;
       throw InputError(name + ": " + e.field(), e.value(), e.allowed());
     }
   }();
-  write_report(mc::compensate_report(result, options, name), {format}, out, *vm);
+  write_report(compensate::compensate_report(result, options, name), {format}, out, *vm);
   return result.all_go() ? 0 : 1;
 }
 

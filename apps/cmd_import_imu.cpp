@@ -133,7 +133,7 @@ int cmd_import_imu(const Args& args) {
                                  "--nav-duration or --test-duration, or import fewer inputs)",
                                  total_runs, gap::kMaxDiagnosedRuns));
   check_rows(total_runs);  // the runs the inputs make (split: several an input)
-  if (noise_mode == "on") mc::write_noise_header(all_samples, file.header);
+  if (noise_mode == "on") noise::write_noise_header(all_samples, file.header);
 
   append_imported_runs(file, all_samples, inputs, nav, runs_from);
   out_file.write(write_record_file(file));

@@ -17,13 +17,13 @@
 
 namespace insmc::app {
 
-using mc::parse_datasheet_entry;
+using noise::parse_datasheet_entry;
 
 int cmd_noise(const Args& args) {
   po::options_description opts("Options");
   opts.add_options()("input", po::value<std::vector<std::string>>()->composing(),
                      "IMU CSV file of a static recording (plain text), repeatable: one recording each")(
-      "out", po::value<std::string>(), out_folder_help(mc::noise_report_outline()).c_str())(
+      "out", po::value<std::string>(), out_folder_help(noise::noise_report_outline()).c_str())(
       "format", po::value<std::string>()->default_value("markdown"), "what to print: markdown or json")(
       "alpha", po::value<double>()->default_value(0.01, "0.01"),
       "family-wise level of the masking, the stationarity test and the term selection, in [1e-6, 0.2]")(
@@ -41,7 +41,7 @@ int cmd_noise(const Args& args) {
   if (!vm) return 0;
   if (!vm->count("input")) throw InputError("--input", "(missing)", "give at least one IMU CSV file");
   const ImuCsvOptions csv = read_imu_csv_options(*vm);
-  mc::NoiseStageOptions stage;
+  noise::NoiseStageOptions stage;
   noise::NoiseOptions& options = stage.analysis;
   options.alpha = (*vm)["alpha"].as<double>();
   if (!(options.alpha >= 1e-6 && options.alpha <= 0.2))
@@ -59,7 +59,7 @@ int cmd_noise(const Args& args) {
     for (const std::string& entry : (*vm)["datasheet"].as<std::vector<std::string>>())
       parse_datasheet_entry(entry, stage.sheet);
   options.mask = mask == "on";
-  const mc::ReportOutline outline = mc::noise_report_outline();
+  const mc::ReportOutline outline = noise::noise_report_outline();
   const mc::ReportFormat format = read_report_format(*vm, outline);
   calibration::MultipositionOptions& calibrate = stage.calibration;
   calibrate.confidence = options.confidence;
@@ -75,14 +75,14 @@ int cmd_noise(const Args& args) {
   std::vector<ImuSamples> recordings;
   for (const std::string& input : (*vm)["input"].as<std::vector<std::string>>()) {
     recordings.push_back(read_input("--input", input, [&] { return read_imu_csv(input, csv); }));
-    mc::require_noise_samples(recordings.back());  // before the next file is read
+    noise::require_noise_samples(recordings.back());  // before the next file is read
   }
   const mc::Report report = [&] {  // the progress line ends before stdout
     Progress progress(0, "");
     options.progress = [&progress](std::string_view what, std::size_t done, std::size_t total) {
       progress.update(what, done, total, "channels");
     };
-    mc::Report done = mc::noise_stage(std::move(recordings), stage);
+    mc::Report done = noise::noise_stage(std::move(recordings), stage);
     options.progress = nullptr;
     return done;
   }();

@@ -54,7 +54,7 @@
 #include "montecarlo/records/runs/simulation/record_simulation.h"
 #include "montecarlo/study/sampler/sampler.h"
 
-namespace insmc::mc {
+namespace insmc::compensate {
 namespace {
 
 constexpr int kUnits = 500;
@@ -94,7 +94,7 @@ Study simulate_units(Scheme scheme, const UncertaintyModel& prior, const TestRun
   s.file.header.set("position_resolution_m", test.position_resolution_m);
   s.file.header.set("filter_interval_s", test.filter_interval_s);
   if (realigns(scheme)) s.file.header.set("nav_start_s", s.nav_start_s);
-  const Sampler sampler(prior);
+  const mc::Sampler sampler(prior);
   const runs::RecordRunSpec spec{T, test.position_resolution_m, scheme, &setup, s.nav_start_s};
   // 5.4 acts from the switch-over: its unit's test rows would be
   // compensated. The test rows are those of the same unit (same x, same
@@ -235,4 +235,4 @@ INSTANTIATE_TEST_SUITE_P(Schemes, CompensateCoverage,
                          });
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

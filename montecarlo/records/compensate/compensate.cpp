@@ -12,7 +12,7 @@
 #include "lib/units/quantity.h"
 #include "montecarlo/records/compensate/exceedance.h"
 
-namespace insmc::mc {
+namespace insmc::compensate {
 
 void validate(const CompensateOptions& options) {
   if (!(options.flight_time_s > 0 && options.flight_time_s <= kMaxFlightTimeS))
@@ -217,4 +217,4 @@ CompensateResult compensate(const RecordFile& file, const CompensateOptions& opt
   return out;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

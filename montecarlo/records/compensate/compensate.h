@@ -12,7 +12,7 @@
 #include "montecarlo/records/compensate/unit_prediction.h"
 #include "montecarlo/report/length_unit.h"
 
-namespace insmc::mc {
+namespace insmc::compensate {
 
 /// A limit on the position error after the scheme, at a time on its clock.
 struct PositionLimit {
@@ -37,7 +37,7 @@ struct CompensateOptions {
   double realignment_duration_s = 600.0;
   std::optional<std::int64_t> run;      ///< one run, or every run
   std::optional<double> site_gravity_mps2;  ///< the site's specific force (read_unit_records)
-  LengthUnit units = LengthUnit::kMetre;    ///< of the roll-up and the verdicts (SI inside)
+  mc::LengthUnit units = mc::LengthUnit::kMetre;    ///< of the roll-up and the verdicts (SI inside)
 };
 
 /// Checks every setting's range; throws InputError naming the option of
@@ -121,4 +121,4 @@ bool is_report_time(double t_s, const CompensateOptions& options);
 
 CompensateResult compensate(const RecordFile& file, const CompensateOptions& options);
 
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

@@ -12,24 +12,24 @@
 #include "montecarlo/report/markdown.h"
 #include "montecarlo/report/plot/panel_figure.h"
 
-namespace insmc::mc {
+namespace insmc::compensate {
 namespace {
 
 /// Units drawn in one panel at most: the palette's distinct colours.
 constexpr std::size_t kMaxUnitsPerPanel = 8;
 
-std::string t_min_text(double t_s) { return format_number(std::round(t_s / 60.0 * 1e6) / 1e6); }
+std::string t_min_text(double t_s) { return mc::format_number(std::round(t_s / 60.0 * 1e6) / 1e6); }
 std::string nmi_text(double m) { return fmt::format("{:.3f}", m / kNmiToM); }
 const char* axis_name(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
 
-Json vec_json(const Vec3& v) {
-  Json j = Json::array();
+mc::Json vec_json(const Vec3& v) {
+  mc::Json j = mc::Json::array();
   for (int a = 0; a < 3; ++a) j.push_back(v[a]);
   return j;
 }
 
-Json site_json(const UnitRecords& r) {
-  Json j = Json::object();
+mc::Json site_json(const UnitRecords& r) {
+  mc::Json j = mc::Json::object();
   j["system"] = system_number(r.site.system);
   j["values"] = runs::site_values_json(r.site_values);
   j["filter_interval_used_s"] = r.site.filter_interval_s;
@@ -38,9 +38,9 @@ Json site_json(const UnitRecords& r) {
 }
 
 /// A length in the user's unit, to the digits that matter at these sizes.
-std::string length_text(double m, LengthUnit u) {
-  const double v = m * length_factor(u);
-  return u == LengthUnit::kNauticalMile ? fmt::format("{:.3f}", v) : fmt::format("{:.1f}", v);
+std::string length_text(double m, mc::LengthUnit u) {
+  const double v = m * mc::length_factor(u);
+  return u == mc::LengthUnit::kNauticalMile ? fmt::format("{:.3f}", v) : fmt::format("{:.1f}", v);
 }
 
 /// Why a unit gets no navigation numbers: its test rows do not fit the
@@ -83,11 +83,11 @@ std::string verdict_word(const UnitResult& u) {
 /// (the one that decided) and the schemes that meet every limit.
 std::string rollup_markdown(const CompensateResult& result, const CompensateOptions& options) {
   if (result.units.empty()) return "";
-  const std::string unit = length_suffix(options.units);
+  const std::string unit = mc::length_suffix(options.units);
   const bool limits = !options.limits.empty();
-  Table t = limits ? Table({"run", "scheme to use", fmt::format("its worst limit: RMS ({}) of limit", unit), "P(exceed)",
+  mc::Table t = limits ? mc::Table({"run", "scheme to use", fmt::format("its worst limit: RMS ({}) of limit", unit), "P(exceed)",
                             "schemes meeting every limit", "verdict"})
-                   : Table({"run", "scheme to use",
+                   : mc::Table({"run", "scheme to use",
                             fmt::format("horizontal RMS at {} min ({})", t_min_text(options.flight_time_s), unit),
                             "ahead of the runner-up", "verdict"});
   int go = 0;
@@ -125,7 +125,7 @@ std::string rollup_markdown(const CompensateResult& result, const CompensateOpti
                          "run's section gives the chi-square).",
                          beyond, kInconsistentP);
   return fmt::format("## The units at a glance\n\n{}\n{} of {} unit(s) go{}.{} The detail of each follows.\n\n",
-                     render_markdown(t), go, n,
+                     mc::render_markdown(t), go, n,
                      !limits ? " (no --limit given: only a unit whose test rows do not fit the model is no-go)"
                              : fmt::format(" (go: some scheme exceeds each --limit with probability at most {:g}; of "
                                            "those, the one whose worst limit has the largest ratio limit / RMS is used)",
@@ -136,9 +136,9 @@ std::string rollup_markdown(const CompensateResult& result, const CompensateOpti
 /// The site's values with their sources, and the statements about the records.
 std::string site_markdown(const UnitRecords& rec) {
   std::string md;
-  Table site({"key", "value", "source", "reason"});
-  for (const runs::SiteValue& v : rec.site_values) site.add_row({v.key, format_number(v.value), v.source, v.reason});
-  md += "## The site and its test run\n\n" + render_markdown(site) + "\n";
+  mc::Table site({"key", "value", "source", "reason"});
+  for (const runs::SiteValue& v : rec.site_values) site.add_row({v.key, mc::format_number(v.value), v.source, v.reason});
+  md += "## The site and its test run\n\n" + mc::render_markdown(site) + "\n";
   for (const std::string& s : rec.statements) md += "- " + s + "\n";
   if (!rec.statements.empty()) md += "\n";
   return md;
@@ -146,37 +146,37 @@ std::string site_markdown(const UnitRecords& rec) {
 
 /// What the test run separates: each coefficient's sigma after T, 2T, 4T
 /// (markdown into `md`; returns its JSON).
-Json identifiability_section(const CompensateResult& result, const UnitRecords& rec, std::string& md) {
-  Table t({"coefficient", "mixes (share of its spread)", "prior sigma", "sigma at T", "at 2T", "at 4T"});
-  Json ident = Json::array();
+mc::Json identifiability_section(const CompensateResult& result, const UnitRecords& rec, std::string& md) {
+  mc::Table t({"coefficient", "mixes (share of its spread)", "prior sigma", "sigma at T", "at 2T", "at 4T"});
+  mc::Json ident = mc::Json::array();
   for (const Identifiability& e : result.identifiability) {
     std::string mixes;
-    Json m = Json::array();
+    mc::Json m = mc::Json::array();
     for (const auto& [name, share] : e.mixes) {
       mixes += fmt::format("{}{} {:.0f} %", mixes.empty() ? "" : ", ", name, 100 * share);
-      Json j = Json::object();
+      mc::Json j = mc::Json::object();
       j["uncertainty"] = name;
       j["share"] = share;
       m.push_back(std::move(j));
     }
     std::vector<std::string> row = {e.name, mixes, fmt::format("{:.3g}", e.prior_sigma)};
-    Json sig = Json::array();
+    mc::Json sig = mc::Json::array();
     for (const auto& [T, sigma] : e.sigma_by_duration) {
       row.push_back(fmt::format("{:.3g}", sigma));
-      Json j = Json::object();
+      mc::Json j = mc::Json::object();
       j["test_duration_s"] = T;
       j["sigma"] = sigma;
       sig.push_back(std::move(j));
     }
     t.add_row(row);
-    Json j = Json::object();
+    mc::Json j = mc::Json::object();
     j["name"] = e.name;
     j["mixes"] = std::move(m);
     j["prior_sigma"] = e.prior_sigma;
     j["sigma_by_test_duration"] = std::move(sig);
     ident.push_back(std::move(j));
   }
-  md += "## What the test run separates\n\n" + render_markdown(t) +
+  md += "## What the test run separates\n\n" + mc::render_markdown(t) +
         fmt::format("\nEach coefficient of (3.29b-d) is a sum over Table 3.1's uncertainties (4.10); its sigma after a "
                     "test run of T = {:g} min, and of 2T and 4T with as many filter windows, is that of the best "
                     "linear estimate from the test rows (no data needed). A coefficient whose sigma stays near its "
@@ -193,26 +193,26 @@ struct DisplayUnit {
   std::string name;
   double per_si;
 };
-DisplayUnit display_unit(const UnitEstimate& e, LengthUnit units) {
-  if (e.unit == "rad") return units == LengthUnit::kFoot ? DisplayUnit{"arcsec", 1.0 / kArcsecToRad} : DisplayUnit{"urad", 1.0 / kUradToRad};
+DisplayUnit display_unit(const UnitEstimate& e, mc::LengthUnit units) {
+  if (e.unit == "rad") return units == mc::LengthUnit::kFoot ? DisplayUnit{"arcsec", 1.0 / kArcsecToRad} : DisplayUnit{"urad", 1.0 / kUradToRad};
   if (e.unit == "m/s^2") return {"ug", 1.0 / kUgToMps2};
   return {e.unit, 1.0};
 }
 
-Json estimates_section(const UnitResult& u, const std::string& run, LengthUnit units, Table& estimates, std::string& md) {
+mc::Json estimates_section(const UnitResult& u, const std::string& run, mc::LengthUnit units, mc::Table& estimates, std::string& md) {
   md += "### Estimates\n\n";
-  Table est_md({"coefficient", "this unit", "sigma", "prior sigma", "report's estimator", "unit", "resolved"});
-  Json est_json = Json::array();
+  mc::Table est_md({"coefficient", "this unit", "sigma", "prior sigma", "report's estimator", "unit", "resolved"});
+  mc::Json est_json = mc::Json::array();
   for (const UnitEstimate& e : u.estimates) {
-    const std::string report = e.report_estimator ? format_number(*e.report_estimator) : "";
-    estimates.add_row({run, e.name, format_number(e.value), format_number(e.sigma), format_number(e.prior_sigma),
+    const std::string report = e.report_estimator ? mc::format_number(*e.report_estimator) : "";
+    estimates.add_row({run, e.name, mc::format_number(e.value), mc::format_number(e.sigma), mc::format_number(e.prior_sigma),
                        report, e.unit, e.resolved() ? "yes" : "no"});
     const DisplayUnit d = display_unit(e, units);
     est_md.add_row({e.name, fmt::format("{:.4g}", d.per_si * e.value), fmt::format("{:.3g}", d.per_si * e.sigma),
                     fmt::format("{:.3g}", d.per_si * e.prior_sigma),
                     e.report_estimator ? fmt::format("{:.4g}", d.per_si * *e.report_estimator) : "-", d.name,
                     e.resolved() ? "yes" : "no"});
-    Json j = Json::object();
+    mc::Json j = mc::Json::object();
     j["name"] = e.name;
     j["value"] = e.value;
     j["sigma"] = e.sigma;
@@ -222,7 +222,7 @@ Json estimates_section(const UnitResult& u, const std::string& run, LengthUnit u
     j["resolved"] = e.resolved();
     est_json.push_back(std::move(j));
   }
-  md += render_markdown(est_md) +
+  md += mc::render_markdown(est_md) +
         "\nU2..U4 are the report's coefficients (3.29b-d) of this unit, angles (each term a tilt, δf/g or a drift over "
         "ω_ie; rad in estimates.csv), df_T its accelerometer output error at T (m/s^2 in estimates.csv): "
         "their best linear estimate from the test rows and its error's sigma; `resolved` when the test run "
@@ -232,11 +232,11 @@ Json estimates_section(const UnitResult& u, const std::string& run, LengthUnit u
 
 /// The compensation each scheme applies and its envelope: rows of
 /// compensation.csv and envelope.csv, markdown into `md`; returns their JSON.
-Json schemes_section(const UnitResult& u, const UnitRecords& rec, const std::string& run, Table& compensation,
-                     Table& envelope, std::string& md) {
+mc::Json schemes_section(const UnitResult& u, const UnitRecords& rec, const std::string& run, mc::Table& compensation,
+                     mc::Table& envelope, std::string& md) {
   md += "### The compensation each scheme applies\n\n";
-  Table comp_md({"scheme", "ready (min)", "step at point 2 (ug)", "ramp (ug/min)", "torquer rates (meru)", "also"});
-  Json schemes = Json::array();
+  mc::Table comp_md({"scheme", "ready (min)", "step at point 2 (ug)", "ramp (ug/min)", "torquer rates (meru)", "also"});
+  mc::Json schemes = mc::Json::array();
   for (const SchemePrediction& p : u.schemes) {
     const std::string name(to_string(p.scheme));
     const SchemeCompensation& c = p.compensation;
@@ -250,18 +250,18 @@ Json schemes_section(const UnitResult& u, const UnitRecords& rec, const std::str
     comp_md.add_row({name, t_min_text(p.ready_time_s), list(c.step_mps2, kUgToMps2), list(c.ramp_mps3, kUgToMps2 / 60.0),
                      list(c.torquer_radps, kMeruToRadps), also});
     for (int a = 0; a < 3; ++a) {
-      compensation.add_row({run, name, "step", axis_name(a), format_number(c.step_mps2[a]), "m/s^2"});
-      compensation.add_row({run, name, "ramp", axis_name(a), format_number(c.ramp_mps3[a]), "m/s^3"});
-      compensation.add_row({run, name, "torquer_rate", axis_name(a), format_number(c.torquer_radps[a]), "rad/s"});
+      compensation.add_row({run, name, "step", axis_name(a), mc::format_number(c.step_mps2[a]), "m/s^2"});
+      compensation.add_row({run, name, "ramp", axis_name(a), mc::format_number(c.ramp_mps3[a]), "m/s^3"});
+      compensation.add_row({run, name, "torquer_rate", axis_name(a), mc::format_number(c.torquer_radps[a]), "rad/s"});
     }
-    Json cj = Json::object();
+    mc::Json cj = mc::Json::object();
     cj["step_mps2"] = vec_json(c.step_mps2);
     cj["ramp_mps3"] = vec_json(c.ramp_mps3);
     cj["torquer_radps"] = vec_json(c.torquer_radps);
     cj["realigns"] = c.realigns;
     cj["resets_at_test_end"] = c.resets_at_test_end;
     cj["from_alignment_data"] = c.from_alignment_data;
-    Json env = Json::array();
+    mc::Json env = mc::Json::array();
     for (const UnitPositionError& e : p.envelope) {
       for (int a = 0; a <= 3; ++a) {
         const bool h = a == 3;
@@ -271,9 +271,9 @@ Json schemes_section(const UnitResult& u, const UnitRecords& rec, const std::str
         // A unit whose rows do not fit the model gets no numbers of its own
         // (empty cells, no keys): they would mean nothing.
         const bool fits = u.fits_model();
-        envelope.add_row({run, name, t_min_text(e.t_s), axis, h || !fits ? "" : format_number(e.mean_m[a]),
-                          fits ? format_number(unit_rms) : "", format_number(pop_rms)});
-        Json ej = Json::object();
+        envelope.add_row({run, name, t_min_text(e.t_s), axis, h || !fits ? "" : mc::format_number(e.mean_m[a]),
+                          fits ? mc::format_number(unit_rms) : "", mc::format_number(pop_rms)});
+        mc::Json ej = mc::Json::object();
         ej["system"] = system_number(rec.site.system);
         ej["axis"] = axis;
         ej["t_min"] = e.t_s / 60.0;
@@ -283,14 +283,14 @@ Json schemes_section(const UnitResult& u, const UnitRecords& rec, const std::str
         env.push_back(std::move(ej));
       }
     }
-    Json sj = Json::object();
+    mc::Json sj = mc::Json::object();
     sj["scheme"] = name;
     sj["ready_time_s"] = p.ready_time_s;
     sj["compensation"] = std::move(cj);
     sj["envelope"] = std::move(env);
     schemes.push_back(std::move(sj));
   }
-  md += render_markdown(comp_md) +
+  md += mc::render_markdown(comp_md) +
         "\nPer axis x, y, z of the platform frame a'. The step and ramp act from the scheme's start; torquer rates "
         "from the switch-over (5.1.2, combined).\n\n";
   return schemes;
@@ -302,22 +302,22 @@ std::string envelope_markdown(const UnitResult& u, const CompensateOptions& opti
   md += "### Position error after each scheme: this unit and the population\n\n";
   if (!u.fits_model())
     return md + "Not given: " + misfit_reason(u) + ". `insmc gap` on these records says where and which effect.\n\n";
-  Table env_md({"scheme", "t (min)", "this unit: horizontal RMS (m)", "(n.mi.)", "population (m)", "this unit x, y, z RMS (m)"});
+  mc::Table env_md({"scheme", "t (min)", "this unit: horizontal RMS (m)", "(n.mi.)", "population (m)", "this unit x, y, z RMS (m)"});
   for (const SchemePrediction& p : u.schemes)
     for (const UnitPositionError& e : p.envelope)
       if (is_report_time(e.t_s, options))
         env_md.add_row({std::string(to_string(p.scheme)), t_min_text(e.t_s), fmt::format("{:.1f}", e.unit_horizontal_rms_m()),
                         nmi_text(e.unit_horizontal_rms_m()), fmt::format("{:.1f}", e.population_horizontal_rms_m()),
                         fmt::format("{:.1f}, {:.1f}, {:.1f}", e.unit_rms_m(0), e.unit_rms_m(1), e.unit_rms_m(2))});
-  md += render_markdown(env_md) +
+  md += mc::render_markdown(env_md) +
         "\nThis unit's RMS is over what its test run leaves unknown (the run model conditioned on its data); the "
         "population's over Table 3.1's units with the same test run. Both are exact for the linear level: no "
         "sampling, so no interval. Every 3 min in envelope.csv.\n\n";
   return md;
 }
 
-Json check_json(const LimitCheck& c) {
-  Json j = Json::object();
+mc::Json check_json(const LimitCheck& c) {
+  mc::Json j = mc::Json::object();
   j["limit"] = c.limit.text;
   j["component"] = std::string(to_string(c.limit.component));
   j["t_min"] = c.limit.t_s / 60.0;
@@ -331,8 +331,8 @@ Json check_json(const LimitCheck& c) {
 
 /// Every scheme against every limit and the verdict: markdown into `md`;
 /// returns the schemes' JSON (`against_limits`).
-Json verdict_section(const UnitResult& u, const CompensateOptions& options, std::string& md) {
-  Json against = Json::array();
+mc::Json verdict_section(const UnitResult& u, const CompensateOptions& options, std::string& md) {
+  mc::Json against = mc::Json::array();
   if (u.choice == SchemeChoice::kNotChosen) {
     md += "### Verdict: NO-GO (the test rows do not fit the model)\n\nNo scheme is chosen and no limit is evaluated: " +
           misfit_reason(u) + ".\n\n";
@@ -341,14 +341,14 @@ Json verdict_section(const UnitResult& u, const CompensateOptions& options, std:
   if (u.against_limits.empty()) return against;
   std::vector<std::string> head = {"scheme"};
   for (const PositionLimit& l : options.limits)
-    head.push_back(fmt::format("{}: RMS ({}), P(exceed)", l.text, length_suffix(options.units)));
+    head.push_back(fmt::format("{}: RMS ({}), P(exceed)", l.text, mc::length_suffix(options.units)));
   head.push_back("meets every limit");
   head.push_back("worst ratio limit / RMS");
-  Table lim(head);
+  mc::Table lim(head);
   for (const SchemeAgainstLimits& a : u.against_limits) {
     std::vector<std::string> row = {std::string(to_string(a.scheme)) +
         (a.scheme != u.recommended ? "" : u.choice == SchemeChoice::kMostMarginOverLimits ? " (chosen)" : " (closest)")};
-    Json checks = Json::array();
+    mc::Json checks = mc::Json::array();
     for (const LimitCheck& c : a.checks) {
       row.push_back(fmt::format("{}, {:.3g}{}", length_text(c.rms_m, options.units), c.probability,
                                 c.within() ? "" : " (fails)"));
@@ -357,7 +357,7 @@ Json verdict_section(const UnitResult& u, const CompensateOptions& options, std:
     row.push_back(a.meets_every_limit() ? "yes" : "no");
     row.push_back(fmt::format("{:.3g}", a.worst().ratio()));
     lim.add_row(row);
-    Json j = Json::object();
+    mc::Json j = mc::Json::object();
     j["scheme"] = std::string(to_string(a.scheme));
     j["meets_every_limit"] = a.meets_every_limit();
     j["worst_ratio"] = a.worst().ratio();
@@ -370,7 +370,7 @@ Json verdict_section(const UnitResult& u, const CompensateOptions& options, std:
           ? fmt::format("### Verdict: GO with scheme {}", to_string(u.recommended))
           : fmt::format("### Verdict: NO-GO: no scheme meets every limit (closest: {}, worst P(exceed) {:.3g})",
                         to_string(u.recommended), chosen.worst_probability());
-  md += heading + "\n\n" + render_markdown(lim) +
+  md += heading + "\n\n" + mc::render_markdown(lim) +
         fmt::format("\nA scheme meets a limit when the limit is exceeded with probability at most {:g} (--risk), the "
                     "position error taken Gaussian with this unit's mean and covariance at the limit's time. Schemes "
                     "meeting every limit: {}. Of those the one used is the one whose worst limit has the largest ratio "
@@ -385,10 +385,10 @@ Json verdict_section(const UnitResult& u, const CompensateOptions& options, std:
 /// palette's distinct colours) the units are drawn in groups of 8, a panel
 /// per scheme and group (small multiples): every unit is drawn. A unit whose
 /// test rows do not fit the model has no RMS to draw; the title says which.
-PanelFigure compensate_plot(const CompensateResult& result, const CompensateOptions& options, const std::string& source) {
-  PanelFigure plot;
+mc::PanelFigure compensate_plot(const CompensateResult& result, const CompensateOptions& options, const std::string& source) {
+  mc::PanelFigure plot;
   plot.stem = "compensate";
-  const double per_m = length_factor(options.units);
+  const double per_m = mc::length_factor(options.units);
   std::vector<std::size_t> drawn;
   std::string misfit;
   for (std::size_t k = 0; k < result.units.size(); ++k)
@@ -399,19 +399,19 @@ PanelFigure compensate_plot(const CompensateResult& result, const CompensateOpti
                            groups > 1 ? fmt::format(" ({} units, at most {} a panel: a panel per scheme and group)", drawn.size(), kMaxUnitsPerPanel) : "",
                            misfit.empty() ? "" : fmt::format("; not drawn (test rows do not fit the model): run {}", misfit));
   plot.x_label = "time on the scheme's clock [min]";
-  plot.y_label = fmt::format("horizontal RMS [{}]", length_suffix(options.units));
+  plot.y_label = fmt::format("horizontal RMS [{}]", mc::length_suffix(options.units));
   plot.marked_x = {42, 63, 84};
   if (result.units.empty()) return plot;
   const std::size_t schemes = result.units.front().schemes.size();
   plot.columns = 3;
   for (std::size_t g = 0; g < std::max<std::size_t>(groups, 1); ++g)
     for (std::size_t s = 0; s < schemes; ++s) {
-      PlotPanel panel;
+      mc::PlotPanel panel;
       panel.title = std::string(to_string(result.units.front().schemes[s].scheme));
       if (groups > 1)
         panel.title += fmt::format(", runs {}-{}", result.units[drawn[g * kMaxUnitsPerPanel]].run,
                                    result.units[drawn[std::min(drawn.size(), (g + 1) * kMaxUnitsPerPanel) - 1]].run);
-      PlotLine pop;
+      mc::PlotLine pop;
       pop.name = "population";
       pop.thin = true;
       for (const UnitPositionError& e : result.units.front().schemes[s].envelope) {
@@ -428,7 +428,7 @@ PanelFigure compensate_plot(const CompensateResult& result, const CompensateOpti
                                   l.t_s / 60});
       for (std::size_t i = g * kMaxUnitsPerPanel; i < drawn.size() && i < (g + 1) * kMaxUnitsPerPanel; ++i) {
         const UnitResult& u = result.units[drawn[i]];
-        PlotLine line;
+        mc::PlotLine line;
         line.name = fmt::format("unit (run {})", u.run);
         line.colour = static_cast<int>(i % kMaxUnitsPerPanel);
         for (const UnitPositionError& e : u.schemes[s].envelope) {
@@ -454,7 +454,7 @@ std::string choice_name(SchemeChoice c) {
 
 /// The decision in words, with the numbers it rests on.
 std::string scheme_to_use_summary(const UnitResult& u, const CompensateOptions& options) {
-  const std::string unit = length_suffix(options.units);
+  const std::string unit = mc::length_suffix(options.units);
   switch (u.choice) {
     case SchemeChoice::kNotChosen: return "NO-GO: no scheme chosen, " + misfit_reason(u);
     case SchemeChoice::kLeastRmsAtFlightTime:
@@ -481,17 +481,17 @@ std::string scheme_to_use_line(const UnitResult& u, const CompensateOptions& opt
 
 }  // namespace
 
-ReportOutline compensate_report_outline() {
+mc::ReportOutline compensate_report_outline() {
   return {"compensate",
           {"compensate.md", "estimates.csv", "compensation.csv", "envelope.csv", "compensate.json"},
           {"compensate"}};
 }
 
-Report compensate_report(const CompensateResult& result, const CompensateOptions& options, const std::string& source) {
+mc::Report compensate_report(const CompensateResult& result, const CompensateOptions& options, const std::string& source) {
   const UnitRecords& rec = result.records;
-  Table estimates({"run", "name", "value", "sigma", "prior_sigma", "report_estimator", "unit", "resolved"});
-  Table compensation({"run", "scheme", "quantity", "axis", "value", "unit"});
-  Table envelope({"run", "scheme", "t_min", "axis", "unit_mean_m", "unit_rms_m", "population_rms_m"});
+  mc::Table estimates({"run", "name", "value", "sigma", "prior_sigma", "report_estimator", "unit", "resolved"});
+  mc::Table compensation({"run", "scheme", "quantity", "axis", "value", "unit"});
+  mc::Table envelope({"run", "scheme", "t_min", "axis", "unit_mean_m", "unit_rms_m", "population_rms_m"});
   std::string md = fmt::format("# insmc compensate: {}\n\n", source);
   md += fmt::format(
       "System {}, test run T = {:g} min, filter interval {:g} s, estimators fit {} (4.7), (4.8), (4.4). Flight time "
@@ -503,8 +503,8 @@ Report compensate_report(const CompensateResult& result, const CompensateOptions
                                "one whose worst limit has the largest ratio limit / RMS), not at the flight time");
   md += rollup_markdown(result, options);
   md += site_markdown(rec);
-  Json identifiability_json = identifiability_section(result, rec, md);
-  Json units = Json::array();
+  mc::Json identifiability_json = identifiability_section(result, rec, md);
+  mc::Json units = mc::Json::array();
   for (const UnitResult& u : result.units) {
     const std::string run = std::to_string(u.run);
     md += fmt::format("## Run {}\n\n", run);
@@ -527,12 +527,12 @@ Report compensate_report(const CompensateResult& result, const CompensateOptions
                                         "stand, and `insmc gap` on these records says where",
                                         kInconsistentP)
                           : "");
-    Json est_json = estimates_section(u, run, options.units, estimates, md);
-    Json schemes = schemes_section(u, rec, run, compensation, envelope, md);
+    mc::Json est_json = estimates_section(u, run, options.units, estimates, md);
+    mc::Json schemes = schemes_section(u, rec, run, compensation, envelope, md);
     md += envelope_markdown(u, options);
-    Json against_limits = verdict_section(u, options, md);
+    mc::Json against_limits = verdict_section(u, options, md);
     md += scheme_to_use_line(u, options);
-    Json uj = Json::object();
+    mc::Json uj = mc::Json::object();
     uj["run"] = static_cast<long long>(u.run);
     uj["estimates"] = std::move(est_json);
     uj["schemes"] = std::move(schemes);
@@ -542,7 +542,7 @@ Report compensate_report(const CompensateResult& result, const CompensateOptions
       uj["runner_up"] = std::string(to_string(*u.runner_up));
       uj["margin_m"] = u.margin_m;
     }
-    Json consistency = Json::object();
+    mc::Json consistency = mc::Json::object();
     consistency["chi2"] = u.consistency_chi2;
     consistency["dof"] = u.consistency_dof;
     consistency["p"] = u.consistency_p;
@@ -551,9 +551,9 @@ Report compensate_report(const CompensateResult& result, const CompensateOptions
     consistency["linear_level_p"] = u.consistency_band.linear_p(u.consistency_chi2);
     consistency["fits_model"] = u.fits_model();
     uj["consistency"] = std::move(consistency);
-    Json verdict = Json::object();
+    mc::Json verdict = mc::Json::object();
     verdict["go"] = u.go;
-    Json checks = Json::array();
+    mc::Json checks = mc::Json::array();
     for (const LimitCheck& c : u.checks) checks.push_back(check_json(c));
     verdict["checks"] = std::move(checks);
     if (!u.against_limits.empty()) verdict["schemes"] = std::move(against_limits);
@@ -562,11 +562,11 @@ Report compensate_report(const CompensateResult& result, const CompensateOptions
   }
   bool go = true;
   for (const UnitResult& u : result.units) go = go && u.go;
-  Json json = Json::object();
+  mc::Json json = mc::Json::object();
   json["source"] = source;
   json["identifiability"] = std::move(identifiability_json);
   json["site"] = site_json(rec);
-  Json statements = Json::array();
+  mc::Json statements = mc::Json::array();
   for (const std::string& s : rec.statements) statements.push_back(s);
   json["statements"] = std::move(statements);
   json["flight_time_s"] = options.flight_time_s;
@@ -575,17 +575,17 @@ Report compensate_report(const CompensateResult& result, const CompensateOptions
   json["go"] = go;
   std::string json_text = json.dump(2) + "\n", envelope_csv = render_csv(envelope);
 
-  Report report(compensate_report_outline());
+  mc::Report report(compensate_report_outline());
   report.file("compensate.md", std::move(md))
       .file("estimates.csv", render_csv(estimates))
       .file("compensation.csv", render_csv(compensation))
       .file("envelope.csv", std::move(envelope_csv))
       .file("compensate.json", std::move(json_text))
       .figure("compensate", [plot = compensate_plot(result, options, source)] { return render_panel_figure(plot); })
-      .shown_file(ReportFormat::kMarkdown, "compensate.md")
-      .shown_file(ReportFormat::kCsv, "envelope.csv")
-      .shown_file(ReportFormat::kJson, "compensate.json");
+      .shown_file(mc::ReportFormat::kMarkdown, "compensate.md")
+      .shown_file(mc::ReportFormat::kCsv, "envelope.csv")
+      .shown_file(mc::ReportFormat::kJson, "compensate.json");
   return report;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

@@ -9,13 +9,13 @@
 #include "montecarlo/records/compensate/compensate.h"
 #include "montecarlo/report/report.h"
 
-namespace insmc::mc {
+namespace insmc::compensate {
 
 /// compensate's set and stdout: markdown (compensate.md), csv
 /// (envelope.csv), json (compensate.json).
-ReportOutline compensate_report_outline();
+mc::ReportOutline compensate_report_outline();
 
 /// The report of `result`; `source`: the record file as the user named it.
-Report compensate_report(const CompensateResult& result, const CompensateOptions& options, const std::string& source);
+mc::Report compensate_report(const CompensateResult& result, const CompensateOptions& options, const std::string& source);
 
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

@@ -6,7 +6,7 @@
 
 #include "lib/common/assert.h"
 
-namespace insmc::mc {
+namespace insmc::compensate {
 namespace {
 
 double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
@@ -60,4 +60,4 @@ double probability_outside_circle(const Eigen::Vector2d& mean, const Eigen::Matr
   return std::clamp(1.0 - sum * h / 3.0, 0.0, 1.0);
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

@@ -5,7 +5,7 @@
 /// answer every run).
 #include <Eigen/Core>
 
-namespace insmc::mc {
+namespace insmc::compensate {
 
 /// P(|p| > limit), p ~ N(mean, variance); variance ≥ 0.
 double probability_beyond(double mean, double variance, double limit);
@@ -14,4 +14,4 @@ double probability_beyond(double mean, double variance, double limit);
 /// symmetric positive semi-definite. Accurate to 1e-9 absolute.
 double probability_outside_circle(const Eigen::Vector2d& mean, const Eigen::Matrix2d& covariance, double radius);
 
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

@@ -15,7 +15,7 @@
 #include "montecarlo/records/runs/model/gaussian_model.h"
 #include "montecarlo/records/runs/model/scheme_rows.h"
 
-namespace insmc::mc {
+namespace insmc::compensate {
 namespace {
 
 /// The causes' prior mean: x's from the uncertainty model, a realignment's
@@ -393,4 +393,4 @@ SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& r
   return out;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

@@ -29,7 +29,7 @@
 #include "montecarlo/records/compensate/unit_records.h"
 #include "montecarlo/records/runs/model/gaussian_model.h"
 
-namespace insmc::mc {
+namespace insmc::compensate {
 
 /// The chi-square of a unit's test rows against S = H P Hᵀ + W (W with the
 /// model-error floor) for rows of covariance S_a = H P Hᵀ + W_a (the actual
@@ -194,4 +194,4 @@ SchemeModel scheme_model(const UnitRecords& records, const UnitPosterior& poster
 SchemePrediction predict_scheme(const UnitRecords& records, const UnitTestRun& run, const UnitPosterior& posterior,
                                 const SchemeModel& model);
 
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

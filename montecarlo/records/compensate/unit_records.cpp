@@ -9,7 +9,7 @@
 #include "montecarlo/records/runs/model/scheme_rows.h"
 #include "montecarlo/records/runs/prepared_runs.h"
 
-namespace insmc::mc {
+namespace insmc::compensate {
 namespace {
 
 /// A recorder's time stamps may jitter: a row within 1 % of τ of t_k is
@@ -290,4 +290,4 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
   return out;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

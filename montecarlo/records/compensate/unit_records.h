@@ -16,7 +16,7 @@
 #include "montecarlo/records/runs/files/site_values.h"
 #include "montecarlo/records/runs/files/layout.h"
 
-namespace insmc::mc {
+namespace insmc::compensate {
 
 /// One unit's test run: f and r at t_k = kτ, k = 1..K, per axis (the data
 /// the estimators use), and what the estimators made of them. A run whose
@@ -64,4 +64,4 @@ UnitRecords read_unit_records(const RecordFile& file, const UncertaintyModel& pr
                               std::optional<std::int64_t> run = std::nullopt,
                               std::optional<double> site_gravity_mps2 = std::nullopt);
 
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

@@ -8,7 +8,7 @@
 #include "lib/units/units.h"
 #include "montecarlo/report/csv.h"
 
-namespace insmc::mc {
+namespace insmc::noise {
 namespace {
 
 using calibration::CalibratedParameter;
@@ -154,4 +154,4 @@ mc::Json calibration_json(const std::vector<RecordingCalibration>& calibrations)
   return out;
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::noise

@@ -9,7 +9,7 @@
 #include "lib/calibration/multiposition.h"
 #include "montecarlo/report/json.h"
 
-namespace insmc::mc {
+namespace insmc::noise {
 
 struct RecordingCalibration {
   std::string recording;  ///< the file name as given
@@ -26,4 +26,4 @@ std::string calibration_markdown(const std::vector<RecordingCalibration>& calibr
 std::string calibration_csv(const std::vector<RecordingCalibration>& calibrations);
 mc::Json calibration_json(const std::vector<RecordingCalibration>& calibrations);
 
-}  // namespace insmc::mc
+}  // namespace insmc::noise

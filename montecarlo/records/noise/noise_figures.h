@@ -10,7 +10,7 @@
 #include "lib/noise/recording.h"
 #include "montecarlo/report/plot/panel_figure.h"
 
-namespace insmc::mc {
+namespace insmc::noise {
 
 /// A data sheet's values for one sensor kind (SI), when given: its white
 /// noise (drawn as N/√τ) and bias instability (drawn as its floor 0.664 B).
@@ -22,12 +22,12 @@ struct SheetLevels {
 /// deviation with its interval (shaded, bars) and the fitted model
 /// (dashed); Table 3.1's bound and the data sheet's lines in the legend.
 /// `sheet`: [gyro, accelerometer].
-PanelFigure noise_allan_figure(const noise::NoiseAnalysis& a, const std::array<SheetLevels, 2>& sheet);
+mc::PanelFigure noise_allan_figure(const NoiseAnalysis& a, const std::array<SheetLevels, 2>& sheet);
 
 /// `stationarity`: per channel, each recording's block means minus its
 /// mean after the first part, against time; the first part shaded, its
 /// mean drawn across it (the stationarity test's statistic) inside the band
 /// a first part like the rest stays in at the test's level (docs/noise.md §5).
-PanelFigure stationarity_figure(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a);
+mc::PanelFigure stationarity_figure(const SensorRecording& rec, const NoiseAnalysis& a);
 
-}  // namespace insmc::mc
+}  // namespace insmc::noise

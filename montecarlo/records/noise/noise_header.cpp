@@ -13,14 +13,14 @@
 #include "lib/records/import_keys.h"
 #include "lib/units/units.h"
 
-namespace insmc::mc {
+namespace insmc::noise {
 
 void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& header) {
-  noise::NoiseAnalysis a;
+  NoiseAnalysis a;
   try {
     for (const ImuSamples& s : samples)
       if (s.size() < 300) throw InputError("--input", s.source, "fewer than 300 samples");
-    a = noise::analyse_noise(noise::make_recording(samples));
+    a = analyse_noise(make_recording(samples));
   } catch (const std::exception& e) {
     header.set(import_keys::kNoise, one_line_value(std::string("skipped: ") + e.what()));
     return;
@@ -32,23 +32,23 @@ void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& he
   const auto put = [&header](const std::string& key, double v) {
     if (std::isfinite(v) && v >= 0) header.set(key, v);
   };
-  for (const noise::ChannelNoise& ch : a.channels) {
+  for (const ChannelNoise& ch : a.channels) {
     const auto key = [&ch](std::string_view what) { return import_keys::noise_key(ch.name, what); };
-    for (const noise::TermFit& t : ch.fit.terms) {
-      const std::string term(noise::term_name(t.term, ch.kind));
+    for (const TermFit& t : ch.fit.terms) {
+      const std::string term(term_name(t.term, ch.kind));
       put(key(term + "_si"), t.value_si);
       put(key(term + "_lower_si"), t.lower_si);
       put(key(term + "_upper_si"), t.upper_si);
     }
-    if (ch.fit.model[noise::NoiseTerm::kGaussMarkov] > 0) put(key("correlation_time_s"), ch.fit.model.correlation_time_s);
-    put(key("equivalent_si"), noise::equivalent_constant(ch.fit.model));
+    if (ch.fit.model[NoiseTerm::kGaussMarkov] > 0) put(key("correlation_time_s"), ch.fit.model.correlation_time_s);
+    put(key("equivalent_si"), equivalent_constant(ch.fit.model));
     // What the Allan deviation allows each term at most, selected or not
     // (σ(τ)² ≥ each term's own σ²(τ) at every τ; upper interval ends):
     // white N ≤ min σ⁺√τ (after 1 h: × √3600 s), wander ≤ the larger of
     // B ≤ min σ⁺/0.664 and K after 1 h ≤ min σ⁺ √(3/τ) √3600 s,
     // quantization Q ≤ min σ⁺ τ/√3.
     double white = std::numeric_limits<double>::infinity(), flat = white, walk = white, quant = white;
-    for (const noise::AllanRow& r : ch.allan) {
+    for (const AllanRow& r : ch.allan) {
       quant = std::min(quant, r.upper * r.tau_s / std::sqrt(3.0));  // σ² = 3Q²/τ²
       white = std::min(white, r.upper * std::sqrt(r.tau_s));
       flat = std::min(flat, r.upper / std::sqrt(2 * std::numbers::ln2 / std::numbers::pi));
@@ -65,4 +65,4 @@ void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& he
   put(std::string(import_keys::kNoiseSampleIntervalS), a.dt_s);
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::noise

@@ -8,7 +8,7 @@
 #include "lib/imu/imu_samples.h"
 #include "lib/records/record.h"
 
-namespace insmc::mc {
+namespace insmc::noise {
 
 /// The raw-sensor stage on `samples` (docs/noise.md), its fitted terms kept
 /// in the header as imu.noise.<channel>.<term>_si (with _lower_si,
@@ -17,4 +17,4 @@ namespace insmc::mc {
 /// inputs cannot be analysed (too short, not on one sample grid).
 void write_noise_header(const std::vector<ImuSamples>& samples, RecordHeader& header);
 
-}  // namespace insmc::mc
+}  // namespace insmc::noise

@@ -18,15 +18,10 @@
 #include "montecarlo/report/json.h"
 #include "montecarlo/report/plot/panel_figure.h"
 
-namespace insmc::mc {
+namespace insmc::noise {
 namespace {
 
-using noise::NoiseTerm;
-using noise::SensorKind;
 
-using noise::equivalent_constant;
-using noise::schuler_period_s;
-using noise::table31_bound_si;
 
 
 std::string g3(double v) { return fmt::format("{:.3g}", v); }
@@ -34,8 +29,8 @@ std::string g3(double v) { return fmt::format("{:.3g}", v); }
 /// A Gauss–Markov term with T_c within twice the first cluster time is the
 /// sensor's bandwidth (its samples are filtered), white noise beyond:
 /// N_eff = √(N² + 2σ²T_c). nullopt otherwise.
-std::optional<double> white_noise_effective(const noise::ChannelNoise& ch) {
-  const noise::NoiseModel& m = ch.fit.model;
+std::optional<double> white_noise_effective(const ChannelNoise& ch) {
+  const NoiseModel& m = ch.fit.model;
   if (ch.allan.empty() || !(m[NoiseTerm::kGaussMarkov] > 0) || m.correlation_time_s > 2 * ch.allan.front().tau_s)
     return std::nullopt;
   return std::sqrt(m[NoiseTerm::kWhiteRate] + 2 * m[NoiseTerm::kGaussMarkov] * m.correlation_time_s);
@@ -47,12 +42,12 @@ struct Orientation {
   Vec3 mean_g;  ///< mean specific force over the kept samples [g]
 };
 
-std::vector<Orientation> orientations(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a) {
+std::vector<Orientation> orientations(const SensorRecording& rec, const NoiseAnalysis& a) {
   std::vector<Orientation> out;
   for (std::size_t r = 0; r < rec.runs.size(); ++r) {
     Vec3 sum = Vec3::Zero();
     double n = 0;
-    for (const noise::Segment& s : a.mask.kept)
+    for (const Segment& s : a.mask.kept)
       if (s.begin >= rec.runs[r].begin && s.end <= rec.runs[r].end)
         for (std::size_t k = s.begin; k < s.end; ++k, n += 1)
           for (int i = 0; i < 3; ++i) sum[i] += rec.channel[3 + i][k];
@@ -111,11 +106,11 @@ struct WhiteTogether {
   double value_si = 0, lower_si = 0, upper_si = 0;
 };
 
-std::optional<WhiteTogether> white_together(const noise::ChannelNoise& ch, const noise::TermFit& white) {
+std::optional<WhiteTogether> white_together(const ChannelNoise& ch, const TermFit& white) {
   const std::optional<double> n_eff = white_noise_effective(ch);
   if (!n_eff) return std::nullopt;
   const auto gm = std::find_if(ch.fit.terms.begin(), ch.fit.terms.end(),
-                               [](const noise::TermFit& t) { return t.term == NoiseTerm::kGaussMarkov; });
+                               [](const TermFit& t) { return t.term == NoiseTerm::kGaussMarkov; });
   if (gm == ch.fit.terms.end()) return std::nullopt;
   const auto combined = [](double n, double sigma, double tc) { return std::sqrt(n * n + 2 * sigma * sigma * tc); };
   return WhiteTogether{*n_eff, combined(white.lower_si, gm->lower_si, ch.fit.correlation_time_lower_s),
@@ -148,12 +143,12 @@ std::pair<double, std::string> spec_value(NoiseTerm t, SensorKind kind, double v
 
 /// The fitted white noise and bias instability beside the data sheet's:
 /// the ratio, and whether the sheet's value lies inside the fitted interval.
-std::string datasheet_section(const noise::NoiseAnalysis& a, const Datasheet& sheet) {
+std::string datasheet_section(const NoiseAnalysis& a, const Datasheet& sheet) {
   std::string md = "\n## Against the data sheet\n\nThe fitted term (with its interval) beside the value given with "
                    "--datasheet; \"not selected\" when the fit found the term indistinguishable from zero.\n\n"
                    "| channel | term | fitted | interval | data sheet | fitted / sheet | sheet inside interval |\n"
                    "|---|---|---:|---|---:|---:|---|\n";
-  for (const noise::ChannelNoise& ch : a.channels)
+  for (const ChannelNoise& ch : a.channels)
     for (const auto& [term, given] : {std::pair{NoiseTerm::kWhiteRate, sheet.white(ch.kind)},
                                       std::pair{NoiseTerm::kBiasInstability, sheet.instability(ch.kind)}}) {
       if (!given) continue;
@@ -168,13 +163,13 @@ std::string datasheet_section(const noise::NoiseAnalysis& a, const Datasheet& sh
       }
       if (!ch.fit.fits || ch.stuck) {
         md += fmt::format("| {} | {} | no model passes its fit test | | {} {} | | |\n", ch.name,
-                          noise::term_name(term, ch.kind), g3(sheet_value), unit);
+                          term_name(term, ch.kind), g3(sheet_value), unit);
         continue;
       }
       const auto fit = std::find_if(ch.fit.terms.begin(), ch.fit.terms.end(),
-                                    [term = term](const noise::TermFit& t) { return t.term == term; });
+                                    [term = term](const TermFit& t) { return t.term == term; });
       if (fit == ch.fit.terms.end()) {
-        md += fmt::format("| {} | {} | not selected | | {} {} | | |\n", ch.name, noise::term_name(term, ch.kind),
+        md += fmt::format("| {} | {} | not selected | | {} {} | | |\n", ch.name, term_name(term, ch.kind),
                           g3(sheet_value), unit);
         continue;
       }
@@ -187,7 +182,7 @@ std::string datasheet_section(const noise::NoiseAnalysis& a, const Datasheet& sh
       const double lower = together ? together->lower_si : fit->lower_si;
       const double upper = together ? together->upper_si : fit->upper_si;
       const bool inside = *given >= lower && *given <= upper;
-      md += fmt::format("| {} | {}{} | {} {} | [{}, {}] | {} {} | {} | {} |\n", ch.name, noise::term_name(term, ch.kind),
+      md += fmt::format("| {} | {}{} | {} {} | [{}, {}] | {} {} | {} | {} |\n", ch.name, term_name(term, ch.kind),
                         together ? " (with the Gauss–Markov term at the sampling interval, √(N² + 2σ²T_c))" : "",
                         g3(value * f), unit, g3(lower * f), g3(upper * f), g3(sheet_value), unit,
                         *given > 0 ? fmt::format("{:.3g}", value / *given) : "-",
@@ -197,7 +192,7 @@ std::string datasheet_section(const noise::NoiseAnalysis& a, const Datasheet& sh
 }
 
 /// The fit test of each channel's model (docs/noise.md §3).
-std::string fit_test_section(const noise::NoiseAnalysis& a) {
+std::string fit_test_section(const NoiseAnalysis& a) {
   std::string md = fmt::format(
       "\n## Fit test of each model\n\nJ = rᵀS⁻¹r over the Allan levels the model is fitted to, S their covariance "
       "under the model itself (docs/noise.md §3), against χ²(levels − parameters) at α = {:g}: a model that fails is "
@@ -205,12 +200,12 @@ std::string fit_test_section(const noise::NoiseAnalysis& a) {
       "filtering), they are left out one at a time until a model passes.\n\n"
       "| channel | levels | from τ [s] | J | degrees of freedom | p | verdict |\n|---|---:|---:|---:|---:|---:|---|\n",
       a.alpha);
-  for (const noise::ChannelNoise& ch : a.channels) {
+  for (const ChannelNoise& ch : a.channels) {
     if (ch.stuck) {
       md += fmt::format("| {} | - | - | - | - | - | stuck: nothing to fit |\n", ch.name);
       continue;
     }
-    const noise::NoiseFit& f = ch.fit;
+    const NoiseFit& f = ch.fit;
     const std::size_t from = std::min(f.first_level, ch.allan.size() - 1);
     md += fmt::format("| {} | {} of {} | {:.3g} | {:.3g} | {:g} | {:.2g} | {} |\n", ch.name, ch.allan.size() - from,
                       ch.allan.size(), ch.allan[from].tau_s, f.fit_statistic, f.fit_dof, f.fit_p_value,
@@ -224,9 +219,9 @@ std::string fit_test_section(const noise::NoiseAnalysis& a) {
 
 /// A fitted term's value in the engineers' unit, "not selected" when the
 /// passing model has none, "-" when no model passes.
-std::string fitted_text(const noise::ChannelNoise& ch, NoiseTerm term) {
+std::string fitted_text(const ChannelNoise& ch, NoiseTerm term) {
   if (!ch.fit.fits || ch.stuck) return "-";
-  for (const noise::TermFit& t : ch.fit.terms)
+  for (const TermFit& t : ch.fit.terms)
     if (t.term == term) {
       const auto [v, unit] = spec_value(term, ch.kind, t.value_si);
       const double f = t.value_si > 0 ? v / t.value_si : 0;
@@ -235,7 +230,7 @@ std::string fitted_text(const noise::ChannelNoise& ch, NoiseTerm term) {
   return "not selected";
 }
 
-std::string reading_text(const noise::SlopeReading& r, NoiseTerm term, SensorKind kind, const char* none) {
+std::string reading_text(const SlopeReading& r, NoiseTerm term, SensorKind kind, const char* none) {
   if (!r.found) return none;
   const auto [v, unit] = spec_value(term, kind, r.value_si);
   return r.tau_from_s == r.tau_to_s ? fmt::format("{} {} (τ = {:.3g} s)", g3(v), unit, r.tau_from_s)
@@ -243,19 +238,19 @@ std::string reading_text(const noise::SlopeReading& r, NoiseTerm term, SensorKin
 }
 
 /// The IEEE Std 952 slope readings beside the fit (lib/noise/slope_readings.h).
-std::string readings_section(const noise::NoiseAnalysis& a, const Datasheet& sheet) {
+std::string readings_section(const NoiseAnalysis& a, const Datasheet& sheet) {
   std::string md =
       "\n## IEEE Std 952 slope readings beside the fit\n\nRead off the Allan deviation (Annex C): the white noise "
       "from the −½ line at τ = 1 s, the bias instability from the floor (min σ / 0.664), the rate random walk from "
       "the +½ line at τ = 3 s where the curve ends on a +½ slope; the fitted value (its interval) beside each.\n\n"
       "| channel | white noise: reading | fit | bias instability: floor | fit | random walk: +½ reading | fit |\n"
       "|---|---|---|---|---|---|---|\n";
-  for (const noise::ChannelNoise& ch : a.channels) {
+  for (const ChannelNoise& ch : a.channels) {
     if (ch.stuck) {
       md += fmt::format("| {} | stuck | | | | | |\n", ch.name);
       continue;
     }
-    const noise::SlopeReadings& r = ch.readings;
+    const SlopeReadings& r = ch.readings;
     md += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", ch.name,
                       reading_text(r.white, NoiseTerm::kWhiteRate, ch.kind, "no −½ slope"),
                       fitted_text(ch, NoiseTerm::kWhiteRate),
@@ -273,11 +268,11 @@ std::string readings_section(const noise::NoiseAnalysis& a, const Datasheet& she
   return md;
 }
 
-std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
+std::string markdown(const SensorRecording& rec, const NoiseAnalysis& a, double confidence,
                      const Datasheet& sheet, const std::vector<RecordingCalibration>& calibrations) {
   std::string md = "# Sensor noise: overlapping Allan deviation and fitted terms\n\n";
   double total_s = 0;
-  for (const noise::Segment& r : rec.runs) total_s += static_cast<double>(r.size()) * rec.dt_s;
+  for (const Segment& r : rec.runs) total_s += static_cast<double>(r.size()) * rec.dt_s;
   md += fmt::format("{} recording(s), {} samples at {:g} Hz ({:.2f} h). Intervals at {:g} %; method: docs/noise.md.\n\n",
                     rec.runs.size(), rec.size(), 1 / rec.dt_s, total_s / 3600, 100 * confidence);
 
@@ -287,16 +282,16 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
                     "test, else the IEEE slope readings (column \"from\"). A verdict only where the data hold a "
                     "stretch of one Schuler period; over shorter data the ratio is an extrapolation and says how "
                     "far.\n\n",
-                    schuler_period_s() / 60, noise::table31_bound_text(SensorKind::kGyro),
-                    noise::table31_bound_text(SensorKind::kAccelerometer));
+                    schuler_period_s() / 60, table31_bound_text(SensorKind::kGyro),
+                    table31_bound_text(SensorKind::kAccelerometer));
   md += "| channel | equivalent | bound | ratio | verdict | from | largest term |\n|---|---:|---:|---:|---|---|---|\n";
-  for (const noise::ChannelNoise& ch : a.channels) {
-    const noise::Table31Reading t = noise::table31_reading(ch);
+  for (const ChannelNoise& ch : a.channels) {
+    const Table31Reading t = table31_reading(ch);
     const bool gyro = ch.kind == SensorKind::kGyro;
-    if (t.source == noise::Table31Source::kStuck) {
+    if (t.source == Table31Source::kStuck) {
       md += fmt::format("| {} | - | {} | - | **stuck: the output never changes**, no noise measured (a dead or "
                         "saturated channel, or a constant column) | - | - |\n",
-                        ch.name, noise::table31_bound_text(ch.kind));
+                        ch.name, table31_bound_text(ch.kind));
       continue;
     }
     const std::string verdict =
@@ -307,8 +302,8 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
                       : "within";
     md += fmt::format("| {} | {} {} | {} | {:.3g}× | {} | {} | {} |\n", ch.name,
                       g3(t.equivalent_si / (gyro ? kMeruToRadps : kMgToMps2)), gyro ? "meru" : "mg",
-                      noise::table31_bound_text(ch.kind), t.ratio, verdict,
-                      t.source == noise::Table31Source::kFit ? "fit" : "IEEE readings", t.largest_term);
+                      table31_bound_text(ch.kind), t.ratio, verdict,
+                      t.source == Table31Source::kFit ? "fit" : "IEEE readings", t.largest_term);
   }
 
   md += readings_section(a, sheet);
@@ -317,22 +312,22 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
   md += fit_test_section(a);
   md += "\n## Fitted terms\n\nThe models that pass their fit test (above), each term with its interval.\n\n"
         "| channel | term | value | interval | unit | value (SI) | unit (SI) |\n|---|---|---:|---|---|---:|---|\n";
-  for (const noise::ChannelNoise& ch : a.channels) {
+  for (const ChannelNoise& ch : a.channels) {
     if (!ch.fit.fits || ch.stuck) continue;
-    for (const noise::TermFit& t : ch.fit.terms) {
+    for (const TermFit& t : ch.fit.terms) {
       const auto [v, unit] = spec_value(t.term, ch.kind, t.value_si);
       const double f = t.value_si > 0 ? v / t.value_si : 0;
-      md += fmt::format("| {} | {} | {} | [{}, {}] | {} | {} | {} |\n", ch.name, noise::term_name(t.term, ch.kind), g3(v),
-                        g3(t.lower_si * f), g3(t.upper_si * f), unit, g3(t.value_si), noise::term_si_unit(t.term, ch.kind));
+      md += fmt::format("| {} | {} | {} | [{}, {}] | {} | {} | {} |\n", ch.name, term_name(t.term, ch.kind), g3(v),
+                        g3(t.lower_si * f), g3(t.upper_si * f), unit, g3(t.value_si), term_si_unit(t.term, ch.kind));
       if (t.term == NoiseTerm::kGaussMarkov)
         md += fmt::format("| {} | correlation time | {} | [{}, {}] | s | {} | s |\n", ch.name, g3(ch.fit.model.correlation_time_s),
                           g3(ch.fit.correlation_time_lower_s), g3(ch.fit.correlation_time_upper_s),
                           g3(ch.fit.model.correlation_time_s));
     }
   }
-  for (const noise::ChannelNoise& ch : a.channels) {
+  for (const ChannelNoise& ch : a.channels) {
     const auto white = std::find_if(ch.fit.terms.begin(), ch.fit.terms.end(),
-                                    [](const noise::TermFit& t) { return t.term == NoiseTerm::kWhiteRate; });
+                                    [](const TermFit& t) { return t.term == NoiseTerm::kWhiteRate; });
     if (white == ch.fit.terms.end()) continue;
     if (const std::optional<WhiteTogether> together = white_together(ch, *white)) {
       const auto [v, unit] = spec_value(NoiseTerm::kWhiteRate, ch.kind, together->value_si);
@@ -346,11 +341,11 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
     }
   }
   md += "\nTerms tried and not needed (their likelihood-ratio statistic below the test's critical value):\n";
-  for (const noise::ChannelNoise& ch : a.channels) {
+  for (const ChannelNoise& ch : a.channels) {
     if (!ch.fit.fits || ch.stuck) continue;
     std::string dropped;
-    for (const noise::TermFit& t : ch.fit.dropped)
-      dropped += fmt::format("{}{} ({:.2g})", dropped.empty() ? "" : ", ", noise::term_name(t.term, ch.kind), t.drop_statistic);
+    for (const TermFit& t : ch.fit.dropped)
+      dropped += fmt::format("{}{} ({:.2g})", dropped.empty() ? "" : ", ", term_name(t.term, ch.kind), t.drop_statistic);
     md += fmt::format("- {}: {}\n", ch.name, dropped.empty() ? "none" : dropped);
   }
 
@@ -358,8 +353,8 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
   md += "The mean over the first part minus the mean over the rest of the run, against its standard deviation under "
         "the rest's noise model ((N.6), docs/noise.md §5), Σ z² over the runs against χ²(runs).\n\n";
   md += "| channel | first part | first part − rest | expected sd | runs | χ² | p | verdict |\n|---|---:|---:|---:|---:|---:|---:|---|\n";
-  for (const noise::ChannelNoise& ch : a.channels) {
-    const noise::StationarityTest& s = ch.stationarity;
+  for (const ChannelNoise& ch : a.channels) {
+    const StationarityTest& s = ch.stationarity;
     if (!s.tested) {
       md += fmt::format("| {} | - | - | - | 0 | - | - | not tested (no run twice as long as the first part) |\n", ch.name);
       continue;
@@ -382,7 +377,7 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
                       a.mask.intervals.size(), static_cast<double>(a.mask.masked_samples) * rec.dt_s,
                       static_cast<double>(a.mask.masked_by_sensor[0]) * rec.dt_s,
                       static_cast<double>(a.mask.masked_by_sensor[1]) * rec.dt_s);
-    for (const noise::MaskedInterval& m : a.mask.intervals)
+    for (const MaskedInterval& m : a.mask.intervals)
       md += fmt::format("| {} | {:.1f} | {:.1f} | {} | {} | {:.3g}× | {} |\n", rec.run_names[m.run], m.start_s,
                         m.end_s, m.channels, m.test, m.excess, m.sensors);
   }
@@ -391,23 +386,23 @@ std::string markdown(const noise::SensorRecording& rec, const noise::NoiseAnalys
   return md;
 }
 
-std::string allan_csv(const noise::NoiseAnalysis& a) {
+std::string allan_csv(const NoiseAnalysis& a) {
   std::string csv = "channel,tau_s,adev_si,adev_lower_si,adev_upper_si,edf,windows,model_adev_si,si_unit\n";
-  for (const noise::ChannelNoise& ch : a.channels)
-    for (const noise::AllanRow& r : ch.allan)
+  for (const ChannelNoise& ch : a.channels)
+    for (const AllanRow& r : ch.allan)
       csv += fmt::format("{},{},{},{},{},{:.6g},{},{},{}\n", ch.name, r.tau_s, r.adev, r.lower, r.upper, r.edf, r.windows,
                          r.model_adev, ch.kind == SensorKind::kGyro ? "rad/s" : "m/s2");
   return csv;
 }
 
-std::string terms_csv(const noise::NoiseAnalysis& a) {
+std::string terms_csv(const NoiseAnalysis& a) {
   std::string csv = "channel,term,value_si,lower_si,upper_si,si_unit,value_spec,lower_spec,upper_spec,spec_unit\n";
-  for (const noise::ChannelNoise& ch : a.channels)
-    for (const noise::TermFit& t : ch.fit.terms) {
+  for (const ChannelNoise& ch : a.channels)
+    for (const TermFit& t : ch.fit.terms) {
       const auto [v, unit] = spec_value(t.term, ch.kind, t.value_si);
       const double f = t.value_si > 0 ? v / t.value_si : 0;
-      csv += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", ch.name, noise::term_name(t.term, ch.kind), t.value_si,
-                         t.lower_si, t.upper_si, noise::term_si_unit(t.term, ch.kind), v, t.lower_si * f, t.upper_si * f, unit);
+      csv += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", ch.name, term_name(t.term, ch.kind), t.value_si,
+                         t.lower_si, t.upper_si, term_si_unit(t.term, ch.kind), v, t.lower_si * f, t.upper_si * f, unit);
       if (t.term == NoiseTerm::kGaussMarkov)
         csv += fmt::format("{},correlation_time,{},{},{},s,{},{},{},s\n", ch.name, ch.fit.model.correlation_time_s,
                            ch.fit.correlation_time_lower_s, ch.fit.correlation_time_upper_s,
@@ -417,7 +412,7 @@ std::string terms_csv(const noise::NoiseAnalysis& a) {
   return csv;
 }
 
-Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
+mc::Json noise_json(const SensorRecording& rec, const NoiseAnalysis& a, double confidence,
                 const Datasheet& sheet, const std::vector<RecordingCalibration>& calibrations) {
   mc::Json j = mc::Json::object();
   j["sample_interval_s"] = rec.dt_s;
@@ -425,17 +420,17 @@ Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a
   j["recordings"] = rec.runs.size();
   j["confidence"] = confidence;
   mc::Json channels = mc::Json::array();
-  for (const noise::ChannelNoise& ch : a.channels) {
+  for (const ChannelNoise& ch : a.channels) {
     mc::Json c = mc::Json::object();
     c["channel"] = ch.name;
     mc::Json terms = mc::Json::array();
-    for (const noise::TermFit& t : ch.fit.terms) {
+    for (const TermFit& t : ch.fit.terms) {
       mc::Json x = mc::Json::object();
       const auto [v, unit] = spec_value(t.term, ch.kind, t.value_si);
       const double f = t.value_si > 0 ? v / t.value_si : 0;
-      x["term"] = std::string(noise::term_name(t.term, ch.kind));
+      x["term"] = std::string(term_name(t.term, ch.kind));
       x["value_si"] = t.value_si, x["lower_si"] = t.lower_si, x["upper_si"] = t.upper_si;
-      x["si_unit"] = std::string(noise::term_si_unit(t.term, ch.kind));
+      x["si_unit"] = std::string(term_si_unit(t.term, ch.kind));
       x["value_spec"] = v, x["lower_spec"] = t.lower_si * f, x["upper_spec"] = t.upper_si * f, x["spec_unit"] = unit;
       if (t.term == NoiseTerm::kGaussMarkov) {
         x["correlation_time_s"] = ch.fit.model.correlation_time_s;
@@ -457,9 +452,9 @@ Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a
                                   std::pair{"rate_random_walk_si", &ch.readings.walk}})
       if (r->found) readings[name] = r->value_si;
     c["ieee_readings"] = std::move(readings);
-    const noise::Table31Reading t31 = noise::table31_reading(ch);
+    const Table31Reading t31 = table31_reading(ch);
     mc::Json table31 = mc::Json::object();
-    table31["from"] = std::string(noise::table31_source_text(t31.source));
+    table31["from"] = std::string(table31_source_text(t31.source));
     table31["equivalent_si"] = t31.equivalent_si, table31["ratio"] = t31.ratio;
     table31["extrapolated"] = t31.extrapolated, table31["extrapolation"] = t31.extrapolation;
     c["table31"] = std::move(table31);
@@ -474,7 +469,7 @@ Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a
     st["first_part_excluded"] = ch.first_part_excluded;
     c["stationarity"] = std::move(st);
     mc::Json allan = mc::Json::array();
-    for (const noise::AllanRow& r : ch.allan) {
+    for (const AllanRow& r : ch.allan) {
       mc::Json x = mc::Json::object();
       x["tau_s"] = r.tau_s, x["adev_si"] = r.adev, x["lower_si"] = r.lower, x["upper_si"] = r.upper, x["edf"] = r.edf;
       x["model_adev_si"] = r.model_adev;
@@ -485,7 +480,7 @@ Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a
   }
   j["channels"] = std::move(channels);
   mc::Json masked = mc::Json::array();
-  for (const noise::MaskedInterval& m : a.mask.intervals) {
+  for (const MaskedInterval& m : a.mask.intervals) {
     mc::Json x = mc::Json::object();
     x["recording"] = rec.run_names[m.run], x["start_s"] = m.start_s, x["end_s"] = m.end_s;
     x["channels"] = m.channels, x["test"] = m.test, x["excess"] = m.excess, x["sensors"] = m.sensors;
@@ -504,11 +499,11 @@ Json noise_json(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a
 
 }  // namespace
 
-std::optional<double> Datasheet::white(noise::SensorKind kind) const {
+std::optional<double> Datasheet::white(SensorKind kind) const {
   return kind == SensorKind::kGyro ? gyro_arw_radprts : accel_vrw_mpsprts;
 }
 
-std::optional<double> Datasheet::instability(noise::SensorKind kind) const {
+std::optional<double> Datasheet::instability(SensorKind kind) const {
   return kind == SensorKind::kGyro ? gyro_bias_instability_radps : accel_bias_instability_mps2;
 }
 
@@ -538,21 +533,21 @@ void parse_datasheet_entry(const std::string& text, Datasheet& sheet) {
                    "accel_vrw (0.03mpsprth) or accel_bias_instability (50ug)");
 }
 
-ReportOutline noise_report_outline() {
+mc::ReportOutline noise_report_outline() {
   return {"noise",
           {"noise.md", "allan.csv", "noise_terms.csv", "calibration.csv", "noise.json"},
           {"allan", "stationarity"},
-          {ReportFormat::kMarkdown, ReportFormat::kJson}};
+          {mc::ReportFormat::kMarkdown, mc::ReportFormat::kJson}};
 }
 
-Report noise_report(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
+mc::Report noise_report(const SensorRecording& rec, const NoiseAnalysis& a, double confidence,
                     const Datasheet& sheet, const std::vector<RecordingCalibration>& calibrations) {
   std::string md = markdown(rec, a, confidence, sheet, calibrations);
   std::string json = noise_json(rec, a, confidence, sheet, calibrations).dump(2) + "\n";
   const std::array<SheetLevels, 2> levels{
       SheetLevels{sheet.white(SensorKind::kGyro), sheet.instability(SensorKind::kGyro)},
       SheetLevels{sheet.white(SensorKind::kAccelerometer), sheet.instability(SensorKind::kAccelerometer)}};
-  Report report(noise_report_outline());
+  mc::Report report(noise_report_outline());
   report.file("noise.md", std::move(md))
       .file("allan.csv", allan_csv(a))
       .file("noise_terms.csv", terms_csv(a))
@@ -560,8 +555,8 @@ Report noise_report(const noise::SensorRecording& rec, const noise::NoiseAnalysi
       .file("noise.json", std::move(json))
       .figure("allan", [figure = noise_allan_figure(a, levels)] { return render_panel_figure(figure); })
       .figure("stationarity", [figure = stationarity_figure(rec, a)] { return render_panel_figure(figure); })
-      .shown_file(ReportFormat::kMarkdown, "noise.md")
-      .shown_file(ReportFormat::kJson, "noise.json");
+      .shown_file(mc::ReportFormat::kMarkdown, "noise.md")
+      .shown_file(mc::ReportFormat::kJson, "noise.json");
   return report;
 }
 
@@ -572,16 +567,16 @@ void require_noise_samples(const ImuSamples& recording) {
                                  kMinNoiseSamples));
 }
 
-Report noise_stage(std::vector<ImuSamples> recordings, const NoiseStageOptions& options) {
+mc::Report noise_stage(std::vector<ImuSamples> recordings, const NoiseStageOptions& options) {
   for (const ImuSamples& r : recordings) require_noise_samples(r);
-  const noise::SensorRecording rec = noise::make_recording(recordings);
+  const SensorRecording rec = make_recording(recordings);
   std::vector<RecordingCalibration> calibrations;
   for (const ImuSamples& r : recordings)
     calibrations.push_back(
         {r.source, calibration::calibrate_multiposition(r, options.calibration), options.calibration.gravity_mps2});
   recordings.clear();  // the recording holds the samples now
-  const noise::NoiseAnalysis analysis = noise::analyse_noise(rec, options.analysis);
+  const NoiseAnalysis analysis = analyse_noise(rec, options.analysis);
   return noise_report(rec, analysis, options.analysis.confidence, options.sheet, calibrations);
 }
 
-}  // namespace insmc::mc
+}  // namespace insmc::noise

@@ -14,7 +14,7 @@
 #include "lib/noise/noise_analysis.h"
 #include "montecarlo/report/report.h"
 
-namespace insmc::mc {
+namespace insmc::noise {
 
 /// A sensor's data-sheet values (`insmc noise --datasheet KEY=VALUE`), SI;
 /// absent when not given. Drawn on the allan figure (the white noise as its
@@ -27,8 +27,8 @@ struct Datasheet {
     return !gyro_arw_radprts && !gyro_bias_instability_radps && !accel_vrw_mpsprts && !accel_bias_instability_mps2;
   }
   /// The sensor's white-noise and bias-instability values.
-  std::optional<double> white(noise::SensorKind kind) const;
-  std::optional<double> instability(noise::SensorKind kind) const;
+  std::optional<double> white(SensorKind kind) const;
+  std::optional<double> instability(SensorKind kind) const;
 };
 
 /// Parses one `KEY=VALUE` (gyro_arw=0.15degprth, gyro_bias_instability=1degph,
@@ -41,9 +41,9 @@ void parse_datasheet_entry(const std::string& text, Datasheet& sheet);
 /// noise.json and the figures allan and stationarity
 /// (montecarlo/records/noise/noise_figures.h); stdout noise.md (markdown) or
 /// noise.json.
-ReportOutline noise_report_outline();
+mc::ReportOutline noise_report_outline();
 
-Report noise_report(const noise::SensorRecording& rec, const noise::NoiseAnalysis& a, double confidence,
+mc::Report noise_report(const SensorRecording& rec, const NoiseAnalysis& a, double confidence,
                     const Datasheet& sheet = {}, const std::vector<RecordingCalibration>& calibrations = {});
 
 /// Fewest samples per recording: the Allan variance needs a few octaves of
@@ -56,7 +56,7 @@ void require_noise_samples(const ImuSamples& recording);
 
 /// What `insmc noise` runs on its recordings.
 struct NoiseStageOptions {
-  noise::NoiseOptions analysis;
+  NoiseOptions analysis;
   calibration::MultipositionOptions calibration;
   Datasheet sheet;
 };
@@ -67,6 +67,6 @@ struct NoiseStageOptions {
 /// multi-position calibration where it holds enough still attitudes, then
 /// the noise analysis of every channel (options.analysis.progress told each
 /// stage); its report.
-Report noise_stage(std::vector<ImuSamples> recordings, const NoiseStageOptions& options);
+mc::Report noise_stage(std::vector<ImuSamples> recordings, const NoiseStageOptions& options);
 
-}  // namespace insmc::mc
+}  // namespace insmc::noise

@@ -12,7 +12,7 @@
 
 #include "montecarlo/records/compensate/unit_prediction.h"
 
-namespace insmc::mc {
+namespace insmc::compensate {
 namespace {
 
 constexpr int kRows = 40, kCauses = 12, kDraws = 20000;
@@ -112,4 +112,4 @@ TEST(ConsistencyBand, WithoutAFloorItIsTheChiSquareOfTheRows) {
 }
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::compensate

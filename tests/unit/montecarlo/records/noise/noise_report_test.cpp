@@ -17,7 +17,7 @@
 #include "lib/units/units.h"
 #include "tests/cli/csv_rows.h"
 
-namespace insmc::mc {
+namespace insmc::noise {
 namespace {
 
 constexpr double kDt = 0.1;                       // 10 Hz
@@ -28,7 +28,7 @@ constexpr double kVrwMpsRtH = 0.05;               // accelerometer white noise [
 constexpr double kConfidence = 1.0 - 0.01 / 6;
 
 /// 30 min of white noise on every channel, the platform at rest (z down).
-noise::SensorRecording white_recording() {
+SensorRecording white_recording() {
   ImuSamples s;
   s.source = "white.csv";
   std::mt19937_64 rng(11);
@@ -42,7 +42,7 @@ noise::SensorRecording white_recording() {
     s.accel_b_mps2.push_back(Vec3(accel_sd * a0, accel_sd * a1, -9.80665 + accel_sd * a2));
   }
   const std::vector<ImuSamples> one{s};
-  return noise::make_recording(one);
+  return make_recording(one);
 }
 
 using testing::csv_rows;
@@ -50,38 +50,38 @@ using testing::csv_rows;
 class NoiseReport : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    rec_ = new noise::SensorRecording(white_recording());
-    noise::NoiseOptions options;
+    rec_ = new SensorRecording(white_recording());
+    NoiseOptions options;
     options.confidence = kConfidence;
-    analysis_ = new noise::NoiseAnalysis(noise::analyse_noise(*rec_, options));
+    analysis_ = new NoiseAnalysis(analyse_noise(*rec_, options));
   }
   static void TearDownTestSuite() {
     delete analysis_;
     delete rec_;
   }
-  static noise::SensorRecording* rec_;
-  static noise::NoiseAnalysis* analysis_;
+  static SensorRecording* rec_;
+  static NoiseAnalysis* analysis_;
 };
-noise::SensorRecording* NoiseReport::rec_ = nullptr;
-noise::NoiseAnalysis* NoiseReport::analysis_ = nullptr;
+SensorRecording* NoiseReport::rec_ = nullptr;
+NoiseAnalysis* NoiseReport::analysis_ = nullptr;
 
 TEST_F(NoiseReport, HoldsItsLayoutsFilesAndShowsMarkdownOrJson) {
-  const Report r = noise_report(*rec_, *analysis_, kConfidence);
-  const ReportOutline& outline = r.outline();
+  const mc::Report r = noise_report(*rec_, *analysis_, kConfidence);
+  const mc::ReportOutline& outline = r.outline();
   EXPECT_EQ(outline.command, "noise");
-  EXPECT_TRUE(outline.offers(ReportFormat::kMarkdown) && outline.offers(ReportFormat::kJson));
-  EXPECT_FALSE(outline.offers(ReportFormat::kCsv));
+  EXPECT_TRUE(outline.offers(mc::ReportFormat::kMarkdown) && outline.offers(mc::ReportFormat::kJson));
+  EXPECT_FALSE(outline.offers(mc::ReportFormat::kCsv));
   for (const std::string& name : outline.files) EXPECT_FALSE(r.file_text(name).empty()) << name;
-  EXPECT_EQ(r.shown(ReportFormat::kMarkdown), r.file_text("noise.md"));
-  EXPECT_EQ(r.shown(ReportFormat::kJson), r.file_text("noise.json"));
+  EXPECT_EQ(r.shown(mc::ReportFormat::kMarkdown), r.file_text("noise.md"));
+  EXPECT_EQ(r.shown(mc::ReportFormat::kJson), r.file_text("noise.json"));
   const nlohmann::json j = nlohmann::json::parse(r.file_text("noise.json"));
-  EXPECT_EQ(j.at("channels").size(), noise::kChannels);
+  EXPECT_EQ(j.at("channels").size(), kChannels);
 }
 
 TEST_F(NoiseReport, AllanTableHoldsEveryChannelsEveryClusterTime) {
   const auto rows = csv_rows(noise_report(*rec_, *analysis_, kConfidence).file_text("allan.csv"));
   std::size_t expected = 0;
-  for (const noise::ChannelNoise& ch : analysis_->channels) expected += ch.allan.size();
+  for (const ChannelNoise& ch : analysis_->channels) expected += ch.allan.size();
   ASSERT_EQ(rows.size(), expected + 1);
   EXPECT_EQ(rows.front().front(), "channel");
   for (std::size_t i = 1; i < rows.size(); ++i) {
@@ -98,10 +98,10 @@ TEST_F(NoiseReport, WhiteNoiseIsQuotedInItsSpecUnitsWithTheTruthInside) {
   const auto rows = csv_rows(noise_report(*rec_, *analysis_, kConfidence).file_text("noise_terms.csv"));
   std::map<std::string, std::vector<std::string>> white;
   for (const auto& row : rows)
-    if (row.size() == 10 && (row[1] == noise::term_name(noise::NoiseTerm::kWhiteRate, noise::SensorKind::kGyro) ||
-                             row[1] == noise::term_name(noise::NoiseTerm::kWhiteRate, noise::SensorKind::kAccelerometer)))
+    if (row.size() == 10 && (row[1] == term_name(NoiseTerm::kWhiteRate, SensorKind::kGyro) ||
+                             row[1] == term_name(NoiseTerm::kWhiteRate, SensorKind::kAccelerometer)))
       white[row[0]] = row;
-  ASSERT_EQ(white.size(), noise::kChannels) << "every channel's white noise is selected";
+  ASSERT_EQ(white.size(), kChannels) << "every channel's white noise is selected";
   for (const auto& [channel, row] : white) {
     const bool gyro = channel.rfind("gyro", 0) == 0;
     const double truth = gyro ? kArwDegRtH : kVrwMpsRtH;
@@ -115,4 +115,4 @@ TEST_F(NoiseReport, WhiteNoiseIsQuotedInItsSpecUnitsWithTheTruthInside) {
 }
 
 }  // namespace
-}  // namespace insmc::mc
+}  // namespace insmc::noise
