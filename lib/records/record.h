@@ -80,6 +80,10 @@ inline constexpr double kMaxEstimatingTestDurationS = 2 * 3600.0;
 /// test row before is the row at T (a recorder's time-stamp jitter,
 /// docs/records.md); compensate and gap take rows within 1 % of τ of the grid.
 inline constexpr double kTestEndJitter = 0.01;
+/// A recorder's time stamps may jitter by up to this share of τ about the
+/// windows' grid (docs/records.md): the readers of records place rows on
+/// their grid within it.
+inline constexpr double kMaxStampJitter = 0.01;
 inline constexpr int kMinTestIntervals = 4;
 
 /// Checks the value of a known header key (required or optional); returns

@@ -139,8 +139,65 @@ double median_f_spacing(const RecordFile& file) {
     }
   }
   if (spacings.empty()) return 0.0;
-  std::nth_element(spacings.begin(), spacings.begin() + spacings.size() / 2, spacings.end());
-  return spacings[spacings.size() / 2];
+  const double median = [&] {
+    std::nth_element(spacings.begin(), spacings.begin() + spacings.size() / 2, spacings.end());
+    return spacings[spacings.size() / 2];
+  }();
+  if (!(median > 0.0)) return 0.0;
+  // Time stamps that jitter put the median one stamp's jitter off τ (a few
+  // 1e-4 of it), and the windows counted from it drift off the records
+  // within the test run. Each stretch of consecutive windows spans its
+  // windows' τ less two stamps' jitter: the stretches' spans over their
+  // windows give τ to that jitter over the windows counted.
+  double span_s = 0.0, windows = 0.0, squared_off = 0.0;
+  long pairs = 0, stretches = 0;
+  for (const RecordRun& run : file.runs) {
+    double last = -1.0;
+    bool in_stretch = false;
+    for (const RecordRow& row : run.rows) {
+      if (row.phase != Phase::kTest || !row.has_f()) continue;
+      if (last >= 0.0) {
+        const double d = row.t_s - last;
+        const double k = std::round(d / median);
+        const bool whole = k >= 1.0 && std::abs(d - k * median) <= kMaxStampJitter * 2.0 * median;
+        if (whole) {
+          stretches += in_stretch ? 0 : 1;
+          span_s += d;
+          windows += k;
+          ++pairs;
+        }
+        in_stretch = whole;
+      }
+      last = row.t_s;
+    }
+  }
+  if (!(windows > 0.0)) return median;
+  const double tau = span_s / windows;
+  for (const RecordRun& run : file.runs) {
+    double last = -1.0;
+    for (const RecordRow& row : run.rows) {
+      if (row.phase != Phase::kTest || !row.has_f()) continue;
+      if (last >= 0.0) {
+        const double d = row.t_s - last, k = std::round(d / median);
+        if (k >= 1.0 && std::abs(d - k * median) <= kMaxStampJitter * 2.0 * median)
+          squared_off += (d - k * tau) * (d - k * tau);
+      }
+      last = row.t_s;
+    }
+  }
+  // A pair's difference is two stamps' jitter, var 2 s²; a stretch's span
+  // is its ends' two, so var(span_s) = 2 s² per stretch.
+  const double sigma_s = std::sqrt(static_cast<double>(stretches) * squared_off / static_cast<double>(pairs)) / windows;
+  if (!(sigma_s > 1e-9 * tau)) return median;  // exact stamps: the spacing itself
+  // A recorder's interval is set in few digits: the value of fewest digits
+  // within three standard errors (10 s, not 9.9999 s, whose windows would not
+  // divide the test run), down to the decade of the standard error.
+  const double finest = std::pow(10.0, std::floor(std::log10(sigma_s)));
+  for (double decade = std::pow(10.0, std::floor(std::log10(tau))); decade > finest * 0.5; decade /= 10.0) {
+    const double rounded = std::round(tau / decade) * decade;
+    if (rounded > 0.0 && std::abs(rounded - tau) <= 3.0 * sigma_s) return rounded;
+  }
+  return std::round(tau / finest) * finest;
 }
 
 RecordSite read_site(const RecordHeader& header, double default_pulse_mps) {

@@ -134,8 +134,11 @@ RecordSite read_site(const RecordHeader& header, double default_pulse_mps);
 std::vector<RunData> extract_runs(const RecordFile& file, const RecordSite& site,
                                   const ExtractionOptions& options = {});
 
-/// The f spacing of a record when the header does not give τ: the median
-/// spacing of consecutive f rows of the test runs (0 when there are none).
+/// The f spacing of a record when the header does not give τ, from the
+/// consecutive f rows of the test runs: their median spacing where the time
+/// stamps are exact; where they jitter (up to kMaxStampJitter of τ), the
+/// stretches' spans over their windows, in the fewest digits within three
+/// standard errors of it (0 when there are no f rows).
 double median_f_spacing(const RecordFile& file);
 
 }  // namespace insmc::runs

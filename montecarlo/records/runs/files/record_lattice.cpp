@@ -124,8 +124,13 @@ std::vector<double> counted_differences(const RecordFile& file, const ModelOptio
         if (row.phase != Phase::kTest || !row.f_mps2[static_cast<std::size_t>(a)] || row.t_s < tau * (1 - 1e-9))
           continue;
         if (!u.empty() && row.t_s - last_t > 1.5 * tau) u.clear();
+        // The window of a stamp that jitters is the grid's: the nominal's
+        // increment over it turns with the earth (ω_ie g τ per second of
+        // stamp, 1 % of a 0.1 ft/s pulse at 50 ms off a 10-s grid).
+        const double on_grid_t = std::round(row.t_s / tau) * tau;
+        const double t = std::abs(row.t_s - on_grid_t) <= kMaxStampJitter * tau ? on_grid_t : row.t_s;
         u.push_back(*row.f_mps2[static_cast<std::size_t>(a)] * tau +
-                    (nominal_velocity_increment(row.t_s, model) - nominal_velocity_increment(row.t_s - tau, model))[a]);
+                    (nominal_velocity_increment(t, model) - nominal_velocity_increment(t - tau, model))[a]);
         last_t = row.t_s;
         const std::size_t n = u.size();
         if (order == 1 && n >= 2) values.push_back(u[n - 1] - u[n - 2]);

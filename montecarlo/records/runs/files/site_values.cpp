@@ -34,8 +34,10 @@ std::vector<SiteValue> complete_site(const RecordFile& file, RecordSite& site, d
     const double spacing = median_f_spacing(file);
     site.filter_interval_s = spacing > 0 ? spacing : 10.0;
     out.push_back({"filter_interval_s", site.filter_interval_s, spacing > 0 ? "inferred" : "default",
-                   spacing > 0 ? fmt::format("filter_interval_s absent: the median spacing of the f rows, {:g} s (a "
-                                             "window shorter than the spacing cannot be told from the rows)",
+                   spacing > 0 ? fmt::format("filter_interval_s absent: the spacing of the test run's f rows, {:g} s "
+                                             "(their median, or where the time stamps jitter their mean over "
+                                             "consecutive rows in the fewest digits within three standard errors; "
+                                             "a window shorter than the spacing cannot be told from the rows)",
                                              spacing)
                                : "filter_interval_s absent and no f rows: 10 s assumed (no f row is modelled)"});
   }

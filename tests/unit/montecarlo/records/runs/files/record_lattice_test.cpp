@@ -6,11 +6,14 @@
 // millimetres).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "lib/preflight/test_run.h"
+#include "montecarlo/records/runs/files/layout.h"
 #include "montecarlo/records/runs/files/record_lattice.h"
 
 namespace insmc::runs {
@@ -76,6 +79,61 @@ TEST(RecordLattice, PulsesAreFoundWhenTheLoggerDroppedRecords) {
     const LatticeFit fit = f_pulse_lattice(file, ModelOptions{}, tau);
     EXPECT_EQ(fit.kind, LatticeFit::Kind::kLattice) << "tau " << tau;
     EXPECT_NEAR(fit.step, kPulse, 0.01 * kPulse) << "tau " << tau;
+  }
+}
+
+/// Stamps that jitter about the windows' grid by up to `share` of τ (the
+/// windows themselves stay the grid's), in a fixed pattern over ±share.
+void jitter_stamps(RecordFile& file, double tau, double share) {
+  int i = 0;
+  for (RecordRun& run : file.runs)
+    for (RecordRow& row : run.rows) row.t_s += share * tau * std::sin(2.4 * ++i);
+}
+
+TEST(RecordLattice, PulsesAreFoundWhenTheStampsJitter) {
+  // A logger whose stamps jitter 0.9 % of τ about the grid: the nominal's
+  // increment taken at the stamp turns with the earth by ω_ie g τ per
+  // second of jitter, 1 % of a 0.1 ft/s pulse at 50 ms on 10 s, and hid
+  // the pulses (continuous outputs assumed, the pulse noise then missed).
+  for (const double tau : {10.0, 20.0}) {
+    RecordFile file = counted_records(tau, kPulse);
+    jitter_stamps(file, tau, 0.009);
+    const LatticeFit fit = f_pulse_lattice(file, ModelOptions{}, tau);
+    EXPECT_EQ(fit.kind, LatticeFit::Kind::kLattice) << "tau " << tau;
+    EXPECT_NEAR(fit.step, kPulse, 0.01 * kPulse) << "tau " << tau;
+  }
+}
+
+TEST(RecordLattice, TheFilterIntervalOfStampsThatJitterIsTheGridsInItsFewDigits) {
+  // Twenty runs of 90 windows, each run missing a few: the median spacing
+  // of jittered stamps is one stamp's jitter off τ, and windows counted
+  // from it drift off the rows within the test run.
+  for (const double tau : {10.0, 0.5, 0.015625}) {
+    RecordFile file;
+    file.header = RecordHeader::make(45.0, System::kTheodolite, 90 * tau, Scheme::kNone);
+    for (int id = 1; id <= 20; ++id) {
+      RecordRun run;
+      run.id = id;
+      for (int k = 1; k <= 90; ++k) {
+        if ((k * 7 + id) % 23 == 0) continue;  // a dropped record
+        RecordRow row;
+        row.run = id;
+        row.t_s = k * tau;
+        row.phase = Phase::kTest;
+        row.f_mps2 = {1e-4, 2e-4, 3e-4};
+        run.rows.push_back(row);
+      }
+      file.runs.push_back(run);
+    }
+    EXPECT_DOUBLE_EQ(median_f_spacing(file), tau) << "exact stamps, tau " << tau;
+    jitter_stamps(file, tau, 0.005);
+    std::vector<double> spacings;
+    for (const RecordRun& run : file.runs)
+      for (std::size_t i = 1; i < run.rows.size(); ++i) spacings.push_back(run.rows[i].t_s - run.rows[i - 1].t_s);
+    std::nth_element(spacings.begin(), spacings.begin() + static_cast<std::ptrdiff_t>(spacings.size() / 2),
+                     spacings.end());
+    EXPECT_NE(spacings[spacings.size() / 2], tau) << "the raw median is off τ (else this test shows nothing)";
+    EXPECT_DOUBLE_EQ(median_f_spacing(file), tau) << "jittered stamps, tau " << tau;
   }
 }
 
