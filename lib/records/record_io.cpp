@@ -433,6 +433,11 @@ class Parser {
              fmt::format("run {} has only align rows: every run needs test or nav rows", file.runs[i].id));
       }
     }
+    // Runs in the order of their numbers, not of the file's lines: what is
+    // drawn per run (the null runs' streams) follows the run, so the same
+    // runs written in another order give the same results.
+    std::sort(file.runs.begin(), file.runs.end(),
+              [](const RecordRun& a, const RecordRun& b) { return a.id < b.id; });
   }
 
   LineReader lines_;

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -130,7 +132,9 @@ RecordFile random_file(std::mt19937_64& rng) {
   file.header.set("site", "somewhere else");
   file.header.set("truth.effect.sway", "amplitude=1e-3");
   file.header.set("truth.seed", "17");
-  const std::int64_t ids[] = {7, -3, 0, 1'000'000'007, std::numeric_limits<std::int64_t>::min(),
+  // In the order of their numbers, the reader's (runs in another order:
+  // RunsAreTakenInTheOrderOfTheirNumbers).
+  const std::int64_t ids[] = {std::numeric_limits<std::int64_t>::min(), -3, 0, 7, 1'000'000'007,
                               std::numeric_limits<std::int64_t>::max()};
   const double specials[] = {0.0, -0.0, 5e-324, -5e-324, std::numeric_limits<double>::min(),
                              kMaxRecordAbsWRadps, -kMaxRecordAbsWRadps, std::nextafter(kMaxRecordAbsWRadps, 0.0),
@@ -285,11 +289,11 @@ TEST(RecordIo, AcceptsRecordsOtherSoftwareWrote) {
     EXPECT_EQ(*f.header.find("instrument"), "ADIS16405");
     EXPECT_EQ(f.header.entries.front().key, "scheme");  // order kept as given
     ASSERT_EQ(f.runs.size(), 3u);
-    EXPECT_EQ(f.runs[0].id, 1007);
-    EXPECT_EQ(f.runs[1].id, -4);
-    EXPECT_EQ(f.runs[2].id, 42);
-    ASSERT_EQ(f.runs[0].rows.size(), 3u);
-    const RecordRow& a = f.runs[0].rows[0];
+    EXPECT_EQ(f.runs[0].id, -4);  // in the order of their numbers
+    EXPECT_EQ(f.runs[1].id, 42);
+    EXPECT_EQ(f.runs[2].id, 1007);
+    ASSERT_EQ(f.runs[2].rows.size(), 3u);
+    const RecordRow& a = f.runs[2].rows[0];
     EXPECT_EQ(a.phase, Phase::kAlign);
     EXPECT_EQ(a.t_s, -5.0);
     EXPECT_FALSE(a.r_ap_m);
@@ -298,17 +302,30 @@ TEST(RecordIo, AcceptsRecordsOtherSoftwareWrote) {
     EXPECT_EQ(a.f_mps2[2], 0.1);
     EXPECT_FALSE(a.w_radps[0]);
     EXPECT_EQ(a.w_radps[1], 1e-6);
-    EXPECT_EQ(f.runs[0].rows[2].r_ap_m, Eigen::Vector3d(1, 2, 3));
-    EXPECT_EQ(f.runs[0].rows[2].f_mps2[1], 2e-5);
-    ASSERT_EQ(f.runs[1].rows.size(), 3u);
-    EXPECT_EQ(f.runs[1].rows[1].t_s, 960.0);
-    EXPECT_EQ(f.runs[1].rows[1].phase, Phase::kNav);
-    EXPECT_EQ(f.runs[1].rows[2].r_ap_m, Eigen::Vector3d(3, 2, 1));
-    EXPECT_EQ(f.runs[1].rows[2].t_s, 4500.0);
+    EXPECT_EQ(f.runs[2].rows[2].r_ap_m, Eigen::Vector3d(1, 2, 3));
+    EXPECT_EQ(f.runs[2].rows[2].f_mps2[1], 2e-5);
+    ASSERT_EQ(f.runs[0].rows.size(), 3u);
+    EXPECT_EQ(f.runs[0].rows[1].t_s, 960.0);
+    EXPECT_EQ(f.runs[0].rows[1].phase, Phase::kNav);
+    EXPECT_EQ(f.runs[0].rows[2].r_ap_m, Eigen::Vector3d(3, 2, 1));
+    EXPECT_EQ(f.runs[0].rows[2].t_s, 4500.0);
     for (const auto& run : f.runs) {
       for (const auto& row : run.rows) EXPECT_EQ(row.run, run.id);
     }
   }
+}
+
+TEST(RecordIo, RunsAreTakenInTheOrderOfTheirNumbers) {
+  // The same runs written in another order (reversed, each run whole, or
+  // rows interleaved) read as the same file: what is drawn per run follows
+  // the run, not its place in the file.
+  std::mt19937_64 rng(11);
+  const RecordFile original = random_file(rng);
+  RecordFile reversed = original;
+  std::reverse(reversed.runs.begin(), reversed.runs.end());
+  ASSERT_NE(reversed.runs.front().id, original.runs.front().id);
+  const RecordFile back = parse_record_text(write_record_file(reversed), "reversed.csv");
+  expect_bit_identical(back, original);
 }
 
 TEST(RecordIo, AcceptsMissingFinalNewline) {
