@@ -3,6 +3,8 @@
 // effect removes it on held-out runs, and how far it shrinks.
 #include <fmt/format.h>
 
+#include <filesystem>
+
 #include "apps/cli_common.h"
 #include "apps/report_output.h"
 #include "apps/progress.h"
@@ -57,6 +59,14 @@ int cmd_gap(const Args& args) {
   std::optional<OutputFolderOption> out = prepare_report_folder(*vm, outline);
 
   const std::vector<std::string> names = (*vm)["records"].as<std::vector<std::string>>();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) {
+      std::error_code error;
+      if (std::filesystem::equivalent(names[j], names[i], error))
+        throw InputError("--records", echo_input(names[i], 256),
+                         fmt::format("the same file as --records {}: each run is diagnosed once",
+                                     echo_input(names[j], 256)));
+    }
   std::vector<RecordFile> files;
   std::size_t runs = 0, rows = 0;
   for (const std::string& name : names) {

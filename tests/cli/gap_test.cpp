@@ -133,6 +133,18 @@ TEST(Gap, TooFewRunsGiveAStatementNotARanking) {
   EXPECT_TRUE(has(r.out, "too few to fit candidate effects")) << r.out;
 }
 
+TEST(Gap, TheSameFileGivenTwiceIsRefused) {
+  // Each run diagnosed twice would halve the scatter's spread the model
+  // expects of independent runs: refused, naming both.
+  TempDir dir;
+  const std::string records = simulate(dir, "twice.csv", "--seed 15", 3);
+  const auto r = run_insmc("gap --records " + records + " --records " + dir.path().string() + "/./twice.csv --out " +
+                           dir.path().string() + "/set");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(has(r.err, "the same file as --records")) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "set")) << "no output set for refused input";
+}
+
 /// The number after `"key": ` in `json` from `from` on (NaN when absent).
 double json_number(const std::string& json, const std::string& key, std::size_t from = 0) {
   const auto at = json.find("\"" + key + "\": ", from);
