@@ -24,7 +24,7 @@ int cmd_gap(const Args& args) {
                      "record file (format v1), repeatable; all of one site")(
       "out", po::value<std::string>(), out_folder_help(gap::diagnosis_report_outline()).c_str())(
       "format", po::value<std::string>()->default_value("markdown"), "what to print: markdown or json")(
-      "alpha", po::value<double>()->default_value(0.01), "false-alarm rate of a significant gap, (0, 0.5)")(
+      "alpha", po::value<double>()->default_value(0.01), "false-alarm rate of a significant gap, [1e-4, 0.5)")(
       "seed", po::value<std::string>()->default_value("1"), "seed of the null runs and the resampling")(
       "calibration-runs", po::value<int>()->default_value(0), "null runs (0: max(200, 10 x runs))")(
       "max-effects", po::value<int>()->default_value(3), "effects added greedily at most, >= 1")(
@@ -44,6 +44,7 @@ int cmd_gap(const Args& args) {
   const mc::ReportFormat format = read_report_format(*vm, outline);
   gap::DiagnosisOptions options;
   options.alpha = (*vm)["alpha"].as<double>();
+  if (options.alpha > 0) options.bootstrap = gap::null_files_for(options.alpha);
   options.seed = read_count(*vm, "seed");
   options.calibration_runs = (*vm)["calibration-runs"].as<int>();
   options.max_selected = (*vm)["max-effects"].as<int>();

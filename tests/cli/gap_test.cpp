@@ -145,6 +145,21 @@ TEST(Gap, TheSameFileGivenTwiceIsRefused) {
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "set")) << "no output set for refused input";
 }
 
+TEST(Gap, ASmallAlphaTakesTheNullFilesItNeeds) {
+  // At alpha 1e-4 the default 2,000 null files cannot give a p-value below
+  // 1/2001: a gross effect was "no significant gap". The null files grow
+  // with 1/alpha, and an alpha whose tail the calibration cannot hold is
+  // refused.
+  TempDir dir;
+  const std::string records = simulate(dir, "sway.csv", "--seed 14 --effect sway:accel_rms=20mg", 10);
+  const auto r = run_insmc("gap --records " + records + " --alpha 1e-4 --rank never --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"significant\": true")) << r.out.substr(0, 600);
+  const auto refused = run_insmc("gap --records " + records + " --alpha 5e-5");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_TRUE(has(refused.err, "--alpha = 5e-05: must lie in [0.0001, 0.5)")) << refused.err;
+}
+
 /// The number after `"key": ` in `json` from `from` on (NaN when absent).
 double json_number(const std::string& json, const std::string& key, std::size_t from = 0) {
   const auto at = json.find("\"" + key + "\": ", from);

@@ -62,6 +62,16 @@ struct DiagnosisOptions : runs::RecordReading {
 /// `insmc gap` that sets it.
 void validate(const DiagnosisOptions& options);
 
+/// The smallest false-alarm rate allowed: the null files' tail beyond it
+/// would rest on a few of the calibration runs.
+inline constexpr double kMinAlpha = 1e-4;
+
+/// Null files for p-values at `alpha`: the default 2,000, or enough that
+/// the least p-value they can give, 1/(files + 1), is a tenth of alpha (at
+/// alpha 1e-4 with 2,000, p could never fall below alpha and no gap would
+/// ever be significant).
+int null_files_for(double alpha);
+
 /// options.candidates, or the registry's.
 inline const std::vector<Candidate>& candidates_of(const DiagnosisOptions& options) {
   return options.candidates ? *options.candidates : candidate_registry();
