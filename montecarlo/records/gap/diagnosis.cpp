@@ -200,13 +200,13 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   // than the model; less is the model being pessimistic, a finding of its own.
   const SignedGap signed_gap = gap::signed_gap(observed_ratios);
   d.unmodelled_gap = signed_gap.unmodelled;
-  d.unmodelled_critical = quantile(null.unmodelled, 1.0 - options.alpha);
+  d.unmodelled_critical = critical_value(null.unmodelled, options.alpha);
   d.p_value = p_value_of(d.unmodelled_gap, null.unmodelled);
   d.significant = d.p_value < options.alpha;
   d.null_gap_median = quantile(null.gaps, 0.5);
-  d.null_gap_critical = quantile(null.gaps, 1.0 - options.alpha);
+  d.null_gap_critical = critical_value(null.gaps, options.alpha);
   d.pessimistic.value = signed_gap.pessimistic;
-  d.pessimistic.critical = quantile(null.pessimistic, 1.0 - options.alpha);
+  d.pessimistic.critical = critical_value(null.pessimistic, options.alpha);
   d.pessimistic.p_value = p_value_of(signed_gap.pessimistic, null.pessimistic);
   d.pessimistic.significant = signed_gap.pessimistic > 0 && d.pessimistic.p_value < options.alpha;
   if (d.pessimistic.significant)
@@ -225,14 +225,14 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
         log_ratios(observed, through.calibration, CoherentReference::kAtLeastModelScatter);
     d.gap = gap_value(through_ratios);
     d.null_gap_median = quantile(through.gaps, 0.5);
-    d.null_gap_critical = quantile(through.gaps, 1.0 - options.alpha);
+    d.null_gap_critical = critical_value(through.gaps, options.alpha);
     const SignedGap through_signed = gap::signed_gap(through_ratios);
     d.unmodelled_gap = through_signed.unmodelled;
-    d.unmodelled_critical = quantile(through.unmodelled, 1.0 - options.alpha);
+    d.unmodelled_critical = critical_value(through.unmodelled, options.alpha);
     d.p_value = p_value_of(d.unmodelled_gap, through.unmodelled);
     d.significant = d.p_value < options.alpha;
     d.own_noise_less.value = through_signed.pessimistic;
-    d.own_noise_less.critical = quantile(through.pessimistic, 1.0 - options.alpha);
+    d.own_noise_less.critical = critical_value(through.pessimistic, options.alpha);
     d.own_noise_less.p_value = p_value_of(through_signed.pessimistic, through.pessimistic);
     d.own_noise_less.significant = through_signed.pessimistic > 0 && d.own_noise_less.p_value < options.alpha;
     d.null_kind = "the model and the sensor's noise through the import";

@@ -166,7 +166,7 @@ struct PriorScale {
 struct PessimisticFinding {
   double value = 0;        ///< G₋
   double p_value = 1;      ///< share of null files with G₋ at least this
-  double critical = 0;     ///< G₋ quantile 1 − α of the null files
+  double critical = 0;     ///< the G₋ to exceed for p ≤ α (critical_value)
   bool significant = false;
   PriorScale prior_scale;          ///< measured when significant
 };
@@ -265,8 +265,8 @@ struct Diagnosis {
   /// those of an unmodelled effect: the one-sided G₊ against the null's.
   double gap = 0, p_value = 1, alpha = 0.01;
   bool significant = false;
-  double null_gap_median = 0, null_gap_critical = 0;  ///< of G: quantiles 0.5 and 1 − α
-  double unmodelled_gap = 0, unmodelled_critical = 0;  ///< G₊ and its quantile 1 − α on the null
+  double null_gap_median = 0, null_gap_critical = 0;  ///< of G: the median and the critical value (critical_value: beyond it ⟺ p ≤ α)
+  double unmodelled_gap = 0, unmodelled_critical = 0;  ///< G₊ and its critical value on the null
   PessimisticFinding pessimistic;
   /// What the null is: "the model" or "the model and the sensor's noise through the import".
   std::string null_kind = "the model";

@@ -1,6 +1,9 @@
 #include "montecarlo/records/gap/null/bootstrap.h"
 
 #include <algorithm>
+#include <limits>
+#include <functional>
+#include <cmath>
 
 #include "montecarlo/study/random/philox.h"
 
@@ -31,6 +34,15 @@ double quantile(std::vector<double> v, double q) {
 double p_value_of(double observed, const std::vector<double>& null) {
   const auto above = std::count_if(null.begin(), null.end(), [&](double g) { return g >= observed; });
   return (1.0 + static_cast<double>(above)) / (1.0 + static_cast<double>(null.size()));
+}
+
+double critical_value(std::vector<double> null, double alpha) {
+  if (null.empty()) return 0.0;
+  const double k = std::floor(alpha * (static_cast<double>(null.size()) + 1.0)) - 1.0;
+  if (k < 0) return std::numeric_limits<double>::infinity();
+  const auto at = std::min(static_cast<std::size_t>(k), null.size() - 1);
+  std::nth_element(null.begin(), null.begin() + static_cast<std::ptrdiff_t>(at), null.end(), std::greater<>());
+  return null[at];
 }
 
 }  // namespace insmc::gap

@@ -21,4 +21,12 @@ double quantile(std::vector<double> v, double q);
 /// among them (never 0).
 double p_value_of(double observed, const std::vector<double>& null);
 
+/// The value a statistic must exceed for p_value_of to be at most alpha: the
+/// (k+1)-th largest null value, k = ⌊alpha (n + 1)⌋ − 1, so that "beyond the
+/// critical value" and "p ≤ alpha" are one decision (a quantile 1 − alpha
+/// between order statistics let a value beyond it keep p = 0.0105 at alpha
+/// 0.01). +∞ when no p can reach alpha, the least null value when every
+/// one does.
+double critical_value(std::vector<double> null, double alpha);
+
 }  // namespace insmc::gap

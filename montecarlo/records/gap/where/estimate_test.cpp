@@ -132,9 +132,9 @@ EstimateTest test_estimates(const RunEstimates& e, const ModelNull& null, const 
     r.name = std::string(catalogue_entries[static_cast<std::size_t>(e.columns[static_cast<std::size_t>(j)])].name);
     r.reach = s.reach[j];
     const auto k = static_cast<std::size_t>(3 * j);
-    r.beyond = t[3 * j], r.beyond_critical = quantile(sorted[k], 1.0 - options.alpha), r.beyond_p = p[k];
-    r.spread = t[3 * j + 1], r.spread_critical = quantile(sorted[k + 1], 1.0 - options.alpha), r.spread_p = p[k + 1];
-    r.mean = t[3 * j + 2], r.mean_critical = quantile(sorted[k + 2], 1.0 - options.alpha), r.mean_p = p[k + 2];
+    r.beyond = t[3 * j], r.beyond_critical = critical_value(sorted[k], options.alpha), r.beyond_p = p[k];
+    r.spread = t[3 * j + 1], r.spread_critical = critical_value(sorted[k + 1], options.alpha), r.spread_p = p[k + 1];
+    r.mean = t[3 * j + 2], r.mean_critical = critical_value(sorted[k + 2], options.alpha), r.mean_p = p[k + 2];
     out.estimates.push_back(r);
   }
   out.min_p = *std::min_element(p.begin(), p.end());

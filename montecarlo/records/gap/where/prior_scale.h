@@ -15,7 +15,7 @@
 
 namespace insmc::gap {
 
-/// `pessimistic_critical`: the null files' G₋ at 1 − α.
+/// `pessimistic_critical`: the null files' G₋ critical value (critical_value).
 PriorScale fit_prior_scale(const runs::PreparedRuns& p, const NullCalibration& m0, double pessimistic_critical,
                            std::uint64_t seed);
 
