@@ -62,12 +62,20 @@ std::string leading_finding(const Diagnosis& d) {
         return fmt::format("The unit lies outside the model's priors: Table 3.1's bounds widened {:.3g} times remove "
                            "{:.0f} % of the held-out gap (section 3).{}", c.parameters.front().value, 100 * c.shrink, verdicts);
     const CandidateResult& top = d.first.ranking.front();
+    const std::string against_null =
+        std::isfinite(top.null_shrink) ? fmt::format(", against {:.0f} % on null files", 100 * top.null_shrink)
+                                       : std::string();
+    if (!d.estimate_test.replaced_top.empty() && !d.estimate_test.scores.empty())
+      // Named by the estimates against the prior, not by the residuals'
+      // ranking: each with its own evidence.
+      return fmt::format("An effect inside the priors: {} (named by the test run's estimates against the prior, "
+                         "{} first at a held-out gain of {:.3g} nats, section 1). On the residuals the first-ranked "
+                         "candidate, {}, closes {:.0f} % of the held-out gap{} (section 3).{}",
+                         d.first.top, d.estimate_test.scores.front().effect, d.estimate_test.scores.front().heldout_gain,
+                         top.effect, 100 * top.shrink, against_null, verdicts);
     return fmt::format("An unmodelled effect: {} (first-ranked; {}) closes {:.0f} % of the held-out gap{}.{}", d.first.top,
                        top.as_effect.empty() ? "parameters in section 3" : "as an effect: " + top.as_effect,
-                       100 * top.shrink,
-                       std::isfinite(top.null_shrink) ? fmt::format(", against {:.0f} % on null files", 100 * top.null_shrink)
-                                                      : std::string(),
-                       verdicts);
+                       100 * top.shrink, against_null, verdicts);
   }
   if (significant)
     return "The data show more than the model predicts (a significant gap), not ranked here (section 3)." + verdicts;

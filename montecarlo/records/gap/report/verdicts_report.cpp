@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+
+#include <optional>
 #include <vector>
 
 namespace insmc::gap {
@@ -17,6 +19,10 @@ struct Verdict {
   bool more_significant;
   double less_value, less_critical, less_p;
   bool less_significant;
+  /// G₊ and the test run's estimates against the prior jointly (the model's
+  /// verdict when the estimates were measured): its p and decision.
+  std::optional<double> joint_p;
+  bool joint_significant = false;
 };
 
 Verdict against_model(const Diagnosis& d) {
@@ -32,11 +38,18 @@ Verdict against_model(const Diagnosis& d) {
             imported ? d.against_model.value : d.unmodelled_gap,
             imported ? d.against_model.critical : d.unmodelled_critical,
             imported ? d.against_model.p_value : d.p_value,
-            imported ? d.against_model.significant : d.significant,
+            // G₊ judged on its own p; the estimates join it below.
+            imported ? d.against_model.significant : d.p_value < d.alpha,
             d.pessimistic.value,
             d.pessimistic.critical,
             d.pessimistic.p_value,
-            d.pessimistic.significant};
+            d.pessimistic.significant,
+            std::nullopt,
+            false};
+  if (!imported && d.estimate_test.measured) {
+    v.joint_p = d.estimate_test.combined_p;
+    v.joint_significant = d.significant;
+  }
   return v;
 }
 
@@ -55,7 +68,9 @@ Verdict against_own_noise(const Diagnosis& d) {
           d.own_noise_less.value,
           d.own_noise_less.critical,
           d.own_noise_less.p_value,
-          d.own_noise_less.significant};
+          d.own_noise_less.significant,
+          std::nullopt,
+          false};
 }
 
 /// The priors' scale that fits the runs, read for what it says.
@@ -74,11 +89,16 @@ std::string prior_scale_sentence(const PessimisticFinding& f) {
 }
 
 std::string verdict_line(const Verdict& v, int runs, double alpha) {
+  const std::string joint =
+      v.joint_p && v.joint_significant != v.more_significant
+          ? fmt::format("; jointly with the test run's estimates against the prior (below), p = {:.3g}: **{}**",
+                        *v.joint_p, v.joint_significant ? "significant gap" : "no significant gap")
+          : std::string();
   return fmt::format("G = **{:.3g}** (null files of {} runs: median {:.3g}, critical {:.3g}). More than {} ({}): G+ = "
-                     "{:.3g}, p = {:.3g}, alpha = {}: **{}**. Less than {}: G- = {:.3g}, p = {:.3g} (critical {:.3g})",
+                     "{:.3g}, p = {:.3g}, alpha = {}: **{}**{}. Less than {}: G- = {:.3g}, p = {:.3g} (critical {:.3g})",
                      v.gap, runs, v.median, v.gap_critical, v.name, v.more, v.more_value, v.more_p, alpha,
-                     v.more_significant ? "significant gap" : "no significant gap", v.name, v.less_value, v.less_p,
-                     v.less_critical);
+                     v.more_significant ? "significant gap" : "no significant gap", joint, v.name, v.less_value,
+                     v.less_p, v.less_critical);
 }
 
 mc::Json verdict_json(const Verdict& v) {

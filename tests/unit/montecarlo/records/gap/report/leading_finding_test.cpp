@@ -38,6 +38,30 @@ TEST(LeadingFinding, AnUnmodelledEffectIsNamedWithItsEffectArgumentAndShrink) {
   EXPECT_TRUE(has(f, "88 %")) << f;
 }
 
+TEST(LeadingFinding, AnEffectNamedByTheEstimatesKeepsItsOwnEvidenceApartFromTheRankings) {
+  // The estimates against the prior named a class; the residuals' ranking
+  // put another effect first. The sentence gave the class the ranking's
+  // effect argument and shrink.
+  Diagnosis d = agreeing();
+  d.significant = true;
+  d.first.top = "anisoelastic_drift|deflection_of_vertical";
+  d.estimate_test.measured = true;
+  d.estimate_test.replaced_top = "thermal_transient";
+  d.estimate_test.scores = {{"anisoelastic_drift", 1.41}, {"deflection_of_vertical", 0.63}};
+  CandidateResult c;
+  c.effect = "thermal_transient";
+  c.shrink = 0.26;
+  c.null_shrink = 0.10;
+  c.as_effect = "thermal_transient:bias=-0.03mg";
+  d.first.ranking.push_back(c);
+  const std::string f = leading_finding(d);
+  EXPECT_TRUE(has(f, "An effect inside the priors: anisoelastic_drift|deflection_of_vertical (named by the test "
+                     "run's estimates against the prior, anisoelastic_drift first at a held-out gain of 1.41 nats"))
+      << f;
+  EXPECT_TRUE(has(f, "the first-ranked candidate, thermal_transient, closes 26 %")) << f;
+  EXPECT_FALSE(has(f, "bias=-0.03mg")) << "the ranking's effect argument is not the class's: " << f;
+}
+
 TEST(LeadingFinding, PulsesFarFromTheModelsComeBeforeAnyEffect) {
   Diagnosis d = agreeing();
   d.site[0] = {"dv_pulse_mps", 1.0 * kFtpsToMps, "inferred", "a lattice"};

@@ -54,6 +54,25 @@ TEST(Verdicts, RecordsOfTheModelItselfHaveOneVerdictAgainstTheModel) {
   EXPECT_FALSE(has(j, "own noise")) << j;
 }
 
+TEST(Verdicts, GPlusIsWordedAsItsOwnPAndTheJointTestBesideIt) {
+  // Significant through the estimates against the prior, not through G+:
+  // "G+ ... p = 0.794: significant gap" said the joint decision of G+'s p.
+  Diagnosis d;
+  d.runs = 5;
+  d.gap = 0.568;
+  d.unmodelled_gap = 0.0854;
+  d.p_value = 0.794;
+  d.estimate_test.measured = true;
+  d.estimate_test.combined_p = 0.0005;
+  d.significant = true;
+  const std::string md = verdicts_markdown(d);
+  EXPECT_TRUE(has(md, "G+ = 0.0854, p = 0.794, alpha = 0.01: **no significant gap**; jointly with the test run's "
+                      "estimates against the prior (below), p = 0.0005: **significant gap**"))
+      << md;
+  const std::string j = verdicts_json(d).dump(-1);
+  EXPECT_TRUE(has(j, "\"p_value\":0.794,\"significant\":false")) << j;
+}
+
 TEST(Verdicts, TheJsonListsBothInTheReportsOrder) {
   const std::string j = verdicts_json(through_the_import()).dump(-1);
   const auto model = j.find("\"against\":\"the model\"");
