@@ -119,6 +119,20 @@ TEST(HostileOptions, APercentPlaceholderInAnArgumentIsRefusedNotLoopedOn) {
   }
 }
 
+TEST(HostileOptions, APercentValueAndATooLargeCountSayWhatIsAllowed) {
+  const ProgramResult percent = run_insmc("run --confidence 95%");
+  EXPECT_EQ(percent.exit_code, 2);
+  EXPECT_NE(percent.err.find("--confidence = 95%: values hold no '%'; a share is a fraction (95% is 0.95)"),
+            std::string::npos)
+      << percent.err;
+  for (const std::string seed : {"1e20", "99999999999999999999"}) {
+    const ProgramResult large = run_insmc("run --seed " + seed);
+    EXPECT_EQ(large.exit_code, 2);
+    EXPECT_NE(large.err.find("--seed = " + seed + ": is too large: a whole number up to 2^53"), std::string::npos)
+        << large.err;
+  }
+}
+
 TEST(HostileOptions, AMisspelledOptionOrEffectNameGetsTheNameMeant) {
   const ProgramResult option = run_insmc("gap --recrods x.csv");
   EXPECT_EQ(option.exit_code, 2);
