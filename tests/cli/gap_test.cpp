@@ -1,6 +1,7 @@
 // End-to-end tests of `insmc gap` and `insmc gap-validate`: null records give
 // no significant gap, a withheld effect is found and named, records written
 // by other software are taken, bad input is refused (exit 2, one line).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -158,6 +159,42 @@ TEST(Gap, ASmallAlphaTakesTheNullFilesItNeeds) {
   const auto refused = run_insmc("gap --records " + records + " --alpha 5e-5");
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_TRUE(has(refused.err, "--alpha = 5e-05: must lie in [0.0001, 0.5)")) << refused.err;
+}
+
+TEST(Gap, ACorruptRecordIsSaidFirstAndAnEffectInEveryRunIsNot) {
+  // One test-run position 500 m off (a logger's corrupt value) in one run
+  // of twenty was named an effect by the ranking; it is said first, as a
+  // record, naming its run and time. A strong sway puts rows of every run
+  // past the same bound: that is an effect, not a record, and is not said so.
+  TempDir dir;
+  RecordFile file = read_record_file(simulate(dir, "clean.csv", "--seed 16", 20));
+  RecordRun& run = file.runs[7];
+  RecordRow* spiked = nullptr;
+  // A row the diagnosis reads: r one per 30-s slot from the first
+  // (extract_runs), 10 s, 40 s, ... in these files.
+  for (RecordRow& row : run.rows)
+    if (row.phase == Phase::kTest && row.t_s >= 300.0 && row.r_ap_m && std::fmod(row.t_s - 10.0, 30.0) == 0.0) {
+      spiked = &row;
+      break;
+    }
+  ASSERT_NE(spiked, nullptr);
+  (*spiked->r_ap_m)[0] += 500.0;
+  const std::string path = (dir.path() / "spiked.csv").string();
+  std::ofstream(path) << write_record_file(file);
+  const auto r = run_insmc("gap --records " + path + " --rank never --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"isolated\": true")) << r.out.substr(0, 2000);
+  EXPECT_TRUE(has(r.out, fmt::format("A run has a record beyond"))) << r.out.substr(0, 2000);
+  EXPECT_TRUE(has(r.out, fmt::format("(run {} at t = {:g} s, r_x,", run.id, spiked->t_s))) << r.out.substr(0, 2000);
+  const std::string clean = (dir.path() / "clean.csv").string();
+  const auto c = run_insmc("gap --records " + clean + " --rank never --format json");
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_TRUE(has(c.out, "\"count\": 0")) << "the same runs without the corrupt value: " << c.out.substr(0, 2000);
+  const auto e = run_insmc("gap --records " + simulate(dir, "sway.csv", "--seed 16 --effect sway:accel_rms=20mg", 20) +
+                           " --rank never --format json");
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  EXPECT_TRUE(has(e.out, "\"isolated\": false")) << e.out.substr(0, 2000);
+  EXPECT_FALSE(has(e.out, "a corrupt record")) << e.out.substr(0, 2000);
 }
 
 /// The number after `"key": ` in `json` from `from` on (NaN when absent).

@@ -23,6 +23,7 @@
 #include "montecarlo/records/gap/where/locate.h"
 #include "montecarlo/records/gap/where/prior_scale.h"
 #include "montecarlo/records/gap/where/estimate_test.h"
+#include "montecarlo/records/gap/where/outliers.h"
 #include "montecarlo/records/gap/ranking/estimate_naming.h"
 
 namespace insmc::gap {
@@ -194,6 +195,7 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
   const LogRatios observed_ratios =
       log_ratios(observed, null.calibration, CoherentReference::kAtLeastModelScatter);
   d.gap = gap_value(observed_ratios);
+  d.outliers = find_outliers(p, analysers, null_z, options.alpha);
   // The baseline of the candidates' held-out shrink, read as they are.
   d.heldout_gap_before = gap_value(log_ratios(observed, null.calibration));
   // One-sided: an unmodelled effect shows as more scatter or more in common

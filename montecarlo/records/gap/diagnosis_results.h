@@ -3,6 +3,7 @@
 /// stage, gathered in a Diagnosis. The stages fill these in; the report
 /// (report/) and the validation (validation/) read them.
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -251,11 +252,31 @@ struct FirstRanking {
   std::vector<PairResult> pairs;         ///< of the top candidates, by held-out log-likelihood gain
 };
 
+/// A record far beyond what the model and its null runs give for any row:
+/// a corrupt value or a jump in the logger, not an effect (where/outliers.h).
+struct OutlierRow {
+  std::int64_t run = 0;
+  double t_s = 0;
+  std::string component;  ///< "f_x", "r_y", ...
+  double z = 0;           ///< normalized residual under the model
+};
+struct Outliers {
+  double threshold = 0;             ///< |z| beyond which a row is listed
+  int count = 0;                    ///< runs with a row beyond it
+  /// In at most a tenth of the runs (at least one): a record of its own,
+  /// said first. In more, it is what an effect does to every run (a strong
+  /// sway puts every run past it), and the ranking reads it.
+  bool isolated = false;
+  std::vector<OutlierRow> largest;  ///< each such run's largest |z|, the largest first, at most kListedOutliers
+};
+inline constexpr int kListedOutliers = 10;
+
 struct Diagnosis {
   int runs = 0;
   std::string scheme = "none";  ///< the records' scheme (header)
   int calibration_runs = 0;
   std::vector<std::string> statements;  ///< what the data cannot support, plainly
+  Outliers outliers;
   std::vector<runs::SiteValue> site;          ///< every value of the site the null uses, with its source
   /// From a raw-sensor stage (records/raw_stage.h; 0 without one): the
   /// gyros' and accelerometers' fitted noise over one Schuler period over

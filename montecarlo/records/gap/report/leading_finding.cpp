@@ -6,6 +6,7 @@
 
 #include "lib/units/units.h"
 #include "montecarlo/records/gap/report/verdicts_report.h"
+#include "montecarlo/records/gap/where/outliers.h"
 
 namespace insmc::gap {
 namespace {
@@ -22,7 +23,22 @@ std::string far_site_value(const runs::SiteValue& v, const char* what, double mo
 
 }  // namespace
 
+namespace {
+
+std::string finding_of_the_runs(const Diagnosis& d);
+
+}  // namespace
+
 std::string leading_finding(const Diagnosis& d) {
+  // A corrupt record comes before anything read from the runs it is in.
+  const std::string outliers = outliers_sentence(d.outliers);
+  const std::string rest = finding_of_the_runs(d);
+  return outliers.empty() ? rest : outliers + " " + rest;
+}
+
+namespace {
+
+std::string finding_of_the_runs(const Diagnosis& d) {
   std::vector<std::string> far;
   for (const runs::SiteValue& v : d.site) {
     std::string s;
@@ -85,4 +101,5 @@ std::string leading_finding(const Diagnosis& d) {
   return "The data agree with the model: no significant gap in either direction.";
 }
 
+}  // namespace
 }  // namespace insmc::gap

@@ -244,6 +244,21 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
   for (const std::string& s : d.selected) selected.push_back(s);
   j["selected"] = selected;
   j["finding"] = leading_finding(d);
+  mc::Json outliers = mc::Json::object();
+  outliers["threshold"] = d.outliers.threshold;
+  outliers["count"] = d.outliers.count;
+  outliers["isolated"] = d.outliers.isolated;
+  mc::Json largest = mc::Json::array();
+  for (const OutlierRow& o : d.outliers.largest) {
+    mc::Json row = mc::Json::object();
+    row["run"] = o.run;
+    row["t_s"] = o.t_s;
+    row["component"] = o.component;
+    row["z"] = o.z;
+    largest.push_back(row);
+  }
+  outliers["largest"] = largest;
+  j["outliers"] = outliers;
   mc::Json statements = mc::Json::array();
   for (const std::string& s : d.statements) statements.push_back(s);
   j["statements"] = statements;
