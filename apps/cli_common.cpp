@@ -110,13 +110,11 @@ std::uint64_t parse_count(const std::string& text, const std::string& field) {
   if (const auto [ptr, ec] = std::from_chars(text.data(), end, v); ec == std::errc() && ptr == end) return v;
   double x = 0;
   const auto [ptr, ec] = std::from_chars(text.data(), end, x);
-  if (ec == std::errc() && ptr == end && x >= 0 && x <= 0x1p53 && x == std::floor(x))
-    return static_cast<std::uint64_t>(x);
-  if (ec == std::errc::result_out_of_range || (ec == std::errc() && ptr == end && x > 0x1p53))
-    throw InputError(field, echo_input(text),
-                     "is too large: a whole number up to 2^53 (9007199254740992) in exponent form, or up to "
-                     "18446744073709551615 in digits");
-  throw InputError(field, echo_input(text), "must be a non-negative whole number (e.g. 100000 or 1e5)");
+  const bool whole = ec == std::errc() && ptr == end && x >= 0 && x == std::floor(x);
+  if (whole && x <= 0x1p53) return static_cast<std::uint64_t>(x);
+  throw InputError(field, echo_input(text), whole || ec == std::errc::result_out_of_range
+      ? "is too large: a whole number up to 2^53 (9007199254740992) in exponent form, or 18446744073709551615 in digits"
+      : "must be a non-negative whole number (e.g. 100000 or 1e5)");
 }
 
 std::uint64_t read_count(const po::variables_map& vm, const std::string& name) {

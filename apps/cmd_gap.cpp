@@ -3,8 +3,6 @@
 // effect removes it on held-out runs, and how far it shrinks.
 #include <fmt/format.h>
 
-#include <filesystem>
-
 #include "apps/cli_common.h"
 #include "apps/report_output.h"
 #include "apps/progress.h"
@@ -44,7 +42,7 @@ int cmd_gap(const Args& args) {
   const mc::ReportFormat format = read_report_format(*vm, outline);
   gap::DiagnosisOptions options;
   options.alpha = (*vm)["alpha"].as<double>();
-  if (options.alpha > 0) options.bootstrap = gap::null_files_for(options.alpha);
+  options.bootstrap = gap::null_files_for(options.alpha);
   options.seed = read_count(*vm, "seed");
   options.calibration_runs = (*vm)["calibration-runs"].as<int>();
   options.max_selected = (*vm)["max-effects"].as<int>();
@@ -60,14 +58,6 @@ int cmd_gap(const Args& args) {
   std::optional<OutputFolderOption> out = prepare_report_folder(*vm, outline);
 
   const std::vector<std::string> names = (*vm)["records"].as<std::vector<std::string>>();
-  for (std::size_t i = 0; i < names.size(); ++i)
-    for (std::size_t j = 0; j < i; ++j) {
-      std::error_code error;
-      if (std::filesystem::equivalent(names[j], names[i], error))
-        throw InputError("--records", echo_input(names[i], 256),
-                         fmt::format("the same file as --records {}: each run is diagnosed once",
-                                     echo_input(names[j], 256)));
-    }
   std::vector<RecordFile> files;
   std::size_t runs = 0, rows = 0;
   for (const std::string& name : names) {

@@ -46,8 +46,7 @@ std::string parse_error_message(const boost::program_options::error& e) {
   if (named == nullptr) return e.what();
   for (const auto& [key, value] : named->*SubstitutionsOf::kMember)
     if (value.find('%') != std::string::npos)
-      return key == "value" ? echo_input(named->get_option_name()) + " = " + echo_input(value) +
-                                  ": values hold no '%'; a share is a fraction (95% is 0.95)"
+      return key == "value" ? echo_input(named->get_option_name()) + " = " + echo_input(value) + ": no '%' in a value (95% is 0.95)"
                             : "the option " + echo_input(named->get_option_name()) + " is not understood (it holds a '%')";
   return e.what();
 }

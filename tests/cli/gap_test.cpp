@@ -136,13 +136,13 @@ TEST(Gap, TooFewRunsGiveAStatementNotARanking) {
 
 TEST(Gap, TheSameFileGivenTwiceIsRefused) {
   // Each run diagnosed twice would halve the scatter's spread the model
-  // expects of independent runs: refused, naming both.
+  // expects of independent runs: refused, naming both (a copy too).
   TempDir dir;
   const std::string records = simulate(dir, "twice.csv", "--seed 15", 3);
   const auto r = run_insmc("gap --records " + records + " --records " + dir.path().string() + "/./twice.csv --out " +
                            dir.path().string() + "/set");
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_TRUE(has(r.err, "the same file as --records")) << r.err;
+  EXPECT_TRUE(has(r.err, "holds the same runs as --records " + records)) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "set")) << "no output set for refused input";
 }
 

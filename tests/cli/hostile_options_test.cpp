@@ -122,7 +122,7 @@ TEST(HostileOptions, APercentPlaceholderInAnArgumentIsRefusedNotLoopedOn) {
 TEST(HostileOptions, APercentValueAndATooLargeCountSayWhatIsAllowed) {
   const ProgramResult percent = run_insmc("run --confidence 95%");
   EXPECT_EQ(percent.exit_code, 2);
-  EXPECT_NE(percent.err.find("--confidence = 95%: values hold no '%'; a share is a fraction (95% is 0.95)"),
+  EXPECT_NE(percent.err.find("--confidence = 95%: no '%' in a value (95% is 0.95)"),
             std::string::npos)
       << percent.err;
   for (const std::string seed : {"1e20", "99999999999999999999"}) {

@@ -35,6 +35,7 @@ void validate(const DiagnosisOptions& options) {
 }
 
 int null_files_for(double alpha) {
+  if (!(alpha >= kMinAlpha)) return DiagnosisOptions{}.bootstrap;  // refused by validate
   return std::max(DiagnosisOptions{}.bootstrap, static_cast<int>(std::ceil(10.0 / alpha - 1.0)));
 }
 

@@ -12,6 +12,12 @@ RecordFile merge_record_files(const std::vector<RecordFile>& files, const std::v
   for (const RecordRun& r : out.runs) ids[r.id] = true;
   std::int64_t next = ids.empty() ? 0 : ids.rbegin()->first + 1;
   for (std::size_t f = 1; f < files.size(); ++f) {
+    // A file given twice, or a copy: each run would count twice against the
+    // model's run-to-run scatter.
+    for (std::size_t g = 0; g < f; ++g)
+      if (files[f].runs == files[g].runs)
+        throw InputError("--records", names[f],
+                         "holds the same runs as --records " + names[g] + ": each run is diagnosed once");
     const RecordHeader& h = files[f].header;
     const RecordHeader& h0 = files.front().header;
     if (h.latitude_deg() != h0.latitude_deg() || h.system() != h0.system() ||
