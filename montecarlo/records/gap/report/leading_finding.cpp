@@ -21,23 +21,7 @@ std::string far_site_value(const runs::SiteValue& v, const char* what, double mo
                      v.source == "header" ? "stated in the header," : "inferred from the rows,", ratio, model_text);
 }
 
-}  // namespace
-
-namespace {
-
-std::string finding_of_the_runs(const Diagnosis& d);
-
-}  // namespace
-
-std::string leading_finding(const Diagnosis& d) {
-  // A corrupt record comes before anything read from the runs it is in.
-  const std::string outliers = outliers_sentence(d.outliers);
-  const std::string rest = finding_of_the_runs(d);
-  return outliers.empty() ? rest : outliers + " " + rest;
-}
-
-namespace {
-
+/// The finding read from the runs themselves.
 std::string finding_of_the_runs(const Diagnosis& d) {
   std::vector<std::string> far;
   for (const runs::SiteValue& v : d.site) {
@@ -102,4 +86,12 @@ std::string finding_of_the_runs(const Diagnosis& d) {
 }
 
 }  // namespace
+
+std::string leading_finding(const Diagnosis& d) {
+  // A corrupt record comes before anything read from the runs it is in.
+  const std::string outliers = outliers_sentence(d.outliers);
+  const std::string rest = finding_of_the_runs(d);
+  return outliers.empty() ? rest : outliers + " " + rest;
+}
+
 }  // namespace insmc::gap

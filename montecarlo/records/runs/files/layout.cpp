@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <fmt/format.h>
 
 #include "lib/common/assert.h"
@@ -127,64 +128,56 @@ std::string coherent_group_name(int c) {
 int coherent_representative(int c) { return c == kCoherentCount - 1 ? kEstimatesGroup : c; }
 
 double median_f_spacing(const RecordFile& file) {
-  std::vector<double> spacings;
+  // Consecutive f rows of the test runs: the navigation rows may be sampled
+  // or averaged otherwise, and outnumber the test's.
+  struct Step {
+    double d_s;
+    bool opens_run;
+  };
+  std::vector<Step> steps;
   for (const RecordRun& run : file.runs) {
     double last = -1.0;
+    bool first = true;
     for (const RecordRow& row : run.rows) {
-      // The test run alone: navigation rows may be sampled or averaged
-      // otherwise, and outnumber the test's.
       if (row.phase != Phase::kTest || !row.has_f()) continue;
-      if (last >= 0.0) spacings.push_back(row.t_s - last);
+      if (last >= 0.0) steps.push_back({row.t_s - last, std::exchange(first, false)});
       last = row.t_s;
     }
   }
-  if (spacings.empty()) return 0.0;
-  const double median = [&] {
-    std::nth_element(spacings.begin(), spacings.begin() + spacings.size() / 2, spacings.end());
-    return spacings[spacings.size() / 2];
-  }();
+  if (steps.empty()) return 0.0;
+  std::vector<double> spacings(steps.size());
+  std::transform(steps.begin(), steps.end(), spacings.begin(), [](const Step& s) { return s.d_s; });
+  std::nth_element(spacings.begin(), spacings.begin() + static_cast<std::ptrdiff_t>(spacings.size() / 2),
+                   spacings.end());
+  const double median = spacings[spacings.size() / 2];
   if (!(median > 0.0)) return 0.0;
   // Time stamps that jitter put the median one stamp's jitter off τ (a few
   // 1e-4 of it), and the windows counted from it drift off the records
   // within the test run. Each stretch of consecutive windows spans its
   // windows' τ less two stamps' jitter: the stretches' spans over their
   // windows give τ to that jitter over the windows counted.
-  double span_s = 0.0, windows = 0.0, squared_off = 0.0;
+  const auto windows_of = [&](const Step& s) {
+    const double k = std::round(s.d_s / median);
+    return k >= 1.0 && std::abs(s.d_s - k * median) <= kMaxStampJitter * 2.0 * median ? k : 0.0;
+  };
+  double span_s = 0.0, windows = 0.0;
   long pairs = 0, stretches = 0;
-  for (const RecordRun& run : file.runs) {
-    double last = -1.0;
-    bool in_stretch = false;
-    for (const RecordRow& row : run.rows) {
-      if (row.phase != Phase::kTest || !row.has_f()) continue;
-      if (last >= 0.0) {
-        const double d = row.t_s - last;
-        const double k = std::round(d / median);
-        const bool whole = k >= 1.0 && std::abs(d - k * median) <= kMaxStampJitter * 2.0 * median;
-        if (whole) {
-          stretches += in_stretch ? 0 : 1;
-          span_s += d;
-          windows += k;
-          ++pairs;
-        }
-        in_stretch = whole;
-      }
-      last = row.t_s;
+  bool in_stretch = false;
+  for (const Step& s : steps) {
+    const double k = windows_of(s);
+    if (k > 0.0) {
+      stretches += in_stretch && !s.opens_run ? 0 : 1;
+      span_s += s.d_s;
+      windows += k;
+      ++pairs;
     }
+    in_stretch = k > 0.0;
   }
   if (!(windows > 0.0)) return median;
   const double tau = span_s / windows;
-  for (const RecordRun& run : file.runs) {
-    double last = -1.0;
-    for (const RecordRow& row : run.rows) {
-      if (row.phase != Phase::kTest || !row.has_f()) continue;
-      if (last >= 0.0) {
-        const double d = row.t_s - last, k = std::round(d / median);
-        if (k >= 1.0 && std::abs(d - k * median) <= kMaxStampJitter * 2.0 * median)
-          squared_off += (d - k * tau) * (d - k * tau);
-      }
-      last = row.t_s;
-    }
-  }
+  double squared_off = 0.0;
+  for (const Step& s : steps)
+    if (const double k = windows_of(s); k > 0.0) squared_off += (s.d_s - k * tau) * (s.d_s - k * tau);
   // A pair's difference is two stamps' jitter, var 2 s²; a stretch's span
   // is its ends' two, so var(span_s) = 2 s² per stretch.
   const double sigma_s = std::sqrt(static_cast<double>(stretches) * squared_off / static_cast<double>(pairs)) / windows;
