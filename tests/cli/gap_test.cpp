@@ -161,6 +161,28 @@ TEST(Gap, ASmallAlphaTakesTheNullFilesItNeeds) {
   EXPECT_TRUE(has(refused.err, "--alpha = 5e-05: must lie in [0.0001, 0.5)")) << refused.err;
 }
 
+TEST(Gap, StampsThatJitterGiveTheDiagnosisOfTheGridsAtItsCost) {
+  // Each run's stamps ±0.5 % of τ off the grid: every run was a layout of
+  // its own (a model per run, ten times the CPU) and its null runs were
+  // simulated at the jittered times. The same runs on the grid give the
+  // same diagnosis.
+  TempDir dir;
+  const std::string clean = simulate(dir, "grid.csv", "--seed 18", 8);
+  RecordFile file = read_record_file(clean);
+  int i = 0;
+  for (RecordRun& run : file.runs)
+    for (RecordRow& row : run.rows)
+      if (row.t_s > 0) row.t_s += 0.05 * std::sin(2.4 * ++i);  // τ = 10 s
+  const std::string jittered = (dir.path() / "jittered.csv").string();
+  std::ofstream(jittered) << write_record_file(file);
+  const auto a = run_insmc("gap --records " + clean + " --rank never --format json");
+  const auto b = run_insmc("gap --records " + jittered + " --rank never --format json");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const auto from_gap = [](const std::string& j) { return j.substr(j.find("\"gap\":")); };
+  EXPECT_EQ(from_gap(a.out), from_gap(b.out));
+}
+
 TEST(Gap, ACorruptRecordIsSaidFirstAndAnEffectInEveryRunIsNot) {
   // One test-run position 500 m off (a logger's corrupt value) in one run
   // of twenty was named an effect by the ranking; it is said first, as a
