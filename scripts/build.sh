@@ -19,6 +19,9 @@ if command -v ccache >/dev/null 2>&1; then
   # headers are cacheable only with pch_defines,time_macros.
   export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
   export CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
+  # A whole test run (scripts/test.sh) caches well under a gigabyte: room
+  # for a few generations, not ccache's default 5 GB on a small disk.
+  export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-2G}
 fi
 if ! { cmake -S "$root" -B "$dir" "${launcher[@]}" "$@" && cmake --build "$dir" -j "$(nproc)" "${targets[@]}"; } >"$log" 2>&1; then
   tail -n 60 "$log" >&2

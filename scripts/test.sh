@@ -59,6 +59,9 @@ ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 run_suite build/san
 stage_done "suite under the sanitizers"
 bash scripts/fuzz.sh 10
 stage_done "fuzzing"
+# A passed stage's tree goes (ccache keeps its objects for the next run):
+# the three trees and the cache together outgrew a CI machine's disk.
+rm -rf build/sanitize
 
 # The MPI variant: insmc and its MPI tests only (the rest is the same code as
 # build/test), run serially (each test starts up to 3 ranks on the cores).
@@ -66,3 +69,4 @@ INSMC_BUILD_TARGETS="insmc cli_mpi_test" bash scripts/build.sh build/mpi -DCMAKE
   -DINSMC_WERROR=ON -DINSMC_MPI=ON "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
 jobs=1 run_suite build/mpi 600 -L mpi
 stage_done "MPI"
+rm -rf build/mpi

@@ -63,8 +63,8 @@ std::string format_with_interval(double x, double half_width) {
   const double h = std::fabs(half_width);
   const std::optional<int> place = interval_place(h);
   if (!place) {
-    const std::string half = std::isfinite(h) ? "0" : non_finite(h);
-    return fmt::format("{} ± {}", format_significant(x, 6), half);
+    if (std::isfinite(h)) return fmt::format("{} ± 0", format_significant(x, 6));
+    return fmt::format("{} ± {}", format_significant(x, 2), non_finite(h));
   }
   return fmt::format("{} ± {}", format_at_place(x, *place), format_at_place(h, *place));
 }

@@ -29,8 +29,10 @@ std::string format_significant(double x, int digits);
 /// "VALUE ± HALF": the half-width to two significant figures and the value
 /// to the same decimal place ("28830 ± 480", "0.0213 ± 0.0012",
 /// "0 ± 4800" for 3.2 ± 4800). A zero half-width (every sample alike) keeps
-/// six significant figures: "1234.57 ± 0"; so does a NaN or infinite one
-/// ("1234.57 ± nan"). A NaN value is "nan" whatever the interval.
+/// six significant figures: "1234.57 ± 0". An infinite or NaN one (a median
+/// of two samples: its interval reaches beyond them) bounds nothing, and the
+/// value keeps two figures, as beside the widest interval: "1200 ± inf".
+/// A NaN value is "nan" whatever the interval.
 std::string format_with_interval(double x, double half_width);
 
 }  // namespace insmc::mc

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <boost/math/distributions/chi_squared.hpp>
-#include <boost/math/distributions/normal.hpp>
+#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <limits>
 #if defined(__GNUC__) && defined(__x86_64__)
@@ -31,11 +31,17 @@ RmsBounds rms_confidence_interval(std::uint64_t n, double sum_r2, double sum_r4,
     const double hi2 = nd * m2 / boost::math::quantile(chi, alpha / 2);
     return {std::sqrt(lo2), std::sqrt(hi2)};
   }
-  // Delta method: Var(mean r²) = (m4 − m2²)/n; interval for RMS² then √.
+  // Delta method on the log scale: log RMS² has the variance
+  // (m4 − m2²)/(n m2²), estimated with n − 1 degrees of freedom and read
+  // against Student's t. The log keeps the interval inside (0, ∞) and
+  // skewed as RMS² is (at n = 5 the plain interval m2 ± z s covered 0.74
+  // of normal and 0.82 of uniform outputs, this one 0.91 and 0.94;
+  // docs/outputs.md, "RMS intervals").
+  if (m2 == 0) return {0.0, 0.0};
   const double m4 = sum_r4 / nd;
-  const double z = boost::math::quantile(boost::math::normal(), 1 - alpha / 2);
-  const double half = z * std::sqrt(std::max(0.0, m4 - m2 * m2) / nd);
-  return {std::sqrt(std::max(0.0, m2 - half)), std::sqrt(m2 + half)};
+  const double t = boost::math::quantile(boost::math::students_t(nd - 1), 1 - alpha / 2);
+  const double log_half = t * std::sqrt(std::max(0.0, m4 - m2 * m2) / (nd - 1)) / m2;
+  return {std::sqrt(m2 * std::exp(-log_half)), std::sqrt(m2 * std::exp(log_half))};
 }
 
 OutputStats::OutputStats(double shift, double scale)

@@ -70,8 +70,9 @@ class OutputStats {
 };
 
 /// Two-sided confidence interval for an RMS from n, Σr², Σr⁴: the delta
-/// method with the fourth moment (default, valid for non-normal r), or the
-/// exact chi-square interval for zero-mean normal r. {NaN, NaN} for n < 2.
+/// method with the fourth moment on the log scale, against Student's t with
+/// n − 1 degrees of freedom (default, valid for non-normal r), or the exact
+/// chi-square interval for zero-mean normal r. {NaN, NaN} for n < 2.
 struct RmsBounds {
   double lo, hi;
 };

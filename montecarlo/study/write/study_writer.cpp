@@ -192,8 +192,9 @@ EnvelopeFiles render_envelope(const StudyConfig& c, const StudyLayout& l, const 
   f.envelope_grid_csv = render_csv(grid);
   f.envelope_md = fmt::format(
       "# insmc run: RMS position error\n\n{} samples, seed {}, fidelity {}, latitude {} deg; "
-      "confidence intervals {}% (delta method, fourth moment). Each row is printed to the second significant "
-      "figure of its RMS interval's half-width; envelope.csv has every number at full precision.\n\n{}",
+      "confidence intervals {}% (fourth-moment delta method on the log scale, Student's t). Each row is printed "
+      "to the second significant figure of its RMS interval's half-width; envelope.csv has every number at full "
+      "precision.\n\n{}",
       c.samples, c.seed, to_string(c.fidelity), format_number(c.model.latitude_rad / kDegToRad),
       format_number(100 * c.confidence), render_markdown(readable));
   f.full_text = render_markdown(full);

@@ -54,8 +54,10 @@ TEST(FormatWithInterval, TinyAndHugeIntervals) {
 TEST(FormatWithInterval, ZeroNaNAndInfinite) {
   EXPECT_EQ(format_with_interval(1234.5678, 0), "1234.57 ± 0");  // every sample alike
   EXPECT_EQ(format_with_interval(0, 0), "0 ± 0");
-  EXPECT_EQ(format_with_interval(1234.5678, kNaN), "1234.57 ± nan");
-  EXPECT_EQ(format_with_interval(1234.5678, kInf), "1234.57 ± inf");
+  // An interval that bounds nothing leaves the value two figures.
+  EXPECT_EQ(format_with_interval(1234.5678, kNaN), "1200 ± nan");
+  EXPECT_EQ(format_with_interval(1234.5678, kInf), "1200 ± inf");
+  EXPECT_EQ(format_with_interval(0.0712, -kInf), "0.071 ± inf");
   EXPECT_EQ(format_with_interval(kNaN, 480), "nan");
   EXPECT_EQ(format_with_interval(kInf, 480), "inf ± 480");
   EXPECT_EQ(format_with_interval(-0.001, 4.8), "0.0 ± 4.8");  // no "-0.0"

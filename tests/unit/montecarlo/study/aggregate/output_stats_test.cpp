@@ -380,24 +380,34 @@ TEST(RmsInterval, ChiSquareMatchesTextbook) {
 }
 
 TEST(RmsInterval, DeltaMethodMatchesHandFormula) {
-  // r = 1, -1, 2, -2, 3: m2 = 19/5, m4 = 115/5; Var(RMS^2) = (m4 - m2^2)/n;
-  // z_0.975 = 1.959963984540054 (tables).
+  // r = 1, -1, 2, -2, 3: m2 = 19/5, m4 = 115/5; on the log scale the half
+  // width is t sqrt((m4 - m2^2)/(n - 1)) / m2, t_0.975(4) = 2.776445105197799
+  // (tables: 2.776).
   const OutputSummary s = one_pass({1.0, -1.0, 2.0, -2.0, 3.0}, 0.0, 2.0).summarize(0.95);
-  constexpr double kZ975 = 1.959963984540054;
+  constexpr double kT975Dof4 = 2.776445105197799;
   const double m2 = 3.8, m4 = 23.0;
-  const double half = kZ975 * std::sqrt((m4 - m2 * m2) / 5.0);
+  const double log_half = kT975Dof4 * std::sqrt((m4 - m2 * m2) / 4.0) / m2;
   constexpr double kTol = 64 * kEps;  // the quantile and a few roundings
-  EXPECT_NEAR(s.rms_lo, std::sqrt(m2 - half), kTol);
-  EXPECT_NEAR(s.rms_hi, std::sqrt(m2 + half), kTol);
+  EXPECT_NEAR(s.rms_lo, std::sqrt(m2 * std::exp(-log_half)), kTol);
+  EXPECT_NEAR(s.rms_hi, std::sqrt(m2 * std::exp(log_half)), kTol);
   EXPECT_LE(s.rms_lo, s.rms);
   EXPECT_GE(s.rms_hi, s.rms);
 }
 
-TEST(RmsInterval, DeltaLowerEndClipsAtZero) {
-  // Heavy tail, small n: m2 - z sqrt(Var) < 0, so the lower end is 0.
+TEST(RmsInterval, HeavyTailKeepsAPositiveLowerEndAndASkewedInterval) {
+  // One large value among zeros: the plain interval m2 ± z s would reach
+  // below zero; on the log scale the lower end stays positive and the
+  // interval reaches farther above the RMS than below it.
   const OutputSummary s = one_pass({0.0, 0.0, 0.0, 0.0, 10.0}, 0.0, 1.0).summarize(0.95);
+  EXPECT_GT(s.rms_lo, 0.0);
+  EXPECT_LT(s.rms_lo, s.rms);
+  EXPECT_GT(s.rms_hi - s.rms, s.rms - s.rms_lo);
+}
+
+TEST(RmsInterval, AllZeroValuesGiveAZeroInterval) {
+  const OutputSummary s = one_pass({0.0, 0.0, 0.0}, 0.0, 1.0).summarize(0.95);
   EXPECT_EQ(s.rms_lo, 0.0);
-  EXPECT_GT(s.rms_hi, s.rms);
+  EXPECT_EQ(s.rms_hi, 0.0);
 }
 
 TEST(RmsInterval, FewerThanTwoValuesIsNaN) {
@@ -421,7 +431,10 @@ TEST(RmsInterval, FewerThanTwoValuesIsNaN) {
 // The delta method is asymptotic: at n = 200 its coverage differs from 0.95
 // by O(1/sqrt(n)) (about 0.005-0.01 here), inside the +-0.024 acceptance
 // half-width; a larger error would be a real defect at the sample counts we
-// run. The chi-square interval is exact for zero-mean normal data.
+// run. The chi-square interval is exact for zero-mean normal data. At
+// n = 20 the log-scale interval still covers uniform data at 0.95 (0.953
+// measured over 40,000 sets; docs/outputs.md, "RMS intervals"); on normal
+// data it covers 0.93 there, not tested against 0.95.
 //
 // Power companions (each must *fail* the same check):
 //  - chi-square interval on uniform data: its half-width is sqrt(2/0.8)
@@ -433,7 +446,7 @@ TEST(RmsInterval, FewerThanTwoValuesIsNaN) {
 // (0.99 and 0.80), is computed and required to be >= 0.999.
 
 constexpr double kFamilyAlpha = 1e-6;
-constexpr int kAssertions = 3;  // normal+delta, uniform+delta, normal+chi-square
+constexpr int kAssertions = 4;  // normal+delta, uniform+delta (n = 200 and 20), normal+chi-square
 constexpr int kReps = 2000;
 constexpr std::size_t kSamplesPerRep = 200;
 constexpr double kConfidence = 0.95;
@@ -443,9 +456,10 @@ enum class Draw { Normal, Uniform };
 // Number of repetitions whose interval contains `true_rms`; the data have
 // RMS `data_rms` (normal sigma, or uniform on +-sqrt(3) data_rms). Each
 // repetition is one block in an OutputStats, as in the engine.
-int covered_count(Draw draw, double data_rms, double true_rms, bool gaussian, std::uint64_t seed) {
+int covered_count(Draw draw, double data_rms, double true_rms, bool gaussian, std::uint64_t seed,
+                  std::size_t samples_per_rep = kSamplesPerRep) {
   int covered = 0;
-  std::vector<double> block(kSamplesPerRep);
+  std::vector<double> block(samples_per_rep);
   for (int rep = 0; rep < kReps; ++rep) {
     CounterStream rng(seed, Stream::Bootstrap, static_cast<std::uint64_t>(rep));
     for (double& r : block) {
@@ -484,6 +498,12 @@ TEST_F(RmsCoverage, DeltaMethodNormal) {
 
 TEST_F(RmsCoverage, DeltaMethodUniform) {
   const int x = covered_count(Draw::Uniform, 1.0, 1.0, /*gaussian=*/false, 502);
+  EXPECT_GE(x, accept.lo);
+  EXPECT_LE(x, accept.hi);
+}
+
+TEST_F(RmsCoverage, DeltaMethodUniformAtTwentySamples) {
+  const int x = covered_count(Draw::Uniform, 1.0, 1.0, /*gaussian=*/false, 506, 20);
   EXPECT_GE(x, accept.lo);
   EXPECT_LE(x, accept.hi);
 }
