@@ -24,6 +24,7 @@
 #include "montecarlo/records/gap/where/prior_scale.h"
 #include "montecarlo/records/gap/where/estimate_test.h"
 #include "montecarlo/records/gap/where/outliers.h"
+#include "montecarlo/records/gap/where/unread_rows.h"
 #include "montecarlo/records/gap/ranking/estimate_naming.h"
 
 namespace insmc::gap {
@@ -196,6 +197,8 @@ Diagnosis diagnose(const RecordFile& file, const DiagnosisOptions& given) {
       log_ratios(observed, null.calibration, CoherentReference::kAtLeastModelScatter);
   d.gap = gap_value(observed_ratios);
   d.outliers = find_outliers(p, analysers, null_z, options.alpha);
+  d.unread = screen_unread_rows(records.file, p.runs, records.site.position_resolution_m);
+  if (const std::string s = unread_rows_sentence(d.unread); !s.empty()) d.statements.push_back(s);
   // The baseline of the candidates' held-out shrink, read as they are.
   d.heldout_gap_before = gap_value(log_ratios(observed, null.calibration));
   // One-sided: an unmodelled effect shows as more scatter or more in common

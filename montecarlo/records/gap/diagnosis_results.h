@@ -271,12 +271,31 @@ struct Outliers {
 };
 inline constexpr int kListedOutliers = 10;
 
+/// The r rows the model does not read, screened against those it reads
+/// (where/unread_rows.h).
+struct UnreadRow {
+  std::int64_t run = 0;
+  double t_s = 0;
+  std::string component;    ///< "r_x", "r_y", "r_z"
+  double deviation_m = 0;   ///< from the line through the read rows
+  double bound_m = 0;       ///< ten times the resolution's and the curvature's reach
+};
+
+struct UnreadRows {
+  int read = 0, unread = 0;  ///< r rows (times) of the runs' navigation and test phases
+  int beyond = 0;            ///< unread values (row × axis) beyond their bound
+  int runs_beyond = 0, runs = 0;
+  std::vector<UnreadRow> largest;  ///< the largest deviation over its bound first, at most kListedUnread
+};
+inline constexpr int kListedUnread = 5;
+
 struct Diagnosis {
   int runs = 0;
   std::string scheme = "none";  ///< the records' scheme (header)
   int calibration_runs = 0;
   std::vector<std::string> statements;  ///< what the data cannot support, plainly
   Outliers outliers;
+  UnreadRows unread;  ///< the r rows the model does not read, screened (where/unread_rows.h)
   std::vector<runs::SiteValue> site;          ///< every value of the site the null uses, with its source
   /// From a raw-sensor stage (records/raw_stage.h; 0 without one): the
   /// gyros' and accelerometers' fitted noise over one Schuler period over

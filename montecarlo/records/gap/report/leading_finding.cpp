@@ -7,6 +7,7 @@
 #include "lib/units/units.h"
 #include "montecarlo/records/gap/report/verdicts_report.h"
 #include "montecarlo/records/gap/where/outliers.h"
+#include "montecarlo/records/gap/where/unread_rows.h"
 
 namespace insmc::gap {
 namespace {
@@ -89,9 +90,20 @@ std::string finding_of_the_runs(const Diagnosis& d) {
 
 std::string leading_finding(const Diagnosis& d) {
   // A corrupt record comes before anything read from the runs it is in.
-  const std::string outliers = outliers_sentence(d.outliers);
+  std::string first = outliers_sentence(d.outliers);
+  if (unread_rows_isolated(d.unread)) {
+    const UnreadRow& l = d.unread.largest.front();
+    const std::string values = d.unread.beyond == 1 ? std::string("An r value")
+                                                    : fmt::format("{} r values", d.unread.beyond);
+    const std::string in_runs = d.unread.runs_beyond == 1 ? std::string("one run")
+                                                          : fmt::format("{} runs", d.unread.runs_beyond);
+    first += fmt::format("{}{} of {} that the model does not read {} the line through the rows it reads (the "
+                         "farthest: run {} at t = {:g} s, {} {:.3g} m off, bound {:.3g} m): a corrupt record.",
+                         first.empty() ? "" : " ", values, in_runs, d.unread.beyond == 1 ? "leaves" : "leave", l.run,
+                         l.t_s, l.component, l.deviation_m, l.bound_m);
+  }
   const std::string rest = finding_of_the_runs(d);
-  return outliers.empty() ? rest : outliers + " " + rest;
+  return first.empty() ? rest : first + " " + rest;
 }
 
 }  // namespace insmc::gap

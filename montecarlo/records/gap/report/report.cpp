@@ -259,6 +259,23 @@ mc::Json diagnosis_json(const Diagnosis& d, const std::vector<std::string>& reco
   }
   outliers["largest"] = largest;
   j["outliers"] = outliers;
+  mc::Json unread = mc::Json::object();
+  unread["read"] = d.unread.read;
+  unread["unread"] = d.unread.unread;
+  unread["beyond"] = d.unread.beyond;
+  unread["runs_beyond"] = d.unread.runs_beyond;
+  mc::Json farthest = mc::Json::array();
+  for (const UnreadRow& o : d.unread.largest) {
+    mc::Json row = mc::Json::object();
+    row["run"] = o.run;
+    row["t_s"] = o.t_s;
+    row["component"] = o.component;
+    row["deviation_m"] = o.deviation_m;
+    row["bound_m"] = o.bound_m;
+    farthest.push_back(row);
+  }
+  unread["largest"] = farthest;
+  j["unread_rows"] = unread;
   mc::Json statements = mc::Json::array();
   for (const std::string& s : d.statements) statements.push_back(s);
   j["statements"] = statements;
