@@ -91,17 +91,8 @@ std::string finding_of_the_runs(const Diagnosis& d) {
 std::string leading_finding(const Diagnosis& d) {
   // A corrupt record comes before anything read from the runs it is in.
   std::string first = outliers_sentence(d.outliers);
-  if (unread_rows_isolated(d.unread)) {
-    const UnreadRow& l = d.unread.largest.front();
-    const std::string values = d.unread.beyond == 1 ? std::string("An r value")
-                                                    : fmt::format("{} r values", d.unread.beyond);
-    const std::string in_runs = d.unread.runs_beyond == 1 ? std::string("one run")
-                                                          : fmt::format("{} runs", d.unread.runs_beyond);
-    first += fmt::format("{}{} of {} that the model does not read {} the line through the rows it reads (the "
-                         "farthest: run {} at t = {:g} s, {} {:.3g} m off, bound {:.3g} m): a corrupt record.",
-                         first.empty() ? "" : " ", values, in_runs, d.unread.beyond == 1 ? "leaves" : "leave", l.run,
-                         l.t_s, l.component, l.deviation_m, l.bound_m);
-  }
+  if (const std::string unread = unread_rows_finding(d.unread); !unread.empty())
+    first += (first.empty() ? "" : " ") + unread;
   const std::string rest = finding_of_the_runs(d);
   return first.empty() ? rest : first + " " + rest;
 }

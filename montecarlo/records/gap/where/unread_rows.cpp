@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 
 namespace insmc::gap {
 namespace {
@@ -30,15 +31,21 @@ struct RRow {
   bool read;
 };
 
-/// Second difference of the read rows around read row j (its neighbours'
-/// where it has one side only): the curvature's reach between read rows.
-double acceleration(const std::vector<RRow>& rows, const std::vector<std::size_t>& read, std::size_t j, int k) {
-  if (read.size() < 3) return std::numeric_limits<double>::infinity();
-  const std::size_t c = std::clamp<std::size_t>(j, 1, read.size() - 2);
-  const RRow &a = rows[read[c - 1]], &b = rows[read[c]], &e = rows[read[c + 1]];
-  const double slope_before = (b.r_m[k] - a.r_m[k]) / (b.t_s - a.t_s);
-  const double slope_after = (e.r_m[k] - b.r_m[k]) / (e.t_s - b.t_s);
-  return std::abs(2.0 * (slope_after - slope_before) / (e.t_s - a.t_s));
+/// Each read row's second difference (its neighbours' where it has one
+/// side only), per axis: the curvature's reach between read rows; infinite
+/// with fewer than three read rows (nothing to screen against).
+std::vector<Eigen::Vector3d> accelerations(const std::vector<RRow>& rows, const std::vector<std::size_t>& read) {
+  if (read.size() < 3)
+    return std::vector<Eigen::Vector3d>(read.size(), Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()));
+  std::vector<Eigen::Vector3d> out(read.size());
+  for (std::size_t j = 0; j < read.size(); ++j) {
+    const std::size_t c = std::clamp<std::size_t>(j, 1, read.size() - 2);
+    const RRow &a = rows[read[c - 1]], &b = rows[read[c]], &e = rows[read[c + 1]];
+    const Eigen::Vector3d slope_before = (b.r_m - a.r_m) / (b.t_s - a.t_s);
+    const Eigen::Vector3d slope_after = (e.r_m - b.r_m) / (e.t_s - b.t_s);
+    out[j] = (2.0 * (slope_after - slope_before) / (e.t_s - a.t_s)).cwiseAbs();
+  }
+  return out;
 }
 
 }  // namespace
@@ -48,7 +55,7 @@ UnreadRows screen_unread_rows(const RecordFile& file, const std::vector<runs::Ru
   std::map<std::int64_t, const runs::RunData*> by_id;
   for (const runs::RunData& r : runs) by_id[r.id] = &r;
   std::vector<UnreadRow> beyond;
-  std::map<std::int64_t, bool> run_beyond;
+  std::set<std::int64_t> runs_beyond;
   for (const RecordRun& record : file.runs) {
     const auto found = by_id.find(record.id);
     if (found == by_id.end()) continue;
@@ -66,6 +73,7 @@ UnreadRows screen_unread_rows(const RecordFile& file, const std::vector<runs::Ru
     }
     out.read += static_cast<int>(read.size());
     out.unread += static_cast<int>(rows.size() - read.size());
+    const std::vector<Eigen::Vector3d> acc = accelerations(rows, read);
     // Each unread row between two read rows, against the line through them.
     std::size_t next = 0;  // index into read of the first read row after i
     for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -77,17 +85,17 @@ UnreadRows screen_unread_rows(const RecordFile& file, const std::vector<runs::Ru
         const double line = a.r_m[k] + w * (b.r_m[k] - a.r_m[k]);
         const double size = std::max({std::abs(a.r_m[k]), std::abs(b.r_m[k]), std::abs(x.r_m[k])});
         const double q = std::max(resolution_m, kWrittenFigures * size);
-        const double acc = std::max(acceleration(rows, read, next - 1, k), acceleration(rows, read, next, k));
-        const double bound = kReach * (q + acc * (x.t_s - a.t_s) * (b.t_s - x.t_s) / 2.0);
+        const double a_max = std::max(acc[next - 1][k], acc[next][k]);
+        const double bound = kReach * (q + a_max * (x.t_s - a.t_s) * (b.t_s - x.t_s) / 2.0);
         const double deviation = x.r_m[k] - line;
         if (!(std::abs(deviation) > bound)) continue;
         beyond.push_back({record.id, x.t_s, fmt::format("r_{}", "xyz"[k]), deviation, bound});
-        run_beyond[record.id] = true;
+        runs_beyond.insert(record.id);
       }
     }
   }
   out.beyond = static_cast<int>(beyond.size());
-  out.runs_beyond = static_cast<int>(run_beyond.size());
+  out.runs_beyond = static_cast<int>(runs_beyond.size());
   out.runs = static_cast<int>(runs.size());
   std::sort(beyond.begin(), beyond.end(), [](const UnreadRow& l, const UnreadRow& r) {
     return std::abs(l.deviation_m) / l.bound_m > std::abs(r.deviation_m) / r.bound_m;
@@ -101,6 +109,18 @@ bool unread_rows_isolated(const UnreadRows& u) {
   return u.runs_beyond > 0 && u.runs_beyond <= std::max(1, u.runs / 10);
 }
 
+namespace {
+
+std::string farthest(const UnreadRows& u) {
+  const UnreadRow& l = u.largest.front();
+  return fmt::format("the farthest: run {} at t = {:g} s, {} {:.3g} m off, bound {:.3g} m", l.run, l.t_s, l.component,
+                     l.deviation_m, l.bound_m);
+}
+
+const char* leaves(int values) { return values == 1 ? "leaves" : "leave"; }
+
+}  // namespace
+
 std::string unread_rows_sentence(const UnreadRows& u) {
   if (u.unread == 0) return "";
   const runs::ExtractionOptions spacing;
@@ -110,12 +130,18 @@ std::string unread_rows_sentence(const UnreadRows& u) {
       "resolution's and the read rows' curvature's reach): ",
       spacing.r_spacing_s, spacing.nav_r_spacing_s, u.read, u.read + u.unread, u.unread);
   if (u.beyond == 0) return s + "none leaves it";
-  const UnreadRow& l = u.largest.front();
-  return s + fmt::format(
-                 "{} {} in {} of {} runs (the farthest: run {} at t = {:g} s, {} {:.3g} m off, bound {:.3g} m): "
-                 "values the model never compares, corrupt or moving faster than the read spacing",
-                 u.beyond, u.beyond == 1 ? "leaves it" : "leave it", u.runs_beyond, u.runs, l.run, l.t_s,
-                 l.component, l.deviation_m, l.bound_m);
+  return s + fmt::format("{} {} it in {} of {} runs ({}): values the model never compares, corrupt or moving faster "
+                         "than the read spacing",
+                         u.beyond, leaves(u.beyond), u.runs_beyond, u.runs, farthest(u));
+}
+
+std::string unread_rows_finding(const UnreadRows& u) {
+  if (!unread_rows_isolated(u)) return "";
+  const std::string values = u.beyond == 1 ? std::string("An r value") : fmt::format("{} r values", u.beyond);
+  const std::string in_runs = u.runs_beyond == 1 ? std::string("one run") : fmt::format("{} runs", u.runs_beyond);
+  return fmt::format("{} of {} that the model does not read {} the line through the rows it reads ({}): a corrupt "
+                     "record.",
+                     values, in_runs, leaves(u.beyond), farthest(u));
 }
 
 }  // namespace insmc::gap

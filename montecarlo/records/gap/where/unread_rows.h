@@ -33,4 +33,8 @@ bool unread_rows_isolated(const UnreadRows& u);
 /// "r is read one row per 30 s ...: N of M rows ..." or "" when every row is read.
 std::string unread_rows_sentence(const UnreadRows& u);
 
+/// "An r value of one run that the model does not read leaves ...: a
+/// corrupt record." or "" unless isolated: said first (as outliers_sentence).
+std::string unread_rows_finding(const UnreadRows& u);
+
 }  // namespace insmc::gap

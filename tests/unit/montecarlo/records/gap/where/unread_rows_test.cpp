@@ -59,16 +59,11 @@ TEST(UnreadRows, ASmoothQuantizedErrorStaysWithinItsReach) {
 }
 
 TEST(UnreadRows, ACorruptValueBetweenReadRowsIsFoundAndOneOnAReadRowIsLeftToTheResiduals) {
+  // t = 1210 s is not read (1210 / 30 is not whole).
   OneRun o = smooth_run();
-  // t = 1210 s is not read (1210 / 30 is not whole), t = 1200 s is.
-  (*o.file.runs[0].rows[121].r_ap_m)[1] += 50.0;
   ASSERT_EQ(o.file.runs[0].rows[121].t_s, 1210.0);
-  (*o.file.runs[0].rows[120].r_ap_m)[2] += 50.0;
-  // The read row's spike widens its neighbours' curvature: look at the
-  // first alone, then both.
-  OneRun first = smooth_run();
-  (*first.file.runs[0].rows[121].r_ap_m)[1] += 50.0;
-  const UnreadRows u = screen_unread_rows(first.file, first.runs, kResolution_m);
+  (*o.file.runs[0].rows[121].r_ap_m)[1] += 50.0;
+  const UnreadRows u = screen_unread_rows(o.file, o.runs, kResolution_m);
   ASSERT_EQ(u.beyond, 1);
   EXPECT_EQ(u.runs_beyond, 1);
   EXPECT_TRUE(unread_rows_isolated(u));
@@ -77,13 +72,22 @@ TEST(UnreadRows, ACorruptValueBetweenReadRowsIsFoundAndOneOnAReadRowIsLeftToTheR
   EXPECT_EQ(u.largest[0].t_s, 1210.0);
   EXPECT_EQ(u.largest[0].component, "r_y");
   EXPECT_NEAR(u.largest[0].deviation_m, 50.0, 2 * kResolution_m);
-  // The bound: ten times the resolution and the curvature's reach (about
-  // 2e-3 m/s² over 10 s × 20 s / 2 here, and the quantized second
-  // differences' own share).
+  // The bound: ten times q plus the curvature's reach a·10 s·20 s/2, a at
+  // most about 3e-3 m/s² of the error and 4q/(30 s · 60 s) of the read
+  // rows' own quantization: between 10 q and 10 (q + 0.6 m).
   EXPECT_GT(u.largest[0].bound_m, 10 * kResolution_m);
-  EXPECT_LT(u.largest[0].bound_m, 40.0);
-  const UnreadRows both = screen_unread_rows(o.file, o.runs, kResolution_m);
-  for (const UnreadRow& row : both.largest) EXPECT_NE(row.t_s, 1200.0) << "a read row is the residuals' to judge";
+  EXPECT_LT(u.largest[0].bound_m, 10 * (kResolution_m + 0.6));
+  EXPECT_NE(unread_rows_finding(u).find("An r value of one run"), std::string::npos) << unread_rows_finding(u);
+  EXPECT_NE(unread_rows_sentence(u).find("1 leaves it in 1 of 1 runs"), std::string::npos) << unread_rows_sentence(u);
+
+  // The same spike on a read row (t = 1200 s) is the residuals' to judge
+  // (outliers.h): it widens its neighbours' reach, and nothing is listed.
+  OneRun on_read = smooth_run();
+  (*on_read.file.runs[0].rows[120].r_ap_m)[1] += 50.0;
+  const UnreadRows r = screen_unread_rows(on_read.file, on_read.runs, kResolution_m);
+  EXPECT_EQ(r.read, 121);
+  EXPECT_EQ(r.beyond, 0);
+  EXPECT_EQ(unread_rows_finding(r), "");
 }
 
 TEST(UnreadRows, EveryRowReadIsNothingToSay) {
