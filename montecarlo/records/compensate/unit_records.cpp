@@ -6,16 +6,17 @@
 
 #include "lib/common/assert.h"
 #include "lib/common/input_error.h"
+#include "lib/records/record.h"
 #include "montecarlo/records/runs/model/scheme_rows.h"
 #include "montecarlo/records/runs/prepared_runs.h"
 
 namespace insmc::compensate {
 namespace {
 
-/// A recorder's time stamps may jitter: a row within 1 % of τ of t_k is
-/// t_k's (its window shifted by that much changes Δf by a hundredth of a
-/// window's drift, and r by the velocity error over τ/100).
-constexpr double kGridJitter = 0.01;
+/// A recorder's time stamps may jitter: a row within kMaxStampJitter of τ
+/// (1 %) of t_k is t_k's (its window shifted by that much changes Δf by a
+/// hundredth of a window's drift, and r by the velocity error over τ/100).
+constexpr double kGridJitter = kMaxStampJitter;
 
 /// The test row of `run` nearest t within kGridJitter τ, or nullptr.
 const RecordRow* test_row_at(const RecordRun& run, double t_s, double tau_s) {
