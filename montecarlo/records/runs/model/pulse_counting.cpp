@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -120,18 +121,13 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
   // at rest plus the run's own accelerometer output error (the forcing of
   // (3.24) per unit of x, integrated by Simpson's rule).
   const LinearErrorModel model(site.system, site.model);
-  std::vector<Vec3> nominal(G);
-  std::vector<Sensitivity3> own(G);
-  own[0].setZero();
-  nominal[0] = nominal_velocity_increment(grid[0], site.model);
-  for (std::size_t g = 1; g < G; ++g) {
-    const double a = grid[g - 1], b = grid[g];
-    own[g] = own[g - 1] + (b - a) / 6.0 * (model.forcing(a) + 4.0 * model.forcing(0.5 * (a + b)) + model.forcing(b));
-    nominal[g] = nominal_velocity_increment(b, site.model);
-  }
   const double ws = site.model.schuler_radps();
-  std::vector<double> cos_mid(G), sin_mid(G);
-  for (std::size_t g = 1; g < G; ++g) {
+  // The Schuler phase (3.24) at each grid point and each step's midpoint:
+  // the same for every draw.
+  std::vector<double> cos_at(G), sin_at(G), cos_mid(G), sin_mid(G);
+  for (std::size_t g = 0; g < G; ++g) {
+    cos_at[g] = std::cos(ws * grid[g]), sin_at[g] = std::sin(ws * grid[g]);
+    if (g == 0) continue;
     const double m = 0.5 * (grid[g - 1] + grid[g]);
     cos_mid[g] = std::cos(ws * m), sin_mid[g] = std::sin(ws * m);
   }
@@ -149,37 +145,72 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
     at[g].emplace_back(row.axis, static_cast<int>(j));
   }
 
-  Eigen::MatrixXd Q(static_cast<Eigen::Index>(r_rows.size()), kDraws);
+  // The runs drawn, in the stream's order: x, then the three pulse phases.
   Draws draws(kSeed);
   const UncertaintyVector x_std = x_var.cwiseSqrt();
+  Eigen::MatrixXd X(uncertainty_slot::kDim, kDraws), phase(3, kDraws);
   for (int s = 0; s < kDraws; ++s) {
-    UncertaintyVector x;
-    for (int j = 0; j < uncertainty_slot::kDim; ++j) x[j] = x_std[j] * draws.normal();
-    Vec3 phase;
-    for (int k = 0; k < 3; ++k) phase[k] = draws.uniform() - 0.5;
-    Vec3 v_prev = Vec3::Zero(), cos_sum = Vec3::Zero(), sin_sum = Vec3::Zero();
-    Vec3 cos_at_reset = Vec3::Zero(), sin_at_reset = Vec3::Zero();
-    for (std::size_t g = 1; g < G; ++g) {
-      const Vec3 v = nominal[g] + own[g] * x;
-      const double h = grid[g] - grid[g - 1];
-      for (int k = 0; k < 3; ++k) {
-        const double e = motion.velocity_rms_mps[k] >= 0.5 * w ? w * phase[k] * h  // cycling from the start
-                                                                 : counting_velocity_error_integral(v_prev[k], v[k], h, phase[k], w);
-        cos_sum[k] += cos_mid[g] * e;
-        sin_sum[k] += sin_mid[g] * e;
-      }
-      v_prev = v;
-      if (g == reset_at) cos_at_reset = cos_sum, sin_at_reset = sin_sum;
-      // (3.24): r(t) = ∫ cos(ω_s (t − s)) e(s) ds, from T after a reset.
-      const double c = std::cos(ws * grid[g]), sn = std::sin(ws * grid[g]);
-      for (const auto& [k, j] : at[g]) {
-        const bool from_reset = after_reset[static_cast<std::size_t>(j)];
-        Q(j, s) = c * (cos_sum[k] - (from_reset ? cos_at_reset[k] : 0.0)) +
-                  sn * (sin_sum[k] - (from_reset ? sin_at_reset[k] : 0.0));
+    for (int j = 0; j < uncertainty_slot::kDim; ++j) X(j, s) = x_std[j] * draws.normal();
+    for (int k = 0; k < 3; ++k) phase(k, s) = draws.uniform() - 0.5;
+  }
+  // An axis whose counters cycle from the start (sway of half a pulse or
+  // more) does not need its increment V.
+  std::array<bool, 3> cycling{};
+  for (int k = 0; k < 3; ++k) cycling[static_cast<std::size_t>(k)] = motion.velocity_rms_mps[k] >= 0.5 * w;
+  const bool needs_increment = !(cycling[0] && cycling[1] && cycling[2]);
+
+  // Each draw's running sums; the steps are taken a block at a time, so that
+  // the increments of every draw are one matrix product (the sensitivities
+  // of a block times the draws) and only a block of them is held.
+  constexpr std::size_t kBlock = 64;
+  Eigen::MatrixXd v_prev = Eigen::MatrixXd::Zero(3, kDraws), cos_sum = v_prev, sin_sum = v_prev;
+  Eigen::MatrixXd cos_at_reset = v_prev, sin_at_reset = v_prev;
+  Eigen::MatrixXd own_block(3 * static_cast<Eigen::Index>(kBlock), uncertainty_slot::kDim);
+  Eigen::MatrixXd v_block = Eigen::MatrixXd::Zero(3 * static_cast<Eigen::Index>(kBlock), kDraws);
+  Eigen::MatrixXd Q(static_cast<Eigen::Index>(r_rows.size()), kDraws);
+  Sensitivity3 own = Sensitivity3::Zero();
+  Sensitivity3 forcing_prev = model.forcing(grid[0]);
+  for (std::size_t g0 = 1; g0 < G; g0 += kBlock) {
+    const std::size_t nb = std::min(kBlock, G - g0);
+    const auto rows3 = 3 * static_cast<Eigen::Index>(nb);
+    for (std::size_t j = 0; j < nb; ++j) {
+      const std::size_t g = g0 + j;
+      const double a = grid[g - 1], b = grid[g];
+      const Sensitivity3 forcing_b = model.forcing(b);
+      own += (b - a) / 6.0 * (forcing_prev + 4.0 * model.forcing(0.5 * (a + b)) + forcing_b);
+      forcing_prev = forcing_b;
+      own_block.middleRows(3 * static_cast<Eigen::Index>(j), 3) = own;
+    }
+    if (needs_increment) {
+      v_block.topRows(rows3).noalias() = own_block.topRows(rows3) * X;
+      for (std::size_t j = 0; j < nb; ++j)
+        v_block.middleRows(3 * static_cast<Eigen::Index>(j), 3).colwise() +=
+            nominal_velocity_increment(grid[g0 + j], site.model);
+    }
+    for (Eigen::Index s = 0; s < kDraws; ++s) {
+      for (std::size_t j = 0; j < nb; ++j) {
+        const std::size_t g = g0 + j;
+        const double h = grid[g] - grid[g - 1];
+        for (int k = 0; k < 3; ++k) {
+          const double v = v_block(3 * static_cast<Eigen::Index>(j) + k, s);
+          const double e = cycling[static_cast<std::size_t>(k)]
+                               ? w * phase(k, s) * h
+                               : counting_velocity_error_integral(v_prev(k, s), v, h, phase(k, s), w);
+          cos_sum(k, s) += cos_mid[g] * e;
+          sin_sum(k, s) += sin_mid[g] * e;
+          v_prev(k, s) = v;
+        }
+        if (g == reset_at) cos_at_reset.col(s) = cos_sum.col(s), sin_at_reset.col(s) = sin_sum.col(s);
+        // (3.24): r(t) = ∫ cos(ω_s (t − s)) e(s) ds, from T after a reset.
+        for (const auto& [k, jr] : at[g]) {
+          const bool from_reset = after_reset[static_cast<std::size_t>(jr)];
+          Q(jr, s) = cos_at[g] * (cos_sum(k, s) - (from_reset ? cos_at_reset(k, s) : 0.0)) +
+                     sin_at[g] * (sin_sum(k, s) - (from_reset ? sin_at_reset(k, s) : 0.0));
+        }
       }
     }
-    for (const auto& [k, j] : at[0]) Q(j, s) = 0.0;  // rows at t = 0
   }
+  for (const auto& [k, j] : at[0]) Q.row(j).setZero();  // rows at t = 0
 
   // Leading components of the draws' second moments as columns, the rest noise.
   Eigen::VectorXd scale(Q.rows());
