@@ -2,6 +2,7 @@
 // and as a velocity and displacement at switch-over the computer does not know.
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "montecarlo/records/gap/candidates/common.h"
 #include "montecarlo/records/gap/candidates/definitions.h"
@@ -51,11 +52,27 @@ Candidate sway() {
               e.columns(static_cast<Eigen::Index>(i), row.axis + (l.restarted(i) ? 3 : 0)) = std::cos(ws * l.clock_s(i));
             }
             e.column_var = (a2 * inv_w4 * axes).replicate(restart ? 2 : 1, 1);
-            // The counters count the sway too (pulse_counting.h).
-            runs::CountedMotion motion;
-            motion.velocity_rms_mps = p[0] * std::sqrt(inv_w2) * axes.cwiseSqrt();
-            e.counting = pulse_counting(*ctx.layout, *ctx.site, ctx.site->dv_pulse_mps, ctx.base->x_var,
-                                        ctx.base->noise_var.cwiseSqrt(), motion);
+            // The counters count the sway too (pulse_counting.h). The
+            // counting depends on the motion only through which axes cycle
+            // from the start: none is the base model's own counting, and each
+            // other pattern is computed once per layout.
+            const double pulse = ctx.site->dv_pulse_mps;
+            const Eigen::Vector3d velocity_rms = p[0] * std::sqrt(inv_w2) * axes.cwiseSqrt();
+            runs::CountedMotion cycling;
+            std::string key = "sway counting";
+            for (int k = 0; k < 3; ++k) {
+              const bool cycles = velocity_rms[k] >= 0.5 * pulse;
+              cycling.velocity_rms_mps[k] = cycles ? velocity_rms[k] : 0.0;
+              key += cycles ? '1' : '0';
+            }
+            if (cycling.velocity_rms_mps.isZero()) return e;
+            if (!ctx.cache.count(key)) {
+              runs::PulseCounting c = pulse_counting(*ctx.layout, *ctx.site, pulse, ctx.base->x_var,
+                                                     ctx.base->noise_var.cwiseSqrt(), cycling);
+              ctx.cache[key + " noise"] = c.noise_var;
+              ctx.cache[key] = std::move(c.columns);
+            }
+            e.counting = runs::PulseCounting{ctx.cache[key], ctx.cache[key + " noise"].col(0)};
             return e;
           },
           {},
