@@ -38,16 +38,63 @@ def data_rows(path):
     return rows
 
 
+def f_spacing_s(path):
+    """The nominal spacing of a file's f records: the median step between
+    consecutive f rows of each run (dropouts lengthen a few steps only)."""
+    last, steps = {}, []
+    with open(path) as f:
+        header = None
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            cells = line.rstrip("\n").split(",")
+            if header is None:
+                header = {name: i for i, name in enumerate(cells)}
+                continue
+            if cells[header["f_x"]] == "":
+                continue
+            run, t = cells[header["run"]], float(cells[header["t_s"]])
+            if run in last:
+                steps.append(t - last[run])
+            last[run] = t
+    return statistics.median(steps)
+
+
+TEST_DURATION_S = 900  # the files' test run, 15 min
+
+
+def matched_interval_s(spacing):
+    """The filter interval of the own layout nearest a spacing: a divisor of
+    the test run (the own writer's f and r every interval)."""
+    divisors = [d for d in range(1, TEST_DURATION_S + 1) if TEST_DURATION_S % d == 0 and d <= 60]
+    return min(divisors, key=lambda d: abs(d - spacing))
+
+
+def simulate(path, seed, layout, *extra_args):
+    subprocess.run([insmc, "simulate", "--runs", "20", "--seed", str(seed), "--layout", layout,
+                    "--test-duration", "15min", "--nav-duration", "90min", "--out", path, *extra_args], check=True,
+                   stdout=subprocess.DEVNULL)
+
+
 cases = []
+pairs = []  # (fuzzed file, its own-layout twin at the nearest spacing)
 with tempfile.TemporaryDirectory() as work:
     inputs = []
     for family in ("own", "foreign", "fuzzed"):
         for seed in range(1, files + 1):
             path = os.path.join(work, f"{family}_{seed}.csv")
-            subprocess.run([insmc, "simulate", "--runs", "20", "--seed", str(seed), "--layout", family,
-                            "--test-duration", "15min", "--nav-duration", "90min", "--out", path], check=True,
-                           stdout=subprocess.DEVNULL)
+            simulate(path, seed, family)
             inputs.append((family, path))
+            if family == "fuzzed":
+                # The same runs' length on the own layout at the fuzzed
+                # file's spacing of f: the cost per row of a layout against
+                # the own layout's, not against another spacing's (the model's
+                # size is set by the runs' duration, docs/gap.md "Cost").
+                interval = matched_interval_s(f_spacing_s(path))
+                twin = os.path.join(work, f"own-matched_{seed}.csv")
+                simulate(twin, seed, "own", "--filter-interval", f"{interval}s")
+                inputs.append(("own-matched", twin))
+                pairs.append((os.path.basename(path), os.path.basename(twin), f_spacing_s(path), interval))
     inputs += [("given", p) for p in extra]
     for family, path in inputs:
         rows = data_rows(path)
@@ -67,7 +114,7 @@ print("| command | family | files (refused) | rows (median) | wall s median / ma
       "| CPU s per 1000 rows median / max | peak MB median / max |")
 print("|---|---|---:|---:|---:|---:|---:|---:|")
 for command in ("gap", "compensate"):
-    for family in ("own", "foreign", "fuzzed", "given"):
+    for family in ("own", "foreign", "fuzzed", "own-matched", "given"):
         every = [x for x in cases if x["family"] == family and x["command"] == command]
         c = [x for x in every if not x["refused"]]
         if not c:
@@ -79,3 +126,22 @@ for command in ("gap", "compensate"):
             return f"{fmt.format(statistics.median(v))} / {fmt.format(max(v))}"
         print(f"| {command} | {family} | {len(every)} ({len(every) - len(c)}) | {statistics.median(x['rows'] for x in c):.0f} | {mm('wall_s')} "
               f"| {mm('cpu_s')} | {mm('cpu_s_per_1000_rows', '{:.2f}')} | {mm('peak_mb', '{:.0f}')} |")
+
+# Each fuzzed file's CPU per row over its own-layout twin's at the nearest
+# spacing: what the layout (dropouts per run, conventions) costs, the
+# spacing held.
+if pairs:
+    def gap_case(name):
+        return next(x for x in cases if x["file"] == name and x["command"] == "gap")
+    print()
+    print("| fuzzed file | its f spacing s | own twin's interval s | rows fuzzed / own | gap CPU s per 1000 rows fuzzed / own | ratio |")
+    print("|---|---:|---:|---:|---:|---:|")
+    ratios = []
+    for fuzzed, twin, spacing, interval in pairs:
+        a, b = gap_case(fuzzed), gap_case(twin)
+        ratio = a["cpu_s_per_1000_rows"] / b["cpu_s_per_1000_rows"]
+        ratios.append(ratio)
+        print(f"| {fuzzed} | {spacing:g} | {interval} | {a['rows']} / {b['rows']} | "
+              f"{a['cpu_s_per_1000_rows']:.2f} / {b['cpu_s_per_1000_rows']:.2f} | {ratio:.2f} |")
+    print(f"\nCPU per row of a fuzzed layout over the own layout's at its spacing: median {statistics.median(ratios):.2f}, "
+          f"worst {max(ratios):.2f}")
