@@ -6,6 +6,7 @@
 
 #include "lib/common/assert.h"
 #include "montecarlo/records/runs/model/quadratic_forms.h"
+#include "montecarlo/records/runs/model/row_column_groups.h"
 #include "montecarlo/records/runs/model/row_subset.h"
 
 namespace insmc::runs {
@@ -47,14 +48,12 @@ Eigen::Index observed_columns(const Eigen::MatrixXd& a, Eigen::Index test_rows) 
 
 /// Each row's h M hᵀ for a matrix M over the first M.rows() columns and the
 /// identity beyond them (the scaled posterior of causes the fit does not
-/// see), `unseen` each row's |h|² over those.
-Eigen::VectorXd row_forms(const Eigen::MatrixXd& hs, const Eigen::MatrixXd& m, const Eigen::VectorXd& unseen) {
-  const Eigen::Index p = m.rows();
-  if (hs.rows() == 0 || p == 0) return unseen;
-  Eigen::VectorXd seen(hs.rows());
-  row_quadratic_forms(hs.data(), static_cast<std::size_t>(hs.outerStride()), static_cast<std::size_t>(hs.rows()),
-                      static_cast<std::size_t>(p), m.data(), static_cast<std::size_t>(m.outerStride()), seen.data());
-  return seen + unseen;
+/// see), `unseen` each row's |h|² over those; each group of rows over the
+/// columns it sees (`blocks`, row_column_groups.h).
+Eigen::VectorXd row_forms(const std::vector<Eigen::MatrixXd>& blocks, const Eigen::MatrixXd& m,
+                          const Eigen::VectorXd& unseen, const RowColumnGroups& groups) {
+  if (unseen.size() == 0 || m.rows() == 0) return unseen;
+  return grouped_row_quadratic_forms(blocks, m, groups, unseen.size()) + unseen;
 }
 
 }  // namespace
@@ -91,15 +90,42 @@ LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& la
       test_rows_(layout.test_rows),
       observed_(lattice.observed_) {}
 
-LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows,
+LatticeAnalysis::LatticeAnalysis(const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows,
                                  const Eigen::MatrixXd& G, const Eigen::VectorXd& share)
-    : LatticeAnalysis(layout, lattice, rows) {
+    : layout_(lattice.layout_), s_(lattice.s_), observed_(lattice.observed_) {
   // The information and the spread are sums over the test rows: the
   // lattice's less the rows the layout lacks.
   Eigen::MatrixXd info = lattice.info_, spread = lattice.spread_;
   info.noalias() -= G * G.transpose();
   spread.noalias() -= G * share.asDiagonal() * G.transpose();
-  solve(std::move(info), std::move(spread), false, H_ * s_.asDiagonal());
+  // The rows' H S over the causes the fit does not see, and each group of
+  // rows over the causes it sees: gathered from the lattice's H and scaled
+  // in one pass, not cut and then scaled.
+  const auto n = static_cast<Eigen::Index>(rows.size());
+  const Eigen::Index d = lattice.H_.cols();
+  Eigen::MatrixXd HS_unseen(n, d - observed_);
+  for (Eigen::Index c = observed_; c < d; ++c) {
+    const double* from = lattice.H_.col(c).data();
+    double* to = HS_unseen.col(c - observed_).data();
+    const double scale = s_[c];
+    for (Eigen::Index i = 0; i < n; ++i) to[i] = from[rows[static_cast<std::size_t>(i)]] * scale;
+  }
+  const RowColumnGroups groups = lattice.groups_of(rows);
+  const std::vector<Eigen::MatrixXd> blocks = group_blocks(lattice.H_, groups, rows, s_);
+  const Eigen::VectorXd unseen = HS_unseen.rowwise().squaredNorm();
+  solve(std::move(info), std::move(spread));
+  ab_ = row_forms(blocks, around_, unseen, groups);
+  q_ = row_forms(blocks, pi_, unseen, groups);
+}
+
+RowColumnGroups LatticeAnalysis::groups_of(std::span<const Eigen::Index> rows) const {
+  RowColumnGroups g;
+  g.columns = groups_.columns;
+  g.rows.resize(groups_.columns.size());
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    g.rows[static_cast<std::size_t>(group_of_row_[static_cast<std::size_t>(rows[i])])].push_back(
+        static_cast<Eigen::Index>(i));
+  return g;
 }
 
 void LatticeAnalysis::fit(bool lattice) {
@@ -120,24 +146,31 @@ void LatticeAnalysis::fit(bool lattice) {
   const Eigen::VectorXd actual_weight = actual_noise_var_.head(nt).cwiseProduct(inverse_noise.cwiseAbs2());
   Eigen::MatrixXd spread = weighted_gram(HS.topLeftCorner(nt, observed_), actual_weight);
   spread.diagonal().array() += 1.0;
-  solve(std::move(info), std::move(spread), lattice, HS);
+  RowColumnGroups groups = group_rows_by_columns(HS, observed_);
+  const Eigen::VectorXd unseen = HS.rightCols(HS.cols() - observed_).rowwise().squaredNorm();
+  const std::vector<Eigen::MatrixXd> blocks = group_blocks(HS, groups, {}, {});
+  solve(std::move(info), std::move(spread));
+  ab_ = row_forms(blocks, around_, unseen, groups);
+  if (!lattice) {
+    q_ = row_forms(blocks, pi_, unseen, groups);
+    return;
+  }
+  // A lattice's layouts downdate each row's terms by its h S Π (Woodbury),
+  // and take their rows' groups from its own.
+  const auto seen = HS.leftCols(observed_);
+  HS_pi_ = seen * pi_;
+  q_ = (HS_pi_.array() * seen.array()).rowwise().sum().matrix() + unseen;
+  group_of_row_.resize(static_cast<std::size_t>(HS.rows()));
+  for (std::size_t g = 0; g < groups.rows.size(); ++g)
+    for (Eigen::Index i : groups.rows[g]) group_of_row_[static_cast<std::size_t>(i)] = static_cast<int>(g);
+  groups_.columns = std::move(groups.columns);
 }
 
-void LatticeAnalysis::solve(Eigen::MatrixXd info, Eigen::MatrixXd spread, bool lattice, const Eigen::MatrixXd& HS) {
+void LatticeAnalysis::solve(Eigen::MatrixXd info, Eigen::MatrixXd spread) {
   info_ = std::move(info);
   spread_ = std::move(spread);
   pi_ = inverse_of_information(info_);
   around_ = pi_ * spread_ * pi_;
-  const Eigen::VectorXd unseen = HS.rightCols(HS.cols() - observed_).rowwise().squaredNorm();
-  ab_ = row_forms(HS, around_, unseen);
-  if (!lattice) {
-    q_ = row_forms(HS, pi_, unseen);
-    return;
-  }
-  // A lattice's layouts downdate each row's terms by its h S Π (Woodbury).
-  const auto seen = HS.leftCols(observed_);
-  HS_pi_ = seen * pi_;
-  q_ = (HS_pi_.array() * seen.array()).rowwise().sum().matrix() + unseen;
 }
 
 RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model) {
@@ -190,8 +223,8 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
       own_fit();
       return;
     }
-    const LatticeAnalysis own(layout, a, rows, G, share);
-    finish(own, all, own.pi_, own.q_, own.ab_, own.around_.diagonal());
+    const LatticeAnalysis own(a, rows, G, share);
+    finish(a, rows, own.pi_, own.q_, own.ab_, own.around_.diagonal());
     return;
   }
   const Eigen::MatrixXd U = a.pi_ * G;

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "montecarlo/records/runs/model/gaussian_model.h"
+#include "montecarlo/records/runs/model/row_column_groups.h"
 
 namespace insmc::runs {
 
@@ -75,16 +76,23 @@ class LatticeAnalysis {
   /// The model of `layout`, the rows `rows` of `lattice`'s, not yet fitted
   /// (fit() fits it anew).
   LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows);
-  /// The same, fitted from the lattice's information less that of the test
-  /// rows the layout lacks (G's columns g_m = S h_mᵀ/σ_m, `share` their R_a/R).
-  LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows,
-                  const Eigen::MatrixXd& G, const Eigen::VectorXd& share);
-  /// The information and the spread from the test rows, then solve().
+  /// The fit of the layout of the lattice's rows `rows`, from the lattice's
+  /// information less that of the test rows it lacks (G's columns
+  /// g_m = S h_mᵀ/σ_m, `share` their R_a/R): its Π, Π (I + J) Π and the
+  /// rows' q and ab only; the rows' model stays the lattice's (finish takes
+  /// it with `rows`).
+  LatticeAnalysis(const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows, const Eigen::MatrixXd& G,
+                  const Eigen::VectorXd& share);
+  /// The information and the spread from the test rows, solve(), and the
+  /// rows' terms; a lattice also keeps H S Π, from which its layouts are
+  /// downdated, and its rows' groups, which theirs are.
   void fit(bool lattice);
-  /// Π, Π (I + J) Π and each row's q and ab from the scaled information
-  /// I + S Hₜᵀ R⁻¹ Hₜ S and spread I + J (HS: the rows' H S); a lattice also
-  /// keeps H S Π, from which its layouts are downdated.
-  void solve(Eigen::MatrixXd info, Eigen::MatrixXd spread, bool lattice, const Eigen::MatrixXd& HS);
+  /// Π and Π (I + J) Π from the scaled information I + S Hₜᵀ R⁻¹ Hₜ S and
+  /// spread I + J (the rows' q and ab are then their forms, each group of
+  /// rows over the causes it sees: row_column_groups.h).
+  void solve(Eigen::MatrixXd info, Eigen::MatrixXd spread);
+  /// The groups of the lattice's rows `rows` (their rows numbered 0, 1, ...).
+  RowColumnGroups groups_of(std::span<const Eigen::Index> rows) const;
 
   const Layout* layout_;
   Eigen::VectorXd mean_;              // rows
@@ -102,6 +110,8 @@ class LatticeAnalysis {
   Eigen::MatrixXd info_, pi_, spread_, around_;
   Eigen::MatrixXd HS_pi_;             // rows × observed: H S Π
   Eigen::VectorXd q_, ab_;            // rows: h Π hᵀ and h Π (I + J) Π hᵀ (scaled)
+  RowColumnGroups groups_;            // a lattice's: the columns of each group of its rows
+  std::vector<int> group_of_row_;     // a lattice's: each row's group
 };
 
 class RunAnalyser {
