@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <mutex>
+#include <numeric>
 
 #include "lib/common/assert.h"
 #include "montecarlo/records/runs/model/quadratic_forms.h"
@@ -147,23 +149,37 @@ void LatticeAnalysis::fit(bool lattice) {
   Eigen::MatrixXd spread = weighted_gram(HS.topLeftCorner(nt, observed_), actual_weight);
   spread.diagonal().array() += 1.0;
   RowColumnGroups groups = group_rows_by_columns(HS, observed_);
-  const Eigen::VectorXd unseen = HS.rightCols(HS.cols() - observed_).rowwise().squaredNorm();
-  const std::vector<Eigen::MatrixXd> blocks = group_blocks(HS, groups, {}, {});
   solve(std::move(info), std::move(spread));
-  ab_ = row_forms(blocks, around_, unseen, groups);
-  if (!lattice) {
-    q_ = row_forms(blocks, pi_, unseen, groups);
+  if (lattice) {
+    // Its layouts take their rows' groups from its own; its rows' terms are
+    // made when a layout first asks (row_terms).
+    group_of_row_.resize(static_cast<std::size_t>(HS.rows()));
+    for (std::size_t g = 0; g < groups.rows.size(); ++g)
+      for (Eigen::Index i : groups.rows[g]) group_of_row_[static_cast<std::size_t>(i)] = static_cast<int>(g);
+    groups_.columns = std::move(groups.columns);
     return;
   }
-  // A lattice's layouts downdate each row's terms by its h S Π (Woodbury),
-  // and take their rows' groups from its own.
-  const auto seen = HS.leftCols(observed_);
-  HS_pi_ = seen * pi_;
-  q_ = (HS_pi_.array() * seen.array()).rowwise().sum().matrix() + unseen;
-  group_of_row_.resize(static_cast<std::size_t>(HS.rows()));
-  for (std::size_t g = 0; g < groups.rows.size(); ++g)
-    for (Eigen::Index i : groups.rows[g]) group_of_row_[static_cast<std::size_t>(i)] = static_cast<int>(g);
-  groups_.columns = std::move(groups.columns);
+  const Eigen::VectorXd unseen = HS.rightCols(HS.cols() - observed_).rowwise().squaredNorm();
+  const std::vector<Eigen::MatrixXd> blocks = group_blocks(HS, groups, {}, {});
+  ab_ = row_forms(blocks, around_, unseen, groups);
+  q_ = row_forms(blocks, pi_, unseen, groups);
+}
+
+const LatticeAnalysis::RowTerms& LatticeAnalysis::row_terms() const {
+  std::call_once(row_terms_once_, [this] {
+    const Eigen::MatrixXd HS = H_ * s_.asDiagonal();
+    std::vector<Eigen::Index> all(static_cast<std::size_t>(HS.rows()));
+    std::iota(all.begin(), all.end(), Eigen::Index{0});
+    const RowColumnGroups groups = groups_of(all);
+    const Eigen::VectorXd unseen = HS.rightCols(HS.cols() - observed_).rowwise().squaredNorm();
+    row_terms_.ab = row_forms(group_blocks(HS, groups, {}, {}), around_, unseen, groups);
+    // A layout that lacks few test rows downdates each row's terms by its
+    // h S Π (Woodbury).
+    const auto seen = HS.leftCols(observed_);
+    row_terms_.hs_pi = seen * pi_;
+    row_terms_.q = (row_terms_.hs_pi.array() * seen.array()).rowwise().sum().matrix() + unseen;
+  });
+  return row_terms_;
 }
 
 void LatticeAnalysis::solve(Eigen::MatrixXd info, Eigen::MatrixXd spread) {
@@ -178,7 +194,7 @@ RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model) {
   std::vector<Eigen::Index> rows(layout.rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = static_cast<Eigen::Index>(i);
   layout_ = &layout;
-  finish(own, rows, own.pi_, own.q_, own.ab_, own.around_.diagonal());
+  finish(own, rows, own.pi_, own.row_terms().q, own.row_terms().ab, own.around_.diagonal());
 }
 
 RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::span<const Eigen::Index> rows) {
@@ -194,7 +210,7 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
   const auto k = static_cast<Eigen::Index>(missing.size());
   const Eigen::Index d = a.observed_;  // the lacked rows touch no cause beyond
   if (k == 0) {
-    finish(a, rows, a.pi_, rows_of(a.q_, rows), rows_of(a.ab_, rows), a.around_.diagonal());
+    finish(a, rows, a.pi_, rows_of(a.row_terms().q, rows), rows_of(a.row_terms().ab, rows), a.around_.diagonal());
     return;
   }
   // Information of the layout = the lattice's − G Gᵀ, g_m = S h_mᵀ/σ_m of each
@@ -253,7 +269,8 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
              beta.array().square().matrix() * share;
   };
   Eigen::VectorXd q, ab, pi_diagonal, around_diagonal;
-  update(rows_of(a.HS_pi_, rows), rows_of(a.q_, rows), rows_of(a.ab_, rows), q, ab);
+  const LatticeAnalysis::RowTerms& lattice_terms = a.row_terms();
+  update(rows_of(lattice_terms.hs_pi, rows), rows_of(lattice_terms.q, rows), rows_of(lattice_terms.ab, rows), q, ab);
   // The causes themselves (h S = the unit vector of cause j): the diagonals
   // of Π_ℓ and of Π_ℓ (I + J_ℓ) Π_ℓ the estimates need.
   update(a.pi_, a.pi_.diagonal(), a.around_.diagonal(), pi_diagonal, around_diagonal);

@@ -27,6 +27,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <array>
+#include <mutex>
 #include <span>
 #include <vector>
 
@@ -108,10 +109,21 @@ class LatticeAnalysis {
   // noise through the fit, and Π (I + J) Π.
   Eigen::Index observed_ = 0;
   Eigen::MatrixXd info_, pi_, spread_, around_;
-  Eigen::MatrixXd HS_pi_;             // rows × observed: H S Π
-  Eigen::VectorXd q_, ab_;            // rows: h Π hᵀ and h Π (I + J) Π hᵀ (scaled)
+  Eigen::VectorXd q_, ab_;            // a layout's rows: h Π hᵀ and h Π (I + J) Π hᵀ (scaled)
   RowColumnGroups groups_;            // a lattice's: the columns of each group of its rows
   std::vector<int> group_of_row_;     // a lattice's: each row's group
+
+  /// A lattice's rows' terms, which its layouts that lack no test row or
+  /// few take (Woodbury): H S Π (rows × observed), q and ab as above. Made
+  /// once, when a layout first asks: a file whose every layout lacks many
+  /// test rows never needs them.
+  struct RowTerms {
+    Eigen::MatrixXd hs_pi;
+    Eigen::VectorXd q, ab;
+  };
+  const RowTerms& row_terms() const;
+  mutable std::once_flag row_terms_once_;
+  mutable RowTerms row_terms_;
 };
 
 class RunAnalyser {
