@@ -7,8 +7,10 @@
 #            spacings 1-60 s, each run's own dropouts, resolution, short runs,
 #            header keys), the family no writer of ours shares assumptions with,
 #   own-matched  per fuzzed file, the own layout at the nearest spacing of f
-#            (a divisor of the test run), and each fuzzed file's CPU per row
-#            over its twin's: what the layout costs with the spacing held,
+#            (a divisor of the test run) with the pulses (or continuous
+#            outputs) and r resolution the diagnosis read in it, and each
+#            fuzzed file's CPU per row over its twin's: what the layout
+#            costs with the spacing and the counting held,
 # plus any record files given after the options (other software's files).
 #   scripts/time-records.sh [--files N] [--insmc PATH] [FILE...]
 # N files per family (default 5), seeds 1..N. Prints per family the median

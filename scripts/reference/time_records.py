@@ -2,6 +2,7 @@
 its wall time, CPU time (user + system of the process and its threads) and
 peak resident memory from wait4, one at a time."""
 import csv
+import json
 import os
 import statistics
 import subprocess
@@ -12,10 +13,11 @@ import time
 insmc, files, extra = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
 
 
-def measure(args, refusal_allowed=False):
+def measure(args, refusal_allowed=False, out_path=os.devnull):
     start = time.monotonic()
-    proc = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    _, status, usage = os.wait4(proc.pid, 0)
+    with open(out_path, "wb") as out:
+        proc = subprocess.Popen(args, stdout=out, stderr=subprocess.PIPE)
+        _, status, usage = os.wait4(proc.pid, 0)
     wall = time.monotonic() - start
     err = proc.stderr.read().decode(errors="replace").strip()
     code = os.waitstatus_to_exitcode(status)
@@ -57,7 +59,7 @@ def f_spacing_s(path):
             if run in last:
                 steps.append(t - last[run])
             last[run] = t
-    return statistics.median(steps)
+    return statistics.median(steps) if steps else None
 
 
 TEST_DURATION_S = 900  # the files' test run, 15 min
@@ -76,34 +78,56 @@ def simulate(path, seed, layout, *extra_args):
                    stdout=subprocess.DEVNULL)
 
 
+def site_value(gap_json_path, key):
+    """A site value the diagnosis used (stated or inferred), from gap.json."""
+    with open(gap_json_path) as f:
+        return json.load(f)["site"][key]["value"]
+
+
 cases = []
-pairs = []  # (fuzzed file, its own-layout twin at the nearest spacing)
+pairs = []  # (fuzzed file, its own-layout twin, the fuzzed file's f spacing, the twin's interval)
+
+
+def time_file(family, path, work):
+    rows = data_rows(path)
+    for command in ("gap", "compensate"):
+        out = os.path.join(work, "out.json")
+        wall, cpu, mb, refused = measure([insmc, command, "--records", path, "--format", "json"],
+                                         refusal_allowed=command == "compensate", out_path=out)
+        cases.append({"family": family, "file": os.path.basename(path), "command": command, "rows": rows,
+                      "refused": refused,
+                      "wall_s": wall, "cpu_s": cpu, "cpu_s_per_1000_rows": 1000.0 * cpu / rows, "peak_mb": mb})
+        if command == "gap":
+            site = {key: site_value(out, key) for key in ("dv_pulse_mps", "position_resolution_m")}
+    return site
+
+
 with tempfile.TemporaryDirectory() as work:
-    inputs = []
     for family in ("own", "foreign", "fuzzed"):
         for seed in range(1, files + 1):
             path = os.path.join(work, f"{family}_{seed}.csv")
             simulate(path, seed, family)
-            inputs.append((family, path))
+            site = time_file(family, path, work)
             if family == "fuzzed":
                 # The same runs' length on the own layout at the fuzzed
-                # file's spacing of f: the cost per row of a layout against
-                # the own layout's, not against another spacing's (the model's
-                # size is set by the runs' duration, docs/gap.md "Cost").
-                interval = matched_interval_s(f_spacing_s(path))
+                # file's spacing of f, with its pulses (or continuous
+                # outputs) and its resolution of r as the diagnosis read
+                # them: the cost per row of a layout against the own
+                # layout's, not against another spacing's or another
+                # counting's (the model's size is set by the runs' duration,
+                # docs/gap.md "Speed").
+                spacing = f_spacing_s(path)
+                if spacing is None:  # no run with two f records: no spacing to match
+                    continue
+                interval = matched_interval_s(spacing)
                 twin = os.path.join(work, f"own-matched_{seed}.csv")
-                simulate(twin, seed, "own", "--filter-interval", f"{interval}s")
-                inputs.append(("own-matched", twin))
-                pairs.append((os.path.basename(path), os.path.basename(twin), f_spacing_s(path), interval))
-    inputs += [("given", p) for p in extra]
-    for family, path in inputs:
-        rows = data_rows(path)
-        for command in (["gap", "--records", path, "--format", "json"],
-                        ["compensate", "--records", path, "--format", "json"]):
-            wall, cpu, mb, refused = measure([insmc] + command, refusal_allowed=command[0] == "compensate")
-            cases.append({"family": family, "file": os.path.basename(path), "command": command[0], "rows": rows,
-                          "refused": refused,
-                          "wall_s": wall, "cpu_s": cpu, "cpu_s_per_1000_rows": 1000.0 * cpu / rows, "peak_mb": mb})
+                simulate(twin, seed, "own", "--filter-interval", f"{interval}s",
+                         "--dv-pulse", f"{site['dv_pulse_mps']:.9g}mps",
+                         "--position-resolution", f"{site['position_resolution_m']:.9g}m")
+                time_file("own-matched", twin, work)
+                pairs.append((os.path.basename(path), os.path.basename(twin), spacing, interval, site["dv_pulse_mps"]))
+    for path in extra:
+        time_file("given", path, work)
 
 with open("time-records.csv", "w", newline="") as f:
     w = csv.DictWriter(f, fieldnames=list(cases[0].keys()))
@@ -134,14 +158,15 @@ if pairs:
     def gap_case(name):
         return next(x for x in cases if x["file"] == name and x["command"] == "gap")
     print()
-    print("| fuzzed file | its f spacing s | own twin's interval s | rows fuzzed / own | gap CPU s per 1000 rows fuzzed / own | ratio |")
-    print("|---|---:|---:|---:|---:|---:|")
+    print("| fuzzed file | its f spacing s | own twin's interval s | pulse m/s (0: continuous) | rows fuzzed / own "
+          "| gap CPU s per 1000 rows fuzzed / own | ratio |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
     ratios = []
-    for fuzzed, twin, spacing, interval in pairs:
+    for fuzzed, twin, spacing, interval, pulse in pairs:
         a, b = gap_case(fuzzed), gap_case(twin)
         ratio = a["cpu_s_per_1000_rows"] / b["cpu_s_per_1000_rows"]
         ratios.append(ratio)
-        print(f"| {fuzzed} | {spacing:g} | {interval} | {a['rows']} / {b['rows']} | "
+        print(f"| {fuzzed} | {spacing:g} | {interval} | {pulse:.4g} | {a['rows']} / {b['rows']} | "
               f"{a['cpu_s_per_1000_rows']:.2f} / {b['cpu_s_per_1000_rows']:.2f} | {ratio:.2f} |")
-    print(f"\nCPU per row of a fuzzed layout over the own layout's at its spacing: median {statistics.median(ratios):.2f}, "
+    print(f"\nCPU per row of a fuzzed layout over the own layout's at its spacing and counting: median {statistics.median(ratios):.2f}, "
           f"worst {max(ratios):.2f}")

@@ -52,10 +52,11 @@ Candidate sway() {
               e.columns(static_cast<Eigen::Index>(i), row.axis + (l.restarted(i) ? 3 : 0)) = std::cos(ws * l.clock_s(i));
             }
             e.column_var = (a2 * inv_w4 * axes).replicate(restart ? 2 : 1, 1);
-            // The counters count the sway too (pulse_counting.h). The
-            // counting depends on the motion only through which axes cycle
-            // from the start: none is the base model's own counting, and each
-            // other pattern is computed once per layout.
+            // The counters count the sway too (pulse_counting.h), at the
+            // site's pulse weight (replacing a counting another extension
+            // set). It depends on the motion only through which axes cycle
+            // from the start: none is the base model's own counting of the
+            // layout, each other pattern is computed once per layout.
             const double pulse = ctx.site->dv_pulse_mps;
             const Eigen::Vector3d velocity_rms = p[0] * std::sqrt(inv_w2) * axes.cwiseSqrt();
             runs::CountedMotion cycling;
@@ -65,7 +66,10 @@ Candidate sway() {
               cycling.velocity_rms_mps[k] = cycles ? velocity_rms[k] : 0.0;
               key += cycles ? '1' : '0';
             }
-            if (cycling.velocity_rms_mps.isZero()) return e;
+            if (cycling.velocity_rms_mps.isZero()) {
+              e.counting = ctx.base->counting;
+              return e;
+            }
             if (!ctx.cache.count(key)) {
               runs::PulseCounting c = pulse_counting(*ctx.layout, *ctx.site, pulse, ctx.base->x_var,
                                                      ctx.base->noise_var.cwiseSqrt(), cycling);

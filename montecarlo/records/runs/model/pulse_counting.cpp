@@ -154,7 +154,8 @@ PulseCounting pulse_counting(const Layout& layout, const RecordSite& site, doubl
     for (int k = 0; k < 3; ++k) phase(k, s) = draws.uniform() - 0.5;
   }
   // An axis whose counters cycle from the start (sway of half a pulse or
-  // more) does not need its increment V.
+  // more) does not read its increment V: where every axis does, no
+  // increment is computed.
   std::array<bool, 3> cycling{};
   for (int k = 0; k < 3; ++k) cycling[static_cast<std::size_t>(k)] = motion.velocity_rms_mps[k] >= 0.5 * w;
   const bool needs_increment = !(cycling[0] && cycling[1] && cycling[2]);

@@ -84,9 +84,10 @@ class LatticeAnalysis {
   /// it with `rows`).
   LatticeAnalysis(const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows, const Eigen::MatrixXd& G,
                   const Eigen::VectorXd& share);
-  /// The information and the spread from the test rows, solve(), and the
-  /// rows' terms; a lattice also keeps H S Π, from which its layouts are
-  /// downdated, and its rows' groups, which theirs are.
+  /// The information and the spread from the test rows, then solve(); a
+  /// layout fitted on its own also forms its rows' terms, a lattice keeps
+  /// its rows' groups (its layouts' are theirs) and forms its rows' terms
+  /// when a layout first asks (row_terms).
   void fit(bool lattice);
   /// Π and Π (I + J) Π from the scaled information I + S Hₜᵀ R⁻¹ Hₜ S and
   /// spread I + J (the rows' q and ab are then their forms, each group of

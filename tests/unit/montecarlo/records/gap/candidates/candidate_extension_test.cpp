@@ -55,5 +55,39 @@ TEST(GapCandidates, EveryGridPointBuildsAConsistentExtension) {
   }
 }
 
+TEST(GapCandidates, SwayCountsAtTheSitesPulseWhateverCountingCameBefore) {
+  // sway's counting replaces one another extension set (quantization's,
+  // selected first), at every grid point: where no axis cycles it is the
+  // base model's counting, where some do its own.
+  const runs::Layout l = test_layout(2400.0);
+  const runs::RecordSite s = test_site();
+  ASSERT_GT(s.dv_pulse_mps, 0.0);
+  const runs::BaseModel base = make_base_model(l, s, UncertaintyModel{}.variance());
+  const Candidate* sway = nullptr;
+  const Candidate* quantization = nullptr;
+  for (const Candidate& c : candidate_registry()) {
+    if (c.name == "sway") sway = &c;
+    if (c.name == "quantization") quantization = &c;
+  }
+  ASSERT_TRUE(sway && quantization);
+  const LayoutContext ctx{&l, &s, &base, {}};
+  const runs::Extension other = quantization->build(ctx, quantization->grid_point(quantization->grid_size() - 1));
+  ASSERT_TRUE(other.counting.has_value());
+  int as_base = 0, own = 0;
+  for (int k = 0; k < sway->grid_size(); ++k) {
+    const runs::Extension e = sway->build(ctx, sway->grid_point(k));
+    ASSERT_TRUE(e.counting.has_value()) << "grid point " << k;
+    const runs::GaussianModel alone = combine(base, {&e});
+    const runs::GaussianModel after = combine(base, {&other, &e});
+    EXPECT_EQ(after.noise_var, alone.noise_var) << "grid point " << k;
+    EXPECT_EQ(after.H, alone.H) << "grid point " << k;
+    if (e.counting->columns == base.counting.columns && e.counting->noise_var == base.counting.noise_var) ++as_base;
+    else ++own;
+  }
+  // The grid reaches both: sways below half a pulse and above it.
+  EXPECT_GT(as_base, 0);
+  EXPECT_GT(own, 0);
+}
+
 }  // namespace
 }  // namespace insmc::gap
