@@ -100,21 +100,18 @@ LatticeAnalysis::LatticeAnalysis(const LatticeAnalysis& lattice, std::span<const
   Eigen::MatrixXd info = lattice.info_, spread = lattice.spread_;
   info.noalias() -= G * G.transpose();
   spread.noalias() -= G * share.asDiagonal() * G.transpose();
-  // The rows' H S over the causes the fit does not see, and each group of
-  // rows over the causes it sees: gathered from the lattice's H and scaled
+  // Each group of rows over the causes it sees, and every row over the
+  // causes the fit does not see: gathered from the lattice's H and scaled
   // in one pass, not cut and then scaled.
   const auto n = static_cast<Eigen::Index>(rows.size());
-  const Eigen::Index d = lattice.H_.cols();
-  Eigen::MatrixXd HS_unseen(n, d - observed_);
-  for (Eigen::Index c = observed_; c < d; ++c) {
-    const double* from = lattice.H_.col(c).data();
-    double* to = HS_unseen.col(c - observed_).data();
-    const double scale = s_[c];
-    for (Eigen::Index i = 0; i < n; ++i) to[i] = from[rows[static_cast<std::size_t>(i)]] * scale;
-  }
+  RowColumnGroups beyond;
+  beyond.rows.emplace_back(static_cast<std::size_t>(n));
+  std::iota(beyond.rows[0].begin(), beyond.rows[0].end(), Eigen::Index{0});
+  beyond.columns.emplace_back(static_cast<std::size_t>(lattice.H_.cols() - observed_));
+  std::iota(beyond.columns[0].begin(), beyond.columns[0].end(), observed_);
+  const Eigen::VectorXd unseen = group_blocks(lattice.H_, beyond, rows, s_)[0].rowwise().squaredNorm();
   const RowColumnGroups groups = lattice.groups_of(rows);
   const std::vector<Eigen::MatrixXd> blocks = group_blocks(lattice.H_, groups, rows, s_);
-  const Eigen::VectorXd unseen = HS_unseen.rowwise().squaredNorm();
   solve(std::move(info), std::move(spread));
   ab_ = row_forms(blocks, around_, unseen, groups);
   q_ = row_forms(blocks, pi_, unseen, groups);
