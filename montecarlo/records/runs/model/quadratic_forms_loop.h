@@ -15,7 +15,7 @@ namespace {
 /// order whatever the block, so every kernel gives the same bits.
 constexpr std::size_t kBlock = 32;
 
-/// One block of nb ≤ kBlock rows. With nb = kBlock known when compiled, t
+/// One block of nb ≤ kBlock rows. With nb known when compiled (kFixed), t
 /// and acc stay in vector registers across the pairs.
 template <std::size_t kFixed>
 inline void quadratic_forms_block(const double* a, std::size_t lda, std::size_t nb_runtime, std::size_t d,
@@ -41,6 +41,13 @@ inline void quadratic_forms_block(const double* a, std::size_t lda, std::size_t 
                                            const double* m, std::size_t ldm, double* q) {
   std::size_t r0 = 0;
   for (; r0 + kBlock <= rows; r0 += kBlock) quadratic_forms_block<kBlock>(a + r0, lda, kBlock, d, m, ldm, q + r0);
+  // The rest in blocks of 16, 8 and 4 rows known when compiled (a block of
+  // a size known only at run time takes twice as long per row; a run
+  // model's rows come in a few groups, each with such a rest), then
+  // at most 3 rows.
+  if (rows - r0 >= 16) quadratic_forms_block<16>(a + r0, lda, 16, d, m, ldm, q + r0), r0 += 16;
+  if (rows - r0 >= 8) quadratic_forms_block<8>(a + r0, lda, 8, d, m, ldm, q + r0), r0 += 8;
+  if (rows - r0 >= 4) quadratic_forms_block<4>(a + r0, lda, 4, d, m, ldm, q + r0), r0 += 4;
   if (r0 < rows) quadratic_forms_block<0>(a + r0, lda, rows - r0, d, m, ldm, q + r0);
 }
 

@@ -69,12 +69,13 @@ LatticeAnalysis::LatticeAnalysis(const Layout& lattice, const GaussianModel& mod
   for (Eigen::Index j = 0; j < model.prior_var.size(); ++j)
     if (model.prior_var[j] > 0) active_.push_back(j);
   const auto d = static_cast<Eigen::Index>(active_.size());
-  H_.resize(n, d);
+  Eigen::MatrixXd H(n, d);
   prior_.resize(d);
   for (Eigen::Index a = 0; a < d; ++a) {
-    H_.col(a) = model.H.col(active_[static_cast<std::size_t>(a)]);
+    H.col(a) = model.H.col(active_[static_cast<std::size_t>(a)]);
     prior_[a] = model.prior_var[active_[static_cast<std::size_t>(a)]];
   }
+  H_ = std::make_shared<const Eigen::MatrixXd>(std::move(H));
   noise_var_ = model.noise_var;
   actual_noise_var_ = model.actual_noise_var;
   fit(true);
@@ -83,7 +84,7 @@ LatticeAnalysis::LatticeAnalysis(const Layout& lattice, const GaussianModel& mod
 LatticeAnalysis::LatticeAnalysis(const Layout& layout, const LatticeAnalysis& lattice, std::span<const Eigen::Index> rows)
     : layout_(&layout),
       mean_(rows_of(lattice.mean_, rows)),
-      H_(rows_of(lattice.H_, rows)),
+      H_(std::make_shared<const Eigen::MatrixXd>(rows_of(*lattice.H_, rows))),
       prior_(lattice.prior_),
       s_(lattice.s_),
       active_(lattice.active_),
@@ -97,21 +98,19 @@ LatticeAnalysis::LatticeAnalysis(const LatticeAnalysis& lattice, std::span<const
     : layout_(lattice.layout_), s_(lattice.s_), observed_(lattice.observed_) {
   // The information and the spread are sums over the test rows: the
   // lattice's less the rows the layout lacks.
+  // Symmetric: the lower triangles are formed (half the products'
+  // work), then mirrored.
   Eigen::MatrixXd info = lattice.info_, spread = lattice.spread_;
-  info.noalias() -= G * G.transpose();
-  spread.noalias() -= G * share.asDiagonal() * G.transpose();
-  // Each group of rows over the causes it sees, and every row over the
-  // causes the fit does not see: gathered from the lattice's H and scaled
-  // in one pass, not cut and then scaled.
-  const auto n = static_cast<Eigen::Index>(rows.size());
-  RowColumnGroups beyond;
-  beyond.rows.emplace_back(static_cast<std::size_t>(n));
-  std::iota(beyond.rows[0].begin(), beyond.rows[0].end(), Eigen::Index{0});
-  beyond.columns.emplace_back(static_cast<std::size_t>(lattice.H_.cols() - observed_));
-  std::iota(beyond.columns[0].begin(), beyond.columns[0].end(), observed_);
-  const Eigen::VectorXd unseen = group_blocks(lattice.H_, beyond, rows, s_)[0].rowwise().squaredNorm();
+  info.triangularView<Eigen::Lower>() -= G * G.transpose();
+  spread.triangularView<Eigen::Lower>() -= G * share.asDiagonal() * G.transpose();
+  info.triangularView<Eigen::StrictlyUpper>() = info.transpose();
+  spread.triangularView<Eigen::StrictlyUpper>() = spread.transpose();
+  // Each group of rows over the causes it sees, gathered from the
+  // lattice's H and scaled in one pass, not cut and then scaled; each row's
+  // terms over the causes the fit does not see are the lattice's.
+  const Eigen::VectorXd unseen = rows_of(lattice.unseen_, rows);
   const RowColumnGroups groups = lattice.groups_of(rows);
-  const std::vector<Eigen::MatrixXd> blocks = group_blocks(lattice.H_, groups, rows, s_);
+  const std::vector<Eigen::MatrixXd> blocks = group_blocks(*lattice.H_, groups, rows, s_);
   solve(std::move(info), std::move(spread));
   ab_ = row_forms(blocks, around_, unseen, groups);
   q_ = row_forms(blocks, pi_, unseen, groups);
@@ -133,7 +132,7 @@ void LatticeAnalysis::fit(bool lattice) {
   // it well conditioned across causes of very different units: c = S u,
   // u ~ (0, I), P⁺ = S Π S with Π = (I + S Hᵀ R⁻¹ H S)⁻¹.
   s_ = prior_.cwiseSqrt();
-  const Eigen::MatrixXd HS = H_ * s_.asDiagonal();
+  const Eigen::MatrixXd HS = *H_ * s_.asDiagonal();
   // The information is zero beyond the causes the test rows touch: the
   // fit's matrices are those columns' (Π is the identity beyond them).
   observed_ = observed_columns(HS, nt);
@@ -147,6 +146,7 @@ void LatticeAnalysis::fit(bool lattice) {
   spread.diagonal().array() += 1.0;
   RowColumnGroups groups = group_rows_by_columns(HS, observed_);
   solve(std::move(info), std::move(spread));
+  unseen_ = HS.rightCols(HS.cols() - observed_).rowwise().squaredNorm();
   if (lattice) {
     // Its layouts take their rows' groups from its own; its rows' terms are
     // made when a layout first asks (row_terms).
@@ -156,25 +156,23 @@ void LatticeAnalysis::fit(bool lattice) {
     groups_.columns = std::move(groups.columns);
     return;
   }
-  const Eigen::VectorXd unseen = HS.rightCols(HS.cols() - observed_).rowwise().squaredNorm();
   const std::vector<Eigen::MatrixXd> blocks = group_blocks(HS, groups, {}, {});
-  ab_ = row_forms(blocks, around_, unseen, groups);
-  q_ = row_forms(blocks, pi_, unseen, groups);
+  ab_ = row_forms(blocks, around_, unseen_, groups);
+  q_ = row_forms(blocks, pi_, unseen_, groups);
 }
 
 const LatticeAnalysis::RowTerms& LatticeAnalysis::row_terms() const {
   std::call_once(row_terms_once_, [this] {
-    const Eigen::MatrixXd HS = H_ * s_.asDiagonal();
+    const Eigen::MatrixXd HS = *H_ * s_.asDiagonal();
     std::vector<Eigen::Index> all(static_cast<std::size_t>(HS.rows()));
     std::iota(all.begin(), all.end(), Eigen::Index{0});
     const RowColumnGroups groups = groups_of(all);
-    const Eigen::VectorXd unseen = HS.rightCols(HS.cols() - observed_).rowwise().squaredNorm();
-    row_terms_.ab = row_forms(group_blocks(HS, groups, {}, {}), around_, unseen, groups);
+    row_terms_.ab = row_forms(group_blocks(HS, groups, {}, {}), around_, unseen_, groups);
     // A layout that lacks few test rows downdates each row's terms by its
     // h S Π (Woodbury).
     const auto seen = HS.leftCols(observed_);
     row_terms_.hs_pi = seen * pi_;
-    row_terms_.q = (row_terms_.hs_pi.array() * seen.array()).rowwise().sum().matrix() + unseen;
+    row_terms_.q = (row_terms_.hs_pi.array() * seen.array()).rowwise().sum().matrix() + unseen_;
   });
   return row_terms_;
 }
@@ -183,7 +181,11 @@ void LatticeAnalysis::solve(Eigen::MatrixXd info, Eigen::MatrixXd spread) {
   info_ = std::move(info);
   spread_ = std::move(spread);
   pi_ = inverse_of_information(info_);
-  around_ = pi_ * spread_ * pi_;
+  // Π (I + J) Π is symmetric: its lower triangle, then mirrored.
+  const Eigen::MatrixXd spread_pi = spread_ * pi_;
+  around_.resize(pi_.rows(), pi_.cols());
+  around_.triangularView<Eigen::Lower>() = pi_ * spread_pi;
+  around_.triangularView<Eigen::StrictlyUpper>() = around_.transpose();
 }
 
 RunAnalyser::RunAnalyser(const Layout& layout, const GaussianModel& model) {
@@ -216,7 +218,7 @@ RunAnalyser::RunAnalyser(const Layout& layout, const LatticeAnalysis& a, std::sp
   Eigen::VectorXd share(k);
   for (Eigen::Index j = 0; j < k; ++j) {
     const Eigen::Index m = missing[static_cast<std::size_t>(j)];
-    G.col(j) = a.s_.head(d).cwiseProduct(a.H_.row(m).head(d).transpose()) / std::sqrt(a.noise_var_[m]);
+    G.col(j) = a.s_.head(d).cwiseProduct(a.H_->row(m).head(d).transpose()) / std::sqrt(a.noise_var_[m]);
     share[j] = a.actual_noise_var_[m] / a.noise_var_[m];
   }
   std::vector<Eigen::Index> all(rows.size());
@@ -285,9 +287,12 @@ void RunAnalyser::finish(const LatticeAnalysis& a, std::span<const Eigen::Index>
   // their prior, so the estimate and each row's residual take those columns.
   const Eigen::Index p = pi.rows();
   mean_ = rows_of(a.mean_, rows);
-  H_ = rows_of(a.H_, rows, p);
+  // The rows' model stays the lattice's, shared (not copied per layout).
+  model_H_ = a.H_;
+  rows_.assign(rows.begin(), rows.end());
+  causes_ = p;
   const Eigen::VectorXd noise_var = rows_of(a.noise_var_, rows), actual_noise_var = rows_of(a.actual_noise_var_, rows);
-  weighted_test_ = H_.topRows(nt).array().colwise() / noise_var.head(nt).array();
+  inverse_test_noise_ = noise_var.head(nt).cwiseInverse();
   posterior_ = a.s_.head(p).asDiagonal() * pi * a.s_.head(p).asDiagonal();
   for (Eigen::Index c = 0; c < p; ++c) {
     const Eigen::Index j = a.active_[static_cast<std::size_t>(c)];
@@ -334,21 +339,36 @@ Eigen::VectorXd RunAnalyser::normalized_linear(const Eigen::VectorXd& y) const {
   // A run that stops early is the layout's first y.size() rows: the same
   // test rows, hence the same fit, and the navigation rows it has.
   const Eigen::Index n = y.size();
-  INSMC_ASSERT(n >= test_rows_ && n <= H_.rows(), "run of {} values for a layout of {} rows ({} test rows)", n,
-               H_.rows(), test_rows_);
+  const auto layout_rows = static_cast<Eigen::Index>(rows_.size());
+  INSMC_ASSERT(n >= test_rows_ && n <= layout_rows, "run of {} values for a layout of {} rows ({} test rows)", n,
+               layout_rows, test_rows_);
   const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
-  const Eigen::VectorXd c = posterior_ * (weighted_test_.transpose() * y.head(test_rows_));
+  // Over the model's rows up to the last the run has (its own among them):
+  // the fit ĉ = P⁺ Hₜᵀ R⁻¹ yₜ, then each row's y − h ĉ.
+  const Eigen::MatrixXd& H = *model_H_;
+  const auto extent = [&](Eigen::Index k) {
+    return k == 0 ? Eigen::Index{0} : *std::max_element(rows_.begin(), rows_.begin() + k) + 1;
+  };
+  const Eigen::Index test_extent = extent(test_rows_), run_extent = extent(n);
+  Eigen::VectorXd weighted = Eigen::VectorXd::Zero(test_extent);
+  for (Eigen::Index i = 0; i < test_rows_; ++i) weighted[rows_[static_cast<std::size_t>(i)]] = y[i] * inverse_test_noise_[i];
+  const Eigen::VectorXd c = posterior_ * (H.topLeftCorner(test_extent, causes_).transpose() * weighted);
+  const Eigen::VectorXd hc = H.topLeftCorner(run_extent, causes_) * c;
   Eigen::VectorXd v(n + m);
-  v.head(n) = ((y - H_.topRows(n) * c).array() / expected_.head(n).array().sqrt()).matrix();
+  for (Eigen::Index i = 0; i < n; ++i) v[i] = (y[i] - hc[rows_[static_cast<std::size_t>(i)]]) / std::sqrt(expected_[i]);
   for (Eigen::Index k = 0; k < m; ++k) v[n + k] = c[estimate_columns_[static_cast<std::size_t>(k)]] / std::sqrt(estimate_var_[k]);
   return v;
 }
 
 Eigen::MatrixXd RunAnalyser::estimate_map() const {
   const auto m = static_cast<Eigen::Index>(estimate_columns_.size());
+  const Eigen::MatrixXd test_H =
+      rows_of(*model_H_, std::span<const Eigen::Index>(rows_).first(static_cast<std::size_t>(test_rows_)), causes_);
   Eigen::MatrixXd W(m, test_rows_);
   for (Eigen::Index k = 0; k < m; ++k)
-    W.row(k) = (weighted_test_ * posterior_.row(estimate_columns_[static_cast<std::size_t>(k)]).transpose()).transpose() /
+    W.row(k) = (test_H * posterior_.row(estimate_columns_[static_cast<std::size_t>(k)]).transpose())
+                   .cwiseProduct(inverse_test_noise_)
+                   .transpose() /
                std::sqrt(estimate_var_[k]);
   return W;
 }

@@ -27,6 +27,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <mutex>
 #include <span>
 #include <vector>
@@ -98,7 +99,7 @@ class LatticeAnalysis {
 
   const Layout* layout_;
   Eigen::VectorXd mean_;              // rows
-  Eigen::MatrixXd H_;                 // rows × active causes
+  std::shared_ptr<const Eigen::MatrixXd> H_;  // rows × active causes (its layouts' analysers share it)
   Eigen::VectorXd prior_, s_;         // active: prior variance and its root (the scaling)
   std::vector<Eigen::Index> active_;  // the model's column of each active cause
   Eigen::VectorXd noise_var_, actual_noise_var_;  // rows
@@ -110,6 +111,7 @@ class LatticeAnalysis {
   // noise through the fit, and Π (I + J) Π.
   Eigen::Index observed_ = 0;
   Eigen::MatrixXd info_, pi_, spread_, around_;
+  Eigen::VectorXd unseen_;            // rows: |h S|² over the causes no test row sees (their Π is I)
   Eigen::VectorXd q_, ab_;            // a layout's rows: h Π hᵀ and h Π (I + J) Π hᵀ (scaled)
   RowColumnGroups groups_;            // a lattice's: the columns of each group of its rows
   std::vector<int> group_of_row_;     // a lattice's: each row's group
@@ -174,8 +176,13 @@ class RunAnalyser {
 
   const Layout* layout_;
   Eigen::VectorXd mean_;          // rows
-  Eigen::MatrixXd H_;             // rows × the causes the fit sees (the rest keep their prior mean 0)
-  Eigen::MatrixXd weighted_test_; // test rows of H / σ², rows × those causes
+  // The model's rows × active causes, shared with the lattice the layout
+  // is cut from: its rows rows_, the first causes_ columns (the causes the
+  // fit sees; the rest keep their prior mean 0).
+  std::shared_ptr<const Eigen::MatrixXd> model_H_;
+  std::vector<Eigen::Index> rows_;
+  Eigen::Index causes_ = 0;
+  Eigen::VectorXd inverse_test_noise_;  // test rows: 1/σ²
   Eigen::MatrixXd posterior_;     // P⁺ of those causes
   Eigen::VectorXd expected_;      // rows
   Eigen::VectorXd actual_;        // rows + estimates
