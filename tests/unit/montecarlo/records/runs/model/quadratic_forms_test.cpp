@@ -23,7 +23,7 @@ TEST(RowQuadraticForms, AreEachRowsFormThroughTheMatrix) {
   // Row counts on and off the kernel's block of 32 rows, and 43 causes (the
   // run model's), 1 and 0.
   for (const auto& [rows, d] : {std::pair{1, 1}, std::pair{31, 43}, std::pair{32, 43}, std::pair{1765, 43},
-                                std::pair{100, 7}, std::pair{5, 0}}) {
+                                std::pair{100, 7}, std::pair{5, 0}, std::pair{63, 43}, std::pair{20, 43}}) {
     SCOPED_TRACE(::testing::Message() << rows << " rows, " << d << " columns");
     const Eigen::MatrixXd a = random_matrix(rows, d, 3);
     const Eigen::MatrixXd b = random_matrix(d, d, 4);
@@ -61,6 +61,20 @@ TEST(WeightedGram, IsTheInformationTheRowsCarry) {
         }
         EXPECT_NEAR(g(k, j), expected, 1e-13 * (1.0 + scale));
       }
+  }
+}
+TEST(RowQuadraticForms, ARowsFormIsTheSameBitsWhateverBlockItFallsIn) {
+  // 63 rows: a block of 32, then the rest in blocks of 16, 8, 4 and 3 rows;
+  // each row alone is a block of one. The sums run in one order whatever the
+  // block, so a row's form does not depend on the rows around it.
+  const Eigen::MatrixXd a = random_matrix(63, 29, 11);
+  const Eigen::MatrixXd b = random_matrix(29, 29, 12);
+  const Eigen::MatrixXd m = b * b.transpose();
+  const Eigen::VectorXd q = row_quadratic_forms(a, m);
+  for (Eigen::Index i = 0; i < a.rows(); ++i) {
+    SCOPED_TRACE(::testing::Message() << "row " << i);
+    const Eigen::MatrixXd row = a.row(i);
+    EXPECT_EQ(row_quadratic_forms(row, m)[0], q[i]);
   }
 }
 
