@@ -1,6 +1,9 @@
 #include "montecarlo/records/runs/model/row_column_groups.h"
 
+#include <algorithm>
+#include <bit>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <numeric>
 
@@ -9,35 +12,94 @@
 
 namespace insmc::runs {
 
+namespace {
+
+using Pattern = std::vector<std::uint64_t>;
+
+/// A group joins at most this many patterns next to each other in the
+/// patterns' order (bounds the search: patterns × this many unions).
+constexpr std::size_t kMaxPatternsPerGroup = 64;
+
+double group_cost(double rows, std::size_t columns) {
+  return (rows + kGroupOverheadRows) * static_cast<double>(columns) * static_cast<double>(columns);
+}
+
+std::size_t columns_in(const Pattern& p) {
+  std::size_t n = 0;
+  for (std::uint64_t w : p) n += static_cast<std::size_t>(std::popcount(w));
+  return n;
+}
+
+void join(Pattern& into, const Pattern& p) {
+  for (std::size_t w = 0; w < p.size(); ++w) into[w] |= p[w];
+}
+
+}  // namespace
+
 RowColumnGroups group_rows_by_columns(const Eigen::MatrixXd& a, Eigen::Index d) {
   INSMC_ASSERT(d >= 0 && d <= a.cols(), "{} columns of a {}-column matrix", d, a.cols());
   const auto words = static_cast<std::size_t>((d + 63) / 64);
-  std::map<std::vector<std::uint64_t>, std::size_t> group_of;
-  RowColumnGroups g;
-  std::vector<std::uint64_t> pattern(words);
+  // Column c is bit 63 − c mod 64 of word c / 64, so that the map orders the
+  // patterns as read from column 0: patterns that differ only in late
+  // columns (a random process' knots) lie next to each other.
+  std::map<Pattern, std::vector<Eigen::Index>> rows_of_pattern;
+  Pattern pattern(words);
   for (Eigen::Index i = 0; i < a.rows(); ++i) {
     std::fill(pattern.begin(), pattern.end(), 0);
     for (Eigen::Index c = 0; c < d; ++c)
-      if (a(i, c) != 0.0) pattern[static_cast<std::size_t>(c / 64)] |= std::uint64_t{1} << (c % 64);
-    const auto [it, added] = group_of.try_emplace(pattern, g.rows.size());
-    if (added) {
-      if (g.rows.size() == kMaxColumnGroups) {
-        // Too many patterns: every row over every column.
-        RowColumnGroups all;
-        all.rows.emplace_back(static_cast<std::size_t>(a.rows()));
-        std::iota(all.rows[0].begin(), all.rows[0].end(), Eigen::Index{0});
-        all.columns.emplace_back(static_cast<std::size_t>(d));
-        std::iota(all.columns[0].begin(), all.columns[0].end(), Eigen::Index{0});
-        return all;
-      }
-      g.rows.emplace_back();
-      std::vector<Eigen::Index>& cols = g.columns.emplace_back();
-      for (Eigen::Index c = 0; c < d; ++c)
-        if (pattern[static_cast<std::size_t>(c / 64)] >> (c % 64) & 1) cols.push_back(c);
+      if (a(i, c) != 0.0) pattern[static_cast<std::size_t>(c / 64)] |= std::uint64_t{1} << (63 - c % 64);
+    rows_of_pattern[pattern].push_back(i);
+  }
+  std::vector<const Pattern*> patterns;
+  std::vector<const std::vector<Eigen::Index>*> members;
+  for (const auto& [p, rows] : rows_of_pattern) patterns.push_back(&p), members.push_back(&rows);
+  // The least cost of the first j patterns in groups of consecutive ones
+  // (best[j]), the last group starting at pattern from[j].
+  const std::size_t P = patterns.size();
+  std::vector<double> best(P + 1, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> from(P + 1, 0);
+  best[0] = 0.0;
+  Pattern joined(words);
+  for (std::size_t j = 1; j <= P; ++j) {
+    std::fill(joined.begin(), joined.end(), 0);
+    double rows = 0.0;
+    for (std::size_t i = j; i-- > 0 && j - i <= kMaxPatternsPerGroup;) {
+      join(joined, *patterns[i]);
+      rows += static_cast<double>(members[i]->size());
+      const double cost = best[i] + group_cost(rows, columns_in(joined));
+      if (cost < best[j]) best[j] = cost, from[j] = i;
     }
-    g.rows[it->second].push_back(i);
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> spans;  // [first, last) patterns of each group
+  Pattern every(words);
+  for (const Pattern* p : patterns) join(every, *p);
+  if (P > 0 && group_cost(static_cast<double>(a.rows()), columns_in(every)) < best[P]) {
+    spans.emplace_back(0, P);
+  } else {
+    for (std::size_t j = P; j > 0; j = from[j]) spans.emplace_back(from[j], j);
+    std::reverse(spans.begin(), spans.end());
+  }
+  RowColumnGroups g;
+  for (const auto& [first, last] : spans) {
+    std::vector<Eigen::Index>& rows = g.rows.emplace_back();
+    std::fill(joined.begin(), joined.end(), 0);
+    for (std::size_t k = first; k < last; ++k) {
+      join(joined, *patterns[k]);
+      rows.insert(rows.end(), members[k]->begin(), members[k]->end());
+    }
+    std::sort(rows.begin(), rows.end());
+    std::vector<Eigen::Index>& cols = g.columns.emplace_back();
+    for (Eigen::Index c = 0; c < d; ++c)
+      if (joined[static_cast<std::size_t>(c / 64)] >> (63 - c % 64) & 1) cols.push_back(c);
   }
   return g;
+}
+
+double grouped_forms_cost(const RowColumnGroups& groups) {
+  double cost = 0.0;
+  for (std::size_t k = 0; k < groups.rows.size(); ++k)
+    cost += group_cost(static_cast<double>(groups.rows[k].size()), groups.columns[k].size());
+  return cost;
 }
 
 std::vector<Eigen::MatrixXd> group_blocks(const Eigen::MatrixXd& a, const RowColumnGroups& groups,

@@ -17,13 +17,19 @@ struct RowColumnGroups {
   std::vector<std::vector<Eigen::Index>> columns;  ///< per group, the columns its rows see, ascending
 };
 
-/// More patterns than this and the rows are one group over every column
-/// (the gathers would cost more than the columns saved).
-inline constexpr std::size_t kMaxColumnGroups = 32;
-
-/// The rows of `a` grouped by which of its first `d` columns are nonzero.
-/// At most kMaxColumnGroups groups; else one group of every row and column.
+/// The rows of `a` grouped by which of its first `d` columns are nonzero:
+/// each group's columns hold every nonzero of its rows' among those. Rows of
+/// one pattern share a group; patterns are joined where that costs the forms
+/// less than apart (a group's own cost, its block of M gathered and its
+/// blocks' tails, against the columns its rows take in vain): a random
+/// process' knots give a row of every time its own pattern (the knots up to
+/// it), hundreds of patterns that differ in a few late columns.
 RowColumnGroups group_rows_by_columns(const Eigen::MatrixXd& a, Eigen::Index d);
+
+/// The forms' cost of `groups` in multiply-adds and rows' worth of each
+/// group's own cost: Σ (rows + kGroupOverheadRows) × columns².
+inline constexpr double kGroupOverheadRows = 8.0;
+double grouped_forms_cost(const RowColumnGroups& groups);
 
 /// Each group's rows over its columns (rows × columns), the operands of
 /// grouped_row_quadratic_forms: group row r is row source_rows[r] of `a`
@@ -35,8 +41,8 @@ std::vector<Eigen::MatrixXd> group_blocks(const Eigen::MatrixXd& a, const RowCol
 
 /// q[i] = a_i M a_iᵀ for the `rows` rows and M symmetric (its lower triangle
 /// read), each group's rows over its own columns (`blocks`, group_blocks):
-/// the same forms as over every column, to round-off (the zero terms left
-/// out).
+/// the same forms as over every column, bit for bit (the terms left out are
+/// exact zeros, and the sums run in the columns' order either way).
 Eigen::VectorXd grouped_row_quadratic_forms(const std::vector<Eigen::MatrixXd>& blocks, const Eigen::MatrixXd& m,
                                             const RowColumnGroups& groups, Eigen::Index rows);
 

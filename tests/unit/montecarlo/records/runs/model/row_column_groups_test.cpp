@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 
 #include "montecarlo/records/runs/model/quadratic_forms.h"
@@ -39,33 +40,71 @@ Eigen::MatrixXd symmetric_positive(Eigen::Index d, unsigned seed) {
   return b * b.transpose();
 }
 
+/// Every row in one group, and every column where a row is nonzero among
+/// its group's columns.
+void expect_groups_cover(const RowColumnGroups& g, const Eigen::MatrixXd& a, Eigen::Index d) {
+  std::vector<int> seen(static_cast<std::size_t>(a.rows()), 0);
+  for (std::size_t k = 0; k < g.rows.size(); ++k)
+    for (Eigen::Index i : g.rows[k]) {
+      ++seen[static_cast<std::size_t>(i)];
+      for (Eigen::Index c = 0; c < d; ++c) {
+        if (a(i, c) == 0.0) continue;
+        EXPECT_NE(std::find(g.columns[k].begin(), g.columns[k].end(), c), g.columns[k].end())
+            << "row " << i << " column " << c;
+      }
+    }
+  for (Eigen::Index i = 0; i < a.rows(); ++i) EXPECT_EQ(seen[static_cast<std::size_t>(i)], 1) << "row " << i;
+}
+
 TEST(RowColumnGroups, EachGroupsFormsOverItsColumnsAreTheFormsOverEveryColumn) {
   constexpr Eigen::Index d = 40, rows = 300;
   const Eigen::MatrixXd a = patterned_rows(rows, d, 6, 7);
   const Eigen::MatrixXd m = symmetric_positive(d, 8);
   const RowColumnGroups g = group_rows_by_columns(a, d);
-  ASSERT_EQ(g.rows.size(), 6u);
-  // Pattern 0 sees no column: its group has none, its forms are 0.
-  std::size_t rows_seen = 0;
-  for (std::size_t k = 0; k < g.rows.size(); ++k) {
-    rows_seen += g.rows[k].size();
-    for (Eigen::Index i : g.rows[k])
-      for (Eigen::Index c = 0; c < d; ++c) {
-        const bool listed = std::find(g.columns[k].begin(), g.columns[k].end(), c) != g.columns[k].end();
-        EXPECT_EQ(listed, a(i, c) != 0.0) << "row " << i << " column " << c;
-      }
-  }
-  EXPECT_EQ(rows_seen, static_cast<std::size_t>(rows));
+  EXPECT_LE(g.rows.size(), 6u);
+  EXPECT_GE(g.rows.size(), 2u);  // joining everything costs more than the 6 patterns apart
+  expect_groups_cover(g, a, d);
+  // The terms left out are exact zeros and the sums keep the columns'
+  // order: the forms are those over every column, bit for bit (pattern 0
+  // sees no column: its forms are 0).
   const Eigen::VectorXd grouped = grouped_row_quadratic_forms(group_blocks(a, g, {}, {}), m, g, rows);
-  const Eigen::VectorXd dense = row_quadratic_forms(a, m);
+  EXPECT_EQ(grouped, row_quadratic_forms(a, m));
+  for (Eigen::Index i = 0; i < rows; i += 6) EXPECT_EQ(grouped[i], 0.0) << "row " << i;
+}
+
+TEST(RowColumnGroups, PatternsThatDifferInLateColumnsAreJoinedWhereThatCostsLess) {
+  // A random process' knots as the position rows see them: row i of two
+  // kinds (10 columns of its own each) and the knots up to i / 10, 80
+  // patterns of 400 rows. Each pattern its own group pays each group's own
+  // cost 80 times; one group over every column pays the 40 knots on every
+  // row. Joined neighbours cost less than either.
+  constexpr Eigen::Index d = 60, rows = 400;
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(rows, d);
   for (Eigen::Index i = 0; i < rows; ++i) {
-    // Round-off of d² terms of size |a|² |m|: the bound of their sum.
-    const double scale = (a.row(i).cwiseAbs() * m.cwiseAbs() * a.row(i).cwiseAbs().transpose())(0, 0);
-    EXPECT_NEAR(grouped[i], dense[i], 4.0 * d * d * 1.1e-16 * scale + 1e-300) << "row " << i;
-    if (i % 6 == 0) {
-      EXPECT_EQ(grouped[i], 0.0);
-    }
+    for (Eigen::Index c = 0; c < 10; ++c) a(i, c + (i % 2) * 10) = 1.0 + static_cast<double>(c + i % 7);
+    for (Eigen::Index k = 0; k <= i / 10; ++k) a(i, 20 + k) = 0.5 + static_cast<double>(k % 5);
   }
+  const RowColumnGroups g = group_rows_by_columns(a, d);
+  expect_groups_cover(g, a, d);
+  RowColumnGroups each_pattern, one;
+  for (Eigen::Index i = 0; i < rows; ++i) {
+    std::vector<Eigen::Index> cols;
+    for (Eigen::Index c = 0; c < d; ++c)
+      if (a(i, c) != 0.0) cols.push_back(c);
+    if (i % 10 < 2) each_pattern.rows.emplace_back(), each_pattern.columns.push_back(cols);
+    each_pattern.rows[static_cast<std::size_t>(i / 10 * 2 + i % 2)].push_back(i);
+  }
+  ASSERT_EQ(each_pattern.rows.size(), 80u);
+  one.rows.emplace_back(static_cast<std::size_t>(rows));
+  std::iota(one.rows[0].begin(), one.rows[0].end(), Eigen::Index{0});
+  one.columns.emplace_back(static_cast<std::size_t>(d));
+  std::iota(one.columns[0].begin(), one.columns[0].end(), Eigen::Index{0});
+  EXPECT_LT(grouped_forms_cost(g), grouped_forms_cost(one));
+  EXPECT_LT(grouped_forms_cost(g), grouped_forms_cost(each_pattern));
+  EXPECT_GT(g.rows.size(), 1u);
+  EXPECT_LT(g.rows.size(), 80u);
+  const Eigen::MatrixXd m = symmetric_positive(d, 9);
+  EXPECT_EQ(grouped_row_quadratic_forms(group_blocks(a, g, {}, {}), m, g, rows), row_quadratic_forms(a, m));
 }
 
 TEST(RowColumnGroups, RowsCutAndColumnsScaledAreGatheredInOnePass) {
@@ -85,13 +124,15 @@ TEST(RowColumnGroups, RowsCutAndColumnsScaledAreGatheredInOnePass) {
   for (std::size_t k = 0; k < from_cut.size(); ++k) EXPECT_EQ(from_source[k], from_cut[k]) << "group " << k;
 }
 
-TEST(RowColumnGroups, MorePatternsThanTheBoundAreOneGroupOverEveryColumn) {
+TEST(RowColumnGroups, RowsOfNoCommonPatternAreOneGroupOverEveryColumn) {
   constexpr Eigen::Index d = 70;  // more than one word of the pattern
   std::mt19937_64 rng(3);
   std::bernoulli_distribution half(0.5);
   Eigen::MatrixXd a(200, d);
   for (Eigen::Index i = 0; i < a.rows(); ++i)
     for (Eigen::Index c = 0; c < d; ++c) a(i, c) = half(rng) ? 1.0 + static_cast<double>(c) : 0.0;
+  // 200 patterns, any two joined see three quarters of the columns: one
+  // group of every row costs least.
   const RowColumnGroups g = group_rows_by_columns(a, d);
   ASSERT_EQ(g.rows.size(), 1u);
   EXPECT_EQ(g.rows[0].size(), 200u);
@@ -106,8 +147,10 @@ TEST(RowColumnGroups, OnlyTheFirstColumnsAsked) {
   Eigen::MatrixXd a = Eigen::MatrixXd::Ones(4, 5);
   a(1, 4) = 0.0;
   a(2, 3) = 0.0;
-  EXPECT_EQ(group_rows_by_columns(a, 3).rows.size(), 1u);
-  EXPECT_EQ(group_rows_by_columns(a, 5).rows.size(), 3u);
+  const RowColumnGroups first_three = group_rows_by_columns(a, 3);
+  ASSERT_EQ(first_three.rows.size(), 1u);
+  EXPECT_EQ(first_three.columns[0], (std::vector<Eigen::Index>{0, 1, 2}));
+  expect_groups_cover(group_rows_by_columns(a, 5), a, 5);
 }
 
 }  // namespace
