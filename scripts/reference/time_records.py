@@ -1,6 +1,8 @@
 """The timing table of scripts/time-records.sh: each command on each file,
 its wall time, CPU time (user + system of the process and its threads) and
-peak resident memory from wait4, one at a time."""
+peak resident memory from wait4, one at a time; with a repeat count, each
+command runs that many times and the run of least CPU is kept (what other
+work on the machine adds is never negative)."""
 import csv
 import json
 import os
@@ -10,10 +12,15 @@ import sys
 import tempfile
 import time
 
-insmc, files, extra = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
+insmc, files, repeat, extra = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4:]
 
 
 def measure(args, refusal_allowed=False, out_path=os.devnull):
+    runs = [measure_once(args, refusal_allowed, out_path) for _ in range(repeat)]
+    return min(runs, key=lambda run: run[1])
+
+
+def measure_once(args, refusal_allowed=False, out_path=os.devnull):
     start = time.monotonic()
     with open(out_path, "wb") as out:
         proc = subprocess.Popen(args, stdout=out, stderr=subprocess.PIPE)

@@ -43,8 +43,7 @@ inline void quadratic_forms_block(const double* a, std::size_t lda, std::size_t 
   for (; r0 + kBlock <= rows; r0 += kBlock) quadratic_forms_block<kBlock>(a + r0, lda, kBlock, d, m, ldm, q + r0);
   // The rest in blocks of 16, 8 and 4 rows known when compiled (a block of
   // a size known only at run time takes twice as long per row; a run
-  // model's rows come in a few groups, each with such a rest), then
-  // at most 3 rows.
+  // model's rows come in groups, each with such a rest), then at most 3 rows.
   if (rows - r0 >= 16) quadratic_forms_block<16>(a + r0, lda, 16, d, m, ldm, q + r0), r0 += 16;
   if (rows - r0 >= 8) quadratic_forms_block<8>(a + r0, lda, 8, d, m, ldm, q + r0), r0 += 8;
   if (rows - r0 >= 4) quadratic_forms_block<4>(a + r0, lda, 4, d, m, ldm, q + r0), r0 += 4;
