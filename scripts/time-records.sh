@@ -14,7 +14,8 @@
 # plus any record files given after the options (other software's files).
 #   scripts/time-records.sh [--files N] [--repeat K] [--insmc PATH] [FILE...]
 # N files per family (default 5), seeds 1..N; each command K times
-# (default 1), the run of least CPU kept (the machines are noisy). Prints per family the median
+# (default 1), the run of least CPU kept (the machines are noisy) and the
+# largest peak memory. Prints per family the median
 # and the worst case of wall time, CPU time, CPU per 1000 rows and peak
 # memory (docs/gap.md "Cost"), and writes the cases to time-records.csv in
 # the current folder.

@@ -2,7 +2,8 @@
 its wall time, CPU time (user + system of the process and its threads) and
 peak resident memory from wait4, one at a time; with a repeat count, each
 command runs that many times and the run of least CPU is kept (what other
-work on the machine adds is never negative)."""
+work on the machine adds is never negative), with the largest peak memory
+of them all."""
 import csv
 import json
 import os
@@ -16,8 +17,10 @@ insmc, files, repeat, extra = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), s
 
 
 def measure(args, refusal_allowed=False, out_path=os.devnull):
+    """Wall and CPU of the run of least CPU, the largest peak of them all."""
     runs = [measure_once(args, refusal_allowed, out_path) for _ in range(repeat)]
-    return min(runs, key=lambda run: run[1])
+    wall, cpu, _, refused = min(runs, key=lambda run: run[1])
+    return wall, cpu, max(run[2] for run in runs), refused
 
 
 def measure_once(args, refusal_allowed=False, out_path=os.devnull):

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <functional>
 #include <mutex>
 #include <numeric>
 
@@ -290,6 +291,8 @@ void RunAnalyser::finish(const LatticeAnalysis& a, std::span<const Eigen::Index>
   // The rows' model stays the lattice's, shared (not copied per layout).
   model_H_ = a.H_;
   rows_.assign(rows.begin(), rows.end());
+  INSMC_ASSERT(std::adjacent_find(rows_.begin(), rows_.end(), std::greater_equal<>()) == rows_.end(),
+               "a layout's rows in its lattice must ascend ({} rows)", rows_.size());
   causes_ = p;
   const Eigen::VectorXd noise_var = rows_of(a.noise_var_, rows), actual_noise_var = rows_of(a.actual_noise_var_, rows);
   inverse_test_noise_ = noise_var.head(nt).cwiseInverse();

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 
 #include "lib/uncertainty/uncertainty_model.h"
@@ -182,6 +183,51 @@ TEST(LayoutUnion, ALayoutsFitCutFromTheLatticesIsItsOwn) {
     SCOPED_TRACE(::testing::Message() << l.test_rows << " of " << full.test_rows << " test rows");
     expect_same_sums(RunAnalyser(l, shared, *rows), RunAnalyser(l, own_model), own_model, seed++);
   }
+}
+
+TEST(LayoutUnion, AnAnalyserCutFromALatticeOutlivesItAndTakesARunThatStoppedEarly) {
+  // The analyser shares the lattice's rows' model, not the lattice: it is
+  // used after the lattice is gone (as the diagnosis keeps its analysers),
+  // and a run holding only the layout's first rows gets the sums of those
+  // rows (the same fit: the same test rows).
+  const Layout full = testing::test_layout(3600.0);
+  const RecordSite s = testing::test_site();
+  const UncertaintyVector x_var = UncertaintyModel{}.variance();
+  const GaussianModel on_lattice = combine(make_base_model(full, s, x_var), {});
+  const Layout sparse = every_second_test_f_missing(full);
+  const auto rows = rows_within(sparse, full);
+  ASSERT_TRUE(rows.has_value());
+  std::optional<RunAnalyser> cut;
+  {
+    const LatticeAnalysis shared(full, on_lattice);
+    cut.emplace(sparse, shared, *rows);
+  }
+  const GaussianModel own_model = select_rows(on_lattice, *rows);
+  const RunAnalyser own(sparse, own_model);
+  std::mt19937_64 rng(29);
+  std::normal_distribution<double> n01;
+  const Eigen::Index n = sparse.test_rows + (static_cast<Eigen::Index>(sparse.rows.size()) - sparse.test_rows) / 2;
+  for (const Eigen::Index length : {static_cast<Eigen::Index>(sparse.rows.size()), n, Eigen::Index{sparse.test_rows}}) {
+    SCOPED_TRACE(::testing::Message() << length << " of " << sparse.rows.size() << " rows");
+    Eigen::VectorXd c(own_model.prior_var.size()), e(own_model.H.rows());
+    for (Eigen::Index j = 0; j < c.size(); ++j) c[j] = std::sqrt(own_model.prior_var[j]) * n01(rng);
+    for (Eigen::Index i = 0; i < e.size(); ++i) e[i] = std::sqrt(own_model.noise_var[i]) * n01(rng);
+    const Eigen::VectorXd y = (own_model.H * c + e).head(length);
+    const GroupSums x = cut->analyse(y), z = own.analyse(y);
+    for (int g = 0; g < kGroupCount; ++g) {
+      EXPECT_EQ(x.count[g], z.count[g]) << group_name(g);
+      EXPECT_NEAR(x.z2[g], z.z2[g], 1e-7 * (1.0 + z.z2[g])) << group_name(g);
+      EXPECT_NEAR(x.expected[g], z.expected[g], 1e-7 * (1.0 + z.expected[g])) << group_name(g);
+    }
+    double rows_counted = 0.0;
+    for (int g = 0; g < kGroupCount; ++g)
+      if (g != kEstimatesGroup) rows_counted += x.count[g];
+    EXPECT_EQ(rows_counted, static_cast<double>(length));
+  }
+  const Eigen::MatrixXd map_cut = cut->estimate_map(), map_own = own.estimate_map();
+  ASSERT_EQ(map_cut.rows(), map_own.rows());
+  ASSERT_EQ(map_cut.cols(), map_own.cols());
+  EXPECT_LT((map_cut - map_own).cwiseAbs().maxCoeff(), 1e-7 * (1.0 + map_own.cwiseAbs().maxCoeff()));
 }
 
 TEST(LayoutUnion, PulseCountingKeepsEachRowsVariance) {

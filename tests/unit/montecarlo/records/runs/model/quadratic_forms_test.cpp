@@ -80,16 +80,17 @@ TEST(RowQuadraticForms, ARowsFormIsTheSameBitsWhateverBlockItFallsIn) {
 
 TEST(RowQuadraticForms, TheVectorKernelGivesTheGenericKernelsBits) {
   if (!quadratic_forms_avx2_available()) GTEST_SKIP() << "no AVX2 on this CPU";
-  const Eigen::MatrixXd a = random_matrix(1001, 43, 7);
+  // 1023 rows: 31 blocks of 32, then blocks of 16, 8 and 4 and 3 rows.
+  const Eigen::MatrixXd a = random_matrix(1023, 43, 7);
   const Eigen::MatrixXd b = random_matrix(43, 43, 8);
   const Eigen::MatrixXd m = b * b.transpose();
   const Eigen::VectorXd fast = row_quadratic_forms(a, m);
   Eigen::VectorXd generic(a.rows());
-  row_quadratic_forms_generic(a.data(), 1001, 1001, 43, m.data(), 43, generic.data());
+  row_quadratic_forms_generic(a.data(), 1023, 1023, 43, m.data(), 43, generic.data());
   EXPECT_EQ(fast, generic);
   const Eigen::VectorXd w = a.col(0).cwiseAbs();
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(43, 43);
-  weighted_gram_generic(a.data(), 1001, 1001, 43, w.data(), gram.data(), 43);
+  weighted_gram_generic(a.data(), 1023, 1023, 43, w.data(), gram.data(), 43);
   gram.triangularView<Eigen::StrictlyUpper>() = gram.transpose();
   EXPECT_EQ(weighted_gram(a, w), gram);
 }
